@@ -13,8 +13,8 @@ DEB_PACKAGES := g++ make pkg-config libosmesa6-dev libglm-dev libopenimageio-dev
 
 # Renderer core: everything but the command line.  Links without OpenImageIO
 # except for src/scene/image_io.cpp, the one file that includes it.
-CORE_SRC := $(sort $(wildcard src/platform/osmesa_*.cpp src/gl/*.cpp src/scene/*.cpp \
-                              src/deferred/*.cpp src/forward/*.cpp src/analysis/*.cpp))
+CORE_SRC := $(filter-out src/platform/glfw_%.cpp,$(sort $(wildcard src/platform/*.cpp src/gl/*.cpp src/scene/*.cpp \
+                              src/deferred/*.cpp src/forward/*.cpp src/analysis/*.cpp)))
 APP_SRC  := $(sort $(wildcard src/app/*.cpp))
 TEST_SRC := $(sort $(wildcard tests/*.cpp))
 

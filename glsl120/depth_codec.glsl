@@ -1,0 +1,41 @@
+// Depth <-> RGB8 colour, for GPUs without depth textures (§3.3.2). CPU twins and their
+// round-trip tests: src/deferred/depth_codec.{h,cpp}, tests/test_depth_codec.cpp.
+
+// Listing 11 exactly as written: bytes as k/256. An 8-bit target stores round(c*255)
+// and returns byte/255, so this does not survive the target (docs/errata.md).
+vec3 pack_depth_literal(float f)
+{
+    vec3 color;
+    f *= 256.0;
+    color.x = floor(f);
+    f = (f - color.x) * 256.0;
+    color.y = floor(f);
+    color.z = f - color.y;
+    color.xy *= 0.00390625;  // *= 1.0/256
+    return color;
+}
+
+// Listing 18 exactly as written.
+float unpack_depth_literal(vec3 color)
+{
+    const vec3 byte_to_float = vec3(1.0, 1.0 / 256.0, 1.0 / (256.0 * 256.0));
+    return dot(color, byte_to_float);
+}
+
+// Corrected base-256 packing: a 24-bit integer code k written as three bytes, each as
+// byte/255 so the RGB8 target keeps it exactly. Float arithmetic is exact below 2^24.
+vec3 pack_depth(float d)
+{
+    float k = floor(clamp(d, 0.0, 1.0) * 16777215.0 + 0.5);
+    float b0 = floor(k / 65536.0);
+    k -= b0 * 65536.0;
+    float b1 = floor(k / 256.0);
+    float b2 = k - b1 * 256.0;
+    return vec3(b0, b1, b2) / 255.0;
+}
+
+float unpack_depth(vec3 c)
+{
+    vec3 b = floor(c * 255.0 + 0.5);
+    return (b.x * 65536.0 + b.y * 256.0 + b.z) / 16777215.0;
+}

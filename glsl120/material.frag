@@ -1,0 +1,62 @@
+#version 120
+// Material pass fragment shader (Listings 12-13): fills the G-buffer (Figure 3).
+//   target 0: normal  (n*0.5+0.5)
+//   target 1: diffuse (map x colour), alpha 1 marks a covered pixel
+//   target 2: specular (map x colour), alpha = log2(shininess)/11
+//   target 3: depth packed into RGB8 (PACKED_DEPTH only: Listing 11 / corrected codec)
+// Variants: NORMAL_MAP (tangent-space normal map), PACKED_DEPTH, PACKED_LITERAL,
+// TARGET_n (no MRT: write only target n to gl_FragData[0], §3.2).
+#include "depth_codec.glsl"
+
+uniform sampler2D normaltex;    // unit 0
+uniform sampler2D colortex;     // unit 1
+uniform sampler2D speculartex;  // unit 2
+uniform vec3 diffuse;
+uniform vec3 specular;
+uniform float shininess_code;
+uniform vec2 planes;
+uniform float tile;
+
+varying vec2 texcoord;
+varying vec3 vpos;
+varying vec3 normal;
+varying vec3 tangent;
+varying vec3 binormal;
+
+void main()
+{
+    vec2 txcoord = texcoord * tile;
+#ifdef NORMAL_MAP
+    vec3 n = texture2D(normaltex, txcoord).xyz - 0.5;
+    n = normalize(n.x * tangent + n.y * binormal + n.z * normal);
+#else
+    vec3 n = normalize(normal);
+#endif
+    vec4 t0 = vec4(n * 0.5 + 0.5, 1.0);
+    vec4 t1 = vec4(texture2D(colortex, txcoord).rgb * diffuse, 1.0);
+    vec4 t2 = vec4(texture2D(speculartex, txcoord).rgb * specular, shininess_code);
+#ifdef PACKED_DEPTH
+    float d = (planes.x * vpos.z + planes.y) / -vpos.z;  // Listing 13 line 27
+#ifdef PACKED_LITERAL
+    vec4 t3 = vec4(pack_depth_literal(d), 1.0);
+#else
+    vec4 t3 = vec4(pack_depth(d), 1.0);
+#endif
+#endif
+#if defined(TARGET_0)
+    gl_FragData[0] = t0;
+#elif defined(TARGET_1)
+    gl_FragData[0] = t1;
+#elif defined(TARGET_2)
+    gl_FragData[0] = t2;
+#elif defined(TARGET_3)
+    gl_FragData[0] = t3;
+#else
+    gl_FragData[0] = t0;
+    gl_FragData[1] = t1;
+    gl_FragData[2] = t2;
+#ifdef PACKED_DEPTH
+    gl_FragData[3] = t3;
+#endif
+#endif
+}

@@ -1,0 +1,29 @@
+// Command-line parsing helpers: every bad flag or value is one clear dsr::Error naming
+// the flag, what was expected and what was given.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace dsr {
+
+class Args {
+public:
+    Args(std::string command, std::vector<std::string> args) : cmd_(std::move(command)), a_(std::move(args)) {}
+    bool done() const { return i_ >= a_.size(); }
+    const std::string& peek() const { return a_[i_]; }
+    std::string next() { return a_[i_++]; }
+    // The value after flag `flag`; throws if missing.
+    std::string value(const std::string& flag);
+    int int_value(const std::string& flag, int lo, int hi);
+    void size_value(const std::string& flag, int& w, int& h);  // WxH
+    bool on_off(const std::string& flag);
+    std::string choice(const std::string& flag, const std::vector<std::string>& allowed);
+    [[noreturn]] void fail(const std::string& what) const;
+
+private:
+    std::string cmd_;
+    std::vector<std::string> a_;
+    size_t i_ = 0;
+};
+
+}  // namespace dsr

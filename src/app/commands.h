@@ -1,0 +1,15 @@
+// The `dsr` subcommands; each returns the process exit status.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace dsr {
+
+int cmd_render(const std::vector<std::string>& args);
+int cmd_info(const std::vector<std::string>& args);
+int cmd_gen_textures(const std::vector<std::string>& args);
+
+// Capabilities to hide: DSR_CAPS from the environment plus --caps, comma-separated.
+std::vector<std::string> split_caps(const std::string& list);
+
+}  // namespace dsr

@@ -1,0 +1,38 @@
+// dsr: the tutorial's deferred shading renderer, headless under OSMesa.
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "app/commands.h"
+#include "dsr_error.h"
+
+static const char* kUsage =
+    "usage: dsr COMMAND [options]\n"
+    "  render [SCENE] [-o OUT] [--size WxH] [--depth auto|texture|packed]\n"
+    "         [--depth-encoding corrected|literal] [--scissor on|off] [--lighting equations|listing]\n"
+    "         [--frames N] [--stats FILE.json] [--caps no-mrt,no-depth-texture,...]\n"
+    "  info [--caps LIST]      GL vendor/renderer/version, capabilities, paths chosen\n"
+    "  gen-textures DIR        write the default scene's procedural textures\n";
+
+int main(int argc, char** argv) {
+    if (argc < 2 || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "help")) {
+        std::fputs(kUsage, argc < 2 ? stderr : stdout);
+        return argc < 2 ? 2 : 0;
+    }
+    std::string cmd = argv[1];
+    std::vector<std::string> args(argv + 2, argv + argc);
+    try {
+        if (cmd == "render") return dsr::cmd_render(args);
+        if (cmd == "info") return dsr::cmd_info(args);
+        if (cmd == "gen-textures") return dsr::cmd_gen_textures(args);
+        std::fprintf(stderr, "dsr: unknown command '%s'\n%s", cmd.c_str(), kUsage);
+        return 2;
+    } catch (const dsr::Error& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "dsr %s: %s\n", cmd.c_str(), e.what());
+        return 1;
+    }
+}

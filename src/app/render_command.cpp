@@ -1,0 +1,115 @@
+// `dsr render`: scene file -> Scene -> DeferredShader::render -> main buffer -> image file.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+
+#include <nlohmann/json.hpp>
+
+#include "app/args.h"
+#include "app/commands.h"
+#include "app/files.h"
+#include "deferred/deferred_shader.h"
+#include "gl/caps.h"
+#include "gl/readback.h"
+#include "platform/context.h"
+#include "platform/resources.h"
+#include "scene/scene.h"
+
+namespace dsr {
+
+namespace {
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+bool has_ext(const std::string& path, const char* ext) {
+    std::string e = ext;
+    if (path.size() < e.size()) return false;
+    std::string tail = path.substr(path.size() - e.size());
+    std::transform(tail.begin(), tail.end(), tail.begin(), ::tolower);
+    return tail == e;
+}
+
+}  // namespace
+
+int cmd_render(const std::vector<std::string>& argv) {
+    Args args("render", argv);
+    std::string scene_path, out = "out.png", stats_path, depth = "auto", encoding = "corrected";
+    int w = 512, h = 512, frames = 1;
+    bool scissor = true, listing2 = false;
+    std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";
+    while (!args.done()) {
+        std::string a = args.next();
+        if (a == "-o" || a == "--output") out = args.value(a);
+        else if (a == "--size") args.size_value(a, w, h);
+        else if (a == "--depth") depth = args.choice(a, {"auto", "texture", "packed"});
+        else if (a == "--depth-encoding") encoding = args.choice(a, {"corrected", "literal"});
+        else if (a == "--scissor") scissor = args.on_off(a);
+        else if (a == "--lighting") listing2 = args.choice(a, {"equations", "listing"}) == "listing";
+        else if (a == "--frames") frames = args.int_value(a, 1, 100000);
+        else if (a == "--stats") stats_path = args.value(a);
+        else if (a == "--caps") caps_list += "," + args.value(a);
+        else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
+        else if (scene_path.empty()) scene_path = a;
+        else args.fail("expected one scene file, got also '" + a + "'");
+    }
+    if (!has_ext(out, ".png") && !has_ext(out, ".exr") && !has_ext(out, ".tif") && !has_ext(out, ".tiff") &&
+        !has_ext(out, ".jpg") && !has_ext(out, ".ppm"))
+        args.fail("-o: expected a file ending .png, .exr, .tif, .jpg or .ppm, got '" + out + "'");
+    if (!stats_path.empty() && !has_ext(stats_path, ".json"))
+        args.fail("--stats: expected a file ending .json, got '" + stats_path + "'");
+    if (scene_path.empty()) scene_path = resource_dir("data") + "/default.scene";
+
+    Scene scene = load_scene(scene_path);  // every input error surfaces before any output
+    auto ctx = create_osmesa_context(w, h);
+    Caps caps = probe_caps(split_caps(caps_list));
+    ShaderOptions opts;
+    if (depth == "auto") opts.depth = caps.depth_texture ? DepthPath::texture : DepthPath::packed;
+    else opts.depth = depth == "texture" ? DepthPath::texture : DepthPath::packed;
+    opts.packed_literal = encoding == "literal";
+    opts.listing2_literal = listing2;
+    opts.scissor = scissor;
+
+    DeferredShader ds(caps, w, h, opts, resource_dir("glsl120"));
+    ds.set_scene(scene);
+    std::vector<FrameStats> all;
+    for (int f = 0; f < frames; ++f) all.push_back(ds.render(scene, w, h));
+    Image img = read_pixels(w, h);
+
+    const FrameStats& last = all.back();
+    auto med = [&](double StageTimes::*field) {
+        std::vector<double> v;
+        for (auto& s : all) v.push_back(s.ms.*field);
+        return median(v);
+    };
+    nlohmann::ordered_json j;
+    j["scene"] = scene_path;
+    j["size"] = {w, h};
+    j["frames"] = frames;
+    j["gl_renderer"] = caps.renderer;
+    j["depth_path"] = opts.depth == DepthPath::texture ? "texture" : "packed";
+    j["depth_encoding"] = opts.depth == DepthPath::packed ? encoding : "depth-texture";
+    j["lighting"] = listing2 ? "listing" : "equations";
+    j["scissor"] = scissor;
+    j["lights_total"] = last.lights_total;
+    j["lights_culled"] = last.lights_culled;
+    j["lights_drawn"] = last.lights_drawn;
+    j["light_fragments"] = last.light_fragments;
+    j["scissor_pixels"] = last.scissor_pixels;
+    j["ms"] = {{"geometry", med(&StageTimes::geometry)}, {"ambient", med(&StageTimes::ambient)},
+               {"lights", med(&StageTimes::lights)},     {"final", med(&StageTimes::final)},
+               {"frame", med(&StageTimes::frame)}};
+
+    write_image(out, img);
+    if (!stats_path.empty()) write_file_atomic(stats_path, j.dump(2) + "\n");
+    std::printf("wrote %s (%dx%d, depth %s, %d/%d lights drawn, %lld light fragments, frame %.2f ms median of %d)\n",
+                out.c_str(), w, h, j["depth_path"].get<std::string>().c_str(), last.lights_drawn, last.lights_total,
+                last.light_fragments, med(&StageTimes::frame), frames);
+    return 0;
+}
+
+}  // namespace dsr

@@ -1,0 +1,146 @@
+// pDeferredShader: buffers (Listing 6), shader table, and the frame (Appendix A).
+#include "deferred/deferred_shader.h"
+
+#include <chrono>
+
+#include "deferred/gpu_scene.h"
+#include "dsr_error.h"
+#include "gl/check.h"
+
+namespace dsr {
+
+namespace {
+double now_ms() {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+}  // namespace
+
+DeferredShader::DeferredShader(const Caps& caps, int width, int height, const ShaderOptions& opts,
+                               const std::string& shader_dir)
+    : caps_(caps), w_(width), h_(height), opts_(opts) {
+    if (!caps.glsl120) throw Error("GLSL 1.20 is required and this GL offers " + caps.glsl_version);
+    if (!caps.fbo) throw Error("EXT_framebuffer_object is required for P-buffers and is missing");
+    if (!caps.draw_buffers || caps.max_draw_buffers < 4)
+        throw Error("ARB_draw_buffers with 4 targets is required for the G-buffer (GL_MAX_DRAW_BUFFERS = " +
+                    std::to_string(caps.max_draw_buffers) + ")");
+    if (opts.depth == DepthPath::texture && !caps.depth_texture)
+        throw Error("--depth texture needs ARB_depth_texture, which is missing (use --depth packed)");
+
+    // Figure 3: normal, diffuse, specular+shininess, and packed depth only when that path runs.
+    PBufferDesc g;
+    g.width = width;
+    g.height = height;
+    g.color_formats = {GL_RGBA8, GL_RGBA8, GL_RGBA8};
+    if (opts.depth == DepthPath::packed) {
+        g.color_formats.push_back(GL_RGBA8);
+        g.depth = DepthAttachment::renderbuffer;
+    } else {
+        g.depth = DepthAttachment::texture;
+    }
+    mrt_ = std::make_unique<PBuffer>("G-buffer", g);
+    // P-buffers 0-3 (§3.2): 0 accumulates lighting, 1 is the anti-alias swap partner,
+    // 2 and 3 hold the bloom blurs. Bilinear, so the final pass can scale (§3.6).
+    for (int i = 0; i < 4; ++i) {
+        PBufferDesc p;
+        p.width = width;
+        p.height = height;
+        p.color_formats = {GL_RGBA8};
+        p.filter = GL_LINEAR;
+        fb_[i] = std::make_unique<PBuffer>("P-buffer " + std::to_string(i), p);
+    }
+
+    // Shader table: every program this configuration uses is compiled now (STYLE lesson 5).
+    std::vector<std::string> depth_defs;
+    if (opts.depth == DepthPath::packed) depth_defs.push_back("PACKED_DEPTH");
+    if (opts.depth == DepthPath::packed && opts.packed_literal) depth_defs.push_back("PACKED_LITERAL");
+    for (int nm = 0; nm < 2; ++nm) {
+        auto defs = depth_defs;
+        if (nm) defs.push_back("NORMAL_MAP");
+        material_prog_[nm] = Program(shader_dir, "material.vert", "material.frag", defs);
+    }
+    auto ldefs = depth_defs;
+    if (opts.listing2_literal) ldefs.push_back("LISTING2_LITERAL");
+    light_prog_ = Program(shader_dir, "light.vert", "light.frag", ldefs);
+    check_gl("creating the deferred shader");
+}
+
+DeferredShader::~DeferredShader() = default;
+
+void DeferredShader::set_scene(const Scene& scene) { gpu_ = std::make_unique<GpuScene>(scene); }
+
+// --- Listing 6 -------------------------------------------------------------------------
+void DeferredShader::mrt_bind_render() { mrt_->bind_render(); }
+void DeferredShader::mrt_unbind_render() { mrt_->unbind_render(); }
+void DeferredShader::mrt_bind_texture(int target, int unit) { mrt_->bind_texture(target, unit); }
+void DeferredShader::mrt_unbind_texture(int target, int unit) { mrt_->unbind_texture(target, unit); }
+void DeferredShader::fb_bind_render(int b) { fb_[b]->bind_render(); }
+void DeferredShader::fb_unbind_render(int b) { fb_[b]->unbind_render(); }
+void DeferredShader::fb_bind_texture(int b, int unit) { fb_[b]->bind_texture(0, unit); }
+void DeferredShader::fb_unbind_texture(int b, int unit) { fb_[b]->unbind_texture(0, unit); }
+
+void DeferredShader::set_ortho(int w, int h) {
+    // Image-space stages use an orthographic camera in pixels (§3.1, Listing 14 lines 5-9).
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, w, 0, h, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+}
+
+void DeferredShader::draw_rect(float x0, float y0, float x1, float y1, bool rays) {
+    const float xs[4] = {x0, x1, x1, x0}, ys[4] = {y0, y0, y1, y1};
+    glBegin(GL_QUADS);
+    for (int i = 0; i < 4; ++i) {
+        glMultiTexCoord2f(GL_TEXTURE0, xs[i] / float(w_), ys[i] / float(h_));
+        if (rays) glMultiTexCoord3f(GL_TEXTURE1, corner_rays_[i].x, corner_rays_[i].y, corner_rays_[i].z);
+        glVertex2f(xs[i], ys[i]);
+    }
+    glEnd();
+}
+
+FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
+    if (!gpu_) throw Error("DeferredShader::render before set_scene");
+    FrameStats st;
+    double t0 = now_ms();
+    geometry_stage(scene);
+    glFinish();
+    double t1 = now_ms();
+    st.ms.geometry = t1 - t0;
+    draw_lights(scene, opts_.scissor, st);  // fills ms.ambient and ms.lights
+    double t2 = now_ms();
+    final_stage(out_w, out_h);
+    glFinish();
+    double t3 = now_ms();
+    st.ms.final = t3 - t2;
+    st.ms.frame = t3 - t0;
+    check_gl("frame");
+    return st;
+}
+
+// --- read-back ---------------------------------------------------------------------------
+static Image read_texture(GLuint tex, int w, int h, bool depth) {
+    Image img;
+    img.width = w;
+    img.height = h;
+    img.rgba.assign(size_t(w) * h * 4, 1.0f);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    if (depth) {
+        std::vector<float> d(size_t(w) * h);
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, d.data());
+        for (size_t i = 0; i < d.size(); ++i) img.rgba[i * 4] = img.rgba[i * 4 + 1] = img.rgba[i * 4 + 2] = d[i];
+    } else {
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, img.rgba.data());
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    check_gl("reading a buffer back");
+    return img;
+}
+
+Image DeferredShader::read_gbuffer(int target) {
+    return read_texture(mrt_->texture(target), w_, h_, target == PBuffer::DEPTH);
+}
+
+Image DeferredShader::read_pbuffer(int fb) { return read_texture(fb_[fb]->texture(0), w_, h_, false); }
+
+}  // namespace dsr

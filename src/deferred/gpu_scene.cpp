@@ -1,0 +1,112 @@
+#include "deferred/gpu_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "gl/check.h"
+
+namespace dsr {
+
+float encode_shininess(float shininess) {
+    return std::clamp(std::log2(std::max(shininess, 1.0f)) / 11.0f, 0.0f, 1.0f);
+}
+
+GpuScene::GpuScene(const Scene& scene) {
+    // Group meshes by material so each material is one contiguous index range.
+    std::vector<int> order(scene.meshes.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return scene.meshes[a].material < scene.meshes[b].material; });
+    std::vector<Vertex> verts;
+    std::vector<uint32_t> idx;
+    for (int m : order) {
+        const Mesh& mesh = scene.meshes[m];
+        uint32_t base = uint32_t(verts.size());
+        size_t first = idx.size();
+        verts.insert(verts.end(), mesh.vertices.begin(), mesh.vertices.end());
+        for (uint32_t i : mesh.indices) idx.push_back(base + i);
+        if (!ranges_.empty() && ranges_.back().material == mesh.material)
+            ranges_.back().count += GLsizei(mesh.indices.size());
+        else
+            ranges_.push_back({GLsizei(mesh.indices.size()), first, mesh.material});
+    }
+    indices_ = idx.size();
+    glGenBuffers(1, &vbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    glBufferData(GL_ARRAY_BUFFER, verts.size() * sizeof(Vertex), verts.data(), GL_STATIC_DRAW);
+    glGenBuffers(1, &ibo_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo_);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, idx.size() * sizeof(uint32_t), idx.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+
+    // Material maps: RGBA8 with mipmaps, repeating (tile > 1 wraps, Listing 13).
+    for (const Image& img : scene.textures)
+        textures_.emplace_back(img.width, img.height, GL_RGBA8, GL_RGBA, GL_FLOAT, img.rgba.data(), GL_LINEAR,
+                               GL_REPEAT, true);
+    // A missing diffuse or specular map is a white texel: map x colour = colour exactly.
+    const float one[4] = {1, 1, 1, 1};
+    white_ = Texture(1, 1, GL_RGBA8, GL_RGBA, GL_FLOAT, one, GL_NEAREST, GL_REPEAT);
+    for (const Material& m : scene.materials) {
+        GpuMaterial g;
+        g.diffuse = m.diffuse;
+        g.specular = m.specular;
+        g.shininess_code = encode_shininess(m.shininess);
+        g.tile = m.tile;
+        g.diffuse_tex = m.diffuse_map >= 0 ? textures_[m.diffuse_map].id() : white_.id();
+        g.specular_tex = m.specular_map >= 0 ? textures_[m.specular_map].id() : white_.id();
+        g.normal_map = m.normal_map >= 0;
+        g.normal_tex = g.normal_map ? textures_[m.normal_map].id() : white_.id();
+        materials_.push_back(g);
+    }
+    check_gl("uploading the scene");
+}
+
+GpuScene::~GpuScene() {
+    glDeleteBuffers(1, &vbo_);
+    glDeleteBuffers(1, &ibo_);
+}
+
+void GpuScene::bind_positions() const {
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo_);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glVertexPointer(3, GL_FLOAT, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, pos)));
+}
+
+void GpuScene::bind_all() const {
+    bind_positions();
+    glEnableClientState(GL_NORMAL_ARRAY);
+    glNormalPointer(GL_FLOAT, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
+    const size_t offs[3] = {offsetof(Vertex, uv), offsetof(Vertex, tangent), offsetof(Vertex, binormal)};
+    const int sizes[3] = {2, 3, 3};
+    for (int i = 0; i < 3; ++i) {
+        glClientActiveTexture(GL_TEXTURE0 + i);
+        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        glTexCoordPointer(sizes[i], GL_FLOAT, sizeof(Vertex), reinterpret_cast<void*>(offs[i]));
+    }
+    glClientActiveTexture(GL_TEXTURE0);
+}
+
+void GpuScene::unbind() const {
+    for (int i = 0; i < 3; ++i) {
+        glClientActiveTexture(GL_TEXTURE0 + i);
+        glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    }
+    glClientActiveTexture(GL_TEXTURE0);
+    glDisableClientState(GL_NORMAL_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
+void GpuScene::draw(const DrawRange& r) const {
+    glDrawElements(GL_TRIANGLES, r.count, GL_UNSIGNED_INT, reinterpret_cast<void*>(r.first * sizeof(uint32_t)));
+}
+
+void GpuScene::draw_all() const {
+    if (indices_) glDrawElements(GL_TRIANGLES, GLsizei(indices_), GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace dsr

@@ -1,0 +1,135 @@
+// Lighting stage (§3.4, Listings 14-20): image space, into P-buffer 0. A fixed-function
+// ambient pass (Eq. 6), then one additive screen-aligned quad per visible light, limited
+// to the light's scissor rectangle.
+#include <chrono>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "deferred/culling.h"
+#include "deferred/deferred_shader.h"
+#include "deferred/reconstruct.h"
+#include "deferred/scissor.h"
+#include "gl/check.h"
+
+namespace dsr {
+
+namespace {
+double now_ms() {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+}  // namespace
+
+// Listing 14.
+void DeferredShader::draw_lights(const Scene& scene, bool scissors, FrameStats& stats) {
+    double t0 = now_ms();
+    fb_bind_render(0);
+    set_ortho(w_, h_);
+    glDepthFunc(GL_LEQUAL);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glDisable(GL_BLEND);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    draw_ambient(scene);
+    check_gl("lighting stage: ambient pass");
+    glFinish();
+    double t1 = now_ms();
+    stats.ms.ambient = t1 - t0;
+
+    const int units[4] = {0, 1, 2, 3};
+    const int targets[4] = {G_NORMAL, G_DIFFUSE, G_SPECULAR, depth_target()};
+    for (int i = 0; i < 4; ++i) mrt_bind_texture(targets[i], units[i]);  // mrt_bind_texture(ALL)
+    draw_lighting(scene, scissors, stats);
+    for (int i = 3; i >= 0; --i) mrt_unbind_texture(targets[i], units[i]);
+    check_gl("lighting stage: light passes");
+    fb_unbind_render(0);
+    glFinish();
+    stats.ms.lights = now_ms() - t1;
+}
+
+// Listing 15, with the background kept: P-buffer 0 starts as the background colour and
+// the alpha test keeps it where the G-buffer holds no surface (diffuse alpha 0).
+void DeferredShader::draw_ambient(const Scene& scene) {
+    glClearColor(scene.background.r, scene.background.g, scene.background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glUseProgram(0);
+    glColor4f(scene.ambient.r, scene.ambient.g, scene.ambient.b, 1.0f);
+    // Listing 7 disabled GL_TEXTURE_2D; the modulate needs it back (docs/errata.md).
+    glActiveTexture(GL_TEXTURE0);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    glAlphaFunc(GL_GREATER, 0.5f);
+    glEnable(GL_ALPHA_TEST);
+    mrt_bind_texture(G_DIFFUSE, 0);
+    draw_rect(0, 0, float(w_), float(h_), false);
+    mrt_unbind_texture(G_DIFFUSE, 0);
+    glDisable(GL_ALPHA_TEST);
+    glDisable(GL_TEXTURE_2D);
+    glColor4f(1, 1, 1, 1);
+}
+
+// Listing 17: cull against the view frustum, scissor, one quad per light.
+void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats& stats) {
+    const auto frustum = frustum_planes(proj_ * view_);
+    const auto rays = corner_rays(proj_[0][0], proj_[1][1]);
+    for (int i = 0; i < 4; ++i) corner_rays_[i] = rays[i];
+    const float near_plane = scene.camera.near_plane;
+
+    light_prog_.use();  // bind_light()
+    light_prog_.set("normal_map", 0);
+    light_prog_.set("diffuse_map", 1);
+    light_prog_.set("specular_map", 2);
+    light_prog_.set("depth_map", 3);
+    light_prog_.set("planes", planes_);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glEnable(GL_BLEND);
+
+    const bool count = caps_.occlusion_query;
+    std::vector<GLuint> queries;
+    stats.lights_total = int(scene.lights.size());
+    for (const Light& light : scene.lights) {
+        if (sphere_outside(frustum, light.pos, light.radius)) {
+            ++stats.lights_culled;
+            continue;
+        }
+        glm::vec3 eye = glm::vec3(view_ * glm::vec4(light.pos, 1.0f));
+        ScissorRect r = light_scissor(eye, light.radius, proj_[0][0], proj_[1][1], near_plane, w_, h_);
+        long long n = r.area();
+        if (n <= 0) {  // the sphere reaches no visible pixel: Listing 17 line 31
+            ++stats.lights_culled;
+            continue;
+        }
+        if (!scissors || n == (long long)w_ * h_) {
+            n = (long long)w_ * h_;
+            glDisable(GL_SCISSOR_TEST);
+        } else {
+            glScissor(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
+            glEnable(GL_SCISSOR_TEST);
+        }
+        stats.scissor_pixels += n;
+        ++stats.lights_drawn;
+        light_prog_.set("lightpos", glm::vec4(eye, light.radius));  // set_light_params
+        light_prog_.set("lightcolor", light.color);
+        if (count) {
+            queries.push_back(0);
+            glGenQueries(1, &queries.back());
+            glBeginQuery(GL_SAMPLES_PASSED, queries.back());
+        }
+        draw_rect(0, 0, float(w_), float(h_), true);
+        if (count) glEndQuery(GL_SAMPLES_PASSED);
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glUseProgram(0);  // unbind_light()
+    // Results are read after the loop so no light waits on the one before it.
+    for (GLuint q : queries) {
+        GLuint samples = 0;
+        glGetQueryObjectuiv(q, GL_QUERY_RESULT, &samples);
+        stats.light_fragments += samples;
+        glDeleteQueries(1, &q);
+    }
+}
+
+}  // namespace dsr

@@ -1,0 +1,92 @@
+#include "gl/caps.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+
+#include "dsr_error.h"
+#include "gl/gl.h"
+
+namespace dsr {
+
+bool has_extension(const char* name) {
+    // glGetString(GL_EXTENSIONS) is valid in compatibility contexts (the only kind dsr asks for).
+    const char* ext = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
+    if (!ext) return false;
+    size_t n = std::strlen(name);
+    for (const char* p = ext; (p = std::strstr(p, name)); p += n)
+        if ((p == ext || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
+    return false;
+}
+
+static std::string gl_string(GLenum e) {
+    const char* s = reinterpret_cast<const char*>(glGetString(e));
+    return s ? s : "";
+}
+
+Caps probe_caps(const std::vector<std::string>& force_off) {
+    static const char* known[] = {"no-mrt", "no-depth-texture", "no-fbo", "no-npot", "no-float"};
+    for (const auto& f : force_off)
+        if (std::none_of(std::begin(known), std::end(known), [&](const char* k) { return f == k; }))
+            throw Error("unknown capability '" + f +
+                        "' (expected no-mrt, no-depth-texture, no-fbo, no-npot or no-float)");
+    auto off = [&](const char* k) { return std::find(force_off.begin(), force_off.end(), k) != force_off.end(); };
+
+    Caps c;
+    c.vendor = gl_string(GL_VENDOR);
+    c.renderer = gl_string(GL_RENDERER);
+    c.version = gl_string(GL_VERSION);
+    c.glsl_version = gl_string(GL_SHADING_LANGUAGE_VERSION);
+    std::sscanf(c.version.c_str(), "%d.%d", &c.gl_major, &c.gl_minor);
+    std::sscanf(c.glsl_version.c_str(), "%d.%d", &c.glsl_major, &c.glsl_minor);
+    auto at_least = [](int ma, int mi, int wa, int wi) { return ma > wa || (ma == wa && mi >= wi); };
+    bool gl20 = at_least(c.gl_major, c.gl_minor, 2, 0);
+    c.glsl120 = at_least(c.glsl_major, c.glsl_minor, 1, 20);
+    c.draw_buffers = (gl20 || has_extension("GL_ARB_draw_buffers")) && !off("no-mrt");
+    GLint mdb = 1;
+    if (c.draw_buffers) glGetIntegerv(GL_MAX_DRAW_BUFFERS_ARB, &mdb);
+    c.max_draw_buffers = c.draw_buffers ? mdb : 1;
+    if (c.max_draw_buffers < 2) c.draw_buffers = false;
+    c.depth_texture = (at_least(c.gl_major, c.gl_minor, 1, 4) || has_extension("GL_ARB_depth_texture")) &&
+                      !off("no-depth-texture");
+    c.fbo = has_extension("GL_EXT_framebuffer_object") && !off("no-fbo");
+    c.npot = (gl20 || has_extension("GL_ARB_texture_non_power_of_two")) && !off("no-npot");
+    c.texture_float = (at_least(c.gl_major, c.gl_minor, 3, 0) || has_extension("GL_ARB_texture_float")) &&
+                      !off("no-float");
+    c.half_float = (at_least(c.gl_major, c.gl_minor, 3, 0) || has_extension("GL_ARB_half_float_pixel")) &&
+                   !off("no-float");
+    c.occlusion_query = at_least(c.gl_major, c.gl_minor, 1, 5) || has_extension("GL_ARB_occlusion_query");
+    c.timer_query = has_extension("GL_ARB_timer_query") || has_extension("GL_EXT_timer_query");
+    c.forced_off = force_off;
+    while (glGetError() != GL_NO_ERROR) {}
+    return c;
+}
+
+std::string describe(const Caps& c) {
+    std::ostringstream o;
+    auto yn = [](bool b) { return b ? "yes" : "no "; };
+    o << "GL_VENDOR      " << c.vendor << "\n"
+      << "GL_RENDERER    " << c.renderer << "\n"
+      << "GL_VERSION     " << c.version << "\n"
+      << "GLSL           " << c.glsl_version << "\n"
+      << "capabilities (source extension):\n"
+      << "  " << yn(c.glsl120) << " GLSL 1.20                (OpenGL 2.1)\n"
+      << "  " << yn(c.draw_buffers) << " multiple render targets  (ARB_draw_buffers), max "
+      << c.max_draw_buffers << "\n"
+      << "  " << yn(c.depth_texture) << " depth textures           (ARB_depth_texture)\n"
+      << "  " << yn(c.fbo) << " render to texture        (EXT_framebuffer_object)\n"
+      << "  " << yn(c.npot) << " non-power-of-two         (ARB_texture_non_power_of_two)\n"
+      << "  " << yn(c.texture_float) << " float targets            (ARB_texture_float)\n"
+      << "  " << yn(c.half_float) << " half-float targets       (ARB_half_float_pixel)\n"
+      << "  " << yn(c.occlusion_query) << " occlusion queries        (ARB_occlusion_query)\n"
+      << "  " << yn(c.timer_query) << " timer queries            (ARB_timer_query)\n";
+    if (!c.forced_off.empty()) {
+        o << "forced off:";
+        for (auto& f : c.forced_off) o << " " << f;
+        o << "\n";
+    }
+    return o.str();
+}
+
+}  // namespace dsr

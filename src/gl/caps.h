@@ -1,0 +1,34 @@
+// Capabilities, probed once at start-up into booleans (STYLE lesson 3); every path
+// decision branches on this struct, never on version strings.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace dsr {
+
+struct Caps {
+    std::string vendor, renderer, version, glsl_version;
+    int gl_major = 0, gl_minor = 0, glsl_major = 0, glsl_minor = 0;
+    bool glsl120 = false;            // GLSL 1.20 (OpenGL 2.1): every shader is #version 120
+    bool draw_buffers = false;       // ARB_draw_buffers (core in 2.0): MRT, §3.2
+    int max_draw_buffers = 1;        // GL_MAX_DRAW_BUFFERS
+    bool depth_texture = false;      // ARB_depth_texture: the depth-texture path, §3.3.2
+    bool fbo = false;                // EXT_framebuffer_object: render to texture
+    bool npot = false;               // ARB_texture_non_power_of_two
+    bool texture_float = false;      // ARB_texture_float
+    bool half_float = false;         // ARB_half_float_pixel
+    bool occlusion_query = false;    // ARB_occlusion_query (core in 1.5): light_fragments
+    bool timer_query = false;        // ARB_timer_query / EXT_timer_query
+    std::vector<std::string> forced_off;  // names hidden by --caps / DSR_CAPS
+};
+
+// Reads the current context. `force_off` lists capabilities to report missing
+// (no-mrt, no-depth-texture, no-fbo, no-npot, no-float); unknown names throw dsr::Error.
+Caps probe_caps(const std::vector<std::string>& force_off = {});
+
+// One line per capability with the extension it comes from, for `dsr info`.
+std::string describe(const Caps& caps);
+
+bool has_extension(const char* name);
+
+}  // namespace dsr
