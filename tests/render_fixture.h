@@ -1,0 +1,62 @@
+// Shared by the image tests: render a scene under OSMesa and compare with tolerances,
+// writing the actual image and an amplified difference next to the build on failure.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+#include <sys/stat.h>
+
+#include "analysis/image_metrics.h"
+#include "deferred/deferred_shader.h"
+#include "gl/caps.h"
+#include "gl/readback.h"
+#include "platform/context.h"
+#include "platform/resources.h"
+#include "scene/scene.h"
+
+namespace dsr::test {
+
+struct RenderResult {
+    Image image;
+    FrameStats stats;
+    std::string renderer;
+};
+
+inline Scene default_scene() { return load_scene(resource_dir("data") + "/default.scene"); }
+
+inline RenderResult render_scene(const Scene& scene, int w, int h, const ShaderOptions& opts) {
+    auto ctx = create_osmesa_context(w, h);
+    Caps caps = probe_caps();
+    DeferredShader ds(caps, w, h, opts, resource_dir("glsl120"));
+    ds.set_scene(scene);
+    RenderResult r;
+    r.stats = ds.render(scene, w, h);
+    r.image = read_pixels(w, h);
+    r.renderer = caps.renderer;
+    return r;
+}
+
+inline std::string test_output_dir() {
+    std::string d = resource_dir("build") + "/test-output";
+    mkdir(d.c_str(), 0755);
+    return d;
+}
+
+// Logs max/mean/PSNR; on failure of the caller's assertions the images are already on disk.
+inline ImageDiff compare_logged(const std::string& name, const Image& actual, const Image& expected,
+                                double fail_threshold) {
+    ImageDiff d = compare_images(actual, expected, fail_threshold);
+    std::printf("[ image    ] %s: max %.2f LSB, mean %.4f LSB, PSNR %.1f dB, %lld/%lld pixels over %.1f LSB\n",
+                name.c_str(), d.max_lsb(), d.mean_lsb(), d.psnr_db, d.failing, d.pixels, fail_threshold * 255);
+    return d;
+}
+
+inline void write_failure_images(const std::string& name, const Image& actual, const Image& expected) {
+    std::string dir = test_output_dir();
+    write_image(dir + "/" + name + ".actual.png", actual);
+    write_image(dir + "/" + name + ".diff.png", difference_image(actual, expected, 16.0f));
+    std::printf("[ image    ] wrote %s/%s.actual.png and .diff.png (difference x16)\n", dir.c_str(), name.c_str());
+}
+
+}  // namespace dsr::test

@@ -1,0 +1,139 @@
+// The `dsr` command line as a user meets it: exit codes, one clear error line, nothing
+// half-written, and the --stats JSON keys later tools read.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <climits>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+struct Run {
+    int status;
+    std::string output;
+};
+
+// build/dsr sits beside build/dsr_tests.
+std::string dsr_binary() {
+    char exe[PATH_MAX];
+    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    exe[n > 0 ? n : 0] = 0;
+    std::string dir(exe);
+    return dir.substr(0, dir.find_last_of('/')) + "/dsr";
+}
+
+Run run(const std::string& args) {
+    std::string cmd = dsr_binary() + " " + args + " 2>&1";
+    Run r{-1, ""};
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return r;
+    std::array<char, 4096> buf;
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
+    int st = pclose(p);
+    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    return r;
+}
+
+bool exists(const std::string& p) {
+    struct stat st;
+    return stat(p.c_str(), &st) == 0;
+}
+
+std::string temp_dir() {
+    char tmpl[] = "/tmp/dsr-cli-XXXXXX";
+    return mkdtemp(tmpl);
+}
+
+void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+}  // namespace
+
+TEST(Cli, RenderWritesImageAndStats) {
+    std::string d = temp_dir();
+    Run r = run("render --size 96x64 --frames 3 -o " + d + "/a.png --stats " + d + "/s.json");
+    ASSERT_EQ(r.status, 0) << r.output;
+    ASSERT_TRUE(exists(d + "/a.png"));
+    std::ifstream in(d + "/s.json");
+    nlohmann::json j = nlohmann::json::parse(in);
+    for (const char* k : {"depth_path", "scissor", "lights_total", "lights_culled", "lights_drawn",
+                          "light_fragments", "scissor_pixels", "ms"})
+        EXPECT_TRUE(j.contains(k)) << k;
+    for (const char* k : {"geometry", "ambient", "lights", "final", "frame"}) EXPECT_TRUE(j["ms"].contains(k)) << k;
+    EXPECT_EQ(j["depth_path"], "texture");
+    EXPECT_EQ(j["scissor"], true);
+    EXPECT_GE(j["lights_total"].get<int>(), 3);
+    EXPECT_EQ(j["lights_total"].get<int>(), j["lights_culled"].get<int>() + j["lights_drawn"].get<int>());
+    EXPECT_GT(j["light_fragments"].get<long long>(), 0);
+    EXPECT_GT(j["ms"]["frame"].get<double>(), 0.0);
+}
+
+TEST(Cli, ExrOutputAndPackedPath) {
+    std::string d = temp_dir();
+    Run r = run("render --size 32x32 --depth packed -o " + d + "/a.exr --stats " + d + "/s.json");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(exists(d + "/a.exr"));
+    std::ifstream in(d + "/s.json");
+    EXPECT_EQ(nlohmann::json::parse(in)["depth_path"], "packed");
+}
+
+TEST(Cli, BadFlagsAreOneClearError) {
+    struct Case {
+        const char* args;
+        const char* expect;
+    } cases[] = {
+        {"render --size 12", "--size: expected WIDTHxHEIGHT"},
+        {"render --size 0x5", "--size: expected WIDTHxHEIGHT"},
+        {"render --depth fast", "--depth: expected auto|texture|packed, got 'fast'"},
+        {"render --scissor maybe", "--scissor: expected on|off"},
+        {"render --frames -2", "--frames: expected an integer"},
+        {"render --bogus", "unknown option '--bogus'"},
+        {"render -o out.bmpx", "-o: expected a file ending"},
+        {"render --caps no-such", "unknown capability 'no-such'"},
+        {"frobnicate", "unknown command"},
+    };
+    for (const Case& c : cases) {
+        Run r = run(c.args);
+        EXPECT_NE(r.status, 0) << c.args;
+        EXPECT_NE(r.output.find(c.expect), std::string::npos) << c.args << " said: " << r.output;
+    }
+}
+
+// A bad scene file: one error naming file:line, non-zero exit, no output file at all.
+TEST(Cli, BadSceneWritesNothing) {
+    std::string d = temp_dir();
+    write(d + "/bad.scene", "camera pos 0 0 5 target 0 0 0 up 0 1 0 fov 60 near 0.1 far 100\nlight point pos 0 0 0\n");
+    Run r = run(d + "/bad.scene -o " + d + "/out.png --stats " + d + "/s.json");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find(d + "/bad.scene:2:"), std::string::npos) << r.output;
+    EXPECT_FALSE(exists(d + "/out.png"));
+    EXPECT_FALSE(exists(d + "/s.json"));
+}
+
+// Hiding ARB_depth_texture makes `auto` choose the packed path (the probe, not a flag, decides).
+TEST(Cli, ForcedCapabilityChangesAutoPath) {
+    std::string d = temp_dir();
+    Run r = run("render --size 32x32 --caps no-depth-texture -o " + d + "/a.png --stats " + d + "/s.json");
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::ifstream in(d + "/s.json");
+    EXPECT_EQ(nlohmann::json::parse(in)["depth_path"], "packed");
+    Run t = run("render --size 32x32 --caps no-depth-texture --depth texture -o " + d + "/b.png");
+    EXPECT_NE(t.status, 0);
+    EXPECT_NE(t.output.find("ARB_depth_texture"), std::string::npos) << t.output;
+    EXPECT_FALSE(exists(d + "/b.png"));
+}
+
+TEST(Cli, InfoNamesCapabilitiesAndPaths) {
+    Run r = run("info");
+    ASSERT_EQ(r.status, 0) << r.output;
+    for (const char* k : {"GL_RENDERER", "ARB_draw_buffers", "ARB_depth_texture", "EXT_framebuffer_object",
+                          "paths chosen", "depth"})
+        EXPECT_NE(r.output.find(k), std::string::npos) << k;
+}
