@@ -26,7 +26,12 @@ float unpack_depth_literal(vec3 color)
 // byte/255 so the RGB8 target keeps it exactly. Float arithmetic is exact below 2^24.
 vec3 pack_depth(float d)
 {
-    float k = floor(clamp(d, 0.0, 1.0) * 16777215.0 + 0.5);
+    d = clamp(d, 0.0, 1.0);
+    // Not floor(d*16777215.0 + 0.5): above 2^23 the float ulp is 1, so the product is already
+    // rounded and "+ 0.5" ties to even, off by one for a quarter of all codes
+    // (tests/test_depth_codec.cpp). d*2^24 is exact, and d*16777215 = floor(m) + (fract(m) - d).
+    float m = d * 16777216.0;
+    float k = floor(m) + floor(fract(m) - d + 0.5);
     float b0 = floor(k / 65536.0);
     k -= b0 * 65536.0;
     float b1 = floor(k / 256.0);

@@ -15,7 +15,7 @@
 
 namespace {
 
-struct Run {
+struct RunResult {
     int status;
     std::string output;
 };
@@ -29,9 +29,9 @@ std::string dsr_binary() {
     return dir.substr(0, dir.find_last_of('/')) + "/dsr";
 }
 
-Run run(const std::string& args) {
+RunResult run(const std::string& args) {
     std::string cmd = dsr_binary() + " " + args + " 2>&1";
-    Run r{-1, ""};
+    RunResult r{-1, ""};
     FILE* p = popen(cmd.c_str(), "r");
     if (!p) return r;
     std::array<char, 4096> buf;
@@ -58,7 +58,7 @@ void write(const std::string& path, const std::string& text) { std::ofstream(pat
 
 TEST(Cli, RenderWritesImageAndStats) {
     std::string d = temp_dir();
-    Run r = run("render --size 96x64 --frames 3 -o " + d + "/a.png --stats " + d + "/s.json");
+    RunResult r = run("render --size 96x64 --frames 3 -o " + d + "/a.png --stats " + d + "/s.json");
     ASSERT_EQ(r.status, 0) << r.output;
     ASSERT_TRUE(exists(d + "/a.png"));
     std::ifstream in(d + "/s.json");
@@ -77,7 +77,7 @@ TEST(Cli, RenderWritesImageAndStats) {
 
 TEST(Cli, ExrOutputAndPackedPath) {
     std::string d = temp_dir();
-    Run r = run("render --size 32x32 --depth packed -o " + d + "/a.exr --stats " + d + "/s.json");
+    RunResult r = run("render --size 32x32 --depth packed -o " + d + "/a.exr --stats " + d + "/s.json");
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_TRUE(exists(d + "/a.exr"));
     std::ifstream in(d + "/s.json");
@@ -100,7 +100,7 @@ TEST(Cli, BadFlagsAreOneClearError) {
         {"frobnicate", "unknown command"},
     };
     for (const Case& c : cases) {
-        Run r = run(c.args);
+        RunResult r = run(c.args);
         EXPECT_NE(r.status, 0) << c.args;
         EXPECT_NE(r.output.find(c.expect), std::string::npos) << c.args << " said: " << r.output;
     }
@@ -110,7 +110,7 @@ TEST(Cli, BadFlagsAreOneClearError) {
 TEST(Cli, BadSceneWritesNothing) {
     std::string d = temp_dir();
     write(d + "/bad.scene", "camera pos 0 0 5 target 0 0 0 up 0 1 0 fov 60 near 0.1 far 100\nlight point pos 0 0 0\n");
-    Run r = run(d + "/bad.scene -o " + d + "/out.png --stats " + d + "/s.json");
+    RunResult r = run("render " + d + "/bad.scene -o " + d + "/out.png --stats " + d + "/s.json");
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.output.find(d + "/bad.scene:2:"), std::string::npos) << r.output;
     EXPECT_FALSE(exists(d + "/out.png"));
@@ -120,18 +120,18 @@ TEST(Cli, BadSceneWritesNothing) {
 // Hiding ARB_depth_texture makes `auto` choose the packed path (the probe, not a flag, decides).
 TEST(Cli, ForcedCapabilityChangesAutoPath) {
     std::string d = temp_dir();
-    Run r = run("render --size 32x32 --caps no-depth-texture -o " + d + "/a.png --stats " + d + "/s.json");
+    RunResult r = run("render --size 32x32 --caps no-depth-texture -o " + d + "/a.png --stats " + d + "/s.json");
     ASSERT_EQ(r.status, 0) << r.output;
     std::ifstream in(d + "/s.json");
     EXPECT_EQ(nlohmann::json::parse(in)["depth_path"], "packed");
-    Run t = run("render --size 32x32 --caps no-depth-texture --depth texture -o " + d + "/b.png");
+    RunResult t = run("render --size 32x32 --caps no-depth-texture --depth texture -o " + d + "/b.png");
     EXPECT_NE(t.status, 0);
     EXPECT_NE(t.output.find("ARB_depth_texture"), std::string::npos) << t.output;
     EXPECT_FALSE(exists(d + "/b.png"));
 }
 
 TEST(Cli, InfoNamesCapabilitiesAndPaths) {
-    Run r = run("info");
+    RunResult r = run("info");
     ASSERT_EQ(r.status, 0) << r.output;
     for (const char* k : {"GL_RENDERER", "ARB_draw_buffers", "ARB_depth_texture", "EXT_framebuffer_object",
                           "paths chosen", "depth"})

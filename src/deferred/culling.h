@@ -1,0 +1,27 @@
+// Light frustum culling (§3.4.3, Listing 17 lines 11-20) as pure math.
+#pragma once
+#include <array>
+
+#include <glm/glm.hpp>
+
+namespace dsr {
+
+// Inward-facing, normalised: distance(p) = dot(n, p) + d, >= 0 inside.
+struct Plane {
+    glm::vec3 n;
+    float d;
+};
+
+// Gribb-Hartmann extraction from the GL clip matrix (projection * view, or any clip-from-space
+// matrix: the planes come out in that space), normalised so distance() is a true distance.
+// Order: left, right, bottom, top, near, far. Throws dsr::Error for a matrix with a degenerate
+// (zero-length or non-finite) plane.
+std::array<Plane, 6> frustum_planes(const glm::mat4& view_proj);
+
+// True when the sphere lies wholly outside one of the planes (distance < -radius), the test of
+// Listing 17 with a 3-component dot (TRAPS.md: a 4-component one adds pos.w*plane.w, and pos.w
+// holds the radius). Conservative: a sphere near a frustum corner, outside the frustum but not
+// wholly outside any single plane, is kept.
+bool sphere_outside(const std::array<Plane, 6>& planes, glm::vec3 center, float radius);
+
+}  // namespace dsr

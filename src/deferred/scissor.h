@@ -1,0 +1,36 @@
+// The light scissor rectangle of §3.4.2 / Listing 16 (Lengyel's tangent planes) as pure math,
+// so it can be tested against brute force without GL.
+#pragma once
+#include <glm/glm.hpp>
+
+namespace dsr {
+
+// Pixels [x0,x1) x [y0,y1) in GL window coordinates (origin bottom-left); glScissor takes
+// (x0, y0, x1 - x0, y1 - y0).
+struct ScissorRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool empty() const { return x1 <= x0 || y1 <= y0; }
+    long long area() const { return empty() ? 0 : (long long)(x1 - x0) * (y1 - y0); }
+};
+
+// The smallest pixel rectangle (rounded outward) holding the projection of every point of the
+// light sphere that can be a visible surface point, i.e. every sphere point with z <= -near.
+// light_eye: light centre in eye space (camera looks down -Z); radius >= 0.
+// p00 = P[0][0], p11 = P[1][1] of the symmetric perspective projection (ndc_x = p00*x/(-z)).
+// Results: empty when no sphere point lies at z <= -near; the whole viewport when the eye is
+// inside the sphere (and the sphere reaches past the near plane); otherwise the exact bounding
+// box of the projected region, clamped to [0,width] x [0,height].
+// Throws dsr::Error on non-finite input, radius < 0, p00/p11/near_plane <= 0 or a negative size.
+ScissorRect light_scissor(glm::vec3 light_eye, float radius, float p00, float p11,
+                          float near_plane, int width, int height);
+
+// Listing 16 as printed, kept only to measure its defects (docs/errata.md): float arithmetic,
+// fixed e1 = 1.2 and e2 = 1.2*aspect (a fixed field of view), no near plane, no guards on the
+// divisions by l.z and nx/ny, (int) truncation toward zero. The one change: a non-finite value
+// about to be cast to int (undefined behaviour in C++) gives the full viewport instead, and a
+// finite one is clamped to +-2^30 first. The rectangle is returned as the listing computes it
+// (it may have x1 < x0 or y1 < y0; empty() is then true); a zero or negative area n returns {}.
+ScissorRect light_scissor_listing16(glm::vec3 light_eye, float radius, float aspect, int width,
+                                    int height);
+
+}  // namespace dsr
