@@ -1,0 +1,309 @@
+// The scene-file parser (format: README.md "Scene files"). Every mistake is one dsr::Error
+// "FILE:LINE: expected <what>, got '<token>'" so a user can fix the file without guessing.
+// Directives that take keywords accept them in any order, each once.
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "dsr_error.h"
+#include "scene/scene.h"
+
+namespace dsr {
+
+namespace {
+
+// One line's tokens and a cursor, with the error helpers that name file and line.
+class Line {
+public:
+    Line(const std::string& file, int number, std::vector<std::string> tokens)
+        : file_(file), number_(number), tokens_(std::move(tokens)) {}
+
+    std::string where() const { return file_ + ":" + std::to_string(number_); }
+    int number() const { return number_; }
+    bool done() const { return pos_ >= tokens_.size(); }
+
+    [[noreturn]] void fail(const std::string& problem) const { throw Error(where() + ": " + problem); }
+    // "expected X, got 'tok'", or "got end of line" when the tokens ran out.
+    [[noreturn]] void expected(const std::string& what, size_t at) const {
+        if (at < tokens_.size()) fail("expected " + what + ", got '" + tokens_[at] + "'");
+        fail("expected " + what + ", got end of line");
+    }
+    [[noreturn]] void expected_here(const std::string& what) const { expected(what, pos_); }
+    [[noreturn]] void expected_last(const std::string& what) const { expected(what, pos_ - 1); }
+
+    const std::string& word(const std::string& what) {
+        if (done()) expected_here(what);
+        return tokens_[pos_++];
+    }
+
+    // Strict full-token conversion: "1.5x", "nan", "inf" and "1e999" are all refused.
+    // `subject` names the value, e.g. "fov" gives "expected a number for fov".
+    float number(const std::string& subject) {
+        if (done()) expected_here("a number for " + subject);
+        const std::string& tok = tokens_[pos_];
+        char* end = nullptr;
+        const double d = std::strtod(tok.c_str(), &end);
+        if (end == tok.c_str() || *end != '\0') expected_here("a number for " + subject);
+        const float f = float(d);
+        if (!std::isfinite(d) || !std::isfinite(f)) expected_here("a finite number for " + subject);
+        ++pos_;
+        return f;
+    }
+
+    glm::vec3 vec3(const std::string& subject) {
+        glm::vec3 v(0);
+        for (int i = 0; i < 3; ++i) v[i] = number(subject);
+        return v;
+    }
+
+    // A colour: three finite numbers, each >= 0.
+    glm::vec3 colour(const std::string& subject) {
+        glm::vec3 c(0);
+        for (int i = 0; i < 3; ++i) {
+            c[i] = number(subject);
+            if (c[i] < 0) expected_last(subject + " component >= 0");
+        }
+        return c;
+    }
+
+    float positive(const std::string& subject) {
+        const float f = number(subject);
+        if (!(f > 0)) expected_last(subject + " > 0");
+        return f;
+    }
+
+    void end() {
+        if (!done()) expected_here("end of line");
+    }
+
+    // Keyword-value directives: reads the next key, which must be one of `keys` and new.
+    std::string key(const std::vector<std::string>& keys, std::set<std::string>& seen) {
+        std::string list;
+        for (const std::string& k : keys) list += (list.empty() ? "" : ", ") + k;
+        const std::string& k = word("one of " + list);
+        bool known = false;
+        for (const std::string& c : keys) known = known || c == k;
+        if (!known) expected_last("one of " + list);
+        if (!seen.insert(k).second) expected_last("each of " + list + " at most once");
+        return k;
+    }
+    // After the keys: every required key must have been given.
+    void require(const std::vector<std::string>& keys, const std::set<std::string>& seen) const {
+        for (const std::string& k : keys)
+            if (!seen.count(k)) expected(k, tokens_.size());
+    }
+
+private:
+    std::string file_;
+    int number_;
+    std::vector<std::string> tokens_;
+    size_t pos_ = 0;
+};
+
+std::vector<std::string> tokenize(std::string text) {
+    const size_t hash = text.find('#');
+    if (hash != std::string::npos) text.erase(hash);
+    std::istringstream in(text);
+    std::vector<std::string> out;
+    for (std::string t; in >> t;) out.push_back(t);
+    return out;
+}
+
+class Parser {
+public:
+    explicit Parser(const std::string& path) : path_(path) {
+        scene_.path = path;
+        dir_ = std::filesystem::path(path).parent_path();
+    }
+
+    Scene run() {
+        std::ifstream in(path_);
+        if (!in) throw Error("cannot open scene file " + path_ + ": " + std::strerror(errno));
+        std::string text;
+        for (int number = 1; std::getline(in, text); ++number) {
+            if (!text.empty() && text.back() == '\r') text.pop_back();  // CRLF files
+            std::vector<std::string> tokens = tokenize(text);
+            if (tokens.empty()) continue;
+            Line line(path_, number, std::move(tokens));
+            directive(line);
+        }
+        if (in.bad()) throw Error("cannot read scene file " + path_ + ": " + std::strerror(errno));
+        if (camera_line_ == 0) throw Error(path_ + ": no camera line");
+        return std::move(scene_);
+    }
+
+private:
+    void directive(Line& line) {
+        const std::string kinds =
+            "a directive (camera, ambient, background, material, plane, box, sphere, light, post)";
+        const std::string d = line.word(kinds);
+        if (d == "camera") camera(line);
+        else if (d == "ambient") { scene_.ambient = line.colour("ambient"); line.end(); }
+        else if (d == "background") { scene_.background = line.colour("background"); line.end(); }
+        else if (d == "material") material(line);
+        else if (d == "plane" || d == "box" || d == "sphere") shape(line, d);
+        else if (d == "light") light(line);
+        else if (d == "post") post(line);
+        else line.expected_last(kinds);
+    }
+
+    void camera(Line& line) {
+        if (camera_line_ != 0)
+            line.expected_last("one camera line (the first is line " + std::to_string(camera_line_) + ")");
+        camera_line_ = line.number();
+        Camera& c = scene_.camera;
+        const std::vector<std::string> keys = {"pos", "target", "up", "fov", "near", "far"};
+        std::set<std::string> seen;
+        while (!line.done()) {
+            const std::string k = line.key(keys, seen);
+            if (k == "pos") c.pos = line.vec3("camera pos");
+            else if (k == "target") c.target = line.vec3("camera target");
+            else if (k == "up") c.up = line.vec3("camera up");
+            else if (k == "fov") {
+                c.fov_deg = line.number("fov");
+                if (!(c.fov_deg > 0 && c.fov_deg < 180)) line.expected_last("fov in (0, 180) degrees");
+            } else if (k == "near") {
+                c.near_plane = line.positive("near");
+                if (seen.count("far") && !(c.near_plane < c.far_plane)) line.expected_last("near < far");
+            } else {
+                c.far_plane = line.number("far");
+                if (seen.count("near") && !(c.far_plane > c.near_plane)) line.expected_last("far > near");
+            }
+        }
+        line.require(keys, seen);
+        const glm::vec3 dir = c.target - c.pos;
+        if (!(glm::length(dir) > 0)) line.fail("camera target equals camera pos");
+        const float cross_len = glm::length(glm::cross(glm::normalize(dir), c.up));
+        if (!(glm::length(c.up) > 0) || !(cross_len > 1e-4f * glm::length(c.up)))
+            line.fail("expected camera up not parallel to target - pos, got '" + fmt(c.up.x) + " " +
+                      fmt(c.up.y) + " " + fmt(c.up.z) + "'");
+    }
+
+    void material(Line& line) {
+        Material m;
+        m.name = line.word("a material name");
+        for (size_t i = 0; i < scene_.materials.size(); ++i)
+            if (scene_.materials[i].name == m.name)
+                line.expected_last("a material name not used before (first defined on line " +
+                                   std::to_string(material_lines_[i]) + ")");
+        const std::vector<std::string> keys = {"diffuse", "specular", "shininess", "diffuse_map",
+                                               "normal_map", "specular_map", "tile"};
+        std::set<std::string> seen;
+        while (!line.done()) {
+            const std::string k = line.key(keys, seen);
+            if (k == "diffuse") m.diffuse = line.colour("diffuse");
+            else if (k == "specular") m.specular = line.colour("specular");
+            else if (k == "shininess") {
+                m.shininess = line.number("shininess");
+                if (!(m.shininess >= 1 && m.shininess <= 2048)) line.expected_last("shininess in [1, 2048]");
+            } else if (k == "tile") m.tile = line.positive("tile");
+            else {
+                const std::string& file = line.word("a file name for " + k);
+                const int index = texture(line, k, file);
+                if (k == "diffuse_map") m.diffuse_map = index;
+                else if (k == "normal_map") m.normal_map = index;
+                else m.specular_map = index;
+            }
+        }
+        line.require({"diffuse", "specular", "shininess"}, seen);
+        scene_.materials.push_back(m);
+        material_lines_.push_back(line.number());
+    }
+
+    // Loads (once per resolved path) and returns the index into Scene::textures.
+    int texture(const Line& line, const std::string& key, const std::string& file) {
+        std::filesystem::path p(file);
+        if (p.is_relative()) p = dir_ / p;
+        const std::string resolved = p.lexically_normal().string();
+        for (size_t i = 0; i < scene_.texture_paths.size(); ++i)
+            if (scene_.texture_paths[i] == resolved) return int(i);
+        Image img;
+        try {
+            img = load_image(resolved);
+        } catch (const Error& e) {
+            line.fail("expected a readable image for " + key + ", got '" + file + "': " + e.what());
+        }
+        scene_.textures.push_back(std::move(img));
+        scene_.texture_paths.push_back(resolved);
+        return int(scene_.textures.size() - 1);
+    }
+
+    void shape(Line& line, const std::string& kind) {
+        const std::string size_key = kind == "sphere" ? "radius" : "size";
+        const std::vector<std::string> keys = {size_key, "at", "material"};
+        std::set<std::string> seen;
+        glm::vec3 size(1), at(0);
+        int material = -1;
+        while (!line.done()) {
+            const std::string k = line.key(keys, seen);
+            if (k == size_key) {
+                if (kind == "box")
+                    for (int i = 0; i < 3; ++i) size[i] = line.positive("box size");
+                else
+                    size = glm::vec3(line.positive(kind + " " + size_key));
+            } else if (k == "at") {
+                at = line.vec3(kind + " at");
+            } else {
+                const std::string& name = line.word("a material name");
+                for (size_t i = 0; i < scene_.materials.size(); ++i)
+                    if (scene_.materials[i].name == name) material = int(i);
+                if (material < 0) line.expected_last("a material defined on an earlier line");
+            }
+        }
+        line.require(keys, seen);
+        if (kind == "plane") scene_.meshes.push_back(make_plane(size.x, at, material));
+        else if (kind == "box") scene_.meshes.push_back(make_box(size, at, material));
+        else scene_.meshes.push_back(make_sphere(size.x, at, material));
+    }
+
+    void light(Line& line) {
+        const std::string& kind = line.word("light kind 'point'");
+        if (kind != "point") line.expected_last("light kind 'point'");
+        const std::vector<std::string> keys = {"pos", "color", "radius"};
+        std::set<std::string> seen;
+        Light l;
+        while (!line.done()) {
+            const std::string k = line.key(keys, seen);
+            if (k == "pos") l.pos = line.vec3("light pos");
+            else if (k == "color") l.color = line.colour("light color");
+            else l.radius = line.positive("light radius");
+        }
+        line.require(keys, seen);
+        scene_.lights.push_back(l);
+    }
+
+    void post(Line& line) {
+        std::set<std::string> seen;
+        scene_.post_bloom = scene_.post_aa = false;
+        while (!line.done()) {
+            const std::string k = line.key({"bloom", "aa"}, seen);
+            (k == "bloom" ? scene_.post_bloom : scene_.post_aa) = true;
+        }
+    }
+
+    static std::string fmt(float f) {
+        std::ostringstream s;
+        s << f;
+        return s.str();
+    }
+
+    std::string path_;
+    std::filesystem::path dir_;
+    Scene scene_;
+    int camera_line_ = 0;
+    std::vector<int> material_lines_;  // parallel to scene_.materials
+};
+
+}  // namespace
+
+Scene load_scene(const std::string& path) { return Parser(path).run(); }
+
+}  // namespace dsr

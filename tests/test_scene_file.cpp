@@ -1,0 +1,262 @@
+// Scene-file parser: every kind of mistake gives "FILE:LINE: expected ..., got '...'" with the
+// right line, and the shipped scenes parse into something the renderer can draw.
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "dsr_error.h"
+#include "scene/scene.h"
+
+namespace {
+
+// A fresh temp folder per test, removed afterwards; bad scene files never go into the repo.
+class SceneFileTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        char tmpl[] = "/tmp/dsr_scene_test_XXXXXX";
+        ASSERT_NE(mkdtemp(tmpl), nullptr);
+        dir_ = tmpl;
+    }
+    void TearDown() override {
+        for (const std::string& f : files_) std::remove(f.c_str());
+        rmdir(dir_.c_str());
+    }
+
+    std::string write(const std::string& name, const std::string& text) {
+        const std::string path = dir_ + "/" + name;
+        std::ofstream(path) << text;
+        files_.push_back(path);
+        return path;
+    }
+
+    // Lines 1-2: a valid camera and material; tests append their bad line as line 3 or later.
+    static std::string header() {
+        return "camera pos 0 1 5 target 0 0 0 up 0 1 0 fov 60 near 0.1 far 50\n"
+               "material grey diffuse 0.5 0.5 0.5 specular 0 0 0 shininess 8\n";
+    }
+
+    // Loads `text` and returns the error message, failing the test if nothing was thrown.
+    std::string error_of(const std::string& text, std::string* path_out = nullptr) {
+        const std::string path = write("bad.scene", text);
+        if (path_out) *path_out = path;
+        try {
+            dsr::load_scene(path);
+        } catch (const dsr::Error& e) {
+            return e.what();
+        }
+        ADD_FAILURE() << "no error for:\n" << text;
+        return "";
+    }
+
+    // The message starts with FILE:LINE: and contains every one of `parts`.
+    void expect_error(const std::string& text, int line, std::initializer_list<std::string> parts) {
+        std::string path;
+        const std::string msg = error_of(text, &path);
+        const std::string where = path + ":" + std::to_string(line) + ": ";
+        EXPECT_EQ(msg.rfind(where, 0), 0u) << "message: " << msg << "\nwanted prefix: " << where;
+        for (const std::string& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "message: " << msg << "\nwanted: " << p;
+    }
+
+    std::string dir_;
+    std::vector<std::string> files_;
+};
+
+TEST_F(SceneFileTest, UnknownDirective) {
+    expect_error(header() + "\n# a comment line\nteapot size 1\n", 5, {"expected a directive", "got 'teapot'"});
+}
+
+TEST_F(SceneFileTest, MissingToken) {
+    // sphere radius needs a number; the line ends after "radius".
+    expect_error(header() + "sphere at 0 0 0 material grey radius\n", 3,
+                 {"expected a number for sphere radius", "got end of line"});
+    // A required keyword left out entirely.
+    expect_error(header() + "light point pos 0 1 0 color 1 1 1\n", 3, {"expected radius", "got end of line"});
+}
+
+TEST_F(SceneFileTest, ExtraToken) {
+    expect_error(header() + "ambient 0.1 0.1 0.1 0.5\n", 3, {"expected end of line", "got '0.5'"});
+    expect_error(header() + "light point pos 0 1 0 color 1 1 1 radius 3 7\n", 3,
+                 {"expected one of pos, color, radius", "got '7'"});
+}
+
+TEST_F(SceneFileTest, BadNumber) {
+    expect_error(header() + "sphere radius 1.5x at 0 0 0 material grey\n", 3,
+                 {"expected a number for sphere radius", "got '1.5x'"});
+    expect_error(header() + "light point pos 0 one 0 color 1 1 1 radius 3\n", 3,
+                 {"expected a number for light pos", "got 'one'"});
+}
+
+TEST_F(SceneFileTest, NonFiniteNumber) {
+    expect_error(header() + "light point pos 0 nan 0 color 1 1 1 radius 3\n", 3,
+                 {"expected a finite number for light pos", "got 'nan'"});
+    expect_error(header() + "background inf 0 0\n", 3, {"expected a finite number for background", "got 'inf'"});
+    // Finite as a double would still overflow a float: refused too.
+    expect_error(header() + "ambient 1e999 0 0\n", 3, {"expected a finite number for ambient", "got '1e999'"});
+    expect_error(header() + "ambient 1e39 0 0\n", 3, {"expected a finite number for ambient", "got '1e39'"});
+}
+
+TEST_F(SceneFileTest, NegativeRadius) {
+    expect_error(header() + "light point pos 0 1 0 color 1 1 1 radius -2\n", 3, {"expected light radius > 0", "got '-2'"});
+    expect_error(header() + "sphere radius 0 at 0 0 0 material grey\n", 3, {"expected sphere radius > 0", "got '0'"});
+}
+
+TEST_F(SceneFileTest, OutOfRangeValues) {
+    expect_error(header() + "light point pos 0 1 0 color 1 -1 1 radius 2\n", 3,
+                 {"expected light color component >= 0", "got '-1'"});
+    expect_error(header() + "material m diffuse 1 1 1 specular 1 1 1 shininess 4096\n", 3,
+                 {"expected shininess in [1, 2048]", "got '4096'"});
+    expect_error(header() + "material m diffuse 1 1 1 specular 1 1 1 shininess 8 tile 0\n", 3,
+                 {"expected tile > 0", "got '0'"});
+    expect_error("camera pos 0 1 5 target 0 0 0 up 0 1 0 fov 180 near 0.1 far 50\n", 1,
+                 {"expected fov in (0, 180)", "got '180'"});
+    expect_error("camera pos 0 5 0 target 0 0 0 up 0 2 0 fov 60 near 0.1 far 50\n", 1,
+                 {"expected camera up not parallel", "got '0 2 0'"});
+}
+
+TEST_F(SceneFileTest, NearNotBelowFar) {
+    expect_error("# comment\ncamera pos 0 1 5 target 0 0 0 up 0 1 0 fov 60 near 10 far 10\n", 2,
+                 {"expected far > near", "got '10'"});
+    // Keywords in another order: near given after far.
+    expect_error("camera far 5 pos 0 1 5 target 0 0 0 up 0 1 0 fov 60 near 6\n", 1, {"expected near < far", "got '6'"});
+    expect_error("camera pos 0 1 5 target 0 0 0 up 0 1 0 fov 60 near 0 far 10\n", 1, {"expected near > 0", "got '0'"});
+}
+
+TEST_F(SceneFileTest, UnknownMaterial) {
+    expect_error(header() + "plane size 4 at 0 0 0 material gold\n", 3,
+                 {"expected a material defined on an earlier line", "got 'gold'"});
+    // Defined later does not count.
+    expect_error(header() + "box size 1 1 1 at 0 0 0 material late\n"
+                            "material late diffuse 1 1 1 specular 0 0 0 shininess 2\n",
+                 3, {"got 'late'"});
+}
+
+TEST_F(SceneFileTest, DuplicateMaterial) {
+    expect_error(header() + "\nmaterial grey diffuse 1 1 1 specular 0 0 0 shininess 2\n", 4,
+                 {"expected a material name not used before (first defined on line 2)", "got 'grey'"});
+}
+
+TEST_F(SceneFileTest, MissingCamera) {
+    std::string path;
+    const std::string msg = error_of("ambient 0.1 0.1 0.1\nlight point pos 0 1 0 color 1 1 1 radius 2\n", &path);
+    EXPECT_EQ(msg, path + ": no camera line");
+}
+
+TEST_F(SceneFileTest, DuplicateCamera) {
+    expect_error(header() + "ambient 0.1 0.1 0.1\ncamera pos 0 1 5 target 0 0 0 up 0 1 0 fov 60 near 0.1 far 50\n", 4,
+                 {"expected one camera line (the first is line 1)", "got 'camera'"});
+}
+
+TEST_F(SceneFileTest, DuplicateKeyword) {
+    expect_error(header() + "sphere radius 1 radius 2 at 0 0 0 material grey\n", 3, {"at most once", "got 'radius'"});
+}
+
+TEST_F(SceneFileTest, MissingTextureFile) {
+    std::string path;
+    const std::string msg = error_of(header() + "material bricks diffuse 1 1 1 specular 0 0 0 shininess 8 "
+                                                "diffuse_map no_such_dir/missing.png\n",
+                                     &path);
+    // Names the scene file and line, the path as written and the path as resolved.
+    EXPECT_EQ(msg.rfind(path + ":3: ", 0), 0u) << msg;
+    EXPECT_NE(msg.find("expected a readable image for diffuse_map, got 'no_such_dir/missing.png'"), std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find(dir_ + "/no_such_dir/missing.png"), std::string::npos) << msg;
+}
+
+TEST_F(SceneFileTest, UnopenableSceneFile) {
+    const std::string path = dir_ + "/does_not_exist.scene";
+    try {
+        dsr::load_scene(path);
+        FAIL() << "no error";
+    } catch (const dsr::Error& e) {
+        EXPECT_EQ(std::string(e.what()), "cannot open scene file " + path + ": No such file or directory");
+    }
+}
+
+TEST_F(SceneFileTest, CommentsOrderAndDefaults) {
+    const std::string path = write("ok.scene",
+                                   "   # leading comment\r\n"
+                                   "camera fov 45 near 0.5 far 20 up 0 1 0 target 0 0 0 pos 0 2 4  # any order\n"
+                                   "\n"
+                                   "material m specular 1 1 1 diffuse 0.2 0.3 0.4 shininess 2048 tile 2.5\n"
+                                   "sphere material m at 1 2 3 radius 0.5\n"
+                                   "light point radius 2 color 1 0 0 pos 0 1 0\n"
+                                   "post aa\n");
+    const dsr::Scene s = dsr::load_scene(path);
+    EXPECT_EQ(s.path, path);
+    EXPECT_FLOAT_EQ(s.camera.fov_deg, 45);
+    EXPECT_FLOAT_EQ(s.camera.near_plane, 0.5f);
+    EXPECT_FLOAT_EQ(s.camera.far_plane, 20);
+    EXPECT_EQ(s.camera.pos, glm::vec3(0, 2, 4));
+    ASSERT_EQ(s.materials.size(), 1u);
+    EXPECT_EQ(s.materials[0].name, "m");
+    EXPECT_EQ(s.materials[0].diffuse, glm::vec3(0.2f, 0.3f, 0.4f));
+    EXPECT_FLOAT_EQ(s.materials[0].shininess, 2048);
+    EXPECT_FLOAT_EQ(s.materials[0].tile, 2.5f);
+    EXPECT_EQ(s.materials[0].normal_map, -1);
+    ASSERT_EQ(s.meshes.size(), 1u);
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_FLOAT_EQ(s.lights[0].radius, 2);
+    EXPECT_FALSE(s.post_bloom);
+    EXPECT_TRUE(s.post_aa);
+}
+
+// Checks a loaded scene is drawable: indices in range, materials and maps valid.
+void expect_drawable(const dsr::Scene& s) {
+    for (const dsr::Mesh& m : s.meshes) {
+        ASSERT_FALSE(m.indices.empty());
+        EXPECT_EQ(m.indices.size() % 3, 0u);
+        for (uint32_t i : m.indices) ASSERT_LT(i, m.vertices.size());
+        ASSERT_GE(m.material, 0);
+        ASSERT_LT(m.material, int(s.materials.size()));
+    }
+    ASSERT_EQ(s.textures.size(), s.texture_paths.size());
+    for (const dsr::Material& mat : s.materials)
+        for (int t : {mat.diffuse_map, mat.normal_map, mat.specular_map}) {
+            ASSERT_GE(t, -1);
+            ASSERT_LT(t, int(s.textures.size()));
+        }
+    for (const dsr::Image& img : s.textures) {
+        EXPECT_GT(img.width, 0);
+        EXPECT_EQ(img.rgba.size(), size_t(img.width) * img.height * 4);
+    }
+}
+
+TEST(ShippedScenes, DefaultSceneParses) {
+    const dsr::Scene s = dsr::load_scene(std::string(DSR_SOURCE_DIR) + "/data/default.scene");
+    expect_drawable(s);
+    EXPECT_GE(s.lights.size(), 3u);
+    int normal_mapped = 0;
+    for (const dsr::Material& m : s.materials) normal_mapped += m.normal_map >= 0;
+    EXPECT_GE(normal_mapped, 2);
+    // Textures are shared by path: each file loaded once.
+    for (size_t i = 0; i < s.texture_paths.size(); ++i)
+        for (size_t j = i + 1; j < s.texture_paths.size(); ++j) EXPECT_NE(s.texture_paths[i], s.texture_paths[j]);
+    EXPECT_EQ(s.textures.size(), 9u);
+}
+
+TEST(ShippedScenes, AnalyticSceneParses) {
+    const dsr::Scene s = dsr::load_scene(std::string(DSR_SOURCE_DIR) + "/tests/data/analytic.scene");
+    expect_drawable(s);
+    EXPECT_EQ(s.lights.size(), 2u);
+    EXPECT_TRUE(s.textures.empty());
+}
+
+TEST_F(SceneFileTest, TexturesDeduplicatedByResolvedPath) {
+    // The same file named two ways resolves to one texture.
+    const std::string src = std::string(DSR_SOURCE_DIR) + "/data/textures/brick_normal.png";
+    const std::string text = "camera pos 0 1 5 target 0 0 0 up 0 1 0 fov 60 near 0.1 far 50\n"
+                             "material a diffuse 1 1 1 specular 0 0 0 shininess 8 normal_map " + src + "\n"
+                             "material b diffuse 1 1 1 specular 0 0 0 shininess 8 diffuse_map " +
+                             std::string(DSR_SOURCE_DIR) + "/data/./textures/../textures/brick_normal.png\n";
+    const dsr::Scene s = dsr::load_scene(write("dedup.scene", text));
+    ASSERT_EQ(s.textures.size(), 1u);
+    EXPECT_EQ(s.materials[0].normal_map, 0);
+    EXPECT_EQ(s.materials[1].diffuse_map, 0);
+}
+
+}  // namespace
