@@ -47,6 +47,19 @@ TEST(Pipeline, LiteralPackingIsWorseThanCorrected) {
     EXPECT_GT(dl.mean_abs, dc.mean_abs);
 }
 
+// Listing 2's literal v (eye to p) and h (from the unnormalised l) against Equations 1-5:
+// diffuse is the same, highlights move, so the images differ (docs/errata.md #1-2).
+TEST(Pipeline, ListingTwoLightingDiffers) {
+    Scene s = default_scene();
+    ShaderOptions lit;
+    lit.listing2_literal = true;
+    auto eq = render_scene(s, 128, 128, ShaderOptions{});
+    auto li = render_scene(s, 128, 128, lit);
+    ImageDiff d = compare_logged("equations vs listing 2", li.image, eq.image, 2 * kLsb);
+    EXPECT_GT(d.max_lsb(), 16.0);
+    EXPECT_GT(d.failing, 100);
+}
+
 // §3.4.2: the scissor rectangle only removes fragments the light cannot reach.
 TEST(Pipeline, ScissorChangesFragmentsNotImage) {
     Scene s = default_scene();

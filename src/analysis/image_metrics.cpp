@@ -30,7 +30,7 @@ ImageDiff compare_images(const Image& a, const Image& b, double fail_threshold) 
     ImageDiff d;
     d.max_abs = r.maxerror;
     d.mean_abs = r.meanerror;
-    d.psnr_db = r.rms_error > 0 ? 20.0 * std::log10(1.0 / r.rms_error) : std::numeric_limits<double>::infinity();
+    d.psnr_db = r.maxerror > 0 ? 20.0 * std::log10(1.0 / r.rms_error) : std::numeric_limits<double>::infinity();
     d.failing = (long long)r.nfail;
     d.pixels = (long long)a.width * a.height;
     return d;
