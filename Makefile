@@ -4,8 +4,9 @@ SHELL := /bin/bash
 BUILD ?= build
 CXX ?= g++
 CXXFLAGS ?= -O2 -g
-CXXFLAGS += -std=c++17 -Wall -Wextra -Wno-unused-parameter -MMD -MP -Isrc
-CPPFLAGS += -DGL_GLEXT_PROTOTYPES -DDSR_SOURCE_DIR=\"$(CURDIR)\"
+# Flags the build needs whatever CXXFLAGS the caller passes (e.g. CXXFLAGS="-O1 -g -fsanitize=address").
+DSR_FLAGS := -std=c++17 -Wall -Wextra -Wno-unused-parameter -MMD -MP -Isrc \
+             -DGL_GLEXT_PROTOTYPES -DDSR_SOURCE_DIR=\"$(CURDIR)\"
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
 DEB_PACKAGES := g++ make pkg-config libosmesa6-dev libglm-dev libopenimageio-dev \
@@ -29,7 +30,7 @@ all: $(BUILD)/dsr $(BUILD)/dsr_tests
 
 $(BUILD)/obj/%.o: %.cpp
 	@mkdir -p $(@D)
-	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -c $< -o $@
+	$(CXX) $(CPPFLAGS) $(DSR_FLAGS) $(CXXFLAGS) -c $< -o $@
 
 $(BUILD)/libdsr_core.a: $(CORE_OBJ)
 	@rm -f $@

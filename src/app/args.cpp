@@ -31,6 +31,16 @@ int Args::int_value(const std::string& flag, int lo, int hi) {
     return int(n);
 }
 
+float Args::float_value(const std::string& flag, float lo, float hi) {
+    std::string v = value(flag);
+    char* end = nullptr;
+    errno = 0;
+    double d = v.empty() ? 0 : std::strtod(v.c_str(), &end);
+    if (v.empty() || errno != 0 || *end != '\0' || !(d >= lo && d <= hi))
+        fail(flag + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + v + "'");
+    return float(d);
+}
+
 void Args::size_value(const std::string& flag, int& w, int& h) {
     std::string v = value(flag);
     size_t x = v.find('x');

@@ -15,6 +15,7 @@ public:
     // The value after flag `flag`; throws if missing.
     std::string value(const std::string& flag);
     int int_value(const std::string& flag, int lo, int hi);
+    float float_value(const std::string& flag, float lo, float hi);
     void size_value(const std::string& flag, int& w, int& h);  // WxH
     bool on_off(const std::string& flag);
     std::string choice(const std::string& flag, const std::vector<std::string>& allowed);

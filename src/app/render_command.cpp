@@ -39,8 +39,11 @@ bool has_ext(const std::string& path, const char* ext) {
 int cmd_render(const std::vector<std::string>& argv) {
     Args args("render", argv);
     std::string scene_path, out = "out.png", stats_path, depth = "auto", encoding = "corrected";
-    int w = 512, h = 512, frames = 1;
+    int w = 512, h = 512, out_w = 0, out_h = 0, frames = 1;
     bool scissor = true, listing2 = false;
+    int bloom = -1, aa = -1;  // -1: as the scene's `post` line says
+    PostOptions post;
+    std::string view_name_arg = "final";
     std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";
     while (!args.done()) {
         std::string a = args.next();
@@ -52,6 +55,22 @@ int cmd_render(const std::vector<std::string>& argv) {
         else if (a == "--lighting") listing2 = args.choice(a, {"equations", "listing"}) == "listing";
         else if (a == "--frames") frames = args.int_value(a, 1, 100000);
         else if (a == "--stats") stats_path = args.value(a);
+        else if (a == "--out-size") args.size_value(a, out_w, out_h);
+        else if (a == "--view") view_name_arg = args.choice(a, {"final", "normal", "diffuse", "specular", "depth",
+                                                                 "blur-factor", "bloom"});
+        else if (a == "--bloom") bloom = 1;
+        else if (a == "--no-bloom") bloom = 0;
+        else if (a == "--bloom-scale") post.bloom_scale = std::stoi(args.choice(a, {"2", "4"}));
+        else if (a == "--bloom-taps") post.bloom_taps = std::stoi(args.choice(a, {"3", "5", "7", "9", "11", "13", "15"}));
+        else if (a == "--bloom-strength") post.bloom_strength = args.float_value(a, 0.0f, 16.0f);
+        else if (a == "--bloom-mode") post.bloom_listing = args.choice(a, {"color", "listing"}) == "listing";
+        else if (a == "--aa") aa = 1;
+        else if (a == "--no-aa") aa = 0;
+        else if (a == "--aa-source") {
+            std::string v = args.choice(a, {"normal", "depth", "both"});
+            post.aa_source = v == "normal" ? AaSource::normal : v == "depth" ? AaSource::depth : AaSource::both;
+        } else if (a == "--aa-kernel") post.aa_kernel = args.choice(a, {"text", "listing"}) == "listing" ? AaKernel::listing : AaKernel::text;
+        else if (a == "--aa-weight") post.aa_weight = args.float_value(a, 0.0f, 8.0f);
         else if (a == "--caps") caps_list += "," + args.value(a);
         else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
         else if (scene_path.empty()) scene_path = a;
@@ -65,7 +84,12 @@ int cmd_render(const std::vector<std::string>& argv) {
     if (scene_path.empty()) scene_path = resource_dir("data") + "/default.scene";
 
     Scene scene = load_scene(scene_path);  // every input error surfaces before any output
-    auto ctx = create_osmesa_context(w, h);
+    if (out_w == 0) out_w = w, out_h = h;
+    View view = view_from_name(view_name_arg);
+    post.bloom = bloom < 0 ? scene.post_bloom : bloom == 1;
+    post.aa = aa < 0 ? scene.post_aa : aa == 1;
+    if (view == View::bloom) post.bloom = true;  // the view shows the bloom blur
+    auto ctx = create_osmesa_context(out_w, out_h);
     Caps caps = probe_caps(split_caps(caps_list));
     ShaderOptions opts;
     if (depth == "auto") opts.depth = caps.depth_texture ? DepthPath::texture : DepthPath::packed;
@@ -73,12 +97,15 @@ int cmd_render(const std::vector<std::string>& argv) {
     opts.packed_literal = encoding == "literal";
     opts.listing2_literal = listing2;
     opts.scissor = scissor;
+    opts.post = post;
 
     DeferredShader ds(caps, w, h, opts, resource_dir("glsl120"));
     ds.set_scene(scene);
     std::vector<FrameStats> all;
-    for (int f = 0; f < frames; ++f) all.push_back(ds.render(scene, w, h));
-    Image img = read_pixels(w, h);
+    for (int f = 0; f < frames; ++f) all.push_back(ds.render(scene, out_w, out_h));
+    if (view != View::final) ds.draw_view(view, out_w, out_h);
+    Image img = read_pixels(out_w, out_h);
+    for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 1.0f;  // images are opaque
 
     const FrameStats& last = all.back();
     auto med = [&](double StageTimes::*field) {
@@ -89,25 +116,30 @@ int cmd_render(const std::vector<std::string>& argv) {
     nlohmann::ordered_json j;
     j["scene"] = scene_path;
     j["size"] = {w, h};
+    j["out_size"] = {out_w, out_h};
+    j["view"] = view_name(view);
     j["frames"] = frames;
     j["gl_renderer"] = caps.renderer;
     j["depth_path"] = opts.depth == DepthPath::texture ? "texture" : "packed";
     j["depth_encoding"] = opts.depth == DepthPath::packed ? encoding : "depth-texture";
     j["lighting"] = listing2 ? "listing" : "equations";
     j["scissor"] = scissor;
+    j["bloom"] = post.bloom;
+    j["aa"] = post.aa;
     j["lights_total"] = last.lights_total;
     j["lights_culled"] = last.lights_culled;
     j["lights_drawn"] = last.lights_drawn;
     j["light_fragments"] = last.light_fragments;
     j["scissor_pixels"] = last.scissor_pixels;
     j["ms"] = {{"geometry", med(&StageTimes::geometry)}, {"ambient", med(&StageTimes::ambient)},
-               {"lights", med(&StageTimes::lights)},     {"final", med(&StageTimes::final)},
+               {"lights", med(&StageTimes::lights)},     {"bloom", med(&StageTimes::bloom)},
+               {"aa", med(&StageTimes::aa)},             {"final", med(&StageTimes::final)},
                {"frame", med(&StageTimes::frame)}};
 
     write_image(out, img);
     if (!stats_path.empty()) write_file_atomic(stats_path, j.dump(2) + "\n");
-    std::printf("wrote %s (%dx%d, depth %s, %d/%d lights drawn, %lld light fragments, frame %.2f ms median of %d)\n",
-                out.c_str(), w, h, j["depth_path"].get<std::string>().c_str(), last.lights_drawn, last.lights_total,
+    std::printf("wrote %s (%dx%d, view %s, depth %s, %d/%d lights drawn, %lld light fragments, frame %.2f ms median of %d)\n",
+                out.c_str(), out_w, out_h, view_name(view), j["depth_path"].get<std::string>().c_str(), last.lights_drawn, last.lights_total,
                 last.light_fragments, med(&StageTimes::frame), frames);
     return 0;
 }

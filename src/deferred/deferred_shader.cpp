@@ -1,6 +1,7 @@
 // pDeferredShader: buffers (Listing 6), shader table, and the frame (Appendix A).
 #include "deferred/deferred_shader.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "deferred/gpu_scene.h"
@@ -40,10 +41,14 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     mrt_ = std::make_unique<PBuffer>("G-buffer", g);
     // P-buffers 0-3 (§3.2): 0 accumulates lighting, 1 is the anti-alias swap partner,
     // 2 and 3 hold the bloom blurs. Bilinear, so the final pass can scale (§3.6).
+    const int bs = opts.post.bloom_scale;
+    if (bs != 2 && bs != 4) throw Error("bloom scale must be 2 or 4, got " + std::to_string(bs));
+    if (opts.post.bloom_taps < 3 || opts.post.bloom_taps > 15 || opts.post.bloom_taps % 2 == 0)
+        throw Error("bloom kernel must be odd, 3..15 taps, got " + std::to_string(opts.post.bloom_taps));
     for (int i = 0; i < 4; ++i) {
         PBufferDesc p;
-        p.width = width;
-        p.height = height;
+        p.width = i < 2 ? width : std::max(1, width / bs);   // 2 and 3: reduced (§3.5.2)
+        p.height = i < 2 ? height : std::max(1, height / bs);
         p.color_formats = {GL_RGBA8};
         p.filter = GL_LINEAR;
         fb_[i] = std::make_unique<PBuffer>("P-buffer " + std::to_string(i), p);
@@ -61,6 +66,24 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     auto ldefs = depth_defs;
     if (opts.listing2_literal) ldefs.push_back("LISTING2_LITERAL");
     light_prog_ = Program(shader_dir, "light.vert", "light.frag", ldefs);
+    // Post programs are built only when their pass can run (the post stage costs nothing off).
+    const PostOptions& p = opts.post;
+    if (p.bloom) {
+        for (int sel = 0; sel < 2; ++sel) {
+            std::vector<std::string> d = {"NUMPOINTS " + std::to_string(p.bloom_taps)};
+            if (p.bloom_listing) d.push_back("LISTING");
+            else if (sel) d.push_back("SELECT");
+            blur_prog_[sel] = Program(shader_dir, "post.vert", "blur.frag", d);
+        }
+    }
+    for (int fo = 0; fo < 2; ++fo) {
+        auto d = depth_defs;
+        if (p.aa_source != AaSource::depth) d.push_back("SOURCE_NORMAL");
+        if (p.aa_source != AaSource::normal) d.push_back("SOURCE_DEPTH");
+        if (p.aa_kernel == AaKernel::listing) d.push_back("LISTING_KERNEL");
+        if (fo) d.push_back("FACTOR_ONLY");
+        aa_prog_[fo] = Program(shader_dir, "post.vert", "anti_alias.frag", d);
+    }
     check_gl("creating the deferred shader");
 }
 
@@ -107,6 +130,7 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     double t1 = now_ms();
     st.ms.geometry = t1 - t0;
     draw_lights(scene, opts_.scissor, st);  // fills ms.ambient and ms.lights
+    post_stage(st);                          // fills ms.bloom and ms.aa
     double t2 = now_ms();
     final_stage(out_w, out_h);
     glFinish();

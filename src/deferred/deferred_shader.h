@@ -2,6 +2,7 @@
 // stages that fill and consume them. One .cpp per stage:
 //   geometry_stage.cpp  §3.3  depth pre-pass (L8) + material pass (L9-13)
 //   lighting_stage.cpp  §3.4  ambient pass (L15) + one scissored quad per light (L16-20)
+//   post_stage.cpp      §3.5  bloom (L22) then anti-alias (L21, Eq. 7) on the P-buffers
 //   final_stage.cpp     §3.6  P-buffer 0 to the main frame buffer, fixed function
 #pragma once
 #include <memory>
@@ -22,16 +23,34 @@ class GpuScene;
 
 enum class DepthPath { texture, packed };
 
+enum class AaSource { normal, depth, both };
+enum class AaKernel { text, listing };
+
+// Post-processing (§3.5). Defaults are the tutorial's: a 7-tap separable blur at half size.
+struct PostOptions {
+    bool bloom = false;
+    int bloom_scale = 2;           // P-buffers 2 and 3 at 1/2 or 1/4 of the frame (§3.5.2)
+    int bloom_taps = 7;            // NUMPOINTS of Listing 22 (odd, 3..15)
+    float bloom_strength = 1.0f;   // weight of the fixed-function add into P-buffer 0
+    bool bloom_listing = false;    // Listing 22's grey dot(t,t) in both passes; default keeps colour
+    bool aa = false;
+    AaSource aa_source = AaSource::normal;  // Eq. 7 over the normal target, depth, or both
+    AaKernel aa_kernel = AaKernel::text;    // text: all 8 neighbours; listing: Listing 21's table
+    float aa_weight = 1.0f;        // Listing 21's `weight`: largest offset, in pixels
+    float aa_depth_scale = 4.0f;   // relative eye-z step that counts as an edge: ((dz/z)*scale)^2
+};
+
 struct ShaderOptions {
     DepthPath depth = DepthPath::texture;
     bool packed_literal = false;    // Listings 11/18 exactly (k/256 bytes); default: corrected codec
     bool listing2_literal = false;  // Listing 2's v and h exactly; default: Equations 1-5
     bool scissor = true;            // §3.4.2 light scissor rectangles
+    PostOptions post;
 };
 
 // Per-stage wall time of one frame, in milliseconds (glFinish after each stage).
 struct StageTimes {
-    double geometry = 0, ambient = 0, lights = 0, final = 0, frame = 0;
+    double geometry = 0, ambient = 0, lights = 0, bloom = 0, aa = 0, final = 0, frame = 0;
 };
 
 struct FrameStats {
@@ -40,6 +59,13 @@ struct FrameStats {
     long long scissor_pixels = 0;   // sum of the rectangles the light quads were limited to
     StageTimes ms;
 };
+
+// What `--view` shows (the same names in every interface): the final image, a G-buffer
+// target (Figure 4), the anti-alias blur factor (Figure 8) or the bloom blur (Figure 10c).
+enum class View { final, normal, diffuse, specular, depth, blur_factor, bloom };
+// "final", "normal", …, "blur-factor", "bloom"; throws dsr::Error listing the names otherwise.
+View view_from_name(const std::string& name);
+const char* view_name(View v);
 
 // G-buffer targets (Figure 3).
 enum GTarget { G_NORMAL = 0, G_DIFFUSE = 1, G_SPECULAR = 2, G_DEPTH_PACKED = 3 };
@@ -59,12 +85,29 @@ public:
     // Appendix A stages, public so tests and figures can run them one by one.
     void geometry_stage(const Scene& scene);
     void draw_lights(const Scene& scene, bool scissors, FrameStats& stats);
+    void post_stage(FrameStats& stats);
     void final_stage(int out_w, int out_h);
+    // Any texture drawn into the main frame buffer the way the final stage draws P-buffer 0
+    // (fixed function, bilinear when scaled): how `--view` shows the other buffers.
+    void draw_texture_to_main(GLuint texture, int out_w, int out_h);
+    // After render(): replaces the main frame buffer's image with `view` (views.cpp).
+    // Depth is shown encoded as colour (Figure 4d) on both depth paths.
+    void draw_view(View view, int out_w, int out_h);
+
+    // Post-processing passes, public for the figures (Figure 10 shows them one by one).
+    // blur: Listing 22 from P-buffer `src` into `dst` along `dir` (1,0) or (0,1); `select`
+    // applies the bright-pass weighting of the first bloom pass.
+    void blur(int src, int dst, glm::vec2 dir, bool select);
+    void draw_bloom();
+    void draw_anti_alias(bool factor_only = false);
 
     // Read a buffer back (views and tests): a G-buffer target, its depth texture
     // (PBuffer::DEPTH, as grey), or P-buffer `fb`.
     Image read_gbuffer(int target);
     Image read_pbuffer(int fb);
+    int pbuffer_width(int fb) const { return fb_[fb]->width(); }
+    int pbuffer_height(int fb) const { return fb_[fb]->height(); }
+    GLuint pbuffer_texture(int fb) const { return fb_[fb]->texture(0); }
 
     int width() const { return w_; }
     int height() const { return h_; }
@@ -101,6 +144,8 @@ private:
     std::unique_ptr<PBuffer> fb_[4];    // P-buffers 0-3
     Program material_prog_[2];          // [normal map?]
     Program light_prog_;
+    Program blur_prog_[2];              // [select]
+    Program aa_prog_[2];                // [factor only]
     std::unique_ptr<GpuScene> gpu_;
     glm::mat4 view_{1}, proj_{1};
     glm::vec2 planes_{0};

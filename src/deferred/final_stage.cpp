@@ -6,6 +6,10 @@
 namespace dsr {
 
 void DeferredShader::final_stage(int out_w, int out_h) {
+    draw_texture_to_main(fb_[0]->texture(0), out_w, out_h);
+}
+
+void DeferredShader::draw_texture_to_main(GLuint texture, int out_w, int out_h) {
     glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
     glDrawBuffer(GL_BACK);
     glViewport(0, 0, out_w, out_h);
@@ -24,14 +28,26 @@ void DeferredShader::final_stage(int out_w, int out_h) {
     glActiveTexture(GL_TEXTURE0);
     glEnable(GL_TEXTURE_2D);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-    fb_bind_texture(0, 0);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    // Same size: nearest is exact. Scaled: bilinear (§3.6, e.g. 512x512 shown at 640x480).
+    GLint tw = 0, th = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &tw);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &th);
+    GLint filter = (tw == out_w && th == out_h) ? GL_NEAREST : GL_LINEAR, old_min = 0, old_mag = 0;
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &old_min);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &old_mag);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
     glBegin(GL_QUADS);
     glTexCoord2f(0, 0); glVertex2f(0, 0);
     glTexCoord2f(1, 0); glVertex2f(1, 0);
     glTexCoord2f(1, 1); glVertex2f(1, 1);
     glTexCoord2f(0, 1); glVertex2f(0, 1);
     glEnd();
-    fb_unbind_texture(0, 0);
+    // Leave the texture as the post passes expect it (they sample P-buffer 0 bilinearly).
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, old_min);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, old_mag);
+    glBindTexture(GL_TEXTURE_2D, 0);
     glDisable(GL_TEXTURE_2D);
     check_gl("final stage");
 }

@@ -20,12 +20,14 @@ GpuScene::GpuScene(const Scene& scene) {
                      [&](int a, int b) { return scene.meshes[a].material < scene.meshes[b].material; });
     std::vector<Vertex> verts;
     std::vector<uint32_t> idx;
+    mesh_ranges_.resize(scene.meshes.size());
     for (int m : order) {
         const Mesh& mesh = scene.meshes[m];
         uint32_t base = uint32_t(verts.size());
         size_t first = idx.size();
         verts.insert(verts.end(), mesh.vertices.begin(), mesh.vertices.end());
         for (uint32_t i : mesh.indices) idx.push_back(base + i);
+        mesh_ranges_[m] = {GLsizei(mesh.indices.size()), first, mesh.material};
         if (!ranges_.empty() && ranges_.back().material == mesh.material)
             ranges_.back().count += GLsizei(mesh.indices.size());
         else

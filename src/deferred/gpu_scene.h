@@ -45,6 +45,9 @@ public:
     void draw_all() const;
 
     const std::vector<DrawRange>& ranges() const { return ranges_; }
+    // One range per Scene::meshes entry (same index): per-object draws of the forward
+    // renderers (Listings 3-4 draw object by object; the deferred passes draw by material).
+    const DrawRange& mesh_range(size_t mesh) const { return mesh_ranges_.at(mesh); }
     const GpuMaterial& material(int i) const { return materials_[i]; }
     size_t triangle_count() const { return indices_ / 3; }
 
@@ -55,6 +58,7 @@ private:
     Texture white_;
     std::vector<GpuMaterial> materials_;
     std::vector<DrawRange> ranges_;
+    std::vector<DrawRange> mesh_ranges_;
 };
 
 }  // namespace dsr

@@ -1,0 +1,72 @@
+#version 120
+// Anti-alias pass (Listing 21, Equation 7): a blur factor from the squared differences
+// between a pixel and its neighbours in the normal target and/or eye depth, then the final
+// colour sampled at offsets scaled by that factor (no edge: no offset, no blur).
+// Variants: SOURCE_NORMAL, SOURCE_DEPTH (both may be set), LISTING_KERNEL (Listing 21's
+// table, which repeats (-1,1) and lacks (-1,-1), and sums 4 neighbours for the factor),
+// FACTOR_ONLY (writes the factor as grey: Figure 8), PACKED_DEPTH / PACKED_LITERAL.
+#include "depth_codec.glsl"
+
+uniform sampler2D normal_map;  // unit 0: G-buffer normal target
+uniform sampler2D color_map;   // unit 1: P-buffer 0
+uniform sampler2D depth_map;   // unit 2: depth texture or packed depth target
+uniform vec2 pixel_size;
+uniform float weight;
+uniform vec2 planes;
+uniform float depth_scale;
+
+varying vec2 texcoord;
+
+#ifdef LISTING_KERNEL
+const vec2 delta[8] = vec2[8](vec2(-1.0, 1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0),
+                              vec2(-1.0, 0.0), vec2(1.0, 0.0), vec2(0.0, -1.0), vec2(0.0, 1.0));
+const int FACTOR_TAPS = 4;
+#else
+const vec2 delta[8] = vec2[8](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0),
+                              vec2(-1.0, 0.0), vec2(1.0, 0.0), vec2(0.0, -1.0), vec2(0.0, 1.0));
+const int FACTOR_TAPS = 8;  // Equation 7 sums all 8 neighbours
+#endif
+
+float eye_z(vec2 uv)
+{
+#ifdef PACKED_DEPTH
+#ifdef PACKED_LITERAL
+    float d = unpack_depth_literal(texture2D(depth_map, uv).rgb);
+#else
+    float d = unpack_depth(texture2D(depth_map, uv).rgb);
+#endif
+#else
+    float d = texture2D(depth_map, uv).r;
+#endif
+    return -planes.y / (planes.x + d);
+}
+
+void main()
+{
+    float factor = 0.0;
+#ifdef SOURCE_NORMAL
+    vec4 tex = texture2D(normal_map, texcoord);
+    for (int i = 0; i < FACTOR_TAPS; i++) {
+        vec4 t = texture2D(normal_map, texcoord + delta[i] * pixel_size) - tex;
+        factor += dot(t, t);
+    }
+#endif
+#ifdef SOURCE_DEPTH
+    // Relative eye-depth steps, so the factor does not depend on the scene's units.
+    float zc = eye_z(texcoord);
+    for (int i = 0; i < FACTOR_TAPS; i++) {
+        float dz = (eye_z(texcoord + delta[i] * pixel_size) - zc) / zc * depth_scale;
+        factor += dz * dz;
+    }
+#endif
+#ifdef FACTOR_ONLY
+    gl_FragColor = vec4(vec3(min(1.0, factor)), 1.0);
+#else
+    factor = min(1.0, factor) * weight;
+    vec4 color = vec4(0.0);
+    for (int i = 0; i < 8; i++)
+        color += texture2D(color_map, texcoord + delta[i] * pixel_size * factor);
+    color += 2.0 * texture2D(color_map, texcoord);
+    gl_FragColor = color / 10.0;
+#endif
+}

@@ -1,0 +1,30 @@
+#version 120
+// Bloom blur (Listing 22): NUMPOINTS taps along one axis; the offsets carry the direction,
+// so the same shader serves the horizontal and the vertical pass (§3.5.2).
+// Listing 22 sums dot(t,t): grey, and after two passes a 4th power of the colour. dsr keeps
+// colour: the first pass (SELECT) weights each tap by its mean squared intensity dot(t,t)/3,
+// which selects "regions with intense colors" (a contrast stretch), and the second pass is a
+// plain average. LISTING reproduces the listing in both passes (docs/errata.md).
+#ifndef NUMPOINTS
+#define NUMPOINTS 7
+#endif
+uniform sampler2D source;
+uniform vec2 offset[NUMPOINTS];
+
+varying vec2 texcoord;
+
+void main()
+{
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < NUMPOINTS; i++) {
+        vec3 t = texture2D(source, texcoord + offset[i]).rgb;
+#if defined(LISTING)
+        sum += vec3(dot(t, t));
+#elif defined(SELECT)
+        sum += t * (dot(t, t) / 3.0);
+#else
+        sum += t;
+#endif
+    }
+    gl_FragColor = vec4(sum / float(NUMPOINTS), 1.0);
+}

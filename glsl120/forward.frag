@@ -1,0 +1,51 @@
+#version 120
+// Forward reference renderer, fragment stage (§2.4, Listings 2-4): Equation 1 per pixel from
+// the interpolated eye-space position and normal: no G-buffer, no depth reconstruction, the
+// material's shininess as given (not the G-buffer's 8-bit code). The accuracy reference the
+// deferred renderer is measured against.
+//   ambient  Factor_amb of Equation 6 on the pass that lays a surface down, 0 on additive passes
+//   nlights  lights in this pass, <= MAX_LIGHTS (Listing 3: many per pass; Listing 4: one)
+// Variants: NORMAL_MAP (tangent space, as glsl120/material.frag), LISTING2_LITERAL,
+// MAX_LIGHTS n (set by the renderer from GL_MAX_FRAGMENT_UNIFORM_COMPONENTS).
+#include "lighting.glsl"
+
+#ifndef MAX_LIGHTS
+#define MAX_LIGHTS 1
+#endif
+
+uniform sampler2D normaltex;    // unit 0
+uniform sampler2D colortex;     // unit 1
+uniform sampler2D speculartex;  // unit 2
+uniform vec3 diffuse;
+uniform vec3 specular;
+uniform float shininess;        // M_shi of Equation 4, exactly
+uniform float tile;
+uniform vec3 ambient;
+uniform int nlights;
+uniform vec4 lightpos[MAX_LIGHTS];    // eye space, w = S_radius
+uniform vec3 lightcolor[MAX_LIGHTS];  // S_diff = S_spec
+
+varying vec2 texcoord;
+varying vec3 vpos;
+varying vec3 normal;
+varying vec3 tangent;
+varying vec3 binormal;
+
+void main()
+{
+    vec2 txcoord = texcoord * tile;
+#ifdef NORMAL_MAP
+    vec3 n = texture2D(normaltex, txcoord).xyz - 0.5;
+    n = normalize(n.x * tangent + n.y * binormal + n.z * normal);
+#else
+    vec3 n = normalize(normal);
+#endif
+    vec3 Mdiff = texture2D(colortex, txcoord).rgb * diffuse;
+    vec3 Mspec = texture2D(speculartex, txcoord).rgb * specular;
+    vec3 c = ambient * Mdiff;  // Equation 6 (zero on additive passes)
+    for (int i = 0; i < MAX_LIGHTS; ++i) {
+        if (i >= nlights) break;
+        c += lighting(lightcolor[i], lightpos[i].xyz, lightpos[i].w, vpos, n, Mdiff, Mspec, shininess);
+    }
+    gl_FragColor = vec4(c, 1.0);
+}

@@ -1,0 +1,22 @@
+#version 120
+// Forward reference renderer, vertex stage (§2.4.1, Listings 3-4): the same view-space
+// varyings as the material pass (Listing 10), so the forward and deferred paths light the
+// same interpolated position and tangent frame. Meshes are in world space: modelview = view.
+varying vec2 texcoord;
+varying vec3 vpos;
+varying vec3 normal;
+varying vec3 tangent;
+varying vec3 binormal;
+
+void main()
+{
+    // ftransform() is invariant with the fixed-function depth pre-pass, so the GL_EQUAL
+    // depth test of the multi-pass form (Listing 4) passes exactly the pre-pass's fragments.
+    gl_Position = ftransform();
+    texcoord = gl_MultiTexCoord0.xy;
+    vpos = (gl_ModelViewMatrix * gl_Vertex).xyz;
+    mat3 modelviewrot = mat3(gl_ModelViewMatrix);
+    normal = modelviewrot * gl_Normal;
+    tangent = modelviewrot * gl_MultiTexCoord1.xyz;
+    binormal = modelviewrot * gl_MultiTexCoord2.xyz;
+}

@@ -1,0 +1,63 @@
+// Debug views of every buffer (STYLE lesson 7), drawn into the main frame buffer by the
+// final stage's fixed-function pass: the G-buffer targets of Figure 4, the blur factor of
+// Figure 8, the bloom blur of Figure 10.
+#include "deferred/depth_codec.h"
+#include "deferred/deferred_shader.h"
+#include "dsr_error.h"
+#include "gl/check.h"
+
+namespace dsr {
+
+namespace {
+const char* kNames[] = {"final", "normal", "diffuse", "specular", "depth", "blur-factor", "bloom"};
+}
+
+View view_from_name(const std::string& name) {
+    for (int i = 0; i < 7; ++i)
+        if (name == kNames[i]) return View(i);
+    throw Error("expected a view name (final|normal|diffuse|specular|depth|blur-factor|bloom), got '" + name + "'");
+}
+
+const char* view_name(View v) { return kNames[int(v)]; }
+
+void DeferredShader::draw_view(View view, int out_w, int out_h) {
+    switch (view) {
+        case View::final:
+            final_stage(out_w, out_h);
+            return;
+        case View::normal:
+        case View::diffuse:
+        case View::specular: {
+            int t = view == View::normal ? G_NORMAL : view == View::diffuse ? G_DIFFUSE : G_SPECULAR;
+            draw_texture_to_main(mrt_->texture(t), out_w, out_h);
+            return;
+        }
+        case View::depth: {
+            if (opts_.depth == DepthPath::packed) {
+                draw_texture_to_main(mrt_->texture(G_DEPTH_PACKED), out_w, out_h);
+                return;
+            }
+            // The depth texture, encoded with the packed path's codec so both paths show
+            // the same picture (Figure 4d).
+            Image d = read_gbuffer(PBuffer::DEPTH);
+            for (size_t i = 0; i < d.rgba.size(); i += 4) {
+                glm::vec3 c = pack_depth(d.rgba[i]);
+                d.rgba[i] = c.r, d.rgba[i + 1] = c.g, d.rgba[i + 2] = c.b, d.rgba[i + 3] = 1.0f;
+            }
+            Texture tex(d.width, d.height, GL_RGBA8, GL_RGBA, GL_FLOAT, d.rgba.data());
+            draw_texture_to_main(tex.id(), out_w, out_h);
+            return;
+        }
+        case View::blur_factor:
+            draw_anti_alias(true);  // factor into P-buffer 1, no swap
+            draw_texture_to_main(fb_[1]->texture(0), out_w, out_h);
+            return;
+        case View::bloom:
+            if (!blur_prog_[0].id()) throw Error("the bloom view needs bloom enabled");
+            draw_texture_to_main(fb_[3]->texture(0), out_w, out_h);
+            return;
+    }
+    check_gl("view");
+}
+
+}  // namespace dsr

@@ -1,0 +1,327 @@
+// Forward renderers of §2.4.1 (Listings 3 and 4), the reference for the deferred renderer's error.
+#include "forward/forward_renderer.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "deferred/culling.h"
+#include "deferred/gpu_scene.h"
+#include "dsr_error.h"
+#include "gl/check.h"
+
+namespace dsr {
+
+namespace {
+double now_ms() {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+}  // namespace
+
+ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, ForwardMode mode,
+                                 const std::string& shader_dir, bool listing2_literal)
+    : ForwardRenderer(caps, width, height,
+                      [&] {
+                          ForwardOptions o;
+                          o.mode = mode;
+                          o.listing2_literal = listing2_literal;
+                          return o;
+                      }(),
+                      shader_dir) {}
+
+ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, const ForwardOptions& opts,
+                                 const std::string& shader_dir)
+    : caps_(caps), w_(width), h_(height), opts_(opts) {
+    if (!caps.glsl120) throw Error("forward: GLSL 1.20 is required and this GL offers " + caps.glsl_version);
+    if (width <= 0 || height <= 0) throw Error("forward: bad size");
+    if (opts.float_target) {
+        if (!caps.fbo) throw Error("forward: the float target needs EXT_framebuffer_object, which is missing");
+        if (!caps.texture_float) throw Error("forward: the float target needs ARB_texture_float, which is missing");
+        PBufferDesc d;
+        d.width = width;
+        d.height = height;
+        d.color_formats = {GL_RGBA32F_ARB};
+        d.depth = DepthAttachment::renderbuffer;
+        d.filter = GL_NEAREST;  // copied 1:1
+        target_ = std::make_unique<PBuffer>("forward float target", d);
+    }
+
+    // Lights per pass: Listing 3 keeps every light of an object in one shader. The arrays
+    // (a vec4 and a vec3, each taking a vec4 slot) must fit the fragment uniform space, with
+    // room left for the material uniforms; GL 2.0 promises only 64 components.
+    batch_ = 1;
+    if (opts.mode == ForwardMode::single) {
+        GLint comps = 0;
+        glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
+        batch_ = std::clamp((int(comps) - 64) / 8, 1, std::max(1, opts.max_lights_per_pass));
+    }
+    for (int nm = 0; nm < 2; ++nm) {
+        std::vector<std::string> defs = {"MAX_LIGHTS " + std::to_string(batch_)};
+        if (nm) defs.push_back("NORMAL_MAP");
+        if (opts.listing2_literal) defs.push_back("LISTING2_LITERAL");
+        prog_[nm] = Program(shader_dir, "forward.vert", "forward.frag", defs);
+        prog_[nm].use();
+        prog_[nm].set("normaltex", 0);
+        prog_[nm].set("colortex", 1);
+        prog_[nm].set("speculartex", 2);
+        loc_lightpos_[nm] = glGetUniformLocation(prog_[nm].id(), "lightpos[0]");
+        loc_lightcolor_[nm] = glGetUniformLocation(prog_[nm].id(), "lightcolor[0]");
+    }
+    glUseProgram(0);
+    check_gl("forward: creating the renderer");
+}
+
+ForwardRenderer::~ForwardRenderer() = default;
+
+void ForwardRenderer::set_scene(const Scene& scene) {
+    gpu_ = std::make_unique<GpuScene>(scene);
+    // Bounding sphere per mesh: centre of the bounding box, radius to the farthest vertex.
+    bounds_.clear();
+    for (const Mesh& m : scene.meshes) {
+        Bound b;
+        if (!m.vertices.empty()) {
+            glm::vec3 lo = m.vertices[0].pos, hi = lo;
+            for (const Vertex& v : m.vertices) {
+                lo = glm::min(lo, v.pos);
+                hi = glm::max(hi, v.pos);
+            }
+            b.centre = 0.5f * (lo + hi);
+            for (const Vertex& v : m.vertices) b.radius = std::max(b.radius, glm::length(v.pos - b.centre));
+            b.radius *= 1.0001f;  // float rounding of the lengths: keep the sphere conservative
+        }
+        bounds_.push_back(b);
+    }
+    check_gl("forward: uploading the scene");
+}
+
+// Equation 2 makes a light's contribution exactly zero beyond S_radius, so skipping an object
+// whose bounding sphere the light's sphere does not reach changes no pixel.
+bool ForwardRenderer::touches(size_t mesh, const Light& light) const {
+    return glm::length(bounds_[mesh].centre - light.pos) <= bounds_[mesh].radius + light.radius;
+}
+
+Program& ForwardRenderer::use_material(const Scene& scene, size_t mesh) {
+    const int mi = gpu_->mesh_range(mesh).material;
+    const GpuMaterial& m = gpu_->material(mi);
+    Program& prog = prog_[m.normal_map ? 1 : 0];
+    prog.use();
+    prog.set("diffuse", m.diffuse);
+    prog.set("specular", m.specular);
+    prog.set("shininess", scene.materials[mi].shininess);  // exact, not GpuMaterial's 8-bit code
+    prog.set("tile", m.tile);
+    const GLuint tex[3] = {m.normal_tex, m.diffuse_tex, m.specular_tex};
+    for (int u = 0; u < 3; ++u) {
+        glActiveTexture(GL_TEXTURE0 + u);
+        glBindTexture(GL_TEXTURE_2D, tex[u]);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    return prog;
+}
+
+void ForwardRenderer::set_lights(Program& prog, const std::vector<int>& lights, size_t first, size_t count,
+                                 glm::vec3 ambient) {
+    const int p = &prog == &prog_[1] ? 1 : 0;
+    std::vector<glm::vec4> pos(count);
+    std::vector<glm::vec3> col(count);
+    for (size_t i = 0; i < count; ++i) {
+        pos[i] = eye_lights_[lights[first + i]];
+        col[i] = light_colors_[lights[first + i]];
+    }
+    prog.set("nlights", int(count));
+    prog.set("ambient", ambient);
+    if (count) {
+        glUniform4fv(loc_lightpos_[p], GLsizei(count), glm::value_ptr(pos[0]));
+        glUniform3fv(loc_lightcolor_[p], GLsizei(count), glm::value_ptr(col[0]));
+    }
+}
+
+void ForwardRenderer::draw_mesh(size_t mesh, ForwardStats& st) {
+    gpu_->draw(gpu_->mesh_range(mesh));
+    ++st.passes;
+}
+
+ForwardStats ForwardRenderer::render(const Scene& scene) {
+    if (!gpu_) throw Error("forward: render before set_scene");
+    if (scene.meshes.size() != bounds_.size()) throw Error("forward: render with a scene other than set_scene's");
+    ForwardStats st;
+    const double t0 = now_ms();
+    const Camera& cam = scene.camera;
+    view_ = cam.view();
+    const glm::mat4 proj = cam.projection(float(w_) / float(h_));
+
+    // Lights in eye space (Listing 2 works in view space); lights outside the frustum dropped
+    // (Listing 17's test: conservative, so no visible pixel loses light).
+    const auto frustum = frustum_planes(proj * view_);
+    eye_lights_.assign(scene.lights.size(), glm::vec4(0));
+    light_colors_.assign(scene.lights.size(), glm::vec3(0));
+    light_visible_.assign(scene.lights.size(), 0);
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const Light& l = scene.lights[i];
+        light_visible_[i] = !sphere_outside(frustum, l.pos, l.radius);
+        if (!light_visible_[i]) ++st.lights_culled;
+        eye_lights_[i] = glm::vec4(glm::vec3(view_ * glm::vec4(l.pos, 1.0f)), l.radius);
+        light_colors_[i] = l.color;
+    }
+
+    if (target_) {
+        target_->bind_render();
+    } else {
+        if (caps_.fbo) glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+        glDrawBuffer(GL_BACK);
+        glViewport(0, 0, w_, h_);
+    }
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixf(glm::value_ptr(proj));
+    glMatrixMode(GL_MODELVIEW);
+    glLoadMatrixf(glm::value_ptr(view_));
+    // Every state the passes rely on, set here rather than inherited.
+    glCullFace(GL_BACK);
+    glEnable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_ALPHA_TEST);
+    glDisable(GL_TEXTURE_2D);
+    glDisable(GL_LIGHTING);
+    glColor4f(1, 1, 1, 1);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glClearColor(scene.background.r, scene.background.g, scene.background.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    check_gl("forward: set-up");
+
+    gpu_->bind_all();
+    if (opts_.mode == ForwardMode::single) {
+        draw_single(scene, st);
+    } else {
+        draw_multi(scene, st);
+    }
+    gpu_->unbind();
+
+    for (int u = 2; u >= 0; --u) {
+        glActiveTexture(GL_TEXTURE0 + u);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    glUseProgram(0);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_DEPTH_TEST);
+    check_gl(opts_.mode == ForwardMode::single ? "forward: single-pass lighting" : "forward: multi-pass lighting");
+    if (target_) {
+        target_->unbind_render();
+        copy_to_main();
+    }
+    glFinish();
+    st.ms_frame = now_ms() - t0;
+    check_gl("forward: frame");
+    return st;
+}
+
+// Listing 3: for each object, one pass with every light that reaches it. The first pass lays
+// the surface down (ambient + up to batch_ lights, depth written, no blending); when more
+// lights reach the object than the arrays hold, further passes add the rest on exactly the
+// same fragments (GL_EQUAL, the vertex stage is the same program's).
+void ForwardRenderer::draw_single(const Scene& scene, ForwardStats& st) {
+    std::vector<int> lights;
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        lights.clear();
+        for (size_t i = 0; i < scene.lights.size(); ++i)
+            if (light_visible_[i] && touches(m, scene.lights[i]))
+                lights.push_back(int(i));
+        st.light_object_pairs += int(lights.size());
+        Program& prog = use_material(scene, m);
+        size_t first = std::min(lights.size(), size_t(batch_));
+        set_lights(prog, lights, 0, first, scene.ambient);
+        draw_mesh(m, st);
+        if (first < lights.size()) {
+            glDepthFunc(GL_EQUAL);
+            glDepthMask(GL_FALSE);
+            glEnable(GL_BLEND);
+            for (size_t k = first; k < lights.size(); k += size_t(batch_)) {
+                set_lights(prog, lights, k, std::min(size_t(batch_), lights.size() - k), glm::vec3(0));
+                draw_mesh(m, st);
+            }
+            glDisable(GL_BLEND);
+            glDepthMask(GL_TRUE);
+            glDepthFunc(GL_LEQUAL);
+        }
+    }
+}
+
+// Listing 4: for each light, each object it affects, added to the frame buffer. The depth
+// pre-pass (fixed function, as §3.3.1's) leaves only the visible surface for GL_EQUAL, so
+// hidden fragments are not shaded and each visible one gets each light once. The ambient pass
+// (Eq. 6, Listing 1) lays the surfaces down.
+void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
+    glUseProgram(0);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gpu_->draw_all();
+    ++st.passes;
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    check_gl("forward: depth pre-pass");
+
+    glDepthFunc(GL_EQUAL);
+    glDepthMask(GL_FALSE);
+    static const std::vector<int> none;
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        Program& prog = use_material(scene, m);
+        set_lights(prog, none, 0, 0, scene.ambient);
+        draw_mesh(m, st);
+    }
+    check_gl("forward: ambient pass");
+
+    glEnable(GL_BLEND);
+    std::vector<int> one(1);
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        if (!light_visible_[i]) continue;
+        one[0] = int(i);
+        for (size_t m = 0; m < scene.meshes.size(); ++m) {
+            if (!touches(m, scene.lights[i])) continue;
+            Program& prog = use_material(scene, m);
+            set_lights(prog, one, 0, 1, glm::vec3(0));
+            draw_mesh(m, st);
+            ++st.light_object_pairs;
+        }
+    }
+    glDisable(GL_BLEND);
+}
+
+// The float target to the main frame buffer, 1:1 with nearest sampling: the one rounding to
+// 8 bits. Colours above 1 are clamped here; every term is >= 0, so clamping the sum once is
+// what clamping after each additive pass gives too.
+void ForwardRenderer::copy_to_main() {
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+    glDrawBuffer(GL_BACK);
+    glViewport(0, 0, w_, h_);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 1, 0, 1, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(0);
+    glColor4f(1, 1, 1, 1);
+    glActiveTexture(GL_TEXTURE0);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    target_->bind_texture(0, 0);
+    glBegin(GL_QUADS);
+    glTexCoord2f(0, 0); glVertex2f(0, 0);
+    glTexCoord2f(1, 0); glVertex2f(1, 0);
+    glTexCoord2f(1, 1); glVertex2f(1, 1);
+    glTexCoord2f(0, 1); glVertex2f(0, 1);
+    glEnd();
+    target_->unbind_texture(0, 0);
+    glDisable(GL_TEXTURE_2D);
+    check_gl("forward: copy to the main frame buffer");
+}
+
+}  // namespace dsr

@@ -1,0 +1,96 @@
+// Forward renderers (§2.4.1): the two approaches the tutorial sets deferred shading against,
+// used here as the accuracy reference and as the baseline a user would otherwise pick.
+//   single  Listing 3: one pass per object with all lights touching it in the shader
+//           (uniform arrays; more lights than fit go to further additive passes, GL_EQUAL).
+//   multi   Listing 4: a depth pre-pass, an ambient pass, then one additive pass per light
+//           over the objects whose bounding sphere meets the light's sphere.
+// Both shade per pixel with glsl120/lighting.glsl (Equations 1-5, the function the deferred
+// light pass calls) from the interpolated eye-space position and normal: no G-buffer, no
+// depth reconstruction, float math, the material's shininess exactly. By default the passes
+// accumulate in an RGBA32F target copied to the main frame buffer at the end, so the 8-bit
+// output is the only rounding besides float math and texture filtering, and both forms give
+// the same image.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/caps.h"
+#include "gl/pbuffer.h"
+#include "gl/program.h"
+#include "scene/scene.h"
+
+namespace dsr {
+
+class GpuScene;
+
+enum class ForwardMode { single, multi };
+
+struct ForwardOptions {
+    ForwardMode mode = ForwardMode::single;
+    bool listing2_literal = false;  // Listing 2's v and h exactly (docs/errata.md #1-2)
+    // true: accumulate in an RGBA32F P-buffer (ARB_texture_float + EXT_framebuffer_object) and
+    // round once when copying to the main buffer. false: render straight into the main frame
+    // buffer, so every additive pass of `multi` rounds to 8 bits, as Listing 4 did in 2005.
+    bool float_target = true;
+    // Single mode: lights per pass (the uniform arrays' size), lowered to what
+    // GL_MAX_FRAGMENT_UNIFORM_COMPONENTS holds.
+    int max_lights_per_pass = 64;
+};
+
+struct ForwardStats {
+    double ms_frame = 0;         // wall time of render(), glFinish included
+    int passes = 0;              // geometry submissions (draw calls), the depth pre-pass included
+    int light_object_pairs = 0;  // (light, object) pairs shaded: §3's O(objects x lights)
+    int lights_culled = 0;       // lights outside the view frustum (Listing 17's test)
+};
+
+class ForwardRenderer {
+public:
+    // Needs a current OpenGL context with GLSL 1.20; throws dsr::Error naming a missing capability.
+    ForwardRenderer(const Caps& caps, int width, int height, const ForwardOptions& opts,
+                    const std::string& shader_dir);
+    ForwardRenderer(const Caps& caps, int width, int height, ForwardMode mode, const std::string& shader_dir,
+                    bool listing2_literal = false);
+    ~ForwardRenderer();
+
+    void set_scene(const Scene& scene);
+    // The whole frame into the current main frame buffer (framebuffer 0) of width x height:
+    // background where there is no surface. Read it back with dsr::read_pixels.
+    ForwardStats render(const Scene& scene);
+
+    const ForwardOptions& options() const { return opts_; }
+    int lights_per_pass() const { return batch_; }
+
+private:
+    struct Bound {  // world-space bounding sphere of one mesh, for light-object culling
+        glm::vec3 centre{0};
+        float radius = 0;
+    };
+    void draw_single(const Scene& scene, ForwardStats& st);
+    void draw_multi(const Scene& scene, ForwardStats& st);
+    // Program for mesh `m`, bound, with its material's uniforms and textures set.
+    Program& use_material(const Scene& scene, size_t mesh);
+    void set_lights(Program& prog, const std::vector<int>& lights, size_t first, size_t count, glm::vec3 ambient);
+    void draw_mesh(size_t mesh, ForwardStats& st);
+    bool touches(size_t mesh, const Light& light) const;
+    void copy_to_main();
+
+    Caps caps_;
+    int w_, h_;
+    ForwardOptions opts_;
+    int batch_ = 1;
+    Program prog_[2];  // [normal map?]
+    GLint loc_lightpos_[2] = {-1, -1}, loc_lightcolor_[2] = {-1, -1};
+    std::unique_ptr<PBuffer> target_;  // RGBA32F accumulation, when opts_.float_target
+    std::unique_ptr<GpuScene> gpu_;
+    std::vector<Bound> bounds_;
+    glm::mat4 view_{1};
+    std::vector<glm::vec4> eye_lights_;  // per frame: eye-space position, w = radius
+    std::vector<glm::vec3> light_colors_;
+    std::vector<char> light_visible_;   // per frame: not culled by the frustum
+};
+
+}  // namespace dsr
