@@ -25,7 +25,7 @@ TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o)
 
 LIBS := -lOSMesa -lOpenImageIO -lOpenImageIO_Util -ltinyobjloader -pthread
 
-.PHONY: all run test deps clean
+.PHONY: all run test deps clean figures
 all: $(BUILD)/dsr $(BUILD)/dsr_tests
 
 $(BUILD)/obj/%.o: %.cpp
@@ -63,6 +63,11 @@ run: deps
 test: deps
 	$(MAKE) -j$(JOBS) all
 	$(BUILD)/dsr_tests
+
+# The tutorial's figures, regenerated into docs/figures (docs/figures.md shows them).
+figures: deps
+	$(MAKE) -j$(JOBS) $(BUILD)/dsr
+	$(BUILD)/dsr figures -o docs/figures
 
 clean:
 	rm -rf $(BUILD) out

@@ -137,3 +137,30 @@ TEST(Cli, InfoNamesCapabilitiesAndPaths) {
                           "paths chosen", "depth"})
         EXPECT_NE(r.output.find(k), std::string::npos) << k;
 }
+
+TEST(Cli, FiguresWritesEveryFile) {
+    std::string d = temp_dir();
+    RunResult r = run("figures --size 96x96 -o " + d);
+    ASSERT_EQ(r.status, 0) << r.output;
+    for (const char* f : {"fig4a_normal", "fig4b_diffuse", "fig4c_specular", "fig4d_depth", "fig6_final",
+                          "fig8_blur_factor", "fig8_blur_factor_closeup", "fig9_closeup_without_aa",
+                          "fig9_closeup_with_aa", "fig10a_horizontal_blur", "fig10b_vertical_blur",
+                          "fig10c_composed_blur", "fig11_without_bloom", "fig11_with_bloom"})
+        EXPECT_TRUE(exists(d + "/" + f + ".png")) << f;
+}
+
+// The final stage scales the deferred buffers to the output size (§3.6), and every view runs.
+TEST(Cli, OutSizeAndViews) {
+    std::string d = temp_dir();
+    for (const char* v : {"final", "normal", "diffuse", "specular", "depth", "blur-factor", "bloom"}) {
+        RunResult r = run(std::string("render --size 64x64 --out-size 80x60 --aa --view ") + v + " -o " + d + "/" +
+                          v + ".png --stats " + d + "/s.json");
+        ASSERT_EQ(r.status, 0) << v << ": " << r.output;
+        std::ifstream in(d + "/s.json");
+        auto j = nlohmann::json::parse(in);
+        EXPECT_EQ(j["out_size"][0], 80);
+        EXPECT_EQ(j["view"], v);
+        EXPECT_TRUE(j["ms"].contains("bloom") && j["ms"].contains("aa"));
+    }
+    EXPECT_NE(run("render --view albedo").output.find("--view: expected final|normal"), std::string::npos);
+}

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "deferred/gpu_scene.h"
 #include "dsr_error.h"
 
 namespace dsr {
@@ -105,9 +106,12 @@ void intersect(const Tri& tr, const dvec3& o, const dvec3& d, double t_min, int 
     best.v = v / det;
 }
 
+double unorm8(double c) { return std::round(std::clamp(c, 0.0, 1.0) * 255.0) / 255.0; }
+dvec3 unorm8(const dvec3& c) { return dvec3(unorm8(c.x), unorm8(c.y), unorm8(c.z)); }
+
 }  // namespace
 
-AnalyticTrace analytic_trace(const Scene& scene, int width, int height) {
+AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const AnalyticOptions& opts) {
     if (width <= 0 || height <= 0) throw Error("analytic reference: bad size");
     for (const Material& m : scene.materials)
         if (m.diffuse_map >= 0 || m.normal_map >= 0 || m.specular_map >= 0)
@@ -168,11 +172,20 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height) {
             const dvec3 p = eye + hit.t * d;
             // Phong shading (§2.3): the vertex normals mixed with the hit's barycentric weights,
             // which is what perspective-correct interpolation gives at the pixel centre.
-            const dvec3 n = glm::normalize((1 - hit.u - hit.v) * tr.n0 + hit.u * tr.n1 + hit.v * tr.n2);
-            const dvec3 Mdiff(mat.diffuse), Mspec(mat.specular);
-            const double Mshi = mat.shininess;
-            const dvec3 v = glm::normalize(eye - p);  // Eq. 5: from p to the viewer
-            dvec3 c = Mdiff * dvec3(scene.ambient);   // Eq. 6
+            dvec3 n = glm::normalize((1 - hit.u - hit.v) * tr.n0 + hit.u * tr.n1 + hit.v * tr.n2);
+            dvec3 Mdiff(mat.diffuse), Mspec(mat.specular);
+            double Mshi = mat.shininess;
+            if (opts.gbuffer_normals_8bit) n = glm::normalize(unorm8(n * 0.5 + 0.5) - 0.5);
+            if (opts.gbuffer_materials_8bit) {
+                Mdiff = unorm8(Mdiff);
+                Mspec = unorm8(Mspec);
+                Mshi = std::exp2(11.0 * unorm8(double(encode_shininess(mat.shininess))));
+            }
+            // With passes_8bit every pass's contribution is rounded before the sum (blending
+            // into an RGBA8 target); the clamp to [0, 1] comes last either way.
+            auto pass = [&](const dvec3& x) { return opts.passes_8bit ? unorm8(x) : x; };
+            const dvec3 v = glm::normalize(eye - p);     // Eq. 5: from p to the viewer
+            dvec3 c = pass(Mdiff * dvec3(scene.ambient));  // Eq. 6
             for (const Light& light : scene.lights) {
                 dvec3 l = dvec3(light.pos) - p;  // towards the light (docs/errata.md #3)
                 const double dist = glm::length(l);
@@ -185,7 +198,7 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height) {
                 const dvec3 S(light.color);
                 const dvec3 Idiff = std::max(0.0, glm::dot(l, n)) * Mdiff * S;                   // Eq. 3
                 const dvec3 Ispec = std::pow(std::max(0.0, glm::dot(h, n)), Mshi) * Mspec * S;  // Eq. 4
-                c += att * (Idiff + Ispec);                                                      // Eq. 1
+                c += pass(att * (Idiff + Ispec));                                                // Eq. 1
             }
             for (int k = 0; k < 3; ++k) px[k] = float(std::clamp(c[k], 0.0, 1.0));
         }

@@ -19,13 +19,24 @@
 
 namespace dsr {
 
+// Off by default (the reference). Each switch makes the trace round one quantity the way the
+// deferred path does, so that path's error can be attributed term by term; it is an error
+// model, not a reference.
+struct AnalyticOptions {
+    bool gbuffer_normals_8bit = false;    // G-buffer target 0: n*0.5+0.5 in RGBA8, renormalised
+    bool gbuffer_materials_8bit = false;  // targets 1-2: M_diff, M_spec in RGBA8; M_shi as its
+                                          // 8-bit log2(M_shi)/11 code (encode_shininess)
+    bool passes_8bit = false;             // P-buffer 0 is RGBA8: the ambient pass and each light
+                                          // pass are rounded to 8 bits before they are added
+};
+
 struct AnalyticTrace {
     Image image;             // RGBA, alpha 1, row 0 = bottom (like dsr::read_pixels)
     std::vector<int> mesh;   // per pixel: index into Scene::meshes of the hit, -1 for background
 };
 
 // Throws dsr::Error if a material has a texture map or the size is not positive.
-AnalyticTrace analytic_trace(const Scene& scene, int width, int height);
+AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const AnalyticOptions& opts = {});
 Image analytic_reference(const Scene& scene, int width, int height);
 
 // 1 where the pixel and its 8 neighbours (those inside the image) saw the same mesh (or all

@@ -12,6 +12,11 @@ static const char* kUsage =
     "  render [SCENE] [-o OUT] [--size WxH] [--depth auto|texture|packed]\n"
     "         [--depth-encoding corrected|literal] [--scissor on|off] [--lighting equations|listing]\n"
     "         [--frames N] [--stats FILE.json] [--caps no-mrt,no-depth-texture,...]\n"
+    "         [--out-size WxH] [--view final|normal|diffuse|specular|depth|blur-factor|bloom]\n"
+    "         [--bloom|--no-bloom] [--bloom-scale 2|4] [--bloom-taps N] [--bloom-strength S]\n"
+    "         [--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]\n"
+    "         [--aa-kernel text|listing] [--aa-weight W]\n"
+    "  figures [SCENE] [-o DIR] [--size NxN]   the tutorial's figures 4, 6, 8-11 as PNGs\n"
     "  info [--caps LIST]      GL vendor/renderer/version, capabilities, paths chosen\n"
     "  gen-textures DIR        write the default scene's procedural textures\n";
 
@@ -25,6 +30,7 @@ int main(int argc, char** argv) {
     try {
         if (cmd == "render") return dsr::cmd_render(args);
         if (cmd == "info") return dsr::cmd_info(args);
+        if (cmd == "figures") return dsr::cmd_figures(args);
         if (cmd == "gen-textures") return dsr::cmd_gen_textures(args);
         std::fprintf(stderr, "dsr: unknown command '%s'\n%s", cmd.c_str(), kUsage);
         return 2;

@@ -165,6 +165,8 @@ Image DeferredShader::read_gbuffer(int target) {
     return read_texture(mrt_->texture(target), w_, h_, target == PBuffer::DEPTH);
 }
 
-Image DeferredShader::read_pbuffer(int fb) { return read_texture(fb_[fb]->texture(0), w_, h_, false); }
+Image DeferredShader::read_pbuffer(int fb) {
+    return read_texture(fb_[fb]->texture(0), fb_[fb]->width(), fb_[fb]->height(), false);
+}
 
 }  // namespace dsr

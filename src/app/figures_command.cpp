@@ -1,0 +1,129 @@
+// `dsr figures`: the tutorial's raster figures (4, 6, 8, 9, 10, 11) from the default scene,
+// each a plain PNG; docs/figures.md sets them beside the captions.
+#include <sys/stat.h>
+
+#include <cstdio>
+#include <functional>
+
+#include "app/args.h"
+#include "app/commands.h"
+#include "deferred/deferred_shader.h"
+#include "gl/caps.h"
+#include "gl/readback.h"
+#include "platform/context.h"
+#include "platform/resources.h"
+#include "scene/scene.h"
+
+namespace dsr {
+
+namespace {
+
+Image opaque(Image img) {
+    for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 1.0f;
+    return img;
+}
+
+// A square close-up, magnified with nearest neighbour so single pixels (and aliasing)
+// stay visible. (x0, y0) is the top-left corner in top-down pixel coordinates.
+Image closeup(const Image& src, int x0, int y0, int size, int zoom) {
+    Image out;
+    out.width = out.height = size * zoom;
+    out.rgba.resize(size_t(out.width) * out.height * 4);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) {
+            int sx = x0 + x / zoom;
+            int sy = src.height - 1 - (y0 + (out.height - 1 - y) / zoom);  // rows are bottom-first
+            const float* p = src.at(sx, sy);
+            float* q = out.at(x, y);
+            for (int c = 0; c < 4; ++c) q[c] = p[c];
+        }
+    return out;
+}
+
+}  // namespace
+
+int cmd_figures(const std::vector<std::string>& argv) {
+    Args args("figures", argv);
+    std::string dir = "docs/figures", scene_path;
+    int n = 512, unused = 0;
+    while (!args.done()) {
+        std::string a = args.next();
+        if (a == "-o") dir = args.value(a);
+        else if (a == "--size") {
+            args.size_value(a, n, unused);
+            if (n != unused || n < 64) args.fail("--size: expected a square size of at least 64x64, got '" +
+                                                 std::to_string(n) + "x" + std::to_string(unused) + "'");
+        } else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
+        else if (scene_path.empty()) scene_path = a;
+        else args.fail("expected one scene file, got also '" + a + "'");
+    }
+    if (scene_path.empty()) scene_path = resource_dir("data") + "/default.scene";
+    Scene scene = load_scene(scene_path);
+    mkdir(dir.c_str(), 0755);
+    auto ctx = create_osmesa_context(n, n);
+    Caps caps = probe_caps();
+    const std::string shaders = resource_dir("glsl120");
+    std::vector<std::string> written;
+    auto save = [&](const std::string& name, const Image& img) {
+        write_image(dir + "/" + name, opaque(img));
+        written.push_back(dir + "/" + name);
+    };
+    // One shader per configuration; `then` reads what it needs after one frame.
+    auto frame = [&](ShaderOptions o, const std::function<void(DeferredShader&)>& then) {
+        DeferredShader ds(caps, n, n, o, shaders);
+        ds.set_scene(scene);
+        ds.render(scene, n, n);
+        then(ds);
+    };
+    auto view = [&](DeferredShader& ds, View v) {
+        ds.draw_view(v, n, n);
+        return read_pixels(n, n);
+    };
+    const int cx = n * 300 / 512, cy = n * 220 / 512, cs = n / 4;  // close-up: the red ball's rim on the floor
+
+    ShaderOptions plain;
+    ShaderOptions packed = plain;
+    packed.depth = DepthPath::packed;
+    frame(packed, [&](DeferredShader& ds) {  // Figure 4: the G-buffer of the packed path
+        save("fig4a_normal.png", view(ds, View::normal));
+        save("fig4b_diffuse.png", view(ds, View::diffuse));
+        save("fig4c_specular.png", view(ds, View::specular));
+        save("fig4d_depth.png", view(ds, View::depth));
+    });
+    ShaderOptions full = plain;
+    full.post.bloom = full.post.aa = true;
+    frame(full, [&](DeferredShader& ds) { save("fig6_final.png", view(ds, View::final)); });
+    ShaderOptions aa = plain;
+    aa.post.aa = true;
+    frame(aa, [&](DeferredShader& ds) {
+        Image f = view(ds, View::final);
+        Image b = view(ds, View::blur_factor);
+        save("fig8_blur_factor.png", b);
+        save("fig8_blur_factor_closeup.png", closeup(b, cx, cy, cs, 4));
+        save("fig9_closeup_with_aa.png", closeup(f, cx, cy, cs, 4));
+    });
+    frame(plain, [&](DeferredShader& ds) {
+        Image f = view(ds, View::final);
+        save("fig9_closeup_without_aa.png", closeup(f, cx, cy, cs, 4));
+        save("fig11_without_bloom.png", f);
+    });
+    ShaderOptions bloom = plain;
+    bloom.post.bloom = true;
+    frame(bloom, [&](DeferredShader& ds) {
+        save("fig11_with_bloom.png", view(ds, View::final));
+        // Figure 10 step by step on the un-bloomed lighting result.
+        FrameStats st;
+        ds.geometry_stage(scene);
+        ds.draw_lights(scene, true, st);
+        ds.blur(0, 2, {1, 0}, true);
+        save("fig10a_horizontal_blur.png", ds.read_pbuffer(2));
+        ds.blur(0, 3, {0, 1}, true);
+        save("fig10b_vertical_blur.png", ds.read_pbuffer(3));
+        ds.blur(2, 3, {0, 1}, false);
+        save("fig10c_composed_blur.png", ds.read_pbuffer(3));
+    });
+    for (auto& w : written) std::printf("wrote %s\n", w.c_str());
+    return 0;
+}
+
+}  // namespace dsr
