@@ -14,6 +14,7 @@ uniform vec2 pixel_size;
 uniform float weight;
 uniform vec2 planes;
 uniform float depth_scale;
+uniform vec4 uv_clamp;  // content texels' centres: (min, max); keeps taps off power-of-two padding
 
 varying vec2 texcoord;
 
@@ -27,16 +28,21 @@ const vec2 delta[8] = vec2[8](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0)
 const int FACTOR_TAPS = 8;  // Equation 7 sums all 8 neighbours
 #endif
 
+vec2 tap(vec2 uv)
+{
+    return clamp(uv, uv_clamp.xy, uv_clamp.zw);
+}
+
 float eye_z(vec2 uv)
 {
 #ifdef PACKED_DEPTH
 #ifdef PACKED_LITERAL
-    float d = unpack_depth_literal(texture2D(depth_map, uv).rgb);
+    float d = unpack_depth_literal(texture2D(depth_map, tap(uv)).rgb);
 #else
-    float d = unpack_depth(texture2D(depth_map, uv).rgb);
+    float d = unpack_depth(texture2D(depth_map, tap(uv)).rgb);
 #endif
 #else
-    float d = texture2D(depth_map, uv).r;
+    float d = texture2D(depth_map, tap(uv)).r;
 #endif
     return -planes.y / (planes.x + d);
 }
@@ -47,7 +53,7 @@ void main()
 #ifdef SOURCE_NORMAL
     vec4 tex = texture2D(normal_map, texcoord);
     for (int i = 0; i < FACTOR_TAPS; i++) {
-        vec4 t = texture2D(normal_map, texcoord + delta[i] * pixel_size) - tex;
+        vec4 t = texture2D(normal_map, tap(texcoord + delta[i] * pixel_size)) - tex;
         factor += dot(t, t);
     }
 #endif
@@ -65,7 +71,7 @@ void main()
     factor = min(1.0, factor) * weight;
     vec4 color = vec4(0.0);
     for (int i = 0; i < 8; i++)
-        color += texture2D(color_map, texcoord + delta[i] * pixel_size * factor);
+        color += texture2D(color_map, tap(texcoord + delta[i] * pixel_size * factor));
     color += 2.0 * texture2D(color_map, texcoord);
     gl_FragColor = color / 10.0;
 #endif

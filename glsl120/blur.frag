@@ -10,6 +10,7 @@
 #endif
 uniform sampler2D source;
 uniform vec2 offset[NUMPOINTS];
+uniform vec4 uv_clamp;  // content texels' centres: (min, max); keeps taps off power-of-two padding
 
 varying vec2 texcoord;
 
@@ -17,7 +18,7 @@ void main()
 {
     vec3 sum = vec3(0.0);
     for (int i = 0; i < NUMPOINTS; i++) {
-        vec3 t = texture2D(source, texcoord + offset[i]).rgb;
+        vec3 t = texture2D(source, clamp(texcoord + offset[i], uv_clamp.xy, uv_clamp.zw)).rgb;
 #if defined(LISTING)
         sum += vec3(dot(t, t));
 #elif defined(SELECT)

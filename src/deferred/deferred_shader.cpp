@@ -19,18 +19,26 @@ double now_ms() {
 DeferredShader::DeferredShader(const Caps& caps, int width, int height, const ShaderOptions& opts,
                                const std::string& shader_dir)
     : caps_(caps), w_(width), h_(height), opts_(opts) {
-    if (!caps.glsl120) throw Error("GLSL 1.20 is required and this GL offers " + caps.glsl_version);
-    if (!caps.fbo) throw Error("EXT_framebuffer_object is required for P-buffers and is missing");
-    if (!caps.draw_buffers || caps.max_draw_buffers < 4)
-        throw Error("ARB_draw_buffers with 4 targets is required for the G-buffer (GL_MAX_DRAW_BUFFERS = " +
-                    std::to_string(caps.max_draw_buffers) + ")");
+    if (!caps.glsl120)
+        throw Error("GLSL 1.20 is required and this GL offers " +
+                    (caps.glsl_version.empty() ? std::string("none") : caps.glsl_version) + " (GL " + caps.version + ")");
     if (opts.depth == DepthPath::texture && !caps.depth_texture)
         throw Error("--depth texture needs ARB_depth_texture, which is missing (use --depth packed)");
+
+    // Each capability decides one path (info and --stats name them).
+    const int targets = opts.depth == DepthPath::packed ? 4 : 3;
+    mrt_path_ = caps.fbo && caps.draw_buffers && caps.max_draw_buffers >= targets;
+    paths_.depth = opts.depth == DepthPath::texture ? "texture" : "packed";
+    paths_.gbuffer = mrt_path_ ? "mrt" : "per-target";
+    paths_.render_target = caps.fbo ? "fbo" : "copy";
+    paths_.textures = caps.npot ? "npot" : "pow2";
 
     // Figure 3: normal, diffuse, specular+shininess, and packed depth only when that path runs.
     PBufferDesc g;
     g.width = width;
     g.height = height;
+    g.use_fbo = caps.fbo;
+    g.pow2 = !caps.npot;
     g.color_formats = {GL_RGBA8, GL_RGBA8, GL_RGBA8};
     if (opts.depth == DepthPath::packed) {
         g.color_formats.push_back(GL_RGBA8);
@@ -51,6 +59,8 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
         p.height = i < 2 ? height : std::max(1, height / bs);
         p.color_formats = {GL_RGBA8};
         p.filter = GL_LINEAR;
+        p.use_fbo = caps.fbo;
+        p.pow2 = !caps.npot;
         fb_[i] = std::make_unique<PBuffer>("P-buffer " + std::to_string(i), p);
     }
 
@@ -61,7 +71,15 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     for (int nm = 0; nm < 2; ++nm) {
         auto defs = depth_defs;
         if (nm) defs.push_back("NORMAL_MAP");
-        material_prog_[nm] = Program(shader_dir, "material.vert", "material.frag", defs);
+        if (mrt_path_) {
+            material_prog_[nm][0] = Program(shader_dir, "material.vert", "material.frag", defs);
+        } else {  // §3.2: without MRT, one pass per G-buffer target
+            for (int t = 0; t < targets; ++t) {
+                auto d = defs;
+                d.push_back("TARGET_" + std::to_string(t));
+                material_prog_[nm][1 + t] = Program(shader_dir, "material.vert", "material.frag", d);
+            }
+        }
     }
     auto ldefs = depth_defs;
     if (opts.listing2_literal) ldefs.push_back("LISTING2_LITERAL");
@@ -89,7 +107,7 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
 
 DeferredShader::~DeferredShader() = default;
 
-void DeferredShader::set_scene(const Scene& scene) { gpu_ = std::make_unique<GpuScene>(scene); }
+void DeferredShader::set_scene(const Scene& scene) { gpu_ = std::make_unique<GpuScene>(scene, !caps_.npot); }
 
 // --- Listing 6 -------------------------------------------------------------------------
 void DeferredShader::mrt_bind_render() { mrt_->bind_render(); }
@@ -112,9 +130,11 @@ void DeferredShader::set_ortho(int w, int h) {
 
 void DeferredShader::draw_rect(float x0, float y0, float x1, float y1, bool rays) {
     const float xs[4] = {x0, x1, x1, x0}, ys[4] = {y0, y0, y1, y1};
+    // The G-buffer's content may be padded to powers of two: scale into its extent.
+    const float sx = mrt_->tex_scale_x() / float(w_), sy = mrt_->tex_scale_y() / float(h_);
     glBegin(GL_QUADS);
     for (int i = 0; i < 4; ++i) {
-        glMultiTexCoord2f(GL_TEXTURE0, xs[i] / float(w_), ys[i] / float(h_));
+        glMultiTexCoord2f(GL_TEXTURE0, xs[i] * sx, ys[i] * sy);
         if (rays) glMultiTexCoord3f(GL_TEXTURE1, corner_rays_[i].x, corner_rays_[i].y, corner_rays_[i].z);
         glVertex2f(xs[i], ys[i]);
     }
@@ -142,31 +162,39 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
 }
 
 // --- read-back ---------------------------------------------------------------------------
-static Image read_texture(GLuint tex, int w, int h, bool depth) {
+// The w x h content of a texture of tw x th (larger when padded to powers of two).
+static Image read_texture(GLuint tex, int w, int h, int tw, int th, bool depth) {
     Image img;
     img.width = w;
     img.height = h;
     img.rgba.assign(size_t(w) * h * 4, 1.0f);
     glBindTexture(GL_TEXTURE_2D, tex);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    if (depth) {
-        std::vector<float> d(size_t(w) * h);
-        glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, d.data());
-        for (size_t i = 0; i < d.size(); ++i) img.rgba[i * 4] = img.rgba[i * 4 + 1] = img.rgba[i * 4 + 2] = d[i];
-    } else {
-        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, img.rgba.data());
-    }
+    std::vector<float> all(size_t(tw) * th * (depth ? 1 : 4));
+    glGetTexImage(GL_TEXTURE_2D, 0, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, all.data());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float* q = img.at(x, y);
+            if (depth) {
+                q[0] = q[1] = q[2] = all[size_t(y) * tw + x];
+            } else {
+                const float* p = &all[(size_t(y) * tw + x) * 4];
+                for (int c = 0; c < 4; ++c) q[c] = p[c];
+            }
+        }
     glBindTexture(GL_TEXTURE_2D, 0);
     check_gl("reading a buffer back");
     return img;
 }
 
 Image DeferredShader::read_gbuffer(int target) {
-    return read_texture(mrt_->texture(target), w_, h_, target == PBuffer::DEPTH);
+    return read_texture(mrt_->texture(target), w_, h_, mrt_->texture_width(), mrt_->texture_height(),
+                        target == PBuffer::DEPTH);
 }
 
 Image DeferredShader::read_pbuffer(int fb) {
-    return read_texture(fb_[fb]->texture(0), fb_[fb]->width(), fb_[fb]->height(), false);
+    const PBuffer& b = *fb_[fb];
+    return read_texture(b.texture(0), b.width(), b.height(), b.texture_width(), b.texture_height(), false);
 }
 
 }  // namespace dsr

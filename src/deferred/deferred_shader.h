@@ -53,6 +53,14 @@ struct StageTimes {
     double geometry = 0, ambient = 0, lights = 0, bloom = 0, aa = 0, final = 0, frame = 0;
 };
 
+// The path taken at each capability decision (issue: old GL 2.x hardware paths).
+struct Paths {
+    std::string depth;          // "texture" | "packed"
+    std::string gbuffer;        // "mrt" (one pass, ARB_draw_buffers) | "per-target" (one pass per target)
+    std::string render_target;  // "fbo" (EXT_framebuffer_object) | "copy" (main buffer + glCopyTexSubImage2D)
+    std::string textures;       // "npot" | "pow2" (padded targets, rescaled material maps)
+};
+
 struct FrameStats {
     int lights_total = 0, lights_culled = 0, lights_drawn = 0;
     long long light_fragments = 0;  // fragments the light passes shaded (occlusion queries)
@@ -89,7 +97,7 @@ public:
     void final_stage(int out_w, int out_h);
     // Any texture drawn into the main frame buffer the way the final stage draws P-buffer 0
     // (fixed function, bilinear when scaled): how `--view` shows the other buffers.
-    void draw_texture_to_main(GLuint texture, int out_w, int out_h);
+    void draw_texture_to_main(GLuint texture, int out_w, int out_h, glm::vec2 tex_scale = {1, 1});
     // After render(): replaces the main frame buffer's image with `view` (views.cpp).
     // Depth is shown encoded as colour (Figure 4d) on both depth paths.
     void draw_view(View view, int out_w, int out_h);
@@ -112,6 +120,7 @@ public:
     int width() const { return w_; }
     int height() const { return h_; }
     const ShaderOptions& options() const { return opts_; }
+    const Paths& paths() const { return paths_; }
     // Eye-space camera of the current frame.
     const glm::mat4& view_matrix() const { return view_; }
     const glm::mat4& proj_matrix() const { return proj_; }
@@ -128,7 +137,7 @@ public:
 
 private:
     void draw_depth();
-    void draw_material();
+    void draw_material(int target);
     void draw_ambient(const Scene& scene);
     void draw_lighting(const Scene& scene, bool scissors, FrameStats& stats);
     // Screen-aligned quad over [x0,x1]x[y0,y1] (window pixels), texcoord 0 = 0..1;
@@ -140,9 +149,11 @@ private:
     Caps caps_;
     int w_, h_;
     ShaderOptions opts_;
+    Paths paths_;
+    bool mrt_path_ = true;  // one material pass into all targets
     std::unique_ptr<PBuffer> mrt_;      // G-buffer
     std::unique_ptr<PBuffer> fb_[4];    // P-buffers 0-3
-    Program material_prog_[2];          // [normal map?]
+    Program material_prog_[2][5];       // [normal map?][0: all targets (MRT), 1+t: target t only]
     Program light_prog_;
     Program blur_prog_[2];              // [select]
     Program aa_prog_[2];                // [factor only]

@@ -1,16 +1,18 @@
 // Final stage (§3.6): P-buffer 0 drawn into the main frame buffer by fixed function,
 // scaled with bilinear filtering when the output size differs from the buffers'.
+#include <cmath>
+
 #include "deferred/deferred_shader.h"
 #include "gl/check.h"
 
 namespace dsr {
 
 void DeferredShader::final_stage(int out_w, int out_h) {
-    draw_texture_to_main(fb_[0]->texture(0), out_w, out_h);
+    draw_texture_to_main(fb_[0]->texture(0), out_w, out_h, {fb_[0]->tex_scale_x(), fb_[0]->tex_scale_y()});
 }
 
-void DeferredShader::draw_texture_to_main(GLuint texture, int out_w, int out_h) {
-    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+void DeferredShader::draw_texture_to_main(GLuint texture, int out_w, int out_h, glm::vec2 ts) {
+    if (caps_.fbo) glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);  // no-FBO path: already there
     glDrawBuffer(GL_BACK);
     glViewport(0, 0, out_w, out_h);
     glMatrixMode(GL_PROJECTION);
@@ -33,16 +35,17 @@ void DeferredShader::draw_texture_to_main(GLuint texture, int out_w, int out_h) 
     GLint tw = 0, th = 0;
     glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &tw);
     glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &th);
-    GLint filter = (tw == out_w && th == out_h) ? GL_NEAREST : GL_LINEAR, old_min = 0, old_mag = 0;
+    const bool same = std::lround(tw * ts.x) == out_w && std::lround(th * ts.y) == out_h;
+    GLint filter = same ? GL_NEAREST : GL_LINEAR, old_min = 0, old_mag = 0;
     glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &old_min);
     glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &old_mag);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
     glBegin(GL_QUADS);
     glTexCoord2f(0, 0); glVertex2f(0, 0);
-    glTexCoord2f(1, 0); glVertex2f(1, 0);
-    glTexCoord2f(1, 1); glVertex2f(1, 1);
-    glTexCoord2f(0, 1); glVertex2f(0, 1);
+    glTexCoord2f(ts.x, 0); glVertex2f(1, 0);
+    glTexCoord2f(ts.x, ts.y); glVertex2f(1, 1);
+    glTexCoord2f(0, ts.y); glVertex2f(0, 1);
     glEnd();
     // Leave the texture as the post passes expect it (they sample P-buffer 0 bilinearly).
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, old_min);

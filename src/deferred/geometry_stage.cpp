@@ -44,19 +44,29 @@ void DeferredShader::geometry_stage(const Scene& scene) {
                                 glm::vec4(opts_.packed_literal ? pack_depth_literal(1.0f) : pack_depth(1.0f), 0)};
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
-    for (int t = 0; t < mrt_->color_targets(); ++t) {
-        mrt_->set_draw_targets({t});
-        glClearColor(clear[t].r, clear[t].g, clear[t].b, clear[t].a);
-        glClear(GL_COLOR_BUFFER_BIT);
-    }
-    std::vector<int> all;
-    for (int t = 0; t < mrt_->color_targets(); ++t) all.push_back(t);
-    mrt_->set_draw_targets(all);
     check_gl("geometry stage: set-up");
-
-    draw_depth();     // line 20
+    draw_depth();  // line 20
     check_gl("geometry stage: depth pass");
-    draw_material();  // line 22
+    if (mrt_path_) {
+        for (int t = 0; t < mrt_->color_targets(); ++t) {
+            mrt_->set_draw_targets({t});
+            glClearColor(clear[t].r, clear[t].g, clear[t].b, clear[t].a);
+            glClear(GL_COLOR_BUFFER_BIT);
+        }
+        std::vector<int> all;
+        for (int t = 0; t < mrt_->color_targets(); ++t) all.push_back(t);
+        mrt_->set_draw_targets(all);
+        draw_material(-1);  // line 22: all targets in one pass (ARB_draw_buffers)
+    } else {
+        // §3.2: without MRT, "rendering one pass per buffer"; the depth pre-pass makes each
+        // pass shade only the visible fragments, like the single MRT pass.
+        for (int t = 0; t < mrt_->color_targets(); ++t) {
+            mrt_->set_draw_targets({t});
+            glClearColor(clear[t].r, clear[t].g, clear[t].b, clear[t].a);
+            glClear(GL_COLOR_BUFFER_BIT);
+            draw_material(t);
+        }
+    }
     check_gl("geometry stage: material pass");
 
     glDisable(GL_CULL_FACE);
@@ -77,14 +87,14 @@ void DeferredShader::draw_depth() {
     glDepthMask(GL_FALSE);
 }
 
-// Listing 9, with its test un-inverted (docs/errata.md): materials with a normal map use
+// Listing 9 (target -1: all targets at once; t: only G-buffer target t), with its test un-inverted (docs/errata.md): materials with a normal map use
 // the tangent-space shader, the others a variant that skips the normal map.
-void DeferredShader::draw_material() {
+void DeferredShader::draw_material(int target) {
     gpu_->bind_all();
     int bound = -1;
     for (const DrawRange& r : gpu_->ranges()) {
         const GpuMaterial& m = gpu_->material(r.material);
-        Program& prog = material_prog_[m.normal_map ? 1 : 0];
+        Program& prog = material_prog_[m.normal_map ? 1 : 0][target + 1];
         if (bound != int(prog.id())) {
             prog.use();
             prog.set("normaltex", 0);

@@ -12,7 +12,30 @@ float encode_shininess(float shininess) {
     return std::clamp(std::log2(std::max(shininess, 1.0f)) / 11.0f, 0.0f, 1.0f);
 }
 
-GpuScene::GpuScene(const Scene& scene) {
+// Bilinear resample with wrap-around (material maps tile), for GPUs without NPOT textures.
+static Image resample_wrapped(const Image& src, int w, int h) {
+    Image dst;
+    dst.width = w;
+    dst.height = h;
+    dst.rgba.resize(size_t(w) * h * 4);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float fx = (x + 0.5f) * src.width / w - 0.5f, fy = (y + 0.5f) * src.height / h - 0.5f;
+            int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+            float ax = fx - x0, ay = fy - y0;
+            auto px = [&](int xx, int yy) {
+                return src.at(((xx % src.width) + src.width) % src.width, ((yy % src.height) + src.height) % src.height);
+            };
+            for (int c = 0; c < 4; ++c)
+                dst.at(x, y)[c] = (1 - ay) * ((1 - ax) * px(x0, y0)[c] + ax * px(x0 + 1, y0)[c]) +
+                                  ay * ((1 - ax) * px(x0, y0 + 1)[c] + ax * px(x0 + 1, y0 + 1)[c]);
+        }
+    return dst;
+}
+
+static bool is_pow2(int v) { return v > 0 && (v & (v - 1)) == 0; }
+
+GpuScene::GpuScene(const Scene& scene, bool pow2_textures) {
     // Group meshes by material so each material is one contiguous index range.
     std::vector<int> order(scene.meshes.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
@@ -44,9 +67,18 @@ GpuScene::GpuScene(const Scene& scene) {
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 
     // Material maps: RGBA8 with mipmaps, repeating (tile > 1 wraps, Listing 13).
-    for (const Image& img : scene.textures)
-        textures_.emplace_back(img.width, img.height, GL_RGBA8, GL_RGBA, GL_FLOAT, img.rgba.data(), GL_LINEAR,
-                               GL_REPEAT, true);
+    for (const Image& img : scene.textures) {
+        if (pow2_textures && !(is_pow2(img.width) && is_pow2(img.height))) {
+            int w = 1, h = 1;
+            while (w * 2 <= img.width) w *= 2;  // nearest power of two at or below
+            while (h * 2 <= img.height) h *= 2;
+            Image r = resample_wrapped(img, w, h);
+            textures_.emplace_back(w, h, GL_RGBA8, GL_RGBA, GL_FLOAT, r.rgba.data(), GL_LINEAR, GL_REPEAT, true);
+        } else {
+            textures_.emplace_back(img.width, img.height, GL_RGBA8, GL_RGBA, GL_FLOAT, img.rgba.data(), GL_LINEAR,
+                                   GL_REPEAT, true);
+        }
+    }
     // A missing diffuse or specular map is a white texel: map x colour = colour exactly.
     const float one[4] = {1, 1, 1, 1};
     white_ = Texture(1, 1, GL_RGBA8, GL_RGBA, GL_FLOAT, one, GL_NEAREST, GL_REPEAT);

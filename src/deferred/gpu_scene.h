@@ -30,7 +30,9 @@ float encode_shininess(float shininess);
 
 class GpuScene {
 public:
-    explicit GpuScene(const Scene& scene);
+    // pow2_textures: without ARB_texture_non_power_of_two, material maps are rescaled to
+    // powers of two (texture coordinates are unchanged: maps repeat).
+    explicit GpuScene(const Scene& scene, bool pow2_textures = false);
     ~GpuScene();
     GpuScene(const GpuScene&) = delete;
     GpuScene& operator=(const GpuScene&) = delete;

@@ -14,14 +14,22 @@ double now_ms() {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// [0,w]x[0,h] in the current ortho camera, texture coordinates 0..1.
-void draw_quad(float w, float h) {
+// [0,w]x[0,h] in the current ortho camera, texture coordinates 0..(sx,sy): the source's
+// content extent (less than 1 when padded to powers of two).
+void draw_quad(float w, float h, float sx, float sy) {
     glBegin(GL_QUADS);
     glTexCoord2f(0, 0); glVertex2f(0, 0);
-    glTexCoord2f(1, 0); glVertex2f(w, 0);
-    glTexCoord2f(1, 1); glVertex2f(w, h);
-    glTexCoord2f(0, 1); glVertex2f(0, h);
+    glTexCoord2f(sx, 0); glVertex2f(w, 0);
+    glTexCoord2f(sx, sy); glVertex2f(w, h);
+    glTexCoord2f(0, sy); glVertex2f(0, h);
     glEnd();
+}
+
+// Texel centres of a buffer's content in texture coordinates: what CLAMP_TO_EDGE gives on
+// an unpadded texture, so padded (power-of-two) buffers sample the same.
+glm::vec4 uv_clamp(const PBuffer& b) {
+    float tw = float(b.texture_width()), th = float(b.texture_height());
+    return {0.5f / tw, 0.5f / th, (b.width() - 0.5f) / tw, (b.height() - 0.5f) / th};
 }
 
 void post_states() {
@@ -62,15 +70,17 @@ void DeferredShader::blur(int src, int dst, glm::vec2 dir, bool select) {
     prog.use();
     prog.set("source", 0);
     const int n = opts_.post.bloom_taps;
+    const float sx = fb_[src]->tex_scale_x(), sy = fb_[src]->tex_scale_y();
     std::vector<GLfloat> offs(size_t(n) * 2);
     for (int i = 0; i < n; ++i) {
         float k = float(i - (n - 1) / 2);
-        offs[2 * i] = k * dir.x / float(dw);
-        offs[2 * i + 1] = k * dir.y / float(dh);
+        offs[2 * i] = k * dir.x * sx / float(dw);
+        offs[2 * i + 1] = k * dir.y * sy / float(dh);
     }
     glUniform2fv(glGetUniformLocation(prog.id(), "offset"), n, offs.data());
+    prog.set("uv_clamp", uv_clamp(*fb_[src]));
     fb_bind_texture(src, 0);
-    draw_quad(float(dw), float(dh));
+    draw_quad(float(dw), float(dh), sx, sy);
     fb_unbind_texture(src, 0);
     glUseProgram(0);
     fb_unbind_render(dst);
@@ -83,7 +93,7 @@ void DeferredShader::draw_bloom() {
     blur(0, 2, {1, 0}, true);
     blur(2, 3, {0, 1}, false);
     post_states();
-    fb_bind_render(0);
+    fb_[0]->bind_render(true);  // blends onto the lit image
     set_ortho(w_, h_);
     glUseProgram(0);
     float s = opts_.post.bloom_strength;
@@ -94,7 +104,7 @@ void DeferredShader::draw_bloom() {
     glBlendFunc(GL_ONE, GL_ONE);
     glEnable(GL_BLEND);
     fb_bind_texture(3, 0);
-    draw_quad(float(w_), float(h_));
+    draw_quad(float(w_), float(h_), fb_[3]->tex_scale_x(), fb_[3]->tex_scale_y());
     fb_unbind_texture(3, 0);
     glDisable(GL_BLEND);
     glDisable(GL_TEXTURE_2D);
@@ -114,14 +124,15 @@ void DeferredShader::draw_anti_alias(bool factor_only) {
     prog.set("normal_map", 0);
     prog.set("color_map", 1);
     prog.set("depth_map", 2);
-    prog.set("pixel_size", glm::vec2(1.0f / float(w_), 1.0f / float(h_)));
+    prog.set("pixel_size", glm::vec2(1.0f / float(fb_[0]->texture_width()), 1.0f / float(fb_[0]->texture_height())));
     prog.set("weight", opts_.post.aa_weight);
     prog.set("planes", planes_);
     prog.set("depth_scale", opts_.post.aa_depth_scale);
+    prog.set("uv_clamp", uv_clamp(*fb_[0]));  // G-buffer and P-buffer 0 share their size
     mrt_bind_texture(G_NORMAL, 0);
     fb_bind_texture(0, 1);
     mrt_bind_texture(depth_target(), 2);
-    draw_quad(float(w_), float(h_));
+    draw_quad(float(w_), float(h_), fb_[0]->tex_scale_x(), fb_[0]->tex_scale_y());
     mrt_unbind_texture(depth_target(), 2);
     fb_unbind_texture(0, 1);
     mrt_unbind_texture(G_NORMAL, 0);

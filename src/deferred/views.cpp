@@ -29,12 +29,13 @@ void DeferredShader::draw_view(View view, int out_w, int out_h) {
         case View::diffuse:
         case View::specular: {
             int t = view == View::normal ? G_NORMAL : view == View::diffuse ? G_DIFFUSE : G_SPECULAR;
-            draw_texture_to_main(mrt_->texture(t), out_w, out_h);
+            draw_texture_to_main(mrt_->texture(t), out_w, out_h, {mrt_->tex_scale_x(), mrt_->tex_scale_y()});
             return;
         }
         case View::depth: {
             if (opts_.depth == DepthPath::packed) {
-                draw_texture_to_main(mrt_->texture(G_DEPTH_PACKED), out_w, out_h);
+                draw_texture_to_main(mrt_->texture(G_DEPTH_PACKED), out_w, out_h,
+                                     {mrt_->tex_scale_x(), mrt_->tex_scale_y()});
                 return;
             }
             // The depth texture, encoded with the packed path's codec so both paths show
@@ -44,17 +45,21 @@ void DeferredShader::draw_view(View view, int out_w, int out_h) {
                 glm::vec3 c = pack_depth(d.rgba[i]);
                 d.rgba[i] = c.r, d.rgba[i + 1] = c.g, d.rgba[i + 2] = c.b, d.rgba[i + 3] = 1.0f;
             }
-            Texture tex(d.width, d.height, GL_RGBA8, GL_RGBA, GL_FLOAT, d.rgba.data());
-            draw_texture_to_main(tex.id(), out_w, out_h);
+            // Same extent as the G-buffer's textures (padded on the pow2 path).
+            Texture tex(mrt_->texture_width(), mrt_->texture_height(), GL_RGBA8, GL_RGBA, GL_FLOAT, nullptr);
+            glBindTexture(GL_TEXTURE_2D, tex.id());
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, d.width, d.height, GL_RGBA, GL_FLOAT, d.rgba.data());
+            glBindTexture(GL_TEXTURE_2D, 0);
+            draw_texture_to_main(tex.id(), out_w, out_h, {mrt_->tex_scale_x(), mrt_->tex_scale_y()});
             return;
         }
         case View::blur_factor:
             draw_anti_alias(true);  // factor into P-buffer 1, no swap
-            draw_texture_to_main(fb_[1]->texture(0), out_w, out_h);
+            draw_texture_to_main(fb_[1]->texture(0), out_w, out_h, {fb_[1]->tex_scale_x(), fb_[1]->tex_scale_y()});
             return;
         case View::bloom:
             if (!blur_prog_[0].id()) throw Error("the bloom view needs bloom enabled");
-            draw_texture_to_main(fb_[3]->texture(0), out_w, out_h);
+            draw_texture_to_main(fb_[3]->texture(0), out_w, out_h, {fb_[3]->tex_scale_x(), fb_[3]->tex_scale_y()});
             return;
     }
     check_gl("view");

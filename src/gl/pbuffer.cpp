@@ -5,30 +5,46 @@
 
 namespace dsr {
 
+int next_pow2(int v) {
+    int p = 1;
+    while (p < v) p <<= 1;
+    return p;
+}
+
 PBuffer::PBuffer(std::string name, const PBufferDesc& desc) : name_(std::move(name)), desc_(desc) {
-    glGenFramebuffersEXT(1, &fbo_);
-    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fbo_);
-    for (size_t i = 0; i < desc.color_formats.size(); ++i) {
-        GLenum fmt = desc.color_formats[i];
+    tex_w_ = desc.pow2 ? next_pow2(desc.width) : desc.width;
+    tex_h_ = desc.pow2 ? next_pow2(desc.height) : desc.height;
+    for (GLenum fmt : desc.color_formats) {
         bool fl = fmt == GL_RGBA16F_ARB || fmt == GL_RGBA32F_ARB || fmt == GL_RGB16F_ARB || fmt == GL_RGB32F_ARB;
-        colors_.emplace_back(desc.width, desc.height, fmt, GL_RGBA, fl ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr,
-                             desc.filter, GL_CLAMP_TO_EDGE);
-        glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GLenum(GL_COLOR_ATTACHMENT0_EXT + i), GL_TEXTURE_2D,
-                                  colors_.back().id(), 0);
+        colors_.emplace_back(tex_w_, tex_h_, fmt, GL_RGBA, fl ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr, desc.filter,
+                             GL_CLAMP_TO_EDGE);
     }
     if (desc.depth == DepthAttachment::texture) {
-        depth_tex_ = Texture(desc.width, desc.height, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT,
-                             nullptr, GL_NEAREST, GL_CLAMP_TO_EDGE);
+        depth_tex_ = Texture(tex_w_, tex_h_, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr,
+                             GL_NEAREST, GL_CLAMP_TO_EDGE);
         glBindTexture(GL_TEXTURE_2D, depth_tex_.id());
         // Read raw depth, not a shadow comparison (Listing 20 samples it as a float).
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE_ARB, GL_NONE);
         glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE_ARB, GL_LUMINANCE);
         glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    check_gl(("creating the textures of " + name_).c_str());
+    if (!desc.use_fbo) {
+        // Copy mode: the main frame buffer is the render target; its depth buffer serves as
+        // the depth attachment (a depth texture is filled by copying from it).
+        return;
+    }
+    glGenFramebuffersEXT(1, &fbo_);
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fbo_);
+    for (size_t i = 0; i < colors_.size(); ++i)
+        glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GLenum(GL_COLOR_ATTACHMENT0_EXT + i), GL_TEXTURE_2D,
+                                  colors_[i].id(), 0);
+    if (desc.depth == DepthAttachment::texture) {
         glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_TEXTURE_2D, depth_tex_.id(), 0);
     } else if (desc.depth == DepthAttachment::renderbuffer) {
         glGenRenderbuffersEXT(1, &depth_rb_);
         glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, depth_rb_);
-        glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_DEPTH_COMPONENT24, desc.width, desc.height);
+        glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_DEPTH_COMPONENT24, tex_w_, tex_h_);
         glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, 0);
         glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT, depth_rb_);
     }
@@ -49,23 +65,88 @@ PBuffer::~PBuffer() {
     if (fbo_) glDeleteFramebuffersEXT(1, &fbo_);
 }
 
-void PBuffer::bind_render() {
+void PBuffer::bind_render(bool keep_contents) {
     if (textures_bound_ > 0)
         throw Error("P-buffer " + name_ + ": bind_render while it is bound as a texture (§3.2 forbids both at once)");
-    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fbo_);
+    if (desc_.use_fbo) glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fbo_);
     glViewport(0, 0, desc_.width, desc_.height);
     rendering_ = true;
+    if (!desc_.use_fbo) {
+        copy_target_ = colors_.empty() ? -1 : 0;
+        if (keep_contents && copy_target_ >= 0) {
+            // The main buffer holds another buffer's image: draw ours back (fixed function,
+            // 1:1 texels) before the pass blends onto it.
+            GLboolean blend = glIsEnabled(GL_BLEND);
+            glDisable(GL_BLEND);
+            glMatrixMode(GL_PROJECTION);
+            glPushMatrix();
+            glLoadIdentity();
+            glOrtho(0, 1, 0, 1, -1, 1);
+            glMatrixMode(GL_MODELVIEW);
+            glPushMatrix();
+            glLoadIdentity();
+            glActiveTexture(GL_TEXTURE0);
+            glEnable(GL_TEXTURE_2D);
+            glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+            glBindTexture(GL_TEXTURE_2D, colors_[0].id());
+            float sx = tex_scale_x(), sy = tex_scale_y();
+            glBegin(GL_QUADS);
+            glTexCoord2f(0, 0); glVertex2f(0, 0);
+            glTexCoord2f(sx, 0); glVertex2f(1, 0);
+            glTexCoord2f(sx, sy); glVertex2f(1, 1);
+            glTexCoord2f(0, sy); glVertex2f(0, 1);
+            glEnd();
+            glBindTexture(GL_TEXTURE_2D, 0);
+            glDisable(GL_TEXTURE_2D);
+            glMatrixMode(GL_PROJECTION);
+            glPopMatrix();
+            glMatrixMode(GL_MODELVIEW);
+            glPopMatrix();
+            if (blend) glEnable(GL_BLEND);
+        }
+        return;
+    }
     std::vector<int> all;
     for (int i = 0; i < color_targets(); ++i) all.push_back(i);
     if (!all.empty()) set_draw_targets(all);
 }
 
+void PBuffer::copy_to_textures(bool depth) {
+    // Read from the buffer the pass drew into.
+    GLint draw = GL_BACK;
+    glGetIntegerv(GL_DRAW_BUFFER, &draw);
+    glReadBuffer(GLenum(draw));
+    if (copy_target_ >= 0) {
+        glBindTexture(GL_TEXTURE_2D, colors_[copy_target_].id());
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, desc_.width, desc_.height);
+    }
+    if (depth && depth_tex_) {
+        glBindTexture(GL_TEXTURE_2D, depth_tex_.id());
+        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, desc_.width, desc_.height);
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    check_gl(("copying into P-buffer " + name_).c_str());
+}
+
 void PBuffer::unbind_render() {
-    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+    if (desc_.use_fbo)
+        glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+    else if (rendering_)
+        copy_to_textures(true);
     rendering_ = false;
+    copy_target_ = -1;
 }
 
 void PBuffer::set_draw_targets(const std::vector<int>& targets) {
+    if (!desc_.use_fbo) {
+        // One colour buffer: one target at a time. What was drawn for the previous target
+        // is saved to its texture before the next one starts.
+        if (targets.size() != 1)
+            throw Error("P-buffer " + name_ + ": without framebuffer objects only one target can be drawn at a time");
+        if (rendering_ && copy_target_ >= 0 && copy_target_ != targets[0]) copy_to_textures(false);
+        copy_target_ = targets[0];
+        return;
+    }
     GLenum bufs[8];
     int n = 0;
     for (int t : targets) bufs[n++] = GLenum(GL_COLOR_ATTACHMENT0_EXT + t);

@@ -1,6 +1,13 @@
 // The tutorial's pPBuffer (§3.2, Listing 6): an offscreen buffer used either as a render
-// target or as a texture, never both at once. Built on EXT_framebuffer_object with texture
-// attachments, so a pass renders straight into the textures the next pass samples.
+// target or as a texture, never both at once. Two implementations behind one interface:
+//  * fbo:  EXT_framebuffer_object with texture attachments; a pass renders straight into the
+//          textures the next pass samples (render-to-texture, no copy).
+//  * copy: no framebuffer objects (the pbuffer era without WGL_ARB_render_texture): the pass
+//          renders into the lower-left region of the main frame buffer, and the region is
+//          copied into the textures with glCopyTexSubImage2D when the target changes or the
+//          buffer is unbound. The buffer must fit in the main frame buffer.
+// Without non-power-of-two textures the textures are padded to powers of two; the content is
+// the lower-left width x height, and tex_scale() gives its extent in texture coordinates.
 #pragma once
 #include <string>
 #include <vector>
@@ -17,7 +24,11 @@ struct PBufferDesc {
     std::vector<GLenum> color_formats;   // one texture per colour target (GL_RGBA8 …)
     DepthAttachment depth = DepthAttachment::none;
     GLenum filter = GL_NEAREST;          // G-buffer reads are 1:1 (§3): nearest
+    bool use_fbo = true;                 // false: the copy implementation
+    bool pow2 = false;                   // pad textures to powers of two
 };
+
+int next_pow2(int v);
 
 class PBuffer {
 public:
@@ -30,7 +41,9 @@ public:
 
     // Render target: binds the framebuffer, sets the viewport, enables all colour targets
     // (ARB_draw_buffers). Fails loudly if any of its textures is bound for reading.
-    void bind_render();
+    // keep_contents: start from the buffer's current image (a pass that blends onto it). The
+    // fbo implementation always keeps it; the copy one draws the texture back first.
+    void bind_render(bool keep_contents = false);
     void unbind_render();
     // Writes only these colour targets (one target: a single-target pass; all: MRT).
     void set_draw_targets(const std::vector<int>& targets);
@@ -42,12 +55,21 @@ public:
     int width() const { return desc_.width; }
     int height() const { return desc_.height; }
     int color_targets() const { return static_cast<int>(colors_.size()); }
+    int texture_width() const { return tex_w_; }
+    int texture_height() const { return tex_h_; }
+    // Content extent in texture coordinates: (1,1) unless padded to powers of two.
+    float tex_scale_x() const { return float(desc_.width) / float(tex_w_); }
+    float tex_scale_y() const { return float(desc_.height) / float(tex_h_); }
+    bool uses_fbo() const { return desc_.use_fbo; }
     bool is_rendering() const { return rendering_; }
     const std::string& name() const { return name_; }
 
 private:
+    void copy_to_textures(bool depth);
     std::string name_;
     PBufferDesc desc_;
+    int tex_w_ = 0, tex_h_ = 0;
+    int copy_target_ = -1;  // copy mode: the colour target the main buffer currently holds
     GLuint fbo_ = 0, depth_rb_ = 0;
     std::vector<Texture> colors_;
     Texture depth_tex_;
