@@ -25,7 +25,7 @@ TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o)
 
 LIBS := -lOSMesa -lOpenImageIO -lOpenImageIO_Util -ltinyobjloader -pthread
 
-.PHONY: all run test deps clean figures
+.PHONY: all run test test-legacy deps clean figures
 all: $(BUILD)/dsr $(BUILD)/dsr_tests
 
 $(BUILD)/obj/%.o: %.cpp
@@ -63,6 +63,12 @@ run: deps
 test: deps
 	$(MAKE) -j$(JOBS) all
 	$(BUILD)/dsr_tests
+
+# The old-GL matrix (every combination of no-mrt, no-depth-texture, no-fbo, no-npot), the Mesa
+# overrides and softpipe at full size. `make test` runs the same tests at a small size.
+test-legacy: deps
+	$(MAKE) -j$(JOBS) all
+	DSR_TEST_SIZE=512 $(BUILD)/dsr_tests --gtest_filter='Fallbacks.*:Legacy.*'
 
 # The tutorial's figures, regenerated into docs/figures (docs/figures.md shows them).
 figures: deps

@@ -21,19 +21,22 @@ struct RenderResult {
     Image image;
     FrameStats stats;
     std::string renderer;
+    Paths paths;
 };
 
 inline Scene default_scene() { return load_scene(resource_dir("data") + "/default.scene"); }
 
-inline RenderResult render_scene(const Scene& scene, int w, int h, const ShaderOptions& opts) {
+inline RenderResult render_scene(const Scene& scene, int w, int h, const ShaderOptions& opts,
+                                 const std::vector<std::string>& force_off = {}) {
     auto ctx = create_osmesa_context(w, h);
-    Caps caps = probe_caps();
+    Caps caps = probe_caps(force_off);
     DeferredShader ds(caps, w, h, opts, resource_dir("glsl120"));
     ds.set_scene(scene);
     RenderResult r;
     r.stats = ds.render(scene, w, h);
     r.image = read_pixels(w, h);
     r.renderer = caps.renderer;
+    r.paths = ds.paths();
     return r;
 }
 

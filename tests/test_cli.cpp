@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <climits>
 #include <cstdio>
@@ -29,8 +30,8 @@ std::string dsr_binary() {
     return dir.substr(0, dir.find_last_of('/')) + "/dsr";
 }
 
-RunResult run(const std::string& args) {
-    std::string cmd = dsr_binary() + " " + args + " 2>&1";
+RunResult run(const std::string& args, const std::string& env = "") {
+    std::string cmd = (env.empty() ? "" : "env " + env + " ") + dsr_binary() + " " + args + " 2>&1";
     RunResult r{-1, ""};
     FILE* p = popen(cmd.c_str(), "r");
     if (!p) return r;
@@ -163,4 +164,41 @@ TEST(Cli, OutSizeAndViews) {
         EXPECT_TRUE(j["ms"].contains("bloom") && j["ms"].contains("aa"));
     }
     EXPECT_NE(run("render --view albedo").output.find("--view: expected final|normal"), std::string::npos);
+}
+
+// Mesa itself hides a capability: the probe must read the real GL, not only --caps.
+TEST(Legacy, MesaHidesFramebufferObjects) {
+    std::string d = temp_dir();
+    RunResult r = run("render --size 64x48 -o " + d + "/copy.png --stats " + d + "/s.json",
+                      "MESA_EXTENSION_OVERRIDE=-GL_EXT_framebuffer_object");
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::ifstream in(d + "/s.json");
+    auto j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["paths"]["render_target"], "copy");
+    EXPECT_EQ(j["paths"]["gbuffer"], "per-target");
+    EXPECT_TRUE(j["caps_forced_off"].empty());  // nothing was forced: Mesa said no
+    RunResult info = run("info", "MESA_EXTENSION_OVERRIDE=-GL_EXT_framebuffer_object");
+    EXPECT_NE(info.output.find("no  render to texture"), std::string::npos) << info.output;
+}
+
+TEST(Legacy, MesaAtOpenGL21AndGlsl120) {
+    const char* env = "MESA_GL_VERSION_OVERRIDE=2.1 MESA_GLSL_VERSION_OVERRIDE=120";
+    RunResult info = run("info", env);
+    ASSERT_EQ(info.status, 0) << info.output;
+    EXPECT_NE(info.output.find("GL_VERSION     2.1"), std::string::npos) << info.output;
+    EXPECT_NE(info.output.find("GLSL           1.20"), std::string::npos) << info.output;
+    std::string d = temp_dir();
+    RunResult r = run("render --size 64x48 -o " + d + "/a.png", env);
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(exists(d + "/a.png"));
+}
+
+// No fallback exists for GLSL: one clear line naming it, non-zero exit, no output.
+TEST(Legacy, MissingGlslIsOneClearLine) {
+    std::string d = temp_dir();
+    RunResult r = run("render --size 32x32 --caps no-glsl -o " + d + "/a.png");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.output.find("GLSL 1.20 is required"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(exists(d + "/a.png"));
 }

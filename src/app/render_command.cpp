@@ -89,7 +89,8 @@ int cmd_render(const std::vector<std::string>& argv) {
     post.bloom = bloom < 0 ? scene.post_bloom : bloom == 1;
     post.aa = aa < 0 ? scene.post_aa : aa == 1;
     if (view == View::bloom) post.bloom = true;  // the view shows the bloom blur
-    auto ctx = create_osmesa_context(out_w, out_h);
+    // The no-FBO path renders its buffers inside the main frame buffer: make it fit both.
+    auto ctx = create_osmesa_context(std::max(w, out_w), std::max(h, out_h));
     Caps caps = probe_caps(split_caps(caps_list));
     ShaderOptions opts;
     if (depth == "auto") opts.depth = caps.depth_texture ? DepthPath::texture : DepthPath::packed;
@@ -121,6 +122,10 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["frames"] = frames;
     j["gl_renderer"] = caps.renderer;
     j["depth_path"] = opts.depth == DepthPath::texture ? "texture" : "packed";
+    const Paths& paths = ds.paths();
+    j["paths"] = {{"depth", paths.depth}, {"gbuffer", paths.gbuffer}, {"render_target", paths.render_target},
+                  {"textures", paths.textures}};
+    j["caps_forced_off"] = caps.forced_off;
     j["depth_encoding"] = opts.depth == DepthPath::packed ? encoding : "depth-texture";
     j["lighting"] = listing2 ? "listing" : "equations";
     j["scissor"] = scissor;

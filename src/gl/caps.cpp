@@ -26,11 +26,11 @@ static std::string gl_string(GLenum e) {
 }
 
 Caps probe_caps(const std::vector<std::string>& force_off) {
-    static const char* known[] = {"no-mrt", "no-depth-texture", "no-fbo", "no-npot", "no-float"};
+    static const char* known[] = {"no-mrt", "no-depth-texture", "no-fbo", "no-npot", "no-float", "no-glsl"};
     for (const auto& f : force_off)
         if (std::none_of(std::begin(known), std::end(known), [&](const char* k) { return f == k; }))
             throw Error("unknown capability '" + f +
-                        "' (expected no-mrt, no-depth-texture, no-fbo, no-npot or no-float)");
+                        "' (expected no-mrt, no-depth-texture, no-fbo, no-npot, no-float or no-glsl)");
     auto off = [&](const char* k) { return std::find(force_off.begin(), force_off.end(), k) != force_off.end(); };
 
     Caps c;
@@ -42,7 +42,8 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
     std::sscanf(c.glsl_version.c_str(), "%d.%d", &c.glsl_major, &c.glsl_minor);
     auto at_least = [](int ma, int mi, int wa, int wi) { return ma > wa || (ma == wa && mi >= wi); };
     bool gl20 = at_least(c.gl_major, c.gl_minor, 2, 0);
-    c.glsl120 = at_least(c.glsl_major, c.glsl_minor, 1, 20);
+    c.glsl120 = at_least(c.glsl_major, c.glsl_minor, 1, 20) &&
+                (gl20 || has_extension("GL_ARB_shading_language_100")) && !off("no-glsl");
     c.draw_buffers = (gl20 || has_extension("GL_ARB_draw_buffers")) && !off("no-mrt");
     GLint mdb = 1;
     if (c.draw_buffers) glGetIntegerv(GL_MAX_DRAW_BUFFERS_ARB, &mdb);

@@ -23,7 +23,7 @@ struct Caps {
 };
 
 // Reads the current context. `force_off` lists capabilities to report missing
-// (no-mrt, no-depth-texture, no-fbo, no-npot, no-float); unknown names throw dsr::Error.
+// (no-mrt, no-depth-texture, no-fbo, no-npot, no-float, no-glsl); unknown names throw dsr::Error.
 Caps probe_caps(const std::vector<std::string>& force_off = {});
 
 // One line per capability with the extension it comes from, for `dsr info`.

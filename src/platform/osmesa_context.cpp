@@ -18,7 +18,10 @@ public:
                                OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 2,
                                OSMESA_CONTEXT_MINOR_VERSION, 1, 0};
         ctx_ = OSMesaCreateContextAttribs(attribs, nullptr);
-        if (!ctx_) throw Error("OSMesa: cannot create an OpenGL 2.1 compatibility context");
+        // A GL older than 2.1 (e.g. MESA_GL_VERSION_OVERRIDE=1.5) still gets a context, so the
+        // capability probe can say exactly what is missing.
+        if (!ctx_) ctx_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
+        if (!ctx_) throw Error("OSMesa: cannot create an OpenGL context");
         if (!OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, w, h)) {
             OSMesaDestroyContext(ctx_);
             throw Error("OSMesa: cannot make the context current at " + std::to_string(w) + "x" + std::to_string(h));
