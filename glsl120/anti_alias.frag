@@ -4,7 +4,7 @@
 // colour sampled at offsets scaled by that factor (no edge: no offset, no blur).
 // Variants: SOURCE_NORMAL, SOURCE_DEPTH (both may be set), LISTING_KERNEL (Listing 21's
 // table, which repeats (-1,1) and lacks (-1,-1), and sums 4 neighbours for the factor),
-// FACTOR_ONLY (writes the factor as grey: Figure 8), PACKED_DEPTH / PACKED_LITERAL.
+// FACTOR_ONLY (writes the factor as grey: Figure 8), PACKED_DEPTH / ENC_*.
 #include "depth_codec.glsl"
 
 uniform sampler2D normal_map;  // unit 0: G-buffer normal target
@@ -13,6 +13,7 @@ uniform sampler2D depth_map;   // unit 2: depth texture or packed depth target
 uniform vec2 pixel_size;
 uniform float weight;
 uniform vec2 planes;
+uniform vec3 zrange;
 uniform float depth_scale;
 uniform vec4 uv_clamp;  // content texels' centres: (min, max); keeps taps off power-of-two padding
 
@@ -35,16 +36,7 @@ vec2 tap(vec2 uv)
 
 float eye_z(vec2 uv)
 {
-#ifdef PACKED_DEPTH
-#ifdef PACKED_LITERAL
-    float d = unpack_depth_literal(texture2D(depth_map, tap(uv)).rgb);
-#else
-    float d = unpack_depth(texture2D(depth_map, tap(uv)).rgb);
-#endif
-#else
-    float d = texture2D(depth_map, tap(uv)).r;
-#endif
-    return -planes.y / (planes.x + d);
+    return surface_eye_z(depth_map, tap(uv), planes, zrange);
 }
 
 void main()

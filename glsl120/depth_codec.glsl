@@ -44,3 +44,42 @@ float unpack_depth(vec3 c)
     vec3 b = floor(c * 255.0 + 0.5);
     return (b.x * 65536.0 + b.y * 256.0 + b.z) / 16777215.0;
 }
+
+// What the packed target holds (--depth-encoding; one of ENC_LITERAL, ENC_LINEAR, ENC_LOG, else
+// the corrected packing of the window depth). zrange = (near, far, ln(far/near)); planes as
+// §3.4.3. CPU twins: encode_eye_z / decode_eye_z in src/deferred/depth_codec.cpp.
+vec3 packed_encode(float z, vec2 planes, vec3 zrange)
+{
+#if defined(ENC_LITERAL)
+    return pack_depth_literal((planes.x * z + planes.y) / -z);  // Listing 13 line 27
+#elif defined(ENC_LINEAR)
+    return pack_depth((-z - zrange.x) / (zrange.y - zrange.x));
+#elif defined(ENC_LOG)
+    return pack_depth(log(-z / zrange.x) / zrange.z);
+#else
+    return pack_depth((planes.x * z + planes.y) / -z);
+#endif
+}
+
+float packed_eye_z(vec3 c, vec2 planes, vec3 zrange)
+{
+#if defined(ENC_LITERAL)
+    return -planes.y / (planes.x + unpack_depth_literal(c));  // Listing 20 line 21
+#elif defined(ENC_LINEAR)
+    return -(zrange.x + unpack_depth(c) * (zrange.y - zrange.x));
+#elif defined(ENC_LOG)
+    return -zrange.x * exp(unpack_depth(c) * zrange.z);
+#else
+    return -planes.y / (planes.x + unpack_depth(c));
+#endif
+}
+
+// Eye-space z of the surface at uv: from the depth texture (§3.4.3) or the packed target.
+float surface_eye_z(sampler2D depth_map, vec2 uv, vec2 planes, vec3 zrange)
+{
+#ifdef PACKED_DEPTH
+    return packed_eye_z(texture2D(depth_map, uv).rgb, planes, zrange);
+#else
+    return -planes.y / (planes.x + texture2D(depth_map, uv).r);
+#endif
+}

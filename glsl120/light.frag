@@ -1,6 +1,8 @@
 #version 120
 // Lighting pass for one point light (Listing 20). Variants: PACKED_DEPTH (depth from the
-// RGB8 target, Listing 18 / corrected codec), PACKED_LITERAL, LISTING2_LITERAL.
+// RGB8 target, Listing 18 / ENC_* encodings), LISTING2_LITERAL, LIGHT_DEPTH_TEST (reject
+// surfaces in front of or behind the light's sphere before shading), OUTPUT_POSITION (write the
+// reconstructed eye-space position instead of light: accuracy measurements).
 #include "depth_codec.glsl"
 #include "lighting.glsl"
 
@@ -11,29 +13,31 @@ uniform sampler2D depth_map;     // unit 3
 uniform vec4 lightpos;           // eye space, w = radius
 uniform vec3 lightcolor;
 uniform vec2 planes;             // §3.4.3: (-f/(f-n), -f*n/(f-n))
+uniform vec3 zrange;             // (near, far, ln(far/near)) for the linear and log encodings
 
 varying vec2 texcoord;
 varying vec3 vpos;
 
 void main()
 {
-#ifdef PACKED_DEPTH
-#ifdef PACKED_LITERAL
-    float depth = unpack_depth_literal(texture2D(depth_map, texcoord).rgb);
-#else
-    float depth = unpack_depth(texture2D(depth_map, texcoord).rgb);
-#endif
-#else
-    float depth = texture2D(depth_map, texcoord).r;
-#endif
     vec3 pos;
-    pos.z = -planes.y / (planes.x + depth);
+    pos.z = surface_eye_z(depth_map, texcoord, planes, zrange);  // pos.z = -planes.y/(planes.x+depth)
+#ifdef LIGHT_DEPTH_TEST
+    // Beyond the tutorial: a surface outside the sphere's depth span [z-r, z+r] (background
+    // included: it sits at the far plane) cannot be lit; reject it before any other work.
+    if (abs(pos.z - lightpos.z) > lightpos.w)
+        discard;
+#endif
     pos.xy = vpos.xy / vpos.z * pos.z;
 
     vec3 normal = texture2D(normal_map, texcoord).xyz - 0.5;
     float len = length(normal);
     normal = len > 0.1 ? normal / len : vec3(0.0);  // background and degenerate normals: unlit
 
+#ifdef OUTPUT_POSITION
+    gl_FragColor = vec4(pos, len > 0.1 ? 1.0 : 0.0);
+    return;
+#endif
     vec3 diffuse = texture2D(diffuse_map, texcoord).rgb;
     vec4 specular = texture2D(specular_map, texcoord);
     vec3 c = lighting(lightcolor, lightpos.xyz, lightpos.w, pos, normal, diffuse, specular.rgb,

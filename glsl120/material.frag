@@ -3,9 +3,10 @@
 //   target 0: normal  (n*0.5+0.5)
 //   target 1: diffuse (map x colour), alpha 1 marks a covered pixel
 //   target 2: specular (map x colour), alpha = log2(shininess)/11
-//   target 3: depth packed into RGB8 (PACKED_DEPTH only: Listing 11 / corrected codec)
-// Variants: NORMAL_MAP (tangent-space normal map), PACKED_DEPTH, PACKED_LITERAL,
-// TARGET_n (no MRT: write only target n to gl_FragData[0], §3.2).
+//   target 3: depth packed into RGB8 (PACKED_DEPTH only; ENC_* picks the encoding)
+// Variants: NORMAL_MAP (tangent-space normal map; without it no tangent-space work),
+// NO_SPECULAR (material without specular: no specular map read), PACKED_DEPTH, ENC_LITERAL,
+// ENC_LINEAR, ENC_LOG, TARGET_n (no MRT: write only target n to gl_FragData[0], §3.2).
 #include "depth_codec.glsl"
 
 uniform sampler2D normaltex;    // unit 0
@@ -15,6 +16,7 @@ uniform vec3 diffuse;
 uniform vec3 specular;
 uniform float shininess_code;
 uniform vec2 planes;
+uniform vec3 zrange;  // (near, far, ln(far/near))
 uniform float tile;
 
 varying vec2 texcoord;
@@ -34,14 +36,13 @@ void main()
 #endif
     vec4 t0 = vec4(n * 0.5 + 0.5, 1.0);
     vec4 t1 = vec4(texture2D(colortex, txcoord).rgb * diffuse, 1.0);
-    vec4 t2 = vec4(texture2D(speculartex, txcoord).rgb * specular, shininess_code);
-#ifdef PACKED_DEPTH
-    float d = (planes.x * vpos.z + planes.y) / -vpos.z;  // Listing 13 line 27
-#ifdef PACKED_LITERAL
-    vec4 t3 = vec4(pack_depth_literal(d), 1.0);
+#ifdef NO_SPECULAR
+    vec4 t2 = vec4(0.0, 0.0, 0.0, shininess_code);
 #else
-    vec4 t3 = vec4(pack_depth(d), 1.0);
+    vec4 t2 = vec4(texture2D(speculartex, txcoord).rgb * specular, shininess_code);
 #endif
+#ifdef PACKED_DEPTH
+    vec4 t3 = vec4(packed_encode(vpos.z, planes, zrange), 1.0);  // Listings 11, 13
 #endif
 #if defined(TARGET_0)
     gl_FragData[0] = t0;

@@ -39,7 +39,7 @@ TEST(Pipeline, LiteralPackingIsWorseThanCorrected) {
     Scene s = default_scene();
     auto tex = render_scene(s, kSize, kSize, with_depth(DepthPath::texture));
     ShaderOptions lit = with_depth(DepthPath::packed);
-    lit.packed_literal = true;
+    lit.encoding = DepthEncoding::literal;
     auto literal = render_scene(s, kSize, kSize, lit);
     auto packed = render_scene(s, kSize, kSize, with_depth(DepthPath::packed));
     ImageDiff dl = compare_logged("texture vs literal packed", literal.image, tex.image, 2 * kLsb);
@@ -60,10 +60,12 @@ TEST(Pipeline, ListingTwoLightingDiffers) {
     EXPECT_GT(d.failing, 100);
 }
 
-// §3.4.2: the scissor rectangle only removes fragments the light cannot reach.
+// §3.4.2: the scissor rectangle only removes fragments the light cannot reach. Measured with
+// the per-light depth test off, so every fragment in a rectangle is shaded.
 TEST(Pipeline, ScissorChangesFragmentsNotImage) {
     Scene s = default_scene();
     ShaderOptions on, off;
+    on.skip.light_depth_test = off.skip.light_depth_test = false;
     off.scissor = false;
     auto a = render_scene(s, kSize, kSize, on);
     auto b = render_scene(s, kSize, kSize, off);
@@ -74,6 +76,53 @@ TEST(Pipeline, ScissorChangesFragmentsNotImage) {
     EXPECT_LT(a.stats.light_fragments, b.stats.light_fragments);
     EXPECT_EQ(b.stats.light_fragments, (long long)b.stats.lights_drawn * kSize * kSize);
     EXPECT_EQ(a.stats.light_fragments, a.stats.scissor_pixels);  // no fragment is lost inside a rectangle
+}
+
+// Beyond the tutorial: the per-light depth test rejects surfaces outside the light's depth
+// span before shading. Those surfaces get nothing from the light, so the image is unchanged.
+TEST(Pipeline, LightDepthTestChangesFragmentsNotImage) {
+    Scene s = default_scene();
+    ShaderOptions with, without;
+    without.skip.light_depth_test = false;
+    for (DepthPath p : {DepthPath::texture, DepthPath::packed}) {
+        with.depth = without.depth = p;
+        auto a = render_scene(s, kSize, kSize, with);
+        auto b = render_scene(s, kSize, kSize, without);
+        ImageDiff d = compare_logged("light depth test on vs off", a.image, b.image, kLsb);
+        std::printf("[ stats    ] light_fragments with the test %lld, without %lld\n", a.stats.light_fragments,
+                    b.stats.light_fragments);
+        EXPECT_EQ(d.max_abs, 0.0);
+        EXPECT_LT(a.stats.light_fragments, b.stats.light_fragments * 3 / 4);
+    }
+}
+
+// Zero-colour lights and lights whose rectangle is empty are skipped; without the skip they
+// are drawn for nothing, and the image is the same.
+TEST(Pipeline, EmptyLightSkipChangesWorkNotImage) {
+    Scene s = default_scene();
+    Light dark = s.lights[0];
+    dark.color = glm::vec3(0);
+    s.lights.push_back(dark);
+    ShaderOptions with, without;
+    without.skip.empty_lights = false;
+    auto a = render_scene(s, 128, 128, with);
+    auto b = render_scene(s, 128, 128, without);
+    EXPECT_EQ(compare_images(a.image, b.image, 0).max_abs, 0.0);
+    EXPECT_EQ(a.stats.lights_drawn + 1, b.stats.lights_drawn);
+}
+
+// Shader variants per material only remove work: the image without them differs only by the
+// flat normal map's 8-bit tilt (128/255 is not 0.5, ~0.2 degrees) on materials without a map,
+// which the red ball's shininess-256 highlight amplifies to 9 LSB on a few pixels.
+TEST(Pipeline, MaterialVariantsChangeWorkNotImage) {
+    Scene s = default_scene();
+    ShaderOptions with, without;
+    without.skip.material_variants = false;
+    auto a = render_scene(s, 128, 128, with);
+    auto b = render_scene(s, 128, 128, without);
+    ImageDiff d = compare_logged("material variants on vs off", a.image, b.image, 2 * kLsb);
+    EXPECT_LE(d.max_lsb(), 16.0);
+    EXPECT_LE(d.failing_fraction(), 0.001);
 }
 
 // A light outside the view frustum is culled (Listing 17) and changes nothing.

@@ -10,7 +10,8 @@
 static const char* kUsage =
     "usage: dsr COMMAND [options]\n"
     "  render [SCENE] [-o OUT] [--size WxH] [--depth auto|texture|packed]\n"
-    "         [--depth-encoding corrected|literal] [--scissor on|off] [--lighting equations|listing]\n"
+    "         [--depth-encoding corrected|literal|linear|log] [--no-skip variants,empty-lights,light-depth-test]\n"
+    "         [--scissor on|off] [--lighting equations|listing]\n"
     "         [--frames N] [--stats FILE.json] [--caps no-mrt,no-depth-texture,...]\n"
     "         [--out-size WxH] [--view final|normal|diffuse|specular|depth|blur-factor|bloom]\n"
     "         [--bloom|--no-bloom] [--bloom-scale 2|4] [--bloom-taps N] [--bloom-strength S]\n"

@@ -43,6 +43,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     bool scissor = true, listing2 = false;
     int bloom = -1, aa = -1;  // -1: as the scene's `post` line says
     PostOptions post;
+    SkipOptions skip;
     std::string view_name_arg = "final";
     std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";
     while (!args.done()) {
@@ -50,7 +51,15 @@ int cmd_render(const std::vector<std::string>& argv) {
         if (a == "-o" || a == "--output") out = args.value(a);
         else if (a == "--size") args.size_value(a, w, h);
         else if (a == "--depth") depth = args.choice(a, {"auto", "texture", "packed"});
-        else if (a == "--depth-encoding") encoding = args.choice(a, {"corrected", "literal"});
+        else if (a == "--depth-encoding") encoding = args.choice(a, {"corrected", "literal", "linear", "log"});
+        else if (a == "--no-skip") {
+            for (const std::string& k : split_caps(args.value(a))) {
+                if (k == "variants") skip.material_variants = false;
+                else if (k == "empty-lights") skip.empty_lights = false;
+                else if (k == "light-depth-test") skip.light_depth_test = false;
+                else args.fail("--no-skip: expected variants, empty-lights or light-depth-test, got '" + k + "'");
+            }
+        }
         else if (a == "--scissor") scissor = args.on_off(a);
         else if (a == "--lighting") listing2 = args.choice(a, {"equations", "listing"}) == "listing";
         else if (a == "--frames") frames = args.int_value(a, 1, 100000);
@@ -95,7 +104,8 @@ int cmd_render(const std::vector<std::string>& argv) {
     ShaderOptions opts;
     if (depth == "auto") opts.depth = caps.depth_texture ? DepthPath::texture : DepthPath::packed;
     else opts.depth = depth == "texture" ? DepthPath::texture : DepthPath::packed;
-    opts.packed_literal = encoding == "literal";
+    opts.encoding = encoding_from_name(encoding);
+    opts.skip = skip;
     opts.listing2_literal = listing2;
     opts.scissor = scissor;
     opts.post = post;
@@ -128,6 +138,8 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["caps_forced_off"] = caps.forced_off;
     j["depth_encoding"] = opts.depth == DepthPath::packed ? encoding : "depth-texture";
     j["lighting"] = listing2 ? "listing" : "equations";
+    j["skips"] = {{"variants", skip.material_variants}, {"empty_lights", skip.empty_lights},
+                  {"light_depth_test", skip.light_depth_test}};
     j["scissor"] = scissor;
     j["bloom"] = post.bloom;
     j["aa"] = post.aa;

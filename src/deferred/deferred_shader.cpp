@@ -18,10 +18,12 @@ double now_ms() {
 
 DeferredShader::DeferredShader(const Caps& caps, int width, int height, const ShaderOptions& opts,
                                const std::string& shader_dir)
-    : caps_(caps), w_(width), h_(height), opts_(opts) {
+    : caps_(caps), w_(width), h_(height), opts_(opts), shader_dir_(shader_dir) {
     if (!caps.glsl120)
         throw Error("GLSL 1.20 is required and this GL offers " +
                     (caps.glsl_version.empty() ? std::string("none") : caps.glsl_version) + " (GL " + caps.version + ")");
+    if (opts.float_accum && !(caps.texture_float && caps.fbo))
+        throw Error("float accumulation needs ARB_texture_float and EXT_framebuffer_object");
     if (opts.depth == DepthPath::texture && !caps.depth_texture)
         throw Error("--depth texture needs ARB_depth_texture, which is missing (use --depth packed)");
 
@@ -57,7 +59,8 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
         PBufferDesc p;
         p.width = i < 2 ? width : std::max(1, width / bs);   // 2 and 3: reduced (§3.5.2)
         p.height = i < 2 ? height : std::max(1, height / bs);
-        p.color_formats = {GL_RGBA8};
+        // P-buffers 0 and 1 in float for stress runs, so NaN and Inf survive to be counted.
+        p.color_formats = {opts.float_accum && i < 2 ? GLenum(GL_RGBA32F_ARB) : GLenum(GL_RGBA8)};
         p.filter = GL_LINEAR;
         p.use_fbo = caps.fbo;
         p.pow2 = !caps.npot;
@@ -66,23 +69,33 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
 
     // Shader table: every program this configuration uses is compiled now (STYLE lesson 5).
     std::vector<std::string> depth_defs;
-    if (opts.depth == DepthPath::packed) depth_defs.push_back("PACKED_DEPTH");
-    if (opts.depth == DepthPath::packed && opts.packed_literal) depth_defs.push_back("PACKED_LITERAL");
-    for (int nm = 0; nm < 2; ++nm) {
-        auto defs = depth_defs;
-        if (nm) defs.push_back("NORMAL_MAP");
-        if (mrt_path_) {
-            material_prog_[nm][0] = Program(shader_dir, "material.vert", "material.frag", defs);
-        } else {  // §3.2: without MRT, one pass per G-buffer target
-            for (int t = 0; t < targets; ++t) {
-                auto d = defs;
-                d.push_back("TARGET_" + std::to_string(t));
-                material_prog_[nm][1 + t] = Program(shader_dir, "material.vert", "material.frag", d);
+    if (opts.depth == DepthPath::packed) {
+        depth_defs.push_back("PACKED_DEPTH");
+        if (opts.encoding == DepthEncoding::literal) depth_defs.push_back("ENC_LITERAL");
+        if (opts.encoding == DepthEncoding::linear) depth_defs.push_back("ENC_LINEAR");
+        if (opts.encoding == DepthEncoding::log) depth_defs.push_back("ENC_LOG");
+    }
+    // Material variants: [normal map][no specular]. Without the skip, every material takes the
+    // full shader (normal map and specular map read), as a single-shader renderer would.
+    for (int nm = 0; nm < 2; ++nm)
+        for (int ns = 0; ns < 2; ++ns) {
+            if (!opts.skip.material_variants && (nm == 0 || ns == 1)) continue;
+            auto defs = depth_defs;
+            if (nm) defs.push_back("NORMAL_MAP");
+            if (ns) defs.push_back("NO_SPECULAR");
+            if (mrt_path_) {
+                material_prog_[nm][ns][0] = Program(shader_dir, "material.vert", "material.frag", defs);
+            } else {  // §3.2: without MRT, one pass per G-buffer target
+                for (int t = 0; t < targets; ++t) {
+                    auto d = defs;
+                    d.push_back("TARGET_" + std::to_string(t));
+                    material_prog_[nm][ns][1 + t] = Program(shader_dir, "material.vert", "material.frag", d);
+                }
             }
         }
-    }
     auto ldefs = depth_defs;
     if (opts.listing2_literal) ldefs.push_back("LISTING2_LITERAL");
+    if (opts.skip.light_depth_test) ldefs.push_back("LIGHT_DEPTH_TEST");
     light_prog_ = Program(shader_dir, "light.vert", "light.frag", ldefs);
     // Post programs are built only when their pass can run (the post stage costs nothing off).
     const PostOptions& p = opts.post;

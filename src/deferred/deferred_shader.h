@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "deferred/depth_codec.h"
 #include "gl/caps.h"
 #include "gl/pbuffer.h"
 #include "gl/program.h"
@@ -40,12 +41,22 @@ struct PostOptions {
     float aa_depth_scale = 4.0f;   // relative eye-z step that counts as an edge: ((dz/z)*scale)^2
 };
 
+// Work a scene does not need, skipped (each on by default; bench measures each).
+struct SkipOptions {
+    bool material_variants = true;  // no normal map: no tangent-space work; no specular: no specular map read
+    bool empty_lights = true;       // lights with zero colour or an empty scissor rectangle are not drawn
+    bool light_depth_test = true;   // per light, pixels whose surface lies in front of or behind the
+                                    // light's sphere (or is background) are rejected before shading
+};
+
 struct ShaderOptions {
     DepthPath depth = DepthPath::texture;
-    bool packed_literal = false;    // Listings 11/18 exactly (k/256 bytes); default: corrected codec
+    DepthEncoding encoding = DepthEncoding::corrected;  // what the packed target holds
     bool listing2_literal = false;  // Listing 2's v and h exactly; default: Equations 1-5
     bool scissor = true;            // §3.4.2 light scissor rectangles
     PostOptions post;
+    SkipOptions skip;
+    bool float_accum = false;       // P-buffer 0 as RGBA32F (stress tests: NaN/Inf survive)
 };
 
 // Per-stage wall time of one frame, in milliseconds (glFinish after each stage).
@@ -63,7 +74,8 @@ struct Paths {
 
 struct FrameStats {
     int lights_total = 0, lights_culled = 0, lights_drawn = 0;
-    long long light_fragments = 0;  // fragments the light passes shaded (occlusion queries)
+    long long light_fragments = 0;  // fragments the light passes shaded (occlusion queries; with the
+                                    // light depth test, those that passed it)
     long long scissor_pixels = 0;   // sum of the rectangles the light quads were limited to
     StageTimes ms;
 };
@@ -112,6 +124,10 @@ public:
     // Read a buffer back (views and tests): a G-buffer target, its depth texture
     // (PBuffer::DEPTH, as grey), or P-buffer `fb`.
     Image read_gbuffer(int target);
+    // After geometry_stage: the eye-space position each pixel's depth reconstructs to, exactly as
+    // the light pass computes it (same decoder, planes and view rays), in float: rgb = (x, y, z),
+    // alpha 1 where the G-buffer has a surface, 0 elsewhere.
+    Image reconstructed_positions();
     Image read_pbuffer(int fb);
     int pbuffer_width(int fb) const { return fb_[fb]->width(); }
     int pbuffer_height(int fb) const { return fb_[fb]->height(); }
@@ -153,7 +169,11 @@ private:
     bool mrt_path_ = true;  // one material pass into all targets
     std::unique_ptr<PBuffer> mrt_;      // G-buffer
     std::unique_ptr<PBuffer> fb_[4];    // P-buffers 0-3
-    Program material_prog_[2][5];       // [normal map?][0: all targets (MRT), 1+t: target t only]
+    Program material_prog_[2][2][5];    // [normal map?][no specular?][0: all targets (MRT), 1+t: target t]
+    Program position_prog_;             // light.frag with OUTPUT_POSITION, built on first use
+    std::unique_ptr<PBuffer> position_buf_;
+    std::string shader_dir_;
+    glm::vec3 zrange_{0};
     Program light_prog_;
     Program blur_prog_[2];              // [select]
     Program aa_prog_[2];                // [factor only]

@@ -3,6 +3,8 @@
 // hardware's float -> unorm8 conversion, is computed exactly (in double).
 #include "deferred/depth_codec.h"
 
+#include "dsr_error.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -52,6 +54,46 @@ glm::vec3 pack_depth(float d) {
 float unpack_depth(glm::vec3 c) {
     const glm::vec3 b = glm::floor(c * 255.0f + 0.5f);
     return (b.x * 65536.0f + b.y * 256.0f + b.z) / 16777215.0f;
+}
+
+const char* encoding_name(DepthEncoding e) {
+    switch (e) {
+        case DepthEncoding::literal: return "literal";
+        case DepthEncoding::corrected: return "corrected";
+        case DepthEncoding::linear: return "linear";
+        case DepthEncoding::log: return "log";
+    }
+    return "?";
+}
+
+DepthEncoding encoding_from_name(const std::string& name) {
+    for (DepthEncoding e : {DepthEncoding::literal, DepthEncoding::corrected, DepthEncoding::linear, DepthEncoding::log})
+        if (name == encoding_name(e)) return e;
+    throw Error("expected a depth encoding (literal|corrected|linear|log), got '" + name + "'");
+}
+
+// Mirrors packed_encode in glsl120/depth_codec.glsl, operation for operation in float.
+glm::vec3 encode_eye_z(DepthEncoding e, float z, float n, float f) {
+    const float px = -f / (f - n), py = -f * n / (f - n);  // planes (§3.4.3)
+    switch (e) {
+        case DepthEncoding::literal: return pack_depth_literal((px * z + py) / -z);  // Listing 13 line 27
+        case DepthEncoding::corrected: return pack_depth((px * z + py) / -z);
+        case DepthEncoding::linear: return pack_depth((-z - n) / (f - n));
+        case DepthEncoding::log: return pack_depth(std::log(-z / n) / std::log(f / n));
+    }
+    return glm::vec3(0);
+}
+
+// Mirrors packed_eye_z in glsl120/depth_codec.glsl.
+float decode_eye_z(DepthEncoding e, glm::vec3 c, float n, float f) {
+    const float px = -f / (f - n), py = -f * n / (f - n);
+    switch (e) {
+        case DepthEncoding::literal: return -py / (px + unpack_depth_literal(c));
+        case DepthEncoding::corrected: return -py / (px + unpack_depth(c));
+        case DepthEncoding::linear: return -(n + unpack_depth(c) * (f - n));
+        case DepthEncoding::log: return -n * std::exp(unpack_depth(c) * std::log(f / n));
+    }
+    return 0;
 }
 
 }  // namespace dsr

@@ -52,6 +52,8 @@
 //       return dot(c, byte_to_float);
 //   }
 #pragma once
+#include <string>
+
 #include <glm/glm.hpp>
 
 namespace dsr {
@@ -69,5 +71,18 @@ float unpack_depth_literal(glm::vec3 c);
 glm::vec3 pack_depth(float d);
 // Rounds each channel to its byte and returns k / 16777215.
 float unpack_depth(glm::vec3 c);
+
+// What the packed target holds (--depth-encoding). literal and corrected pack the window
+// depth (Listing 13's d); linear packs (-z-n)/(f-n) and log packs ln(-z/n)/ln(f/n), both with
+// the corrected 24-bit packing. CPU twins of glsl120/depth_codec.glsl's packed_encode /
+// packed_eye_z, in float like the shader.
+enum class DepthEncoding { literal, corrected, linear, log };
+const char* encoding_name(DepthEncoding e);
+DepthEncoding encoding_from_name(const std::string& name);  // throws dsr::Error listing the names
+
+// z: eye-space z (< 0). Returns the colour written to the RGB8 target (before storage).
+glm::vec3 encode_eye_z(DepthEncoding e, float z, float near_plane, float far_plane);
+// c: the colour read back from the RGB8 target. Returns eye-space z.
+float decode_eye_z(DepthEncoding e, glm::vec3 c, float near_plane, float far_plane);
 
 }  // namespace dsr

@@ -1,6 +1,8 @@
 // Geometry stage (§3.3, Listings 7-13): the only stage that sees 3D geometry. A depth-only
 // pre-pass fills the G-buffer's depth, then the material pass writes normal, diffuse,
 // specular (and packed depth) for exactly the visible fragments (early Z, §3.3.1).
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -17,6 +19,7 @@ void DeferredShader::geometry_stage(const Scene& scene) {
     view_ = cam.view();
     proj_ = cam.projection(float(w_) / float(h_));
     planes_ = planes_uniform(cam.near_plane, cam.far_plane);
+    zrange_ = glm::vec3(cam.near_plane, cam.far_plane, std::log(cam.far_plane / cam.near_plane));
 
     mrt_bind_render();  // Listing 7 line 3
     // set_perspective_camera() (line 5)
@@ -41,7 +44,8 @@ void DeferredShader::geometry_stage(const Scene& scene) {
     // which Listing 20's len > 0.1 test leaves unlit), zero diffuse with alpha 0 (the
     // ambient pass skips it), zero specular, and the packed depth of the far plane.
     const glm::vec4 clear[4] = {{0.5f, 0.5f, 0.5f, 0.0f}, {0, 0, 0, 0}, {0, 0, 0, 0},
-                                glm::vec4(opts_.packed_literal ? pack_depth_literal(1.0f) : pack_depth(1.0f), 0)};
+                                glm::vec4(encode_eye_z(opts_.encoding, -cam.far_plane, cam.near_plane,
+                                                       cam.far_plane), 0)};
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
     check_gl("geometry stage: set-up");
@@ -94,13 +98,15 @@ void DeferredShader::draw_material(int target) {
     int bound = -1;
     for (const DrawRange& r : gpu_->ranges()) {
         const GpuMaterial& m = gpu_->material(r.material);
-        Program& prog = material_prog_[m.normal_map ? 1 : 0][target + 1];
+        const bool variants = opts_.skip.material_variants;
+        Program& prog = material_prog_[m.normal_map || !variants ? 1 : 0][variants && !m.has_specular ? 1 : 0][target + 1];
         if (bound != int(prog.id())) {
             prog.use();
             prog.set("normaltex", 0);
             prog.set("colortex", 1);
             prog.set("speculartex", 2);
             prog.set("planes", planes_);
+            prog.set("zrange", zrange_);
             bound = int(prog.id());
         }
         // set_material_shader_params (Listing 9 line 13)
@@ -108,7 +114,8 @@ void DeferredShader::draw_material(int target) {
         prog.set("specular", m.specular);
         prog.set("shininess_code", m.shininess_code);
         prog.set("tile", m.tile);
-        const GLuint tex[3] = {m.normal_tex, m.diffuse_tex, m.specular_tex};
+        const GLuint tex[3] = {m.normal_map || variants ? m.normal_tex : gpu_->flat_normal(), m.diffuse_tex,
+                               m.specular_tex};
         for (int u = 0; u < 3; ++u) {
             glActiveTexture(GL_TEXTURE0 + u);
             glBindTexture(GL_TEXTURE_2D, tex[u]);

@@ -82,6 +82,8 @@ GpuScene::GpuScene(const Scene& scene, bool pow2_textures) {
     // A missing diffuse or specular map is a white texel: map x colour = colour exactly.
     const float one[4] = {1, 1, 1, 1};
     white_ = Texture(1, 1, GL_RGBA8, GL_RGBA, GL_FLOAT, one, GL_NEAREST, GL_REPEAT);
+    const unsigned char flat[4] = {128, 128, 255, 255};
+    flat_normal_ = Texture(1, 1, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, flat, GL_NEAREST, GL_REPEAT);
     for (const Material& m : scene.materials) {
         GpuMaterial g;
         g.diffuse = m.diffuse;
@@ -91,6 +93,7 @@ GpuScene::GpuScene(const Scene& scene, bool pow2_textures) {
         g.diffuse_tex = m.diffuse_map >= 0 ? textures_[m.diffuse_map].id() : white_.id();
         g.specular_tex = m.specular_map >= 0 ? textures_[m.specular_map].id() : white_.id();
         g.normal_map = m.normal_map >= 0;
+        g.has_specular = m.specular.r > 0 || m.specular.g > 0 || m.specular.b > 0;
         g.normal_tex = g.normal_map ? textures_[m.normal_map].id() : white_.id();
         materials_.push_back(g);
     }

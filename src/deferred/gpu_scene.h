@@ -17,6 +17,7 @@ struct GpuMaterial {
     float tile = 1;
     GLuint diffuse_tex = 0, normal_tex = 0, specular_tex = 0;
     bool normal_map = false;
+    bool has_specular = true;  // false: M_spec is zero, the specular target is zero
 };
 
 struct DrawRange {
@@ -52,12 +53,15 @@ public:
     const DrawRange& mesh_range(size_t mesh) const { return mesh_ranges_.at(mesh); }
     const GpuMaterial& material(int i) const { return materials_[i]; }
     size_t triangle_count() const { return indices_ / 3; }
+    // A 1x1 tangent-space normal map pointing straight out (128,128,255): what a material
+    // without a map reads when the shader variants are off.
+    GLuint flat_normal() const { return flat_normal_.id(); }
 
 private:
     GLuint vbo_ = 0, ibo_ = 0;
     size_t indices_ = 0;
     std::vector<Texture> textures_;
-    Texture white_;
+    Texture white_, flat_normal_;
     std::vector<GpuMaterial> materials_;
     std::vector<DrawRange> ranges_;
     std::vector<DrawRange> mesh_ranges_;

@@ -83,6 +83,7 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
     light_prog_.set("specular_map", 2);
     light_prog_.set("depth_map", 3);
     light_prog_.set("planes", planes_);
+    light_prog_.set("zrange", zrange_);
     glBlendFunc(GL_ONE, GL_ONE);
     glEnable(GL_BLEND);
 
@@ -94,12 +95,21 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
             ++stats.lights_culled;
             continue;
         }
+        const bool skip_empty = opts_.skip.empty_lights;
+        if (skip_empty && light.color.r <= 0 && light.color.g <= 0 && light.color.b <= 0) {
+            ++stats.lights_culled;  // adds nothing
+            continue;
+        }
         glm::vec3 eye = glm::vec3(view_ * glm::vec4(light.pos, 1.0f));
         ScissorRect r = light_scissor(eye, light.radius, proj_[0][0], proj_[1][1], near_plane, w_, h_);
         long long n = r.area();
-        if (n <= 0) {  // the sphere reaches no visible pixel: Listing 17 line 31
-            ++stats.lights_culled;
-            continue;
+        if (n <= 0) {
+            if (skip_empty) {  // the sphere reaches no visible pixel: Listing 17 line 31
+                ++stats.lights_culled;
+                continue;
+            }
+            r = ScissorRect{0, 0, w_, h_};  // without the skip: shade the screen for nothing
+            n = (long long)w_ * h_;
         }
         if (!scissors || n == (long long)w_ * h_) {
             n = (long long)w_ * h_;

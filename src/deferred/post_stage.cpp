@@ -127,6 +127,7 @@ void DeferredShader::draw_anti_alias(bool factor_only) {
     prog.set("pixel_size", glm::vec2(1.0f / float(fb_[0]->texture_width()), 1.0f / float(fb_[0]->texture_height())));
     prog.set("weight", opts_.post.aa_weight);
     prog.set("planes", planes_);
+    prog.set("zrange", zrange_);
     prog.set("depth_scale", opts_.post.aa_depth_scale);
     prog.set("uv_clamp", uv_clamp(*fb_[0]));  // G-buffer and P-buffer 0 share their size
     mrt_bind_texture(G_NORMAL, 0);

@@ -2,6 +2,7 @@
 // final stage's fixed-function pass: the G-buffer targets of Figure 4, the blur factor of
 // Figure 8, the bloom blur of Figure 10.
 #include "deferred/depth_codec.h"
+#include "deferred/reconstruct.h"
 #include "deferred/deferred_shader.h"
 #include "dsr_error.h"
 #include "gl/check.h"
@@ -63,6 +64,66 @@ void DeferredShader::draw_view(View view, int out_w, int out_h) {
             return;
     }
     check_gl("view");
+}
+
+}  // namespace dsr
+
+namespace dsr {
+
+Image DeferredShader::reconstructed_positions() {
+    if (!caps_.fbo || !caps_.texture_float)
+        throw Error("position read-back needs EXT_framebuffer_object and ARB_texture_float");
+    if (!position_buf_) {
+        PBufferDesc d;
+        d.width = w_;
+        d.height = h_;
+        d.color_formats = {GL_RGBA32F_ARB};
+        d.pow2 = !caps_.npot;
+        position_buf_ = std::make_unique<PBuffer>("position read-back", d);
+        std::vector<std::string> defs = {"OUTPUT_POSITION"};
+        if (opts_.depth == DepthPath::packed) {
+            defs.push_back("PACKED_DEPTH");
+            if (opts_.encoding == DepthEncoding::literal) defs.push_back("ENC_LITERAL");
+            if (opts_.encoding == DepthEncoding::linear) defs.push_back("ENC_LINEAR");
+            if (opts_.encoding == DepthEncoding::log) defs.push_back("ENC_LOG");
+        }
+        position_prog_ = Program(shader_dir_, "light.vert", "light.frag", defs);
+    }
+    const auto rays = corner_rays(proj_[0][0], proj_[1][1]);
+    for (int i = 0; i < 4; ++i) corner_rays_[i] = rays[i];
+    position_buf_->bind_render();
+    set_ortho(w_, h_);
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    position_prog_.use();
+    position_prog_.set("normal_map", 0);
+    position_prog_.set("depth_map", 3);
+    position_prog_.set("planes", planes_);
+    position_prog_.set("zrange", zrange_);
+    mrt_bind_texture(G_NORMAL, 0);
+    mrt_bind_texture(depth_target(), 3);
+    draw_rect(0, 0, float(w_), float(h_), true);
+    mrt_unbind_texture(depth_target(), 3);
+    mrt_unbind_texture(G_NORMAL, 0);
+    glUseProgram(0);
+    position_buf_->unbind_render();
+    check_gl("position read-back");
+    Image img;
+    img.width = w_;
+    img.height = h_;
+    img.rgba.resize(size_t(w_) * h_ * 4);
+    std::vector<float> all(size_t(position_buf_->texture_width()) * position_buf_->texture_height() * 4);
+    glBindTexture(GL_TEXTURE_2D, position_buf_->texture(0));
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, all.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    for (int y = 0; y < h_; ++y)
+        for (int x = 0; x < w_; ++x)
+            for (int c = 0; c < 4; ++c)
+                img.at(x, y)[c] = all[(size_t(y) * position_buf_->texture_width() + x) * 4 + c];
+    return img;
 }
 
 }  // namespace dsr
