@@ -144,3 +144,19 @@ TEST(Forward, BackgroundAndCulledLight) {
         }
     }
 }
+
+// Half-float G-buffer targets remove the 8-bit normal and material quantisation, so the
+// deferred image moves towards the forward reference (what remains: the RGBA8 P-buffer's
+// per-pass rounding and 24-bit depth).
+TEST(Forward, HalfFloatGBufferIsCloserToForward) {
+    Scene s = default_scene();
+    auto fwd = render_forward(s, kSize, kSize, forward_mode(ForwardMode::single));
+    ShaderOptions half;
+    half.gbuffer_half = true;
+    auto d8 = render_scene(s, kSize, kSize, ShaderOptions{});
+    auto d16 = render_scene(s, kSize, kSize, half);
+    ImageDiff e8 = compare_logged("deferred rgba8 G-buffer vs forward", d8.image, fwd.image, 1 * kLsb);
+    ImageDiff e16 = compare_logged("deferred half G-buffer vs forward", d16.image, fwd.image, 1 * kLsb);
+    EXPECT_LT(e16.mean_abs, e8.mean_abs);
+    EXPECT_LT(e16.failing, e8.failing);
+}

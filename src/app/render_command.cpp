@@ -44,6 +44,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     int bloom = -1, aa = -1;  // -1: as the scene's `post` line says
     PostOptions post;
     SkipOptions skip;
+    bool gbuffer_half = false;
     std::string view_name_arg = "final";
     std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";
     while (!args.done()) {
@@ -52,6 +53,7 @@ int cmd_render(const std::vector<std::string>& argv) {
         else if (a == "--size") args.size_value(a, w, h);
         else if (a == "--depth") depth = args.choice(a, {"auto", "texture", "packed"});
         else if (a == "--depth-encoding") encoding = args.choice(a, {"corrected", "literal", "linear", "log"});
+        else if (a == "--gbuffer") gbuffer_half = args.choice(a, {"rgba8", "half"}) == "half";
         else if (a == "--no-skip") {
             for (const std::string& k : split_caps(args.value(a))) {
                 if (k == "variants") skip.material_variants = false;
@@ -106,6 +108,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     else opts.depth = depth == "texture" ? DepthPath::texture : DepthPath::packed;
     opts.encoding = encoding_from_name(encoding);
     opts.skip = skip;
+    opts.gbuffer_half = gbuffer_half;
     opts.listing2_literal = listing2;
     opts.scissor = scissor;
     opts.post = post;
@@ -141,6 +144,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["skips"] = {{"variants", skip.material_variants}, {"empty_lights", skip.empty_lights},
                   {"light_depth_test", skip.light_depth_test}};
     j["scissor"] = scissor;
+    j["gbuffer"] = gbuffer_half ? "half" : "rgba8";
     j["bloom"] = post.bloom;
     j["aa"] = post.aa;
     j["lights_total"] = last.lights_total;

@@ -41,9 +41,14 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     g.height = height;
     g.use_fbo = caps.fbo;
     g.pow2 = !caps.npot;
-    g.color_formats = {GL_RGBA8, GL_RGBA8, GL_RGBA8};
+    if (opts.gbuffer_half && !(caps.half_float && caps.texture_float))
+        throw Error("half-float G-buffer targets need ARB_texture_float and ARB_half_float_pixel");
+    // EXT_framebuffer_object wants one format for every colour attachment, so the half-float
+    // option makes all targets half; the packed depth keeps its byte codes (exact in half).
+    const GLenum gfmt = opts.gbuffer_half ? GLenum(GL_RGBA16F_ARB) : GLenum(GL_RGBA8);
+    g.color_formats = {gfmt, gfmt, gfmt};
     if (opts.depth == DepthPath::packed) {
-        g.color_formats.push_back(GL_RGBA8);
+        g.color_formats.push_back(gfmt);
         g.depth = DepthAttachment::renderbuffer;
     } else {
         g.depth = DepthAttachment::texture;

@@ -57,6 +57,10 @@ struct ShaderOptions {
     PostOptions post;
     SkipOptions skip;
     bool float_accum = false;       // P-buffer 0 as RGBA32F (stress tests: NaN/Inf survive)
+    // G-buffer target precision: the tutorial's RGBA8 everywhere (Figure 3), or half-float
+    // targets (ARB_texture_float + ARB_half_float_pixel) where 8-bit normals are the largest
+    // error of the deferred image.
+    bool gbuffer_half = false;
 };
 
 // Per-stage wall time of one frame, in milliseconds (glFinish after each stage).
