@@ -2,59 +2,17 @@
 // half-written, and the --stats JSON keys later tools read.
 #include <gtest/gtest.h>
 
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <array>
-#include <climits>
-#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cli_fixture.h"
+
+using namespace dsr::test;
+
 namespace {
-
-struct RunResult {
-    int status;
-    std::string output;
-};
-
-// build/dsr sits beside build/dsr_tests.
-std::string dsr_binary() {
-    char exe[PATH_MAX];
-    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    exe[n > 0 ? n : 0] = 0;
-    std::string dir(exe);
-    return dir.substr(0, dir.find_last_of('/')) + "/dsr";
-}
-
-RunResult run(const std::string& args, const std::string& env = "") {
-    std::string cmd = (env.empty() ? "" : "env " + env + " ") + dsr_binary() + " " + args + " 2>&1";
-    RunResult r{-1, ""};
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf;
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.output.append(buf.data(), n);
-    int st = pclose(p);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    return r;
-}
-
-bool exists(const std::string& p) {
-    struct stat st;
-    return stat(p.c_str(), &st) == 0;
-}
-
-std::string temp_dir() {
-    char tmpl[] = "/tmp/dsr-cli-XXXXXX";
-    return mkdtemp(tmpl);
-}
-
 void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
-
 }  // namespace
 
 TEST(Cli, RenderWritesImageAndStats) {

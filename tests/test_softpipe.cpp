@@ -2,29 +2,19 @@
 // separate `dsr render` processes (GALLIUM_DRIVER is read when the driver loads).
 #include <gtest/gtest.h>
 
-#include <climits>
 #include <cstdlib>
 #include <string>
-#include <unistd.h>
 
 #include "analysis/image_metrics.h"
+#include "cli_fixture.h"
 #include "scene/image.h"
 
-namespace {
-std::string dsr_binary() {
-    char exe[PATH_MAX];
-    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
-    exe[n > 0 ? n : 0] = 0;
-    std::string dir(exe);
-    return dir.substr(0, dir.find_last_of('/')) + "/dsr";
-}
-}  // namespace
+using namespace dsr::test;
 
 namespace {
 // Renders `scene` (empty: the default scene) with both drivers; returns (softpipe, llvmpipe).
 std::pair<dsr::Image, dsr::Image> both_drivers(const std::string& scene, const std::string& tag) {
-    char tmpl[] = "/tmp/dsr-softpipe-XXXXXX";
-    std::string d = mkdtemp(tmpl);
+    std::string d = temp_dir();
     const std::string args = " render " + scene + " --size 128x96 --no-bloom --no-aa -o ";
     EXPECT_EQ(std::system(("GALLIUM_DRIVER=llvmpipe " + dsr_binary() + args + d + "/llvm.png >/dev/null").c_str()), 0);
     EXPECT_EQ(std::system(("GALLIUM_DRIVER=softpipe " + dsr_binary() + args + d + "/soft.png >/dev/null").c_str()), 0);
