@@ -1,9 +1,7 @@
 // Final stage (§3.6): P-buffer 0 drawn into the main frame buffer by fixed function,
 // scaled with bilinear filtering when the output size differs from the buffers'.
-#include <cmath>
-
 #include "deferred/deferred_shader.h"
-#include "gl/check.h"
+#include "gl/blit.h"
 
 namespace dsr {
 
@@ -12,47 +10,7 @@ void DeferredShader::final_stage(int out_w, int out_h) {
 }
 
 void DeferredShader::draw_texture_to_main(GLuint texture, int out_w, int out_h, glm::vec2 ts) {
-    if (caps_.fbo) glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);  // no-FBO path: already there
-    glDrawBuffer(GL_BACK);
-    glViewport(0, 0, out_w, out_h);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, 1, 0, 1, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_ALPHA_TEST);
-    glDisable(GL_CULL_FACE);
-    glUseProgram(0);
-    glColor4f(1, 1, 1, 1);
-    glActiveTexture(GL_TEXTURE0);
-    glEnable(GL_TEXTURE_2D);
-    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-    glBindTexture(GL_TEXTURE_2D, texture);
-    // Same size: nearest is exact. Scaled: bilinear (§3.6, e.g. 512x512 shown at 640x480).
-    GLint tw = 0, th = 0;
-    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &tw);
-    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &th);
-    const bool same = std::lround(tw * ts.x) == out_w && std::lround(th * ts.y) == out_h;
-    GLint filter = same ? GL_NEAREST : GL_LINEAR, old_min = 0, old_mag = 0;
-    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &old_min);
-    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, &old_mag);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
-    glBegin(GL_QUADS);
-    glTexCoord2f(0, 0); glVertex2f(0, 0);
-    glTexCoord2f(ts.x, 0); glVertex2f(1, 0);
-    glTexCoord2f(ts.x, ts.y); glVertex2f(1, 1);
-    glTexCoord2f(0, ts.y); glVertex2f(0, 1);
-    glEnd();
-    // Leave the texture as the post passes expect it (they sample P-buffer 0 bilinearly).
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, old_min);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, old_mag);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glDisable(GL_TEXTURE_2D);
-    check_gl("final stage");
+    draw_texture_to_framebuffer0(texture, out_w, out_h, ts, caps_.fbo);
 }
 
 }  // namespace dsr

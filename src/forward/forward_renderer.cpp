@@ -9,6 +9,7 @@
 #include "deferred/culling.h"
 #include "deferred/gpu_scene.h"
 #include "dsr_error.h"
+#include "gl/blit.h"
 #include "gl/check.h"
 
 namespace dsr {
@@ -296,31 +297,9 @@ void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
 // 8 bits. Colours above 1 are clamped here; every term is >= 0, so clamping the sum once is
 // what clamping after each additive pass gives too.
 void ForwardRenderer::copy_to_main() {
-    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
-    glDrawBuffer(GL_BACK);
-    glViewport(0, 0, w_, h_);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, 1, 0, 1, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-    glUseProgram(0);
-    glColor4f(1, 1, 1, 1);
-    glActiveTexture(GL_TEXTURE0);
-    glEnable(GL_TEXTURE_2D);
-    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-    target_->bind_texture(0, 0);
-    glBegin(GL_QUADS);
-    glTexCoord2f(0, 0); glVertex2f(0, 0);
-    glTexCoord2f(1, 0); glVertex2f(1, 0);
-    glTexCoord2f(1, 1); glVertex2f(1, 1);
-    glTexCoord2f(0, 1); glVertex2f(0, 1);
-    glEnd();
+    target_->bind_texture(0, 0);  // the P-buffer discipline: never a target and a texture at once
+    draw_texture_to_framebuffer0(target_->texture(0), w_, h_, {1, 1}, true);
     target_->unbind_texture(0, 0);
-    glDisable(GL_TEXTURE_2D);
     check_gl("forward: copy to the main frame buffer");
 }
 
