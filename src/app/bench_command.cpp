@@ -3,6 +3,7 @@
 // light-pass fragments (occlusion queries) against the ideal count, and the image's error against
 // the forward reference (and, for scenes with constant materials, against the analytic one).
 // Table on stdout, progress on stderr, optional JSON and a markdown report with a plot.
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -605,6 +606,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
     if (!report_path.empty()) {
         // The plot beside the report: <stem>_plot.png, linked relatively.
         const std::string plot_name = stem(report_path) + "_plot.png";
+        if (!dir_of(report_path).empty()) mkdir(dir_of(report_path).c_str(), 0755);  // one level, like figures -o
         write_image(dir_of(report_path) + plot_name, plot_rows(rows, names));
         std::ostringstream md;
         md << "# Benchmarks\n\n"

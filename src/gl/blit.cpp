@@ -47,7 +47,7 @@ void draw_texture_to_framebuffer0(GLuint texture, int out_w, int out_h, glm::vec
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, old_mag);
     glBindTexture(GL_TEXTURE_2D, 0);
     glDisable(GL_TEXTURE_2D);
-    check_gl("final stage");
+    check_gl("drawing a texture into the main frame buffer (final stage)");
 }
 
 }  // namespace dsr
