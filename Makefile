@@ -25,7 +25,7 @@ TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o)
 
 LIBS := -lOSMesa -lOpenImageIO -lOpenImageIO_Util -ltinyobjloader -pthread
 
-.PHONY: all run test test-legacy deps clean figures
+.PHONY: all run test test-legacy deps clean figures bench stress
 all: $(BUILD)/dsr $(BUILD)/dsr_tests
 
 $(BUILD)/obj/%.o: %.cpp
@@ -69,6 +69,20 @@ test: deps
 test-legacy: deps
 	$(MAKE) -j$(JOBS) all
 	DSR_TEST_SIZE=512 $(BUILD)/dsr_tests --gtest_filter='Fallbacks.*:Legacy.*'
+
+# The benchmark sweep (README: "Benchmarks"): docs/benchmarks.md with its table, goals and plot,
+# and the raw rows in docs/benchmarks.json. A few minutes on two cores.
+bench: deps
+	$(MAKE) -j$(JOBS) $(BUILD)/dsr
+	$(BUILD)/dsr bench --json docs/benchmarks.json --report docs/benchmarks.md
+
+# The numerical stress sweep (issue 6): every case's invariants as tests (DSR_STRESS=full; `make
+# test` runs the quick subset), then `dsr stress`, which exits non-zero if an invariant fails and
+# writes docs/stress.json, the generated tables of docs/accuracy.md and docs/accuracy.png.
+stress: deps
+	$(MAKE) -j$(JOBS) all
+	DSR_STRESS=full $(BUILD)/dsr_tests --gtest_filter='*Stress*'
+	$(BUILD)/dsr stress --json docs/stress.json --report docs/accuracy.md --plot docs/accuracy.png
 
 # The tutorial's figures, regenerated into docs/figures (docs/figures.md shows them).
 figures: deps

@@ -139,6 +139,7 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
     out.image.height = height;
     out.image.rgba.assign(size_t(width) * height * 4, 1.0f);
     out.mesh.assign(size_t(width) * height, -1);
+    out.eye_depth.assign(size_t(width) * height, 0.0);
 
     for (int j = 0; j < height; ++j) {
         for (int i = 0; i < width; ++i) {
@@ -166,6 +167,7 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
                 continue;
             }
             out.mesh[size_t(j) * width + i] = hit.mesh;
+            out.eye_depth[size_t(j) * width + i] = hit.t;  // the ray's forward component is 1
 
             const Tri& tr = *hit.tri;
             const Material& mat = scene.materials[scene.meshes[hit.mesh].material];

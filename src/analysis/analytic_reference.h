@@ -33,6 +33,7 @@ struct AnalyticOptions {
 struct AnalyticTrace {
     Image image;             // RGBA, alpha 1, row 0 = bottom (like dsr::read_pixels)
     std::vector<int> mesh;   // per pixel: index into Scene::meshes of the hit, -1 for background
+    std::vector<double> eye_depth;  // per pixel: -z of the hit in eye space (exact, double), 0 for background
 };
 
 // Throws dsr::Error if a material has a texture map or the size is not positive.

@@ -110,10 +110,11 @@ Image scatter_plot(const std::vector<PlotPanel>& panels, int panel_w, int panel_
         for (const PlotSeries& s : panel.series)
             for (const PlotPoint& p : s.points) {
                 if (p.x > 0) xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x);
-                if (p.x > 0 && p.y > 0) ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
+                if (p.x > 0 && p.y > 0 && p.y >= panel.y_floor) ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
             }
         if (!(xmax > 0)) xmin = 1, xmax = 10;
         if (!(ymax > 0)) ymin = 0.1, ymax = 1;
+        if (panel.y_floor > 0) ymin = std::min(ymin, panel.y_floor), ymax = std::max(ymax, panel.y_floor);
         const int ex0 = int(std::floor(std::log10(xmin))), ex1 = std::max(ex0 + 1, int(std::ceil(std::log10(xmax))));
         const int ey0 = int(std::floor(std::log10(ymin))), ey1 = std::max(ey0 + 1, int(std::ceil(std::log10(ymax))));
         auto px = [&](double x) { return left + int(std::lround((std::log10(x) - ex0) / (ex1 - ex0) * (right - left))); };
@@ -147,7 +148,7 @@ Image scatter_plot(const std::vector<PlotPanel>& panels, int panel_w, int panel_
         for (const PlotSeries& s : panel.series)
             for (const PlotPoint& p : s.points) {
                 if (!(p.x > 0)) continue;
-                if (p.y > 0) marker(img, px(p.x), py(p.y), p.radius, s.color, false);
+                if (p.y > 0 && p.y >= panel.y_floor) marker(img, px(p.x), py(p.y), p.radius, s.color, false);
                 else marker(img, px(p.x), bottom, p.radius, s.color, true);
             }
         // Legend below the axis label: one line per series.

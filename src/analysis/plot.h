@@ -22,11 +22,13 @@ struct PlotSeries {
     std::vector<PlotPoint> points;
 };
 
-// One panel: log10 axes spanning whole decades around the positive data. A point with y <= 0
-// (an exact match) is drawn as a ring on the bottom axis; one with x <= 0 is left out.
+// One panel: log10 axes spanning whole decades around the positive data. A point with y below
+// y_floor (or y <= 0: an exact match) is drawn as a ring on the bottom axis, which then sits at
+// y_floor's decade; one with x <= 0 is left out.
 struct PlotPanel {
     std::string title, x_label, y_label;
     std::vector<PlotSeries> series;
+    double y_floor = 0;  // 0: no floor
 };
 
 // Panels side by side, each panel_w x panel_h pixels, white background. Row 0 = bottom, like

@@ -21,7 +21,9 @@ static const char* kUsage =
     "  bench [SCENE] [--quick] [--json FILE] [--report FILE.md] [--size WxH] [--frames N]\n"
     "        [--lights own,32,256,1024]   depth path x scissor x skips x encodings x lights vs forward\n"
     "  info [--caps LIST]      GL vendor/renderer/version, capabilities, paths chosen\n"
-    "  gen-textures DIR        write the default scene's procedural textures\n";
+    "  gen-textures DIR        write the default scene's procedural textures\n"
+    "  stress [--quick] [--json FILE] [--report FILE.md] [--plot FILE.png] [--only TEXT]\n"
+    "                          numerical stress sweep; exit 1 if an invariant fails\n";
 
 int main(int argc, char** argv) {
     if (argc < 2 || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "help")) {
@@ -35,6 +37,7 @@ int main(int argc, char** argv) {
         if (cmd == "info") return dsr::cmd_info(args);
         if (cmd == "figures") return dsr::cmd_figures(args);
         if (cmd == "gen-textures") return dsr::cmd_gen_textures(args);
+        if (cmd == "stress") return dsr::cmd_stress(args);
         if (cmd == "bench") return dsr::cmd_bench(args);
         std::fprintf(stderr, "dsr: unknown command '%s'\n%s", cmd.c_str(), kUsage);
         return 2;
