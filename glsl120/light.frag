@@ -1,7 +1,8 @@
 #version 120
 // Lighting pass for one point light (Listing 20). Variants: PACKED_DEPTH (depth from the
 // RGB8 target, Listing 18 / ENC_* encodings), LISTING2_LITERAL, LIGHT_DEPTH_TEST (reject
-// surfaces in front of or behind the light's sphere before shading), OUTPUT_POSITION (write the
+// surfaces in front of or behind the light's sphere before shading), LIGHT_SPHERE_TEST (reject
+// surface points outside the sphere), OUTPUT_POSITION (write the
 // reconstructed eye-space position instead of light: accuracy measurements).
 #include "depth_codec.glsl"
 #include "lighting.glsl"
@@ -29,6 +30,12 @@ void main()
         discard;
 #endif
     pos.xy = vpos.xy / vpos.z * pos.z;
+#ifdef LIGHT_SPHERE_TEST
+    // A point outside the sphere gets att = 0 (Equation 2): nothing to add, so no G-buffer reads.
+    vec3 d = pos - lightpos.xyz;
+    if (dot(d, d) >= lightpos.w * lightpos.w)
+        discard;
+#endif
 
     vec3 normal = texture2D(normal_map, texcoord).xyz - 0.5;
     float len = length(normal);

@@ -250,10 +250,10 @@ void Bench::run_scene(const std::string& path, int light_count, int sweep_index,
     for (DepthPath d : {DepthPath::texture, DepthPath::packed})
         for (bool sc : {false, true}) runs.push_back(deferred(v, d, DepthEncoding::corrected, sc, all, {}, false));
     // Each skip turned off alone, on the default configuration (depth texture, scissor on).
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 4; ++k) {
         SkipOptions s = all;
-        bool* flag[3] = {&s.material_variants, &s.empty_lights, &s.light_depth_test};
-        const char* name[3] = {"material_variants", "empty_lights", "light_depth_test"};
+        bool* flag[4] = {&s.material_variants, &s.empty_lights, &s.light_depth_test, &s.light_sphere_test};
+        const char* name[4] = {"material_variants", "empty_lights", "light_depth_test", "light_sphere_test"};
         *flag[k] = false;
         runs.push_back(deferred(v, DepthPath::texture, DepthEncoding::corrected, true, s, {name[k]}, false));
     }

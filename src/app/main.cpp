@@ -10,7 +10,7 @@
 static const char* kUsage =
     "usage: dsr COMMAND [options]\n"
     "  render [SCENE] [-o OUT] [--size WxH] [--depth auto|texture|packed]\n"
-    "         [--depth-encoding corrected|literal|linear|log] [--no-skip variants,empty-lights,light-depth-test]\n"
+    "         [--depth-encoding corrected|literal|linear|log] [--no-skip variants,empty-lights,light-depth-test,light-sphere-test]\n"
     "         [--scissor on|off] [--lighting equations|listing] [--gbuffer rgba8|half]\n"
     "         [--frames N] [--stats FILE.json] [--caps no-mrt,no-depth-texture,...]\n"
     "         [--out-size WxH] [--view final|normal|diffuse|specular|depth|blur-factor|bloom]\n"

@@ -59,7 +59,9 @@ int cmd_render(const std::vector<std::string>& argv) {
                 if (k == "variants") skip.material_variants = false;
                 else if (k == "empty-lights") skip.empty_lights = false;
                 else if (k == "light-depth-test") skip.light_depth_test = false;
-                else args.fail("--no-skip: expected variants, empty-lights or light-depth-test, got '" + k + "'");
+                else if (k == "light-sphere-test") skip.light_sphere_test = false;
+                else args.fail("--no-skip: expected variants, empty-lights, light-depth-test or light-sphere-test, got '" +
+                               k + "'");
             }
         }
         else if (a == "--scissor") scissor = args.on_off(a);
@@ -142,7 +144,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["depth_encoding"] = opts.depth == DepthPath::packed ? encoding : "depth-texture";
     j["lighting"] = listing2 ? "listing" : "equations";
     j["skips"] = {{"variants", skip.material_variants}, {"empty_lights", skip.empty_lights},
-                  {"light_depth_test", skip.light_depth_test}};
+                  {"light_depth_test", skip.light_depth_test}, {"light_sphere_test", skip.light_sphere_test}};
     j["scissor"] = scissor;
     j["gbuffer"] = gbuffer_half ? "half" : "rgba8";
     j["bloom"] = post.bloom;

@@ -47,6 +47,8 @@ struct SkipOptions {
     bool empty_lights = true;       // lights with zero colour or an empty scissor rectangle are not drawn
     bool light_depth_test = true;   // per light, pixels whose surface lies in front of or behind the
                                     // light's sphere (or is background) are rejected before shading
+    bool light_sphere_test = true;  // then pixels whose surface point is outside the sphere (att = 0):
+                                    // rejected after one depth fetch, before the G-buffer reads
 };
 
 struct ShaderOptions {
