@@ -46,8 +46,9 @@ float unpack_depth(vec3 c)
 }
 
 // What the packed target holds (--depth-encoding; one of ENC_LITERAL, ENC_LINEAR, ENC_LOG, else
-// the corrected packing of the window depth). zrange = (near, far, ln(far/near)); planes as
-// §3.4.3. CPU twins: encode_eye_z / decode_eye_z in src/deferred/depth_codec.cpp.
+// the corrected packing of the window depth). zrange = (near, far, log2(far/near)); planes as
+// §3.4.3. log2/exp2 rather than log/exp: Mesa lowers the natural ones to log2/exp2 and a
+// multiply, one more rounding each way (2.2e-6 instead of 1.2e-6 relative z at 1e6). CPU twins: encode_eye_z / decode_eye_z in src/deferred/depth_codec.cpp.
 vec3 packed_encode(float z, vec2 planes, vec3 zrange)
 {
 #if defined(ENC_LITERAL)
@@ -55,7 +56,7 @@ vec3 packed_encode(float z, vec2 planes, vec3 zrange)
 #elif defined(ENC_LINEAR)
     return pack_depth((-z - zrange.x) / (zrange.y - zrange.x));
 #elif defined(ENC_LOG)
-    return pack_depth(log(-z / zrange.x) / zrange.z);
+    return pack_depth(log2(-z / zrange.x) / zrange.z);
 #else
     return pack_depth((planes.x * z + planes.y) / -z);
 #endif
@@ -64,13 +65,13 @@ vec3 packed_encode(float z, vec2 planes, vec3 zrange)
 float packed_eye_z(vec3 c, vec2 planes, vec3 zrange)
 {
 #if defined(ENC_LITERAL)
-    return -planes.y / (planes.x + unpack_depth_literal(c));  // Listing 20 line 21
+    return -planes.y / min(planes.x + unpack_depth_literal(c), planes.y / zrange.y);  // Listing 20 line 21
 #elif defined(ENC_LINEAR)
     return -(zrange.x + unpack_depth(c) * (zrange.y - zrange.x));
 #elif defined(ENC_LOG)
-    return -zrange.x * exp(unpack_depth(c) * zrange.z);
+    return -zrange.x * exp2(unpack_depth(c) * zrange.z);
 #else
-    return -planes.y / (planes.x + unpack_depth(c));
+    return -planes.y / min(planes.x + unpack_depth(c), planes.y / zrange.y);
 #endif
 }
 
@@ -80,6 +81,9 @@ float surface_eye_z(sampler2D depth_map, vec2 uv, vec2 planes, vec3 zrange)
 #ifdef PACKED_DEPTH
     return packed_eye_z(texture2D(depth_map, uv).rgb, planes, zrange);
 #else
-    return -planes.y / (planes.x + texture2D(depth_map, uv).r);
+    // Listing 20's pos.z = -planes.y/(planes.x+depth). The denominator is at most its far-plane
+    // value planes.y/far: past far/near ~1e7 planes.x rounds to -1 in float, and depth 1.0
+    // would divide by zero.
+    return -planes.y / min(planes.x + texture2D(depth_map, uv).r, planes.y / zrange.y);
 #endif
 }

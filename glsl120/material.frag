@@ -30,10 +30,14 @@ void main()
     vec2 txcoord = texcoord * tile;
 #ifdef NORMAL_MAP
     vec3 n = texture2D(normaltex, txcoord).xyz - 0.5;
-    n = normalize(n.x * tangent + n.y * binormal + n.z * normal);
+    n = n.x * tangent + n.y * binormal + n.z * normal;
 #else
-    vec3 n = normalize(normal);
+    vec3 n = normal;
 #endif
+    // normalize(0) is undefined (NaN on llvmpipe, stored as 0, which would decode as a normal):
+    // a zero normal is written as the 0.5 grey Listing 20's len > 0.1 branch leaves unlit.
+    float nl = length(n);
+    n = nl > 0.0 ? n / nl : vec3(0.0);
     vec4 t0 = vec4(n * 0.5 + 0.5, 1.0);
     vec4 t1 = vec4(texture2D(colortex, txcoord).rgb * diffuse, 1.0);
 #ifdef NO_SPECULAR

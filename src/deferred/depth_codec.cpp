@@ -79,7 +79,7 @@ glm::vec3 encode_eye_z(DepthEncoding e, float z, float n, float f) {
         case DepthEncoding::literal: return pack_depth_literal((px * z + py) / -z);  // Listing 13 line 27
         case DepthEncoding::corrected: return pack_depth((px * z + py) / -z);
         case DepthEncoding::linear: return pack_depth((-z - n) / (f - n));
-        case DepthEncoding::log: return pack_depth(std::log(-z / n) / std::log(f / n));
+        case DepthEncoding::log: return pack_depth(std::log2(-z / n) / std::log2(f / n));
     }
     return glm::vec3(0);
 }
@@ -88,10 +88,10 @@ glm::vec3 encode_eye_z(DepthEncoding e, float z, float n, float f) {
 float decode_eye_z(DepthEncoding e, glm::vec3 c, float n, float f) {
     const float px = -f / (f - n), py = -f * n / (f - n);
     switch (e) {
-        case DepthEncoding::literal: return -py / (px + unpack_depth_literal(c));
-        case DepthEncoding::corrected: return -py / (px + unpack_depth(c));
+        case DepthEncoding::literal: return -py / std::min(px + unpack_depth_literal(c), py / f);
+        case DepthEncoding::corrected: return -py / std::min(px + unpack_depth(c), py / f);
         case DepthEncoding::linear: return -(n + unpack_depth(c) * (f - n));
-        case DepthEncoding::log: return -n * std::exp(unpack_depth(c) * std::log(f / n));
+        case DepthEncoding::log: return -n * std::exp2(unpack_depth(c) * std::log2(f / n));
     }
     return 0;
 }

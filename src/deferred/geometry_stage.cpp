@@ -19,7 +19,7 @@ void DeferredShader::geometry_stage(const Scene& scene) {
     view_ = cam.view();
     proj_ = cam.projection(float(w_) / float(h_));
     planes_ = planes_uniform(cam.near_plane, cam.far_plane);
-    zrange_ = glm::vec3(cam.near_plane, cam.far_plane, std::log(cam.far_plane / cam.near_plane));
+    zrange_ = glm::vec3(cam.near_plane, cam.far_plane, std::log2(cam.far_plane / cam.near_plane));
 
     mrt_bind_render();  // Listing 7 line 3
     // set_perspective_camera() (line 5)
