@@ -5,22 +5,15 @@
 #include <limits>
 
 #include "dsr_error.h"
+#include "scene/hash.h"
 
 namespace dsr {
 
-uint32_t bench_hash(uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
 
 namespace {
 
 // Uniform in [0, 1) from light i's stream k.
-float unit(uint32_t i, uint32_t k) { return float(bench_hash(i * 8u + k + 0x9e3779b9u) >> 8) / 16777216.0f; }
+float unit(uint32_t i, uint32_t k) { return float(hash32(i * 8u + k + 0x9e3779b9u) >> 8) / 16777216.0f; }
 
 // A saturated hue (HSV with s = 0.7, v = 1): coloured lights make overlaps visible in the image.
 glm::vec3 hue(float h) {

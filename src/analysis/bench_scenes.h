@@ -7,10 +7,6 @@
 
 namespace dsr {
 
-// The fixed-seed integer hash the generator draws from (lowbias32): the same scene and N give
-// the same lights on every machine and every run, so bench rows are comparable across runs.
-uint32_t bench_hash(uint32_t x);
-
 // `scene` with exactly n lights. Centres are stratified over the x-z extent of the meshes'
 // bounding box (one jittered cell per light, so they cover the floor evenly), floating a fraction
 // of their radius above its bottom so every sphere meets the floor. Radii make each floor point

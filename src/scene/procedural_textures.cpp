@@ -9,6 +9,8 @@
 // also absorbs any last-bit differences from FMA contraction.
 #include "scene/procedural_textures.h"
 
+#include "scene/hash.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -19,16 +21,6 @@ namespace dsr {
 namespace {
 
 constexpr int N = kProceduralTextureSize;
-
-// Chris Wellons' lowbias32: a well-mixed 32-bit integer hash.
-uint32_t hash32(uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
 
 // Uniform in [0, 1) from two integers and a seed.
 double rand01(int a, int b, uint32_t seed) {
