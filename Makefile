@@ -10,7 +10,7 @@ DSR_FLAGS := -std=c++17 -Wall -Wextra -Wno-unused-parameter -MMD -MP -Isrc \
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
 DEB_PACKAGES := g++ make pkg-config libosmesa6-dev libglm-dev libopenimageio-dev \
-                libtinyobjloader-dev nlohmann-json3-dev libgtest-dev
+                nlohmann-json3-dev libgtest-dev
 
 # Renderer core: everything but the command line.  Links without OpenImageIO
 # except for src/scene/image_io.cpp, the one file that includes it.
@@ -23,7 +23,7 @@ CORE_OBJ := $(CORE_SRC:%.cpp=$(BUILD)/obj/%.o)
 APP_OBJ  := $(APP_SRC:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o)
 
-LIBS := -lOSMesa -lOpenImageIO -lOpenImageIO_Util -ltinyobjloader -pthread
+LIBS := -lOSMesa -lOpenImageIO -lOpenImageIO_Util -pthread
 
 .PHONY: all run test test-legacy deps clean figures bench stress
 all: $(BUILD)/dsr $(BUILD)/dsr_tests
