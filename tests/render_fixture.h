@@ -26,6 +26,24 @@ struct RenderResult {
 
 inline Scene default_scene() { return load_scene(resource_dir("data") + "/default.scene"); }
 
+// A white sphere lit head-on by one large light, on background (0.2, 0.4, 0.6) with ambient
+// 0.5: the corners show the background, the centre saturates.
+inline Scene lit_sphere_scene() {
+    Scene s;
+    s.camera.pos = {0, 0, 5};
+    s.camera.target = {0, 0, 0};
+    s.background = {0.2f, 0.4f, 0.6f};
+    s.ambient = {0.5f, 0.5f, 0.5f};
+    Material m;
+    m.name = "m";
+    m.diffuse = {1, 1, 1};
+    m.specular = {1, 1, 1};
+    s.materials.push_back(m);
+    s.meshes.push_back(make_sphere(1.0f, {0, 0, 0}, 0));
+    s.lights.push_back({{0, 0, 3}, {1, 1, 1}, 100.0f});
+    return s;
+}
+
 inline RenderResult render_scene(const Scene& scene, int w, int h, const ShaderOptions& opts,
                                  const std::vector<std::string>& force_off = {}) {
     auto ctx = create_osmesa_context(w, h);

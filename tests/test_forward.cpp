@@ -115,18 +115,7 @@ TEST(Forward, ListingTwoLiteralMatchesDeferredLiteral) {
 // No surface: the background colour, exactly. A light outside the view frustum is culled
 // (Listing 17's test), shades nothing and changes nothing, in both forms.
 TEST(Forward, BackgroundAndCulledLight) {
-    Scene s;
-    s.camera.pos = {0, 0, 5};
-    s.camera.target = {0, 0, 0};
-    s.background = {0.2f, 0.4f, 0.6f};
-    s.ambient = {0.5f, 0.5f, 0.5f};
-    Material m;
-    m.name = "m";
-    m.diffuse = {1, 1, 1};
-    m.specular = {1, 1, 1};
-    s.materials.push_back(m);
-    s.meshes.push_back(make_sphere(1.0f, {0, 0, 0}, 0));
-    s.lights.push_back({{0, 0, 3}, {1, 1, 1}, 100.0f});
+    Scene s = lit_sphere_scene();
     Scene more = s;
     more.lights.push_back({s.camera.pos + glm::vec3(0, 0, 50), {1, 1, 1}, 1.0f});  // behind the camera
     for (ForwardMode mode : {ForwardMode::single, ForwardMode::multi}) {

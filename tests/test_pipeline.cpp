@@ -162,18 +162,7 @@ TEST(Pipeline, LightOutsideFrustumIsCulled) {
 // Pixels with no surface keep the background colour (the ambient alpha test, unlit by
 // Listing 20's zero-normal branch), and no pixel is NaN.
 TEST(Pipeline, BackgroundStaysBackground) {
-    Scene s;
-    s.camera.pos = {0, 0, 5};
-    s.camera.target = {0, 0, 0};
-    s.background = {0.2f, 0.4f, 0.6f};
-    s.ambient = {0.5f, 0.5f, 0.5f};
-    Material m;
-    m.name = "m";
-    m.diffuse = {1, 1, 1};
-    m.specular = {1, 1, 1};
-    s.materials.push_back(m);
-    s.meshes.push_back(make_sphere(1.0f, {0, 0, 0}, 0));
-    s.lights.push_back({{0, 0, 3}, {1, 1, 1}, 100.0f});
+    Scene s = lit_sphere_scene();
     for (DepthPath p : {DepthPath::texture, DepthPath::packed}) {
         auto r = render_scene(s, 64, 64, with_depth(p));
         const float* corner = r.image.at(0, 0);
