@@ -7,7 +7,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -20,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dsr_clock.h"
 #include "analysis/analytic_reference.h"
 #include "analysis/bench_scenes.h"
 #include "analysis/ideal_fragments.h"
@@ -68,16 +68,6 @@ struct Row {
     ImageDiff err;                          // vs the forward reference
     std::optional<ImageDiff> err_analytic;  // vs the analytic reference, interior pixels
 };
-
-double now_ms() {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    size_t n = v.size();
-    return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 std::string stem(const std::string& path) {
     std::string b = path.substr(path.find_last_of('/') + 1);

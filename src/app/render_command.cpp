@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dsr_clock.h"
 #include "app/args.h"
 #include "app/commands.h"
 #include "app/files.h"
@@ -18,13 +19,6 @@
 namespace dsr {
 
 namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 bool has_ext(const std::string& path, const char* ext) {
     std::string e = ext;

@@ -2,7 +2,6 @@
 // renderer, prints one row per case on stdout (progress on stderr), the depth-accuracy tables,
 // and exits non-zero when any invariant fails. --json writes the rows; --report rewrites the
 // generated block of docs/accuracy.md; --plot draws relative z error against far/near.
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -11,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dsr_clock.h"
 #include "analysis/plot.h"
 #include "analysis/stress_run.h"
 #include "app/args.h"
@@ -275,7 +275,7 @@ int cmd_stress(const std::vector<std::string>& argv) {
     int mw = 1, mh = 1;
     for (const StressCase& c : cases) mw = std::max(mw, c.width), mh = std::max(mh, c.height);
 
-    const auto t0 = std::chrono::steady_clock::now();
+    const double t0 = now_ms();
     StressRunner runner(mw, mh, resource_dir("glsl120"));
     std::vector<StressResult> results;
     int failed = 0;
@@ -287,7 +287,7 @@ int cmd_stress(const std::vector<std::string>& argv) {
                      r.passed() ? "pass" : r.limit ? "fails (limit case, not counted)" : "FAIL");
         for (const std::string& f : r.failures()) std::fprintf(stderr, "          %s\n", f.c_str());
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double seconds = (now_ms() - t0) / 1000.0;
 
     std::printf("%s", case_table(results, false).c_str());
     const std::string acc = accuracy_tables(results);

@@ -1,20 +1,14 @@
 // pDeferredShader: buffers (Listing 6), shader table, and the frame (Appendix A).
+#include "dsr_clock.h"
 #include "deferred/deferred_shader.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include "deferred/gpu_scene.h"
 #include "dsr_error.h"
 #include "gl/check.h"
 
 namespace dsr {
-
-namespace {
-double now_ms() {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-}  // namespace
 
 DeferredShader::DeferredShader(const Caps& caps, int width, int height, const ShaderOptions& opts,
                                const std::string& shader_dir)

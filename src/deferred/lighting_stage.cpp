@@ -1,10 +1,10 @@
 // Lighting stage (§3.4, Listings 14-20): image space, into P-buffer 0. A fixed-function
 // ambient pass (Eq. 6), then one additive screen-aligned quad per visible light, limited
 // to the light's scissor rectangle.
-#include <chrono>
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "dsr_clock.h"
 #include "deferred/culling.h"
 #include "deferred/deferred_shader.h"
 #include "deferred/reconstruct.h"
@@ -12,12 +12,6 @@
 #include "gl/check.h"
 
 namespace dsr {
-
-namespace {
-double now_ms() {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-}  // namespace
 
 // Listing 14.
 void DeferredShader::draw_lights(const Scene& scene, bool scissors, FrameStats& stats) {

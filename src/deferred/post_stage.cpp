@@ -1,19 +1,15 @@
 // Post-processing stage (§3.5, Figure 7, Appendix A step 3): bloom, then anti-alias, each
 // only when enabled, on the four ping-pong P-buffers. With both off this costs nothing.
-#include <chrono>
 #include <utility>
 #include <vector>
 
+#include "dsr_clock.h"
 #include "deferred/deferred_shader.h"
 #include "gl/check.h"
 
 namespace dsr {
 
 namespace {
-double now_ms() {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
 // [0,w]x[0,h] in the current ortho camera, texture coordinates 0..(sx,sy): the source's
 // content extent (less than 1 when padded to powers of two).
 void draw_quad(float w, float h, float sx, float sy) {

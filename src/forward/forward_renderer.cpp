@@ -1,8 +1,8 @@
 // Forward renderers of §2.4.1 (Listings 3 and 4), the reference for the deferred renderer's error.
+#include "dsr_clock.h"
 #include "forward/forward_renderer.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -13,12 +13,6 @@
 #include "gl/check.h"
 
 namespace dsr {
-
-namespace {
-double now_ms() {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-}  // namespace
 
 ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, ForwardMode mode,
                                  const std::string& shader_dir, bool listing2_literal)
