@@ -67,13 +67,7 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     }
 
     // Shader table: every program this configuration uses is compiled now (STYLE lesson 5).
-    std::vector<std::string> depth_defs;
-    if (opts.depth == DepthPath::packed) {
-        depth_defs.push_back("PACKED_DEPTH");
-        if (opts.encoding == DepthEncoding::literal) depth_defs.push_back("ENC_LITERAL");
-        if (opts.encoding == DepthEncoding::linear) depth_defs.push_back("ENC_LINEAR");
-        if (opts.encoding == DepthEncoding::log) depth_defs.push_back("ENC_LOG");
-    }
+    const std::vector<std::string> depth_defs = depth_defines();
     // Material variants: [normal map][no specular]. Without the skip, every material takes the
     // full shader (normal map and specular map read), as a single-shader renderer would.
     for (int nm = 0; nm < 2; ++nm)
@@ -119,6 +113,15 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
 }
 
 DeferredShader::~DeferredShader() = default;
+
+std::vector<std::string> DeferredShader::depth_defines() const {
+    if (opts_.depth != DepthPath::packed) return {};
+    std::vector<std::string> d = {"PACKED_DEPTH"};
+    if (opts_.encoding == DepthEncoding::literal) d.push_back("ENC_LITERAL");
+    if (opts_.encoding == DepthEncoding::linear) d.push_back("ENC_LINEAR");
+    if (opts_.encoding == DepthEncoding::log) d.push_back("ENC_LOG");
+    return d;
+}
 
 void DeferredShader::set_scene(const Scene& scene) { gpu_ = std::make_unique<GpuScene>(scene, !caps_.npot); }
 

@@ -166,6 +166,8 @@ private:
     // with rays, texcoord 1 = eye-space view ray of each corner (Listing 19).
     void draw_rect(float x0, float y0, float x1, float y1, bool rays);
     void set_ortho(int w, int h);
+    // Shader defines of the depth path and packed encoding (glsl120/depth_codec.glsl).
+    std::vector<std::string> depth_defines() const;
     int depth_target() const { return opts_.depth == DepthPath::texture ? PBuffer::DEPTH : G_DEPTH_PACKED; }
 
     Caps caps_;

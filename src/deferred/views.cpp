@@ -80,13 +80,8 @@ Image DeferredShader::reconstructed_positions() {
         d.color_formats = {GL_RGBA32F_ARB};
         d.pow2 = !caps_.npot;
         position_buf_ = std::make_unique<PBuffer>("position read-back", d);
-        std::vector<std::string> defs = {"OUTPUT_POSITION"};
-        if (opts_.depth == DepthPath::packed) {
-            defs.push_back("PACKED_DEPTH");
-            if (opts_.encoding == DepthEncoding::literal) defs.push_back("ENC_LITERAL");
-            if (opts_.encoding == DepthEncoding::linear) defs.push_back("ENC_LINEAR");
-            if (opts_.encoding == DepthEncoding::log) defs.push_back("ENC_LOG");
-        }
+        std::vector<std::string> defs = depth_defines();
+        defs.push_back("OUTPUT_POSITION");
         position_prog_ = Program(shader_dir_, "light.vert", "light.frag", defs);
     }
     const auto rays = corner_rays(proj_[0][0], proj_[1][1]);
