@@ -51,25 +51,20 @@ void DeferredShader::geometry_stage(const Scene& scene) {
     check_gl("geometry stage: set-up");
     draw_depth();  // line 20
     check_gl("geometry stage: depth pass");
+    // Each target is cleared to its own value; without MRT (§3.2, "rendering one pass per
+    // buffer") each is also drawn right away, the depth pre-pass keeping every pass to the
+    // visible fragments like the single MRT pass.
+    std::vector<int> all;
+    for (int t = 0; t < mrt_->color_targets(); ++t) {
+        mrt_->set_draw_targets({t});
+        glClearColor(clear[t].r, clear[t].g, clear[t].b, clear[t].a);
+        glClear(GL_COLOR_BUFFER_BIT);
+        if (!mrt_path_) draw_material(t);
+        all.push_back(t);
+    }
     if (mrt_path_) {
-        for (int t = 0; t < mrt_->color_targets(); ++t) {
-            mrt_->set_draw_targets({t});
-            glClearColor(clear[t].r, clear[t].g, clear[t].b, clear[t].a);
-            glClear(GL_COLOR_BUFFER_BIT);
-        }
-        std::vector<int> all;
-        for (int t = 0; t < mrt_->color_targets(); ++t) all.push_back(t);
         mrt_->set_draw_targets(all);
         draw_material(-1);  // line 22: all targets in one pass (ARB_draw_buffers)
-    } else {
-        // §3.2: without MRT, "rendering one pass per buffer"; the depth pre-pass makes each
-        // pass shade only the visible fragments, like the single MRT pass.
-        for (int t = 0; t < mrt_->color_targets(); ++t) {
-            mrt_->set_draw_targets({t});
-            glClearColor(clear[t].r, clear[t].g, clear[t].b, clear[t].a);
-            glClear(GL_COLOR_BUFFER_BIT);
-            draw_material(t);
-        }
     }
     check_gl("geometry stage: material pass");
 
