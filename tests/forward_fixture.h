@@ -13,7 +13,7 @@ struct ForwardResult {
 };
 
 inline ForwardResult render_forward(const Scene& scene, int w, int h, const ForwardOptions& opts) {
-    auto ctx = create_osmesa_context(w, h);
+    auto ctx = create_context(ContextDesc{"osmesa", w, h});
     Caps caps = probe_caps();
     ForwardRenderer fr(caps, w, h, opts, resource_dir("glsl120"));
     fr.set_scene(scene);

@@ -46,7 +46,7 @@ inline Scene lit_sphere_scene() {
 
 inline RenderResult render_scene(const Scene& scene, int w, int h, const ShaderOptions& opts,
                                  const std::vector<std::string>& force_off = {}) {
-    auto ctx = create_osmesa_context(w, h);
+    auto ctx = create_context(ContextDesc{"osmesa", w, h});
     Caps caps = probe_caps(force_off);
     DeferredShader ds(caps, w, h, opts, resource_dir("glsl120"));
     ds.set_scene(scene);

@@ -176,7 +176,7 @@ TEST(Pipeline, BackgroundStaysBackground) {
 
 // §3.2: a P-buffer is never a render target and a texture at once.
 TEST(PBuffer, RenderTargetAndTextureAtOnceFails) {
-    auto ctx = create_osmesa_context(16, 16);
+    auto ctx = create_context(ContextDesc{"osmesa", 16, 16});
     PBufferDesc d;
     d.width = d.height = 16;
     d.color_formats = {GL_RGBA8};

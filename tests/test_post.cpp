@@ -20,7 +20,7 @@ struct Frame {
 };
 
 Frame render_post(const Scene& s, int n, const PostOptions& post) {
-    auto ctx = create_osmesa_context(n, n);
+    auto ctx = create_context(ContextDesc{"osmesa", n, n});
     Caps caps = probe_caps();
     ShaderOptions o;
     o.post = post;

@@ -113,7 +113,7 @@ std::vector<std::string> StressResult::failures() const {
 }
 
 StressRunner::StressRunner(int max_w, int max_h, const std::string& shader_dir)
-    : ctx_(create_osmesa_context(max_w, max_h)), max_w_(max_w), max_h_(max_h), shader_dir_(shader_dir) {
+    : ctx_(create_context(ContextDesc{"osmesa", max_w, max_h})), max_w_(max_w), max_h_(max_h), shader_dir_(shader_dir) {
     renderer_ = probe_caps().renderer;
 }
 

@@ -586,7 +586,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
     std::vector<int> own_counts;
     for (auto& s : scenes) own_counts.push_back(int(load_scene(s).lights.size()));
 
-    auto ctx = create_osmesa_context(cfg.w, cfg.h);
+    auto ctx = create_context(ContextDesc{"osmesa", cfg.w, cfg.h});
     Caps caps = probe_caps();
     const std::string machine = machine_name();
     std::fprintf(stderr, "bench: %s; GL %s (%s); %dx%d, %d warm-up + %d timed frames per row\n", machine.c_str(),

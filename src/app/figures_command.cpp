@@ -60,7 +60,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
     if (scene_path.empty()) scene_path = resource_dir("data") + "/default.scene";
     Scene scene = load_scene(scene_path);
     mkdir(dir.c_str(), 0755);
-    auto ctx = create_osmesa_context(n, n);
+    auto ctx = create_context(ContextDesc{"osmesa", n, n});
     Caps caps = probe_caps();
     const std::string shaders = resource_dir("glsl120");
     std::vector<std::string> written;

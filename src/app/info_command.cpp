@@ -30,7 +30,7 @@ int cmd_info(const std::vector<std::string>& argv) {
         else
             args.fail("unknown option '" + a + "'");
     }
-    auto ctx = create_osmesa_context(64, 64);
+    auto ctx = create_context(ContextDesc{"osmesa", 64, 64});
     Caps caps = probe_caps(split_caps(caps_list));
     std::printf("context        %s\n%s", ctx->backend().c_str(), describe(caps).c_str());
     std::printf("paths chosen:\n");

@@ -97,7 +97,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     post.aa = aa < 0 ? scene.post_aa : aa == 1;
     if (view == View::bloom) post.bloom = true;  // the view shows the bloom blur
     // The no-FBO path renders its buffers inside the main frame buffer: make it fit both.
-    auto ctx = create_osmesa_context(std::max(w, out_w), std::max(h, out_h));
+    auto ctx = create_context(ContextDesc{"osmesa", std::max(w, out_w), std::max(h, out_h)});
     Caps caps = probe_caps(split_caps(caps_list));
     ShaderOptions opts;
     if (depth == "auto") opts.depth = caps.depth_texture ? DepthPath::texture : DepthPath::packed;

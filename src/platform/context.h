@@ -1,9 +1,11 @@
 // Where a GL context comes from. One small interface; each backend in its own file
 // (osmesa_context.cpp now; a GLFW window and an EGL pbuffer later). Knows nothing of
-// deferred shading.
+// deferred shading. Backends are linked per executable (not in libdsr_core.a), so no
+// executable links libOSMesa and the system libGL both.
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace dsr {
 
@@ -14,11 +16,25 @@ public:
     virtual int width() const = 0;
     virtual int height() const = 0;
     virtual std::string backend() const = 0;
+    // Address of a GL entry point (core or extension) for this context; null when absent.
+    virtual void* proc_address(const char* name) const = 0;
+    virtual void make_current() = 0;
+    // Presents the main frame buffer: a window's buffer swap; a no-op headless.
+    virtual void swap() {}
 };
 
-// A headless OSMesa compatibility context asking for OpenGL 2.1 (GLSL 1.20), with an
-// RGBA8 main buffer of width x height and a 24-bit depth buffer. Made current.
-// Throws dsr::Error with one clear line when no context can be had.
-std::unique_ptr<GLContext> create_osmesa_context(int width, int height);
+// What to create: the backend by name (`--context`), and the main frame buffer's size.
+struct ContextDesc {
+    std::string backend = "osmesa";  // osmesa (headless Mesa); later glfw, egl
+    int width = 64, height = 64;
+};
+
+// Creates the context, makes it current and loads dsr's GL entry-point table through
+// proc_address (src/gl/entry_points.h). Throws dsr::Error with one clear line when the
+// backend is unknown or not built into this executable, or when no context can be had.
+std::unique_ptr<GLContext> create_context(const ContextDesc& desc);
+
+// The backends linked into this executable ("osmesa", ...), for help and error messages.
+std::vector<std::string> context_backends();
 
 }  // namespace dsr

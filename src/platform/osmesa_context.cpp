@@ -33,6 +33,14 @@ public:
     int width() const override { return w_; }
     int height() const override { return h_; }
     std::string backend() const override { return "osmesa"; }
+    void* proc_address(const char* name) const override {
+        return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
+    }
+    void make_current() override {
+        if (!OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, w_, h_))
+            throw Error("OSMesa: cannot make the context current");
+        OSMesaPixelStore(OSMESA_Y_UP, 1);
+    }
 
 private:
     int w_, h_;
