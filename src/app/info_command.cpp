@@ -3,7 +3,9 @@
 
 #include "app/args.h"
 #include "app/commands.h"
+#include "deferred/paths.h"
 #include "gl/caps.h"
+#include "gl/frame_timer.h"
 #include "platform/context.h"
 
 namespace dsr {
@@ -23,32 +25,33 @@ std::vector<std::string> split_caps(const std::string& list) {
 int cmd_info(const std::vector<std::string>& argv) {
     Args args("info", argv);
     std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";
+    std::string context = default_context_backend();  // --context, else $DSR_CONTEXT
     while (!args.done()) {
         std::string a = args.next();
         if (a == "--caps")
             caps_list += "," + args.value("--caps");
+        else if (a == "--context")
+            context = args.value(a);
         else
             args.fail("unknown option '" + a + "'");
     }
-    auto ctx = create_context(ContextDesc{"osmesa", 64, 64});
+    auto ctx = create_context(ContextDesc{context, 512, 512});  // big enough to time a pass (timing line)
     Caps caps = probe_caps(split_caps(caps_list));
     std::printf("context        %s\n%s", ctx->backend().c_str(), describe(caps).c_str());
-    std::printf("paths chosen:\n");
-    if (!caps.glsl120) {
-        std::printf("  none: GLSL 1.20 is required and this GL offers %s; dsr cannot render here\n",
-                    caps.glsl_version.empty() ? "none" : caps.glsl_version.c_str());
+    // The renderer's own chooser with `render`'s defaults (depth auto), so info cannot drift.
+    ShaderOptions defaults;
+    defaults.depth = DepthPath::automatic;
+    const Paths paths = choose_paths(caps, defaults);
+    std::printf("paths chosen (render's defaults, --depth auto):\n");
+    if (!paths.refused.empty()) {
+        std::printf("  none: %s; dsr cannot render here\n", paths.refused.c_str());
         return 0;
     }
-    std::printf("  depth          %s\n", caps.depth_texture ? "texture (ARB_depth_texture)"
-                                                            : "packed (float_to_color into an RGB8 target, §3.3.2)");
-    std::printf("  G-buffer       %s\n", caps.fbo && caps.draw_buffers && caps.max_draw_buffers >= 4
-                                             ? "mrt: one material pass into all targets (ARB_draw_buffers)"
-                                             : "per-target: one material pass per G-buffer target (§3.2)");
-    std::printf("  render target  %s\n", caps.fbo ? "fbo: render to texture (EXT_framebuffer_object)"
-                                                  : "copy: main buffer region + glCopyTexSubImage2D");
-    std::printf("  textures       %s\n", caps.npot ? "npot: any size"
-                                                   : "pow2: targets padded, material maps rescaled to powers of two");
-    std::printf("  light counting %s\n", caps.occlusion_query ? "occlusion queries" : "off (no occlusion queries)");
+    std::fputs(describe(paths).c_str(), stdout);
+    const TimingCheck& t = choose_timing(caps, ctx->width(), ctx->height());
+    std::printf("  timing         %s (%s", timing_name(t.source), t.reason.c_str());
+    if (t.query_ms >= 0) std::printf("; same passes: %.3f ms by timer query, %.3f ms by wall clock", t.query_ms, t.wall_ms);
+    std::printf(")\n");
     return 0;
 }
 

@@ -6,76 +6,36 @@
 //   final_stage.cpp     §3.6  P-buffer 0 to the main frame buffer, fixed function
 #pragma once
 #include <memory>
+#include <tuple>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include <map>
+
 #include "deferred/depth_codec.h"
+#include "deferred/options.h"
+#include "deferred/paths.h"
+#include "deferred/render_targets.h"
 #include "gl/caps.h"
+#include "gl/frame_timer.h"
 #include "gl/pbuffer.h"
 #include "gl/program.h"
+#include "gl/state.h"
 #include "scene/image.h"
 #include "scene/scene.h"
 
 namespace dsr {
 
 class GpuScene;
+struct GpuMaterial;
 
-enum class DepthPath { texture, packed };
-
-enum class AaSource { normal, depth, both };
-enum class AaKernel { text, listing };
-
-// Post-processing (§3.5). Defaults are the tutorial's: a 7-tap separable blur at half size.
-struct PostOptions {
-    bool bloom = false;
-    int bloom_scale = 2;           // P-buffers 2 and 3 at 1/2 or 1/4 of the frame (§3.5.2)
-    int bloom_taps = 7;            // NUMPOINTS of Listing 22 (odd, 3..15)
-    float bloom_strength = 1.0f;   // weight of the fixed-function add into P-buffer 0
-    bool bloom_listing = false;    // Listing 22's grey dot(t,t) in both passes; default keeps colour
-    bool aa = false;
-    AaSource aa_source = AaSource::normal;  // Eq. 7 over the normal target, depth, or both
-    AaKernel aa_kernel = AaKernel::text;    // text: all 8 neighbours; listing: Listing 21's table
-    float aa_weight = 1.0f;        // Listing 21's `weight`: largest offset, in pixels
-    float aa_depth_scale = 4.0f;   // relative eye-z step that counts as an edge: ((dz/z)*scale)^2
-};
-
-// Work a scene does not need, skipped (each on by default; bench measures each).
-struct SkipOptions {
-    bool material_variants = true;  // no normal map: no tangent-space work; no specular: no specular map read
-    bool empty_lights = true;       // lights with zero colour or an empty scissor rectangle are not drawn
-    bool light_depth_test = true;   // per light, pixels whose surface lies in front of or behind the
-                                    // light's sphere (or is background) are rejected before shading
-    bool light_sphere_test = true;  // then pixels whose surface point is outside the sphere (att = 0):
-                                    // rejected after one depth fetch, before the G-buffer reads
-};
-
-struct ShaderOptions {
-    DepthPath depth = DepthPath::texture;
-    DepthEncoding encoding = DepthEncoding::corrected;  // what the packed target holds
-    bool listing2_literal = false;  // Listing 2's v and h exactly; default: Equations 1-5
-    bool scissor = true;            // §3.4.2 light scissor rectangles
-    PostOptions post;
-    SkipOptions skip;
-    bool float_accum = false;       // P-buffer 0 as RGBA32F (stress tests: NaN/Inf survive)
-    // G-buffer target precision: the tutorial's RGBA8 everywhere (Figure 3), or half-float
-    // targets (ARB_texture_float + ARB_half_float_pixel) where 8-bit normals are the largest
-    // error of the deferred image.
-    bool gbuffer_half = false;
-};
-
-// Per-stage wall time of one frame, in milliseconds (glFinish after each stage).
+// Per-stage time of one frame, in milliseconds, from the FrameTimer (gl/frame_timer.h):
+// GPU timer queries or glFinish + wall clock, as `timing` says. `frame` is always the wall
+// time of render() until the GPU finished.
 struct StageTimes {
     double geometry = 0, ambient = 0, lights = 0, bloom = 0, aa = 0, final = 0, frame = 0;
-};
-
-// The path taken at each capability decision (issue: old GL 2.x hardware paths).
-struct Paths {
-    std::string depth;          // "texture" | "packed"
-    std::string gbuffer;        // "mrt" (one pass, ARB_draw_buffers) | "per-target" (one pass per target)
-    std::string render_target;  // "fbo" (EXT_framebuffer_object) | "copy" (main buffer + glCopyTexSubImage2D)
-    std::string textures;       // "npot" | "pow2" (padded targets, rescaled material maps)
 };
 
 struct FrameStats {
@@ -84,6 +44,7 @@ struct FrameStats {
                                     // light depth test, those that passed it)
     long long scissor_pixels = 0;   // sum of the rectangles the light quads were limited to
     StageTimes ms;
+    TimingSource timing = TimingSource::wall;
 };
 
 // What `--view` shows (the same names in every interface): the final image, a G-buffer
@@ -92,17 +53,28 @@ enum class View { final, normal, diffuse, specular, depth, blur_factor, bloom };
 // "final", "normal", …, "blur-factor", "bloom"; throws dsr::Error listing the names otherwise.
 View view_from_name(const std::string& name);
 const char* view_name(View v);
+// Every view's name, in View order (what `--view` accepts).
+const std::vector<std::string>& view_names();
 
-// G-buffer targets (Figure 3).
-enum GTarget { G_NORMAL = 0, G_DIFFUSE = 1, G_SPECULAR = 2, G_DEPTH_PACKED = 3 };
+// One material program of the shader table (Listing 9's variants).
+struct MaterialKey {
+    bool normal_map = false;   // tangent-space normal map read (NORMAL_MAP)
+    bool no_specular = false;  // specular target written as zero, no map read (NO_SPECULAR)
+    int target = -1;           // -1: every target in one pass (MRT); t: only G-buffer target t
+    bool operator<(const MaterialKey& o) const {
+        return std::tie(normal_map, no_specular, target) < std::tie(o.normal_map, o.no_specular, o.target);
+    }
+};
 
 class DeferredShader {
 public:
     // width x height: the deferred buffers (G-buffer and P-buffers). Needs an OpenGL
-    // context current. Throws dsr::Error naming a missing capability.
+    // context current. Throws dsr::Error naming a missing capability (choose_paths' refusal).
     DeferredShader(const Caps& caps, int width, int height, const ShaderOptions& opts,
                    const std::string& shader_dir);
     ~DeferredShader();
+    // Reallocates the G-buffer and P-buffers at the new size; no shader is recompiled.
+    void resize(int width, int height);
 
     void set_scene(const Scene& scene);
     // The whole pipeline (Appendix A) into the current main frame buffer of out_w x out_h.
@@ -123,7 +95,7 @@ public:
     // Post-processing passes, public for the figures (Figure 10 shows them one by one).
     // blur: Listing 22 from P-buffer `src` into `dst` along `dir` (1,0) or (0,1); `select`
     // applies the bright-pass weighting of the first bloom pass.
-    void blur(int src, int dst, glm::vec2 dir, bool select);
+    void blur(int src, int dst, glm::vec2 dir, bool select);  // P-buffer roles (PRole)
     void draw_bloom();
     void draw_anti_alias(bool factor_only = false);
 
@@ -135,13 +107,15 @@ public:
     // alpha 1 where the G-buffer has a surface, 0 elsewhere.
     Image reconstructed_positions();
     Image read_pbuffer(int fb);
-    int pbuffer_width(int fb) const { return fb_[fb]->width(); }
-    int pbuffer_height(int fb) const { return fb_[fb]->height(); }
-    GLuint pbuffer_texture(int fb) const { return fb_[fb]->texture(0); }
+    int pbuffer_width(int fb) const { return targets_->pbuffer(fb).width(); }
+    int pbuffer_height(int fb) const { return targets_->pbuffer(fb).height(); }
+    GLuint pbuffer_texture(int fb) const { return targets_->pbuffer(fb).texture(0); }
 
-    int width() const { return w_; }
-    int height() const { return h_; }
+    int width() const { return targets_->width(); }
+    int height() const { return targets_->height(); }
+    // The options as run: depth `automatic` resolved by choose_paths.
     const ShaderOptions& options() const { return opts_; }
+    TimingSource timing() const { return timer_.source(); }
     const Paths& paths() const { return paths_; }
     // Eye-space camera of the current frame.
     const glm::mat4& view_matrix() const { return view_; }
@@ -158,6 +132,13 @@ public:
     void fb_unbind_texture(int buffer, int unit);
 
 private:
+    // Stage slots of the frame timer, in StageTimes order.
+    enum Slot { S_GEOMETRY, S_AMBIENT, S_LIGHTS, S_BLOOM, S_AA, S_FINAL, S_COUNT };
+    // Each pass's fixed-function state (gl/state.h), declared in its stage's file.
+    static RenderState depth_pass_state();
+    static RenderState material_pass_state();
+    static RenderState ambient_pass_state();
+    static RenderState light_pass_state(GLuint program, bool scissor);
     void draw_depth();
     void draw_material(int target);
     void draw_ambient(const Scene& scene);
@@ -169,15 +150,17 @@ private:
     // Shader defines of the depth path and packed encoding (glsl120/depth_codec.glsl).
     std::vector<std::string> depth_defines() const;
     int depth_target() const { return opts_.depth == DepthPath::texture ? PBuffer::DEPTH : G_DEPTH_PACKED; }
+    // The material program a material draws with into `target` (-1: all, MRT).
+    Program& material_program(const GpuMaterial& m, int target);
+    PBuffer& gbuf() { return targets_->gbuffer(); }
+    PBuffer& pbuf(int role) { return targets_->pbuffer(role); }
 
     Caps caps_;
     int w_, h_;
     ShaderOptions opts_;
     Paths paths_;
-    bool mrt_path_ = true;  // one material pass into all targets
-    std::unique_ptr<PBuffer> mrt_;      // G-buffer
-    std::unique_ptr<PBuffer> fb_[4];    // P-buffers 0-3
-    Program material_prog_[2][2][5];    // [normal map?][no specular?][0: all targets (MRT), 1+t: target t]
+    std::unique_ptr<RenderTargets> targets_;  // G-buffer and P-buffers 0-3
+    std::map<MaterialKey, Program> material_progs_;
     Program position_prog_;             // light.frag with OUTPUT_POSITION, built on first use
     std::unique_ptr<PBuffer> position_buf_;
     std::string shader_dir_;
@@ -189,6 +172,7 @@ private:
     glm::mat4 view_{1}, proj_{1};
     glm::vec2 planes_{0};
     glm::vec3 corner_rays_[4];
+    FrameTimer timer_;
 };
 
 }  // namespace dsr

@@ -6,7 +6,8 @@
 namespace dsr {
 
 void DeferredShader::final_stage(int out_w, int out_h) {
-    draw_texture_to_main(fb_[0]->texture(0), out_w, out_h, {fb_[0]->tex_scale_x(), fb_[0]->tex_scale_y()});
+    const PBuffer& accum = pbuf(P_ACCUM);
+    draw_texture_to_main(accum.texture(0), out_w, out_h, {accum.tex_scale_x(), accum.tex_scale_y()});
 }
 
 void DeferredShader::draw_texture_to_main(GLuint texture, int out_w, int out_h, glm::vec2 ts) {

@@ -10,7 +10,9 @@
 #include "deferred/depth_codec.h"
 #include "deferred/gpu_scene.h"
 #include "deferred/reconstruct.h"
+#include "dsr_error.h"
 #include "gl/check.h"
+#include "gl/state.h"
 
 namespace dsr {
 
@@ -27,18 +29,7 @@ void DeferredShader::geometry_stage(const Scene& scene) {
     glLoadMatrixf(glm::value_ptr(proj_));
     glMatrixMode(GL_MODELVIEW);
     glLoadMatrixf(glm::value_ptr(view_));
-    // Render states, Listing 7 lines 7-17.
-    glCullFace(GL_BACK);
-    glEnable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_ALPHA_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glEnable(GL_DEPTH_TEST);
-    glDisable(GL_TEXTURE_2D);
     glColor4f(1, 1, 1, 1);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthMask(GL_TRUE);
     // Listing 7 clears every target to the background colour with one glClear; here each
     // target gets its own "no surface" value (docs/errata.md): a zero normal (0.5 grey,
     // which Listing 20's len > 0.1 test leaves unlit), zero diffuse with alpha 0 (the
@@ -46,55 +37,82 @@ void DeferredShader::geometry_stage(const Scene& scene) {
     const glm::vec4 clear[4] = {{0.5f, 0.5f, 0.5f, 0.0f}, {0, 0, 0, 0}, {0, 0, 0, 0},
                                 glm::vec4(encode_eye_z(opts_.encoding, -cam.far_plane, cam.near_plane,
                                                        cam.far_plane), 0)};
+    gl_state().apply(depth_pass_state());  // the clear writes depth: depth writes on, no scissor
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
-    check_gl("geometry stage: set-up");
+    check_gl_stage("geometry stage: set-up");
     draw_depth();  // line 20
-    check_gl("geometry stage: depth pass");
+    check_gl_stage("geometry stage: depth pass");
     // Each target is cleared to its own value; without MRT (§3.2, "rendering one pass per
     // buffer") each is also drawn right away, the depth pre-pass keeping every pass to the
     // visible fragments like the single MRT pass.
+    gl_state().apply(material_pass_state());  // the clears write colour
     std::vector<int> all;
-    for (int t = 0; t < mrt_->color_targets(); ++t) {
-        mrt_->set_draw_targets({t});
+    for (int t = 0; t < gbuf().color_targets(); ++t) {
+        gbuf().set_draw_targets({t});
         glClearColor(clear[t].r, clear[t].g, clear[t].b, clear[t].a);
         glClear(GL_COLOR_BUFFER_BIT);
-        if (!mrt_path_) draw_material(t);
+        if (!paths_.mrt) draw_material(t);
         all.push_back(t);
     }
-    if (mrt_path_) {
-        mrt_->set_draw_targets(all);
+    if (paths_.mrt) {
+        gbuf().set_draw_targets(all);
         draw_material(-1);  // line 22: all targets in one pass (ARB_draw_buffers)
     }
-    check_gl("geometry stage: material pass");
-
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
+    check_gl_stage("geometry stage: material pass");
     mrt_unbind_render();  // line 24
+}
+
+// Render states of Listing 7 lines 7-17: back faces culled, GL_LEQUAL, no blending, no
+// scissor, no alpha test, no fixed-function texturing.
+RenderState DeferredShader::depth_pass_state() {
+    RenderState s;
+    s.cull = true;
+    s.cull_face = GL_BACK;
+    s.depth_test = true;
+    s.depth_func = GL_LEQUAL;
+    s.depth_write = true;
+    s.color_write = false;  // Listing 8: depth only
+    return s;
+}
+
+// The material pass: the same, colour on and depth writes off (the pre-pass laid it down,
+// so only the visible fragment passes GL_LEQUAL: early Z, §3.3.1).
+RenderState DeferredShader::material_pass_state() {
+    RenderState s = depth_pass_state();
+    s.color_write = true;
+    s.depth_write = false;
+    return s;
 }
 
 // Listing 8: raw positions, no shader, colour writes off.
 void DeferredShader::draw_depth() {
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glDepthMask(GL_TRUE);
-    glUseProgram(0);
+    gl_state().apply(depth_pass_state());
     gpu_->bind_positions();
     gpu_->draw_all();
     gpu_->unbind();
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthMask(GL_FALSE);
+}
+
+Program& DeferredShader::material_program(const GpuMaterial& m, int target) {
+    // Without the variants skip, every material takes the full shader (normal map and
+    // specular map read), as a single-shader renderer would.
+    const bool variants = opts_.skip.material_variants;
+    const MaterialKey key{m.normal_map || !variants, variants && !m.has_specular, target};
+    auto it = material_progs_.find(key);
+    if (it == material_progs_.end()) throw Error("no material program for this material and target");
+    return it->second;
 }
 
 // Listing 9 (target -1: all targets at once; t: only G-buffer target t), with its test un-inverted (docs/errata.md): materials with a normal map use
 // the tangent-space shader, the others a variant that skips the normal map.
 void DeferredShader::draw_material(int target) {
+    gl_state().apply(material_pass_state());
     gpu_->bind_all();
     int bound = -1;
+    const bool variants = opts_.skip.material_variants;
     for (const DrawRange& r : gpu_->ranges()) {
         const GpuMaterial& m = gpu_->material(r.material);
-        const bool variants = opts_.skip.material_variants;
-        Program& prog = material_prog_[m.normal_map || !variants ? 1 : 0][variants && !m.has_specular ? 1 : 0][target + 1];
+        Program& prog = material_program(m, target);
         if (bound != int(prog.id())) {
             prog.use();
             prog.set("normaltex", 0);
@@ -121,7 +139,6 @@ void DeferredShader::draw_material(int target) {
         glActiveTexture(GL_TEXTURE0 + u);
         glBindTexture(GL_TEXTURE_2D, 0);
     }
-    glUseProgram(0);
     gpu_->unbind();
 }
 

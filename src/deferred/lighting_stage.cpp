@@ -4,63 +4,66 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "dsr_clock.h"
 #include "deferred/culling.h"
 #include "deferred/deferred_shader.h"
 #include "deferred/reconstruct.h"
 #include "deferred/scissor.h"
 #include "gl/check.h"
+#include "gl/state.h"
 
 namespace dsr {
 
 // Listing 14.
 void DeferredShader::draw_lights(const Scene& scene, bool scissors, FrameStats& stats) {
-    double t0 = now_ms();
-    fb_bind_render(0);
+    timer_.begin(S_AMBIENT);
+    fb_bind_render(P_ACCUM);
     set_ortho(w_, h_);
-    glDepthFunc(GL_LEQUAL);
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_SCISSOR_TEST);
-    glBlendFunc(GL_ONE, GL_ONE);
-    glDisable(GL_BLEND);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     draw_ambient(scene);
-    check_gl("lighting stage: ambient pass");
-    glFinish();
-    double t1 = now_ms();
-    stats.ms.ambient = t1 - t0;
+    check_gl_stage("lighting stage: ambient pass");
+    timer_.end();
 
+    timer_.begin(S_LIGHTS);
     const int units[4] = {0, 1, 2, 3};
     const int targets[4] = {G_NORMAL, G_DIFFUSE, G_SPECULAR, depth_target()};
     for (int i = 0; i < 4; ++i) mrt_bind_texture(targets[i], units[i]);  // mrt_bind_texture(ALL)
     draw_lighting(scene, scissors, stats);
     for (int i = 3; i >= 0; --i) mrt_unbind_texture(targets[i], units[i]);
-    check_gl("lighting stage: light passes");
-    fb_unbind_render(0);
-    glFinish();
-    stats.ms.lights = now_ms() - t1;
+    check_gl_stage("lighting stage: light passes");
+    fb_unbind_render(P_ACCUM);
+    timer_.end();
+}
+
+// Listing 15's fixed-function modulate: unit 0 textured by the G-buffer's diffuse target,
+// scaled by the ambient colour; the alpha test keeps the background where there is no surface.
+// Listing 7 disabled GL_TEXTURE_2D; the modulate needs it back (docs/errata.md).
+RenderState DeferredShader::ambient_pass_state() {
+    RenderState s = textured_2d(GL_MODULATE);
+    s.alpha_test = true;
+    s.alpha_func = GL_GREATER;
+    s.alpha_ref = 0.5f;
+    return s;
+}
+
+// Listing 16-17: additive, through the light shader, limited to the light's scissor rectangle.
+RenderState DeferredShader::light_pass_state(GLuint program, bool scissor) {
+    RenderState s;
+    s.blend = true;
+    s.blend_src = s.blend_dst = GL_ONE;
+    s.scissor = scissor;
+    s.program = program;
+    return s;
 }
 
 // Listing 15, with the background kept: P-buffer 0 starts as the background colour and
 // the alpha test keeps it where the G-buffer holds no surface (diffuse alpha 0).
 void DeferredShader::draw_ambient(const Scene& scene) {
+    gl_state().apply(ambient_pass_state());  // before the clear: colour writes on, no scissor
     glClearColor(scene.background.r, scene.background.g, scene.background.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    glUseProgram(0);
     glColor4f(scene.ambient.r, scene.ambient.g, scene.ambient.b, 1.0f);
-    // Listing 7 disabled GL_TEXTURE_2D; the modulate needs it back (docs/errata.md).
-    glActiveTexture(GL_TEXTURE0);
-    glEnable(GL_TEXTURE_2D);
-    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-    glAlphaFunc(GL_GREATER, 0.5f);
-    glEnable(GL_ALPHA_TEST);
     mrt_bind_texture(G_DIFFUSE, 0);
     draw_rect(0, 0, float(w_), float(h_), false);
     mrt_unbind_texture(G_DIFFUSE, 0);
-    glDisable(GL_ALPHA_TEST);
-    glDisable(GL_TEXTURE_2D);
     glColor4f(1, 1, 1, 1);
 }
 
@@ -71,17 +74,15 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
     for (int i = 0; i < 4; ++i) corner_rays_[i] = rays[i];
     const float near_plane = scene.camera.near_plane;
 
-    light_prog_.use();  // bind_light()
+    gl_state().apply(light_pass_state(light_prog_.id(), false));  // bind_light()
     light_prog_.set("normal_map", 0);
     light_prog_.set("diffuse_map", 1);
     light_prog_.set("specular_map", 2);
     light_prog_.set("depth_map", 3);
     light_prog_.set("planes", planes_);
     light_prog_.set("zrange", zrange_);
-    glBlendFunc(GL_ONE, GL_ONE);
-    glEnable(GL_BLEND);
 
-    const bool count = caps_.occlusion_query;
+    const bool count = paths_.count_fragments;
     std::vector<GLuint> queries;
     stats.lights_total = int(scene.lights.size());
     for (const Light& light : scene.lights) {
@@ -105,13 +106,10 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
             r = ScissorRect{0, 0, w_, h_};  // without the skip: shade the screen for nothing
             n = (long long)w_ * h_;
         }
-        if (!scissors || n == (long long)w_ * h_) {
-            n = (long long)w_ * h_;
-            glDisable(GL_SCISSOR_TEST);
-        } else {
-            glScissor(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
-            glEnable(GL_SCISSOR_TEST);
-        }
+        const bool full = !scissors || n == (long long)w_ * h_;
+        if (full) n = (long long)w_ * h_;
+        else glScissor(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);  // set_light_scissor (Listing 16)
+        gl_state().apply(light_pass_state(light_prog_.id(), !full));
         stats.scissor_pixels += n;
         ++stats.lights_drawn;
         light_prog_.set("lightpos", glm::vec4(eye, light.radius));  // set_light_params
@@ -124,9 +122,7 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
         draw_rect(0, 0, float(w_), float(h_), true);
         if (count) glEndQuery(GL_SAMPLES_PASSED);
     }
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_BLEND);
-    glUseProgram(0);  // unbind_light()
+    // unbind_light(): nothing to restore, the next pass states what it needs.
     // Results are read after the loop so no light waits on the one before it.
     for (GLuint q : queries) {
         GLuint samples = 0;

@@ -3,9 +3,9 @@
 #include <utility>
 #include <vector>
 
-#include "dsr_clock.h"
 #include "deferred/deferred_shader.h"
 #include "gl/check.h"
+#include "gl/state.h"
 
 namespace dsr {
 
@@ -28,45 +28,39 @@ glm::vec4 uv_clamp(const PBuffer& b) {
     return {0.5f / tw, 0.5f / th, (b.width() - 0.5f) / tw, (b.height() - 0.5f) / th};
 }
 
-void post_states() {
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_ALPHA_TEST);
-    glDisable(GL_BLEND);
-    glDisable(GL_TEXTURE_2D);
+// A post pass through `program`: one full-screen quad, every test off, no blending.
+RenderState post_pass_state(GLuint program) {
+    RenderState s = fixed_function_2d();
+    s.program = program;
+    return s;
 }
 }  // namespace
 
 void DeferredShader::post_stage(FrameStats& stats) {
     const PostOptions& p = opts_.post;
     if (p.bloom) {
-        double t0 = now_ms();
+        timer_.begin(S_BLOOM);
         draw_bloom();
-        glFinish();
-        stats.ms.bloom = now_ms() - t0;
+        timer_.end();
     }
     if (p.aa) {
-        double t0 = now_ms();
+        timer_.begin(S_AA);
         draw_anti_alias();
-        glFinish();
-        stats.ms.aa = now_ms() - t0;
+        timer_.end();
     }
 }
 
 // Listing 22 from P-buffer src into dst. Offsets are one destination pixel apart, so the
 // first pass also downsamples (bilinear taps) and the kernel's reach is in bloom pixels.
 void DeferredShader::blur(int src, int dst, glm::vec2 dir, bool select) {
-    post_states();
     fb_bind_render(dst);
-    int dw = fb_[dst]->width(), dh = fb_[dst]->height();
+    int dw = pbuf(dst).width(), dh = pbuf(dst).height();
     set_ortho(dw, dh);
     Program& prog = blur_prog_[select ? 1 : 0];
-    prog.use();
+    gl_state().apply(post_pass_state(prog.id()));
     prog.set("source", 0);
     const int n = opts_.post.bloom_taps;
-    const float sx = fb_[src]->tex_scale_x(), sy = fb_[src]->tex_scale_y();
+    const float sx = pbuf(src).tex_scale_x(), sy = pbuf(src).tex_scale_y();
     std::vector<GLfloat> offs(size_t(n) * 2);
     for (int i = 0; i < n; ++i) {
         float k = float(i - (n - 1) / 2);
@@ -74,69 +68,62 @@ void DeferredShader::blur(int src, int dst, glm::vec2 dir, bool select) {
         offs[2 * i + 1] = k * dir.y * sy / float(dh);
     }
     glUniform2fv(glGetUniformLocation(prog.id(), "offset"), n, offs.data());
-    prog.set("uv_clamp", uv_clamp(*fb_[src]));
+    prog.set("uv_clamp", uv_clamp(pbuf(src)));
     fb_bind_texture(src, 0);
     draw_quad(float(dw), float(dh), sx, sy);
     fb_unbind_texture(src, 0);
-    glUseProgram(0);
     fb_unbind_render(dst);
-    check_gl("post stage: bloom blur");
+    check_gl_stage("post stage: bloom blur");
 }
 
 // §3.5.2 / Appendix A: horizontal blur 0 -> 2, vertical 2 -> 3, then P-buffer 3 added to 0
 // by fixed function (additive blend, texture modulated by the strength, no shader).
 void DeferredShader::draw_bloom() {
-    blur(0, 2, {1, 0}, true);
-    blur(2, 3, {0, 1}, false);
-    post_states();
-    fb_[0]->bind_render(true);  // blends onto the lit image
+    blur(P_ACCUM, P_BLOOM_H, {1, 0}, true);
+    blur(P_BLOOM_H, P_BLOOM_V, {0, 1}, false);
+    pbuf(P_ACCUM).bind_render(true);  // blends onto the lit image
     set_ortho(w_, h_);
-    glUseProgram(0);
+    RenderState add = textured_2d(GL_MODULATE);
+    add.blend = true;
+    add.blend_src = add.blend_dst = GL_ONE;
+    gl_state().apply(add);
     float s = opts_.post.bloom_strength;
     glColor4f(s, s, s, 1.0f);
-    glActiveTexture(GL_TEXTURE0);
-    glEnable(GL_TEXTURE_2D);
-    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-    glBlendFunc(GL_ONE, GL_ONE);
-    glEnable(GL_BLEND);
-    fb_bind_texture(3, 0);
-    draw_quad(float(w_), float(h_), fb_[3]->tex_scale_x(), fb_[3]->tex_scale_y());
-    fb_unbind_texture(3, 0);
-    glDisable(GL_BLEND);
-    glDisable(GL_TEXTURE_2D);
+    fb_bind_texture(P_BLOOM_V, 0);
+    draw_quad(float(w_), float(h_), pbuf(P_BLOOM_V).tex_scale_x(), pbuf(P_BLOOM_V).tex_scale_y());
+    fb_unbind_texture(P_BLOOM_V, 0);
     glColor4f(1, 1, 1, 1);
-    fb_unbind_render(0);
-    check_gl("post stage: bloom add");
+    fb_unbind_render(P_ACCUM);
+    check_gl_stage("post stage: bloom add");
 }
 
 // §3.5.1 / Appendix A: anti-alias P-buffer 0 into P-buffer 1, then swap so 0 holds the
 // result. factor_only writes the blur factor instead (Figure 8) and does not swap.
 void DeferredShader::draw_anti_alias(bool factor_only) {
-    post_states();
-    fb_bind_render(1);
+    fb_bind_render(P_AA);
     set_ortho(w_, h_);
     Program& prog = aa_prog_[factor_only ? 1 : 0];
-    prog.use();
+    gl_state().apply(post_pass_state(prog.id()));
     prog.set("normal_map", 0);
     prog.set("color_map", 1);
     prog.set("depth_map", 2);
-    prog.set("pixel_size", glm::vec2(1.0f / float(fb_[0]->texture_width()), 1.0f / float(fb_[0]->texture_height())));
+    const PBuffer& accum = pbuf(P_ACCUM);
+    prog.set("pixel_size", glm::vec2(1.0f / float(accum.texture_width()), 1.0f / float(accum.texture_height())));
     prog.set("weight", opts_.post.aa_weight);
     prog.set("planes", planes_);
     prog.set("zrange", zrange_);
     prog.set("depth_scale", opts_.post.aa_depth_scale);
-    prog.set("uv_clamp", uv_clamp(*fb_[0]));  // G-buffer and P-buffer 0 share their size
+    prog.set("uv_clamp", uv_clamp(accum));  // G-buffer and P-buffer 0 share their size
     mrt_bind_texture(G_NORMAL, 0);
-    fb_bind_texture(0, 1);
+    fb_bind_texture(P_ACCUM, 1);
     mrt_bind_texture(depth_target(), 2);
-    draw_quad(float(w_), float(h_), fb_[0]->tex_scale_x(), fb_[0]->tex_scale_y());
+    draw_quad(float(w_), float(h_), accum.tex_scale_x(), accum.tex_scale_y());
     mrt_unbind_texture(depth_target(), 2);
-    fb_unbind_texture(0, 1);
+    fb_unbind_texture(P_ACCUM, 1);
     mrt_unbind_texture(G_NORMAL, 0);
-    glUseProgram(0);
-    fb_unbind_render(1);
-    check_gl("post stage: anti-alias");
-    if (!factor_only) std::swap(fb_[0], fb_[1]);
+    fb_unbind_render(P_AA);
+    check_gl_stage("post stage: anti-alias");
+    if (!factor_only) targets_->swap_accumulation();
 }
 
 }  // namespace dsr

@@ -6,20 +6,27 @@
 #include "deferred/deferred_shader.h"
 #include "dsr_error.h"
 #include "gl/check.h"
+#include "gl/readback.h"
+#include "gl/state.h"
 
 namespace dsr {
 
-namespace {
-const char* kNames[] = {"final", "normal", "diffuse", "specular", "depth", "blur-factor", "bloom"};
+const std::vector<std::string>& view_names() {
+    static const std::vector<std::string> names = {"final", "normal", "diffuse", "specular",
+                                                   "depth", "blur-factor", "bloom"};
+    return names;
 }
 
 View view_from_name(const std::string& name) {
-    for (int i = 0; i < 7; ++i)
-        if (name == kNames[i]) return View(i);
-    throw Error("expected a view name (final|normal|diffuse|specular|depth|blur-factor|bloom), got '" + name + "'");
+    const auto& n = view_names();
+    for (size_t i = 0; i < n.size(); ++i)
+        if (name == n[i]) return View(i);
+    std::string list;
+    for (const auto& v : n) list += (list.empty() ? "" : "|") + v;
+    throw Error("expected a view name (" + list + "), got '" + name + "'");
 }
 
-const char* view_name(View v) { return kNames[int(v)]; }
+const char* view_name(View v) { return view_names()[size_t(v)].c_str(); }
 
 void DeferredShader::draw_view(View view, int out_w, int out_h) {
     switch (view) {
@@ -30,13 +37,13 @@ void DeferredShader::draw_view(View view, int out_w, int out_h) {
         case View::diffuse:
         case View::specular: {
             int t = view == View::normal ? G_NORMAL : view == View::diffuse ? G_DIFFUSE : G_SPECULAR;
-            draw_texture_to_main(mrt_->texture(t), out_w, out_h, {mrt_->tex_scale_x(), mrt_->tex_scale_y()});
+            draw_texture_to_main(gbuf().texture(t), out_w, out_h, {gbuf().tex_scale_x(), gbuf().tex_scale_y()});
             return;
         }
         case View::depth: {
             if (opts_.depth == DepthPath::packed) {
-                draw_texture_to_main(mrt_->texture(G_DEPTH_PACKED), out_w, out_h,
-                                     {mrt_->tex_scale_x(), mrt_->tex_scale_y()});
+                draw_texture_to_main(gbuf().texture(G_DEPTH_PACKED), out_w, out_h,
+                                     {gbuf().tex_scale_x(), gbuf().tex_scale_y()});
                 return;
             }
             // The depth texture, encoded with the packed path's codec so both paths show
@@ -47,20 +54,21 @@ void DeferredShader::draw_view(View view, int out_w, int out_h) {
                 d.rgba[i] = c.r, d.rgba[i + 1] = c.g, d.rgba[i + 2] = c.b, d.rgba[i + 3] = 1.0f;
             }
             // Same extent as the G-buffer's textures (padded on the pow2 path).
-            Texture tex(mrt_->texture_width(), mrt_->texture_height(), GL_RGBA8, GL_RGBA, GL_FLOAT, nullptr);
+            Texture tex(gbuf().texture_width(), gbuf().texture_height(), GL_RGBA8, GL_RGBA, GL_FLOAT, nullptr);
             glBindTexture(GL_TEXTURE_2D, tex.id());
             glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, d.width, d.height, GL_RGBA, GL_FLOAT, d.rgba.data());
             glBindTexture(GL_TEXTURE_2D, 0);
-            draw_texture_to_main(tex.id(), out_w, out_h, {mrt_->tex_scale_x(), mrt_->tex_scale_y()});
+            draw_texture_to_main(tex.id(), out_w, out_h, {gbuf().tex_scale_x(), gbuf().tex_scale_y()});
             return;
         }
         case View::blur_factor:
             draw_anti_alias(true);  // factor into P-buffer 1, no swap
-            draw_texture_to_main(fb_[1]->texture(0), out_w, out_h, {fb_[1]->tex_scale_x(), fb_[1]->tex_scale_y()});
+            draw_texture_to_main(pbuf(P_AA).texture(0), out_w, out_h, {pbuf(P_AA).tex_scale_x(), pbuf(P_AA).tex_scale_y()});
             return;
         case View::bloom:
             if (!blur_prog_[0].id()) throw Error("the bloom view needs bloom enabled");
-            draw_texture_to_main(fb_[3]->texture(0), out_w, out_h, {fb_[3]->tex_scale_x(), fb_[3]->tex_scale_y()});
+            draw_texture_to_main(pbuf(P_BLOOM_V).texture(0), out_w, out_h,
+                                 {pbuf(P_BLOOM_V).tex_scale_x(), pbuf(P_BLOOM_V).tex_scale_y()});
             return;
     }
     check_gl("view");
@@ -88,12 +96,11 @@ Image DeferredShader::reconstructed_positions() {
     for (int i = 0; i < 4; ++i) corner_rays_[i] = rays[i];
     position_buf_->bind_render();
     set_ortho(w_, h_);
-    glDisable(GL_BLEND);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_SCISSOR_TEST);
+    RenderState s = fixed_function_2d();  // the light shader's arithmetic, written, not blended
+    s.program = position_prog_.id();
+    gl_state().apply(s);
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    position_prog_.use();
     position_prog_.set("normal_map", 0);
     position_prog_.set("depth_map", 3);
     position_prog_.set("planes", planes_);
@@ -103,22 +110,10 @@ Image DeferredShader::reconstructed_positions() {
     draw_rect(0, 0, float(w_), float(h_), true);
     mrt_unbind_texture(depth_target(), 3);
     mrt_unbind_texture(G_NORMAL, 0);
-    glUseProgram(0);
     position_buf_->unbind_render();
     check_gl("position read-back");
-    Image img;
-    img.width = w_;
-    img.height = h_;
-    img.rgba.resize(size_t(w_) * h_ * 4);
-    std::vector<float> all(size_t(position_buf_->texture_width()) * position_buf_->texture_height() * 4);
-    glBindTexture(GL_TEXTURE_2D, position_buf_->texture(0));
-    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, all.data());
-    glBindTexture(GL_TEXTURE_2D, 0);
-    for (int y = 0; y < h_; ++y)
-        for (int x = 0; x < w_; ++x)
-            for (int c = 0; c < 4; ++c)
-                img.at(x, y)[c] = all[(size_t(y) * position_buf_->texture_width() + x) * 4 + c];
-    return img;
+    const PBuffer& pb = *position_buf_;
+    return read_texture(pb.texture(0), w_, h_, pb.texture_width(), pb.texture_height(), false);
 }
 
 }  // namespace dsr

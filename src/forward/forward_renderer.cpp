@@ -11,6 +11,7 @@
 #include "dsr_error.h"
 #include "gl/blit.h"
 #include "gl/check.h"
+#include "gl/state.h"
 
 namespace dsr {
 
@@ -63,7 +64,7 @@ ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, const 
         loc_lightpos_[nm] = glGetUniformLocation(prog_[nm].id(), "lightpos[0]");
         loc_lightcolor_[nm] = glGetUniformLocation(prog_[nm].id(), "lightcolor[0]");
     }
-    glUseProgram(0);
+    gl_state().use_program(0);
     check_gl("forward: creating the renderer");
 }
 
@@ -170,24 +171,12 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
     glLoadMatrixf(glm::value_ptr(proj));
     glMatrixMode(GL_MODELVIEW);
     glLoadMatrixf(glm::value_ptr(view_));
-    // Every state the passes rely on, set here rather than inherited.
-    glCullFace(GL_BACK);
-    glEnable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_ALPHA_TEST);
-    glDisable(GL_TEXTURE_2D);
-    glDisable(GL_LIGHTING);
     glColor4f(1, 1, 1, 1);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_TRUE);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl_state().apply(surface_state());  // before the clear: depth and colour writes on
     glClearColor(scene.background.r, scene.background.g, scene.background.b, 1.0f);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    check_gl("forward: set-up");
+    check_gl_stage("forward: set-up");
 
     gpu_->bind_all();
     if (opts_.mode == ForwardMode::single) {
@@ -201,13 +190,7 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
         glActiveTexture(GL_TEXTURE0 + u);
         glBindTexture(GL_TEXTURE_2D, 0);
     }
-    glUseProgram(0);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_DEPTH_TEST);
-    check_gl(opts_.mode == ForwardMode::single ? "forward: single-pass lighting" : "forward: multi-pass lighting");
+    check_gl_stage(opts_.mode == ForwardMode::single ? "forward: single-pass lighting" : "forward: multi-pass lighting");
     if (target_) {
         target_->unbind_render();
         copy_to_main();
@@ -230,21 +213,19 @@ void ForwardRenderer::draw_single(const Scene& scene, ForwardStats& st) {
             if (light_visible_[i] && touches(m, scene.lights[i]))
                 lights.push_back(int(i));
         st.light_object_pairs += int(lights.size());
-        Program& prog = use_material(scene, m);
+        Program& prog = use_material(scene, m);  // in render()'s surface state
         size_t first = std::min(lights.size(), size_t(batch_));
         set_lights(prog, lights, 0, first, scene.ambient);
         draw_mesh(m, st);
         if (first < lights.size()) {
-            glDepthFunc(GL_EQUAL);
-            glDepthMask(GL_FALSE);
-            glEnable(GL_BLEND);
+            gl_state().apply(add_state(prog.id()));
             for (size_t k = first; k < lights.size(); k += size_t(batch_)) {
                 set_lights(prog, lights, k, std::min(size_t(batch_), lights.size() - k), glm::vec3(0));
                 draw_mesh(m, st);
             }
-            glDisable(GL_BLEND);
-            glDepthMask(GL_TRUE);
-            glDepthFunc(GL_LEQUAL);
+            RenderState lay = surface_state();
+            lay.program = prog.id();
+            gl_state().apply(lay);
         }
     }
 }
@@ -254,24 +235,25 @@ void ForwardRenderer::draw_single(const Scene& scene, ForwardStats& st) {
 // hidden fragments are not shaded and each visible one gets each light once. The ambient pass
 // (Eq. 6, Listing 1) lays the surfaces down.
 void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
-    glUseProgram(0);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    RenderState depth = surface_state();
+    depth.color_write = false;
+    gl_state().apply(depth);
     gpu_->draw_all();
     ++st.passes;
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    check_gl("forward: depth pre-pass");
+    check_gl_stage("forward: depth pre-pass");
 
-    glDepthFunc(GL_EQUAL);
-    glDepthMask(GL_FALSE);
+    RenderState ambient = add_state(0);
+    ambient.blend = false;  // lays the surfaces down on the cleared buffer
+    gl_state().apply(ambient);
     static const std::vector<int> none;
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         Program& prog = use_material(scene, m);
         set_lights(prog, none, 0, 0, scene.ambient);
         draw_mesh(m, st);
     }
-    check_gl("forward: ambient pass");
+    check_gl_stage("forward: ambient pass");
 
-    glEnable(GL_BLEND);
+    gl_state().apply(add_state(0));
     std::vector<int> one(1);
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         if (!light_visible_[i]) continue;
@@ -284,7 +266,29 @@ void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
             ++st.light_object_pairs;
         }
     }
-    glDisable(GL_BLEND);
+}
+
+// The surface pass: back faces culled, GL_LEQUAL, depth and colour written, no blending.
+RenderState ForwardRenderer::surface_state() {
+    RenderState s;
+    s.cull = true;
+    s.cull_face = GL_BACK;
+    s.depth_test = true;
+    s.depth_func = GL_LEQUAL;
+    s.depth_write = true;
+    return s;
+}
+
+// A further pass over the same fragments, added: GL_EQUAL against the laid-down depth, no
+// depth writes, additive blending.
+RenderState ForwardRenderer::add_state(GLuint program) {
+    RenderState s = surface_state();
+    s.depth_func = GL_EQUAL;
+    s.depth_write = false;
+    s.blend = true;
+    s.blend_src = s.blend_dst = GL_ONE;
+    s.program = program;
+    return s;
 }
 
 // The float target to the main frame buffer, 1:1 with nearest sampling: the one rounding to
@@ -294,7 +298,7 @@ void ForwardRenderer::copy_to_main() {
     target_->bind_texture(0, 0);  // the P-buffer discipline: never a target and a texture at once
     draw_texture_to_framebuffer0(target_->texture(0), w_, h_, {1, 1}, true);
     target_->unbind_texture(0, 0);
-    check_gl("forward: copy to the main frame buffer");
+    check_gl_stage("forward: copy to the main frame buffer");
 }
 
 }  // namespace dsr

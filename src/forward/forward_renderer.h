@@ -20,6 +20,7 @@
 #include "gl/caps.h"
 #include "gl/pbuffer.h"
 #include "gl/program.h"
+#include "gl/state.h"
 #include "scene/scene.h"
 
 namespace dsr {
@@ -69,6 +70,8 @@ private:
         glm::vec3 centre{0};
         float radius = 0;
     };
+    static RenderState surface_state();
+    static RenderState add_state(GLuint program);
     void draw_single(const Scene& scene, ForwardStats& st);
     void draw_multi(const Scene& scene, ForwardStats& st);
     // Program for mesh `m`, bound, with its material's uniforms and textures set.

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "gl/check.h"
+#include "gl/state.h"
 
 namespace dsr {
 
@@ -15,16 +16,8 @@ void draw_texture_to_framebuffer0(GLuint texture, int out_w, int out_h, glm::vec
     glOrtho(0, 1, 0, 1, -1, 1);
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_ALPHA_TEST);
-    glDisable(GL_CULL_FACE);
-    glUseProgram(0);
+    gl_state().apply(textured_2d(GL_REPLACE));  // fixed function, every test off
     glColor4f(1, 1, 1, 1);
-    glActiveTexture(GL_TEXTURE0);
-    glEnable(GL_TEXTURE_2D);
-    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
     glBindTexture(GL_TEXTURE_2D, texture);
     // Same size: nearest is exact. Scaled: bilinear (§3.6, e.g. 512x512 shown at 640x480).
     GLint tw = 0, th = 0;
@@ -46,8 +39,7 @@ void draw_texture_to_framebuffer0(GLuint texture, int out_w, int out_h, glm::vec
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, old_min);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, old_mag);
     glBindTexture(GL_TEXTURE_2D, 0);
-    glDisable(GL_TEXTURE_2D);
-    check_gl("drawing a texture into the main frame buffer (final stage)");
+    check_gl_stage("drawing a texture into the main frame buffer (final stage)");
 }
 
 }  // namespace dsr

@@ -1,5 +1,8 @@
 #include "gl/check.h"
 
+#include <cstdlib>
+#include <string>
+
 #include "dsr_error.h"
 
 namespace dsr {
@@ -31,6 +34,19 @@ const char* framebuffer_status_name(GLenum status) {
         default: return "unknown framebuffer status";
     }
 }
+
+namespace {
+bool& debug_flag() {
+    static bool on = [] {
+        const char* e = std::getenv("DSR_DEBUG_GL");
+        return e && *e && std::string(e) != "0";
+    }();
+    return on;
+}
+}  // namespace
+
+void set_debug_gl(bool on) { debug_flag() = on; }
+bool debug_gl() { return debug_flag(); }
 
 int drain_gl_errors() {
     int n = 0;

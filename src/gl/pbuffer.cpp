@@ -2,6 +2,7 @@
 
 #include "dsr_error.h"
 #include "gl/check.h"
+#include "gl/state.h"
 
 namespace dsr {
 
@@ -76,8 +77,8 @@ void PBuffer::bind_render(bool keep_contents) {
         if (keep_contents && copy_target_ >= 0) {
             // The main buffer holds another buffer's image: draw ours back (fixed function,
             // 1:1 texels) before the pass blends onto it.
-            GLboolean blend = glIsEnabled(GL_BLEND);
-            glDisable(GL_BLEND);
+            const RenderState pass = gl_state().current();  // the pass's, put back after
+            gl_state().apply(textured_2d(GL_REPLACE));
             glMatrixMode(GL_PROJECTION);
             glPushMatrix();
             glLoadIdentity();
@@ -85,9 +86,6 @@ void PBuffer::bind_render(bool keep_contents) {
             glMatrixMode(GL_MODELVIEW);
             glPushMatrix();
             glLoadIdentity();
-            glActiveTexture(GL_TEXTURE0);
-            glEnable(GL_TEXTURE_2D);
-            glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
             glBindTexture(GL_TEXTURE_2D, colors_[0].id());
             float sx = tex_scale_x(), sy = tex_scale_y();
             glBegin(GL_QUADS);
@@ -97,12 +95,11 @@ void PBuffer::bind_render(bool keep_contents) {
             glTexCoord2f(0, sy); glVertex2f(0, 1);
             glEnd();
             glBindTexture(GL_TEXTURE_2D, 0);
-            glDisable(GL_TEXTURE_2D);
             glMatrixMode(GL_PROJECTION);
             glPopMatrix();
             glMatrixMode(GL_MODELVIEW);
             glPopMatrix();
-            if (blend) glEnable(GL_BLEND);
+            gl_state().apply(pass);
         }
         return;
     }
@@ -125,7 +122,7 @@ void PBuffer::copy_to_textures(bool depth) {
         glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, desc_.width, desc_.height);
     }
     glBindTexture(GL_TEXTURE_2D, 0);
-    check_gl(("copying into P-buffer " + name_).c_str());
+    check_gl_stage(("copying into P-buffer " + name_).c_str());
 }
 
 void PBuffer::unbind_render() {

@@ -1,4 +1,5 @@
 #include "gl/program.h"
+#include "gl/state.h"
 
 #include <fstream>
 #include <sstream>
@@ -7,6 +8,9 @@
 #include "dsr_error.h"
 
 namespace dsr {
+
+void Program::use() const { gl_state().use_program(id_); }
+
 
 static std::string expand(const std::string& dir, const std::string& name, int depth) {
     if (depth > 8) throw Error("shader include depth exceeded at " + name);

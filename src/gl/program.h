@@ -27,7 +27,8 @@ public:
     Program(const Program&) = delete;
     Program& operator=(const Program&) = delete;
 
-    void use() const { glUseProgram(id_); }
+    // Binds it through the state cache (gl/state.h), so the cache knows the bound program.
+    void use() const;
     GLuint id() const { return id_; }
     const std::string& name() const { return name_; }
 

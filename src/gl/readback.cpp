@@ -20,4 +20,28 @@ Image read_pixels(int width, int height) {
     return img;
 }
 
+Image read_texture(GLuint tex, int w, int h, int tw, int th, bool depth) {
+    Image img;
+    img.width = w;
+    img.height = h;
+    img.rgba.assign(size_t(w) * h * 4, 1.0f);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    std::vector<float> all(size_t(tw) * th * (depth ? 1 : 4));
+    glGetTexImage(GL_TEXTURE_2D, 0, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, all.data());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float* q = img.at(x, y);
+            if (depth) {
+                q[0] = q[1] = q[2] = all[size_t(y) * tw + x];
+            } else {
+                const float* p = &all[(size_t(y) * tw + x) * 4];
+                for (int c = 0; c < 4; ++c) q[c] = p[c];
+            }
+        }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    check_gl("reading a buffer back");
+    return img;
+}
+
 }  // namespace dsr

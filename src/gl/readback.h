@@ -1,10 +1,15 @@
 // Reading the main frame buffer back (final image of §3.6) into an Image.
 #pragma once
+#include "gl/gl.h"
 #include "scene/image.h"
 
 namespace dsr {
 
 // glReadPixels of the current read framebuffer, RGBA8 converted to float exactly (b/255).
 Image read_pixels(int width, int height);
+
+// The w x h content (lower left) of a texture of tw x th texels (larger when padded to
+// powers of two), as float RGBA; a depth texture (depth = true) comes back as grey, alpha 1.
+Image read_texture(GLuint texture, int w, int h, int tw, int th, bool depth);
 
 }  // namespace dsr

@@ -1,0 +1,53 @@
+// What a DeferredShader is asked to do: depth path, encodings, skips, post-processing. Pure
+// data, no GL: choose_paths (paths.h) turns it and the probed capabilities into the paths
+// that run.
+#pragma once
+#include "deferred/depth_codec.h"
+
+namespace dsr {
+
+// automatic: the depth texture where ARB_depth_texture exists, else packed (choose_paths).
+enum class DepthPath { texture, packed, automatic };
+
+enum class AaSource { normal, depth, both };
+enum class AaKernel { text, listing };
+
+// Post-processing (§3.5). Defaults are the tutorial's: a 7-tap separable blur at half size.
+struct PostOptions {
+    bool bloom = false;
+    int bloom_scale = 2;           // P-buffers 2 and 3 at 1/2 or 1/4 of the frame (§3.5.2)
+    int bloom_taps = 7;            // NUMPOINTS of Listing 22 (odd, 3..15)
+    float bloom_strength = 1.0f;   // weight of the fixed-function add into P-buffer 0
+    bool bloom_listing = false;    // Listing 22's grey dot(t,t) in both passes; default keeps colour
+    bool aa = false;
+    AaSource aa_source = AaSource::normal;  // Eq. 7 over the normal target, depth, or both
+    AaKernel aa_kernel = AaKernel::text;    // text: all 8 neighbours; listing: Listing 21's table
+    float aa_weight = 1.0f;        // Listing 21's `weight`: largest offset, in pixels
+    float aa_depth_scale = 4.0f;   // relative eye-z step that counts as an edge: ((dz/z)*scale)^2
+};
+
+// Work a scene does not need, skipped (each on by default; bench measures each).
+struct SkipOptions {
+    bool material_variants = true;  // no normal map: no tangent-space work; no specular: no specular map read
+    bool empty_lights = true;       // lights with zero colour or an empty scissor rectangle are not drawn
+    bool light_depth_test = true;   // per light, pixels whose surface lies in front of or behind the
+                                    // light's sphere (or is background) are rejected before shading
+    bool light_sphere_test = true;  // then pixels whose surface point is outside the sphere (att = 0):
+                                    // rejected after one depth fetch, before the G-buffer reads
+};
+
+struct ShaderOptions {
+    DepthPath depth = DepthPath::texture;
+    DepthEncoding encoding = DepthEncoding::corrected;  // what the packed target holds
+    bool listing2_literal = false;  // Listing 2's v and h exactly; default: Equations 1-5
+    bool scissor = true;            // §3.4.2 light scissor rectangles
+    PostOptions post;
+    SkipOptions skip;
+    bool float_accum = false;       // P-buffer 0 as RGBA32F (stress tests: NaN/Inf survive)
+    // G-buffer target precision: the tutorial's RGBA8 everywhere (Figure 3), or half-float
+    // targets (ARB_texture_float + ARB_half_float_pixel) where 8-bit normals are the largest
+    // error of the deferred image.
+    bool gbuffer_half = false;
+};
+
+}  // namespace dsr

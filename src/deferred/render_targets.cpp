@@ -1,0 +1,56 @@
+#include "deferred/render_targets.h"
+
+#include <algorithm>
+#include <string>
+
+#include "dsr_error.h"
+
+namespace dsr {
+
+RenderTargets::RenderTargets(const Paths& paths, const ShaderOptions& opts, int width, int height)
+    : paths_(paths), opts_(opts), w_(width), h_(height) {
+    allocate();
+}
+
+void RenderTargets::resize(int width, int height) {
+    if (width == w_ && height == h_) return;
+    w_ = width;
+    h_ = height;
+    allocate();
+}
+
+void RenderTargets::allocate() {
+    if (w_ <= 0 || h_ <= 0)
+        throw Error("render targets: bad size " + std::to_string(w_) + "x" + std::to_string(h_));
+    // The old buffers go first, so peak memory is one set.
+    g_.reset();
+    for (auto& p : p_) p.reset();
+    // Figure 3: normal, diffuse, specular+shininess, and packed depth only when that path runs.
+    PBufferDesc g;
+    g.width = w_;
+    g.height = h_;
+    g.use_fbo = paths_.fbo;
+    g.pow2 = paths_.pow2;
+    // EXT_framebuffer_object wants one format for every colour attachment, so the half-float
+    // option makes all targets half; the packed depth keeps its byte codes (exact in half).
+    const GLenum gfmt = opts_.gbuffer_half ? GLenum(GL_RGBA16F_ARB) : GLenum(GL_RGBA8);
+    g.color_formats.assign(size_t(paths_.gbuffer_targets), gfmt);
+    g.depth = paths_.depth_path == DepthPath::packed ? DepthAttachment::renderbuffer : DepthAttachment::texture;
+    g_ = std::make_unique<PBuffer>("G-buffer", g);
+    // P-buffers 0-3 (§3.2). Bilinear, so the final pass can scale (§3.6).
+    const int bs = opts_.post.bloom_scale;
+    for (int i = 0; i < 4; ++i) {
+        const bool bloom = i == P_BLOOM_H || i == P_BLOOM_V;  // reduced (§3.5.2)
+        PBufferDesc p;
+        p.width = bloom ? std::max(1, w_ / bs) : w_;
+        p.height = bloom ? std::max(1, h_ / bs) : h_;
+        // P-buffers 0 and 1 in float for stress runs, so NaN and Inf survive to be counted.
+        p.color_formats = {opts_.float_accum && !bloom ? GLenum(GL_RGBA32F_ARB) : GLenum(GL_RGBA8)};
+        p.filter = GL_LINEAR;
+        p.use_fbo = paths_.fbo;
+        p.pow2 = paths_.pow2;
+        p_[i] = std::make_unique<PBuffer>("P-buffer " + std::to_string(i), p);
+    }
+}
+
+}  // namespace dsr

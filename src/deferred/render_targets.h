@@ -1,0 +1,50 @@
+// The G-buffer and the four P-buffers (§3.2, Listing 6), owned together so they can be
+// reallocated on resize without touching a shader (bgfx 21-deferred: only size-dependent
+// resources are rebuilt).
+#pragma once
+#include <memory>
+
+#include "deferred/options.h"
+#include "deferred/paths.h"
+#include "gl/pbuffer.h"
+
+namespace dsr {
+
+// G-buffer targets (Figure 3).
+enum GTarget { G_NORMAL = 0, G_DIFFUSE = 1, G_SPECULAR = 2, G_DEPTH_PACKED = 3 };
+
+// P-buffer roles (§3.2: "four P-buffers"); the values are the tutorial's buffer numbers.
+enum PRole {
+    P_ACCUM = 0,    // P-buffer 0: the ambient pass and every light add into it; the final pass reads it
+    P_AA = 1,       // P-buffer 1: the anti-alias pass writes here, then swaps it with 0 (§3.5.1)
+    P_BLOOM_H = 2,  // P-buffer 2: bloom's horizontal blur, at 1/bloom_scale size (§3.5.2)
+    P_BLOOM_V = 3,  // P-buffer 3: bloom's vertical blur, added back to 0
+};
+
+class RenderTargets {
+public:
+    // Needs a current context; the formats follow `paths` and `opts` (half-float G-buffer,
+    // float accumulation, bloom scale).
+    RenderTargets(const Paths& paths, const ShaderOptions& opts, int width, int height);
+    // Reallocates every buffer at the new size (contents are lost).
+    void resize(int width, int height);
+
+    PBuffer& gbuffer() { return *g_; }
+    const PBuffer& gbuffer() const { return *g_; }
+    PBuffer& pbuffer(int role) { return *p_[role]; }
+    const PBuffer& pbuffer(int role) const { return *p_[role]; }
+    // After the anti-alias pass: P-buffer 1 holds the result and becomes P-buffer 0.
+    void swap_accumulation() { std::swap(p_[P_ACCUM], p_[P_AA]); }
+    int width() const { return w_; }
+    int height() const { return h_; }
+
+private:
+    void allocate();
+    Paths paths_;
+    ShaderOptions opts_;
+    int w_, h_;
+    std::unique_ptr<PBuffer> g_;
+    std::unique_ptr<PBuffer> p_[4];
+};
+
+}  // namespace dsr

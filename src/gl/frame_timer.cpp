@@ -1,0 +1,147 @@
+#include "gl/frame_timer.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+
+#include "dsr_clock.h"
+#include "dsr_error.h"
+#include "gl/check.h"
+#include "gl/state.h"
+
+namespace dsr {
+
+const char* timing_name(TimingSource s) { return s == TimingSource::gpu_timer ? "gpu-timer" : "wall"; }
+
+FrameTimer::~FrameTimer() {
+    if (!pool_.empty()) glDeleteQueries(GLsizei(pool_.size()), pool_.data());
+}
+
+void FrameTimer::begin_frame(int slots) {
+    ms_.assign(size_t(slots), 0.0);
+    used_.clear();
+    open_ = -1;
+    frame_t0_ = now_ms();
+}
+
+void FrameTimer::begin(int slot) {
+    if (open_ >= 0) throw Error("FrameTimer: stage " + std::to_string(slot) + " begun inside another");
+    open_ = slot;
+    // A stage run on its own (tests, figures) times into a frame that was never begun.
+    if (size_t(slot) >= ms_.size()) ms_.resize(size_t(slot) + 1, 0.0);
+    if (source_ == TimingSource::wall) {
+        stage_t0_ = now_ms();
+        return;
+    }
+    if (used_.size() == pool_.size()) {
+        pool_.push_back(0);
+        glGenQueries(1, &pool_.back());
+    }
+    GLuint q = pool_[used_.size()];
+    used_.emplace_back(slot, q);
+    glBeginQuery(GL_TIME_ELAPSED, q);
+}
+
+void FrameTimer::end() {
+    if (open_ < 0) throw Error("FrameTimer: end without begin");
+    if (source_ == TimingSource::wall) {
+        glFinish();
+        ms_[size_t(open_)] += now_ms() - stage_t0_;
+    } else {
+        glEndQuery(GL_TIME_ELAPSED);
+    }
+    open_ = -1;
+}
+
+double FrameTimer::end_frame(std::vector<double>& stage_ms) {
+    if (open_ >= 0) end();
+    for (auto& [slot, q] : used_) {  // waits for the GPU once, on the first unfinished query
+        GLuint64 ns = 0;
+        glGetQueryObjectui64v(q, GL_QUERY_RESULT, &ns);
+        ms_[size_t(slot)] += double(ns) * 1e-6;
+    }
+    used_.clear();
+    stage_ms = ms_;
+    return now_ms() - frame_t0_;
+}
+
+namespace {
+
+// The calibration work: full-screen additive quads, fixed function, over the current frame buffer.
+void draw_passes(int w, int h, int passes) {
+    RenderState s = fixed_function_2d();
+    s.blend = true;
+    s.blend_src = s.blend_dst = GL_ONE;
+    gl_state().apply(s);
+    glViewport(0, 0, w, h);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 1, 0, 1, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glColor4f(0.001f, 0.001f, 0.001f, 1.0f);
+    for (int i = 0; i < passes; ++i) {
+        glBegin(GL_QUADS);
+        glVertex2f(0, 0);
+        glVertex2f(1, 0);
+        glVertex2f(1, 1);
+        glVertex2f(0, 1);
+        glEnd();
+    }
+    glColor4f(1, 1, 1, 1);
+}
+
+}  // namespace
+
+const TimingCheck& choose_timing(const Caps& caps, int w, int h) {
+    static TimingCheck check;
+    static bool done = false;
+    if (done) return check;
+    done = true;
+    const char* forced = std::getenv("DSR_TIMING");
+    if (forced && std::strcmp(forced, "wall") == 0) {
+        check.reason = "forced by DSR_TIMING=wall";
+        return check;
+    }
+    if (!caps.timer_query) {
+        check.reason = "no ARB_timer_query";
+        return check;
+    }
+    if (forced && std::strcmp(forced, "gpu-timer") == 0) {
+        check.source = TimingSource::gpu_timer;
+        check.reason = "forced by DSR_TIMING=gpu-timer";
+        return check;
+    }
+    // Enough work that a real GPU's fill shows (16 full-screen passes) and a driver's fixed cost
+    // does not dominate; the best of 3 tries each way.
+    const int passes = 16;
+    glFinish();
+    double best_wall = 1e30, best_query = 1e30;
+    GLuint q = 0;
+    glGenQueries(1, &q);
+    for (int t = 0; t < 3; ++t) {
+        double t0 = now_ms();
+        draw_passes(w, h, passes);
+        glFinish();
+        best_wall = std::min(best_wall, now_ms() - t0);
+        glBeginQuery(GL_TIME_ELAPSED, q);
+        draw_passes(w, h, passes);
+        glEndQuery(GL_TIME_ELAPSED);
+        GLuint64 ns = 0;
+        glGetQueryObjectui64v(q, GL_QUERY_RESULT, &ns);
+        best_query = std::min(best_query, double(ns) * 1e-6);
+    }
+    glDeleteQueries(1, &q);
+    drain_gl_errors();
+    check.query_ms = best_query;
+    check.wall_ms = best_wall;
+    if (best_query >= 0.5 * best_wall) {
+        check.source = TimingSource::gpu_timer;
+        check.reason = "timer queries read what the wall clock does";
+    } else {
+        check.reason = "timer queries read under half the wall clock (a software rasteriser)";
+    }
+    return check;
+}
+
+}  // namespace dsr

@@ -1,0 +1,145 @@
+#include "gl/state.h"
+
+#include <cstdlib>
+#include <cstring>
+
+namespace dsr {
+
+bool RenderState::operator==(const RenderState& o) const {
+    return blend == o.blend && blend_src == o.blend_src && blend_dst == o.blend_dst && depth_test == o.depth_test &&
+           depth_func == o.depth_func && depth_write == o.depth_write && stencil_test == o.stencil_test &&
+           stencil_front == o.stencil_front && stencil_back == o.stencil_back && cull == o.cull &&
+           cull_face == o.cull_face && scissor == o.scissor && color_write == o.color_write &&
+           alpha_test == o.alpha_test && alpha_func == o.alpha_func && alpha_ref == o.alpha_ref &&
+           texture_2d == o.texture_2d && tex_env == o.tex_env && program == o.program;
+}
+
+RenderState fixed_function_2d() { return RenderState{}; }
+
+RenderState textured_2d(GLenum env) {
+    RenderState s;
+    s.texture_2d = true;
+    s.tex_env = env;
+    return s;
+}
+
+GlState& gl_state() {
+    static thread_local GlState state = [] {
+        GlState s;
+        const char* e = std::getenv("DSR_GL_STATE_CACHE");
+        if (e && std::strcmp(e, "off") == 0) s.set_cache(false);
+        return s;
+    }();
+    return state;
+}
+
+namespace {
+void enable(GLenum cap, bool on) { on ? glEnable(cap) : glDisable(cap); }
+}  // namespace
+
+void GlState::use_program(GLuint program) {
+    if (cache_ && valid_ && cur_.program == program) return;
+    glUseProgram(program);
+    cur_.program = program;
+    ++calls_;
+}
+
+void GlState::apply(const RenderState& s) {
+    const bool all = !cache_ || !valid_;
+    const RenderState& c = cur_;
+    // Each group: set when forced or when any of its fields differs.
+    auto diff = [&](bool changed) {
+        if (all || changed) {
+            ++calls_;
+            return true;
+        }
+        return false;
+    };
+    if (diff(s.blend != c.blend)) enable(GL_BLEND, s.blend);
+    if (diff(s.blend_src != c.blend_src || s.blend_dst != c.blend_dst)) glBlendFunc(s.blend_src, s.blend_dst);
+    if (diff(s.depth_test != c.depth_test)) enable(GL_DEPTH_TEST, s.depth_test);
+    if (diff(s.depth_func != c.depth_func)) glDepthFunc(s.depth_func);
+    if (diff(s.depth_write != c.depth_write)) glDepthMask(s.depth_write ? GL_TRUE : GL_FALSE);
+    if (diff(s.stencil_test != c.stencil_test)) enable(GL_STENCIL_TEST, s.stencil_test);
+    const StencilFace* faces[2] = {&s.stencil_front, &s.stencil_back};
+    const StencilFace* old[2] = {&c.stencil_front, &c.stencil_back};
+    const GLenum face_enum[2] = {GL_FRONT, GL_BACK};
+    for (int f = 0; f < 2; ++f) {
+        const StencilFace& n = *faces[f];
+        const StencilFace& o = *old[f];
+        if (diff(n.func != o.func || n.ref != o.ref || n.mask != o.mask))
+            glStencilFuncSeparate(face_enum[f], n.func, n.ref, n.mask);
+        if (diff(n.fail != o.fail || n.zfail != o.zfail || n.zpass != o.zpass))
+            glStencilOpSeparate(face_enum[f], n.fail, n.zfail, n.zpass);
+        if (diff(n.write_mask != o.write_mask)) glStencilMaskSeparate(face_enum[f], n.write_mask);
+    }
+    if (diff(s.cull != c.cull)) enable(GL_CULL_FACE, s.cull);
+    if (diff(s.cull_face != c.cull_face)) glCullFace(s.cull_face);
+    if (diff(s.scissor != c.scissor)) enable(GL_SCISSOR_TEST, s.scissor);
+    if (diff(s.color_write != c.color_write)) {
+        const GLboolean m = s.color_write ? GL_TRUE : GL_FALSE;
+        glColorMask(m, m, m, m);
+    }
+    if (diff(s.alpha_test != c.alpha_test)) enable(GL_ALPHA_TEST, s.alpha_test);
+    if (diff(s.alpha_func != c.alpha_func || s.alpha_ref != c.alpha_ref)) glAlphaFunc(s.alpha_func, s.alpha_ref);
+    // Fixed-function texturing is unit 0's; the passes leave GL_TEXTURE0 active.
+    if (all || s.texture_2d != c.texture_2d || s.tex_env != c.tex_env) glActiveTexture(GL_TEXTURE0);
+    if (diff(s.texture_2d != c.texture_2d)) enable(GL_TEXTURE_2D, s.texture_2d);
+    if (diff(s.tex_env != c.tex_env)) glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(s.tex_env));
+    if (diff(s.program != c.program)) glUseProgram(s.program);
+    cur_ = s;
+    valid_ = true;
+}
+
+RenderState read_gl_state() {
+    RenderState s;
+    auto geti = [](GLenum e) {
+        GLint v = 0;
+        glGetIntegerv(e, &v);
+        return v;
+    };
+    s.blend = glIsEnabled(GL_BLEND);
+    s.blend_src = GLenum(geti(GL_BLEND_SRC));
+    s.blend_dst = GLenum(geti(GL_BLEND_DST));
+    s.depth_test = glIsEnabled(GL_DEPTH_TEST);
+    s.depth_func = GLenum(geti(GL_DEPTH_FUNC));
+    GLboolean b = GL_TRUE;
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &b);
+    s.depth_write = b;
+    s.stencil_test = glIsEnabled(GL_STENCIL_TEST);
+    s.stencil_front = {GLenum(geti(GL_STENCIL_FUNC)),       geti(GL_STENCIL_REF),
+                       GLuint(geti(GL_STENCIL_VALUE_MASK)), GLenum(geti(GL_STENCIL_FAIL)),
+                       GLenum(geti(GL_STENCIL_PASS_DEPTH_FAIL)), GLenum(geti(GL_STENCIL_PASS_DEPTH_PASS)),
+                       GLuint(geti(GL_STENCIL_WRITEMASK))};
+    s.stencil_back = {GLenum(geti(GL_STENCIL_BACK_FUNC)),       geti(GL_STENCIL_BACK_REF),
+                      GLuint(geti(GL_STENCIL_BACK_VALUE_MASK)), GLenum(geti(GL_STENCIL_BACK_FAIL)),
+                      GLenum(geti(GL_STENCIL_BACK_PASS_DEPTH_FAIL)), GLenum(geti(GL_STENCIL_BACK_PASS_DEPTH_PASS)),
+                      GLuint(geti(GL_STENCIL_BACK_WRITEMASK))};
+    // GL keeps masks to the stencil buffer's 8 bits (and reads ~0 back clamped to INT_MAX).
+    for (StencilFace* f : {&s.stencil_front, &s.stencil_back}) {
+        f->mask &= 0xffu;
+        f->write_mask &= 0xffu;
+    }
+    s.cull = glIsEnabled(GL_CULL_FACE);
+    s.cull_face = GLenum(geti(GL_CULL_FACE_MODE));
+    s.scissor = glIsEnabled(GL_SCISSOR_TEST);
+    GLboolean cm[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+    glGetBooleanv(GL_COLOR_WRITEMASK, cm);
+    s.color_write = cm[0] && cm[1] && cm[2] && cm[3];
+    s.alpha_test = glIsEnabled(GL_ALPHA_TEST);
+    s.alpha_func = GLenum(geti(GL_ALPHA_TEST_FUNC));
+    GLfloat ref = 0;
+    glGetFloatv(GL_ALPHA_TEST_REF, &ref);
+    s.alpha_ref = ref;
+    GLint active = geti(GL_ACTIVE_TEXTURE);
+    glActiveTexture(GL_TEXTURE0);
+    s.texture_2d = glIsEnabled(GL_TEXTURE_2D);
+    GLint env = 0;
+    glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &env);
+    s.tex_env = GLenum(env);
+    glActiveTexture(GLenum(active));
+    s.program = GLuint(geti(GL_CURRENT_PROGRAM));
+    return s;
+}
+
+}  // namespace dsr

@@ -1,0 +1,176 @@
+// GL state through one door (gl/state.h): the cache always says what GL holds, each stage
+// states everything it needs (scrambling GL between stages changes no pixel), and the cache
+// skips what is unchanged while its off switch sets everything and gives the same image.
+#include <gtest/gtest.h>
+
+#include "gl/state.h"
+#include "render_fixture.h"
+
+namespace dsr {
+namespace {
+
+std::string describe(const RenderState& s) {
+    char b[512];
+    std::snprintf(b, sizeof b,
+                  "blend %d %#x %#x depth %d %#x w%d stencil %d f(%#x %d %#x %#x %#x %#x %#x) b(%#x %d) cull %d %#x "
+                  "scissor %d color %d alpha %d %#x %.2f tex %d %#x program %u",
+                  s.blend, s.blend_src, s.blend_dst, s.depth_test, s.depth_func, s.depth_write, s.stencil_test,
+                  s.stencil_front.func, s.stencil_front.ref, s.stencil_front.mask, s.stencil_front.fail,
+                  s.stencil_front.zfail, s.stencil_front.zpass, s.stencil_front.write_mask, s.stencil_back.func,
+                  s.stencil_back.ref, s.cull, s.cull_face, s.scissor, s.color_write, s.alpha_test, s.alpha_func,
+                  s.alpha_ref, s.texture_2d, s.tex_env, s.program);
+    return b;
+}
+
+// Every RenderState field set away from what any pass uses, straight through GL; then the
+// cache is told GL changed behind its back (what a viewer overlay does).
+void scramble() {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ZERO, GL_SRC_COLOR);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_NEVER);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFuncSeparate(GL_FRONT_AND_BACK, GL_NEVER, 1, 0x0f);
+    glStencilOpSeparate(GL_FRONT_AND_BACK, GL_ZERO, GL_INVERT, GL_INCR);
+    glStencilMaskSeparate(GL_FRONT_AND_BACK, 0x3);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT_AND_BACK);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(1, 1, 2, 2);
+    glColorMask(GL_FALSE, GL_TRUE, GL_FALSE, GL_TRUE);
+    glEnable(GL_ALPHA_TEST);
+    glAlphaFunc(GL_NEVER, 1.0f);
+    glActiveTexture(GL_TEXTURE0);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
+    glUseProgram(0);
+    gl_state().reset();
+}
+
+ShaderOptions with_post() {
+    ShaderOptions o;
+    o.post.bloom = o.post.aa = true;
+    return o;
+}
+
+struct StageRun {
+    Image image;
+    std::vector<std::string> mismatches;  // stage: cache vs GL
+};
+
+// The frame stage by stage; after each, the cache is compared with glGet*, and with
+// `scramble_between` GL is scrambled before the next stage.
+StageRun run_stages(const Scene& scene, int w, int h, const ShaderOptions& opts,
+                    const std::vector<std::string>& caps_off, bool scramble_between) {
+    auto ctx = create_context(ContextDesc{"osmesa", w, h});
+    Caps caps = probe_caps(caps_off);
+    DeferredShader ds(caps, w, h, opts, resource_dir("glsl120"));
+    ds.set_scene(scene);
+    StageRun r;
+    auto after = [&](const char* stage) {
+        RenderState gl = read_gl_state();
+        if (gl != gl_state().current())
+            r.mismatches.push_back(std::string(stage) + ": GL " + describe(gl) + "\n   cache " +
+                                   describe(gl_state().current()));
+        if (scramble_between) scramble();
+    };
+    if (scramble_between) scramble();
+    FrameStats st;
+    ds.geometry_stage(scene);
+    after("geometry");
+    ds.draw_lights(scene, true, st);
+    after("lights");
+    ds.post_stage(st);
+    after("post");
+    ds.final_stage(w, h);
+    after("final");
+    r.image = read_pixels(w, h);
+    return r;
+}
+
+struct Config {
+    const char* name;
+    std::vector<std::string> caps_off;
+    DepthPath depth;
+};
+
+const Config kConfigs[] = {
+    {"full", {}, DepthPath::texture},
+    {"packed", {}, DepthPath::packed},
+    {"no-mrt", {"no-mrt"}, DepthPath::texture},
+    {"no-fbo (copy P-buffers)", {"no-fbo"}, DepthPath::texture},
+    {"no-npot", {"no-npot"}, DepthPath::texture},
+};
+
+TEST(GlState, CacheMatchesGlAfterEveryStage) {
+    const Scene scene = test::default_scene();
+    for (const Config& c : kConfigs) {
+        ShaderOptions o = with_post();
+        o.depth = c.depth;
+        StageRun r = run_stages(scene, 96, 64, o, c.caps_off, false);
+        for (const auto& m : r.mismatches) ADD_FAILURE() << c.name << ", after " << m;
+    }
+}
+
+TEST(GlState, NoStageReliesOnWhatThePreviousLeft) {
+    const Scene scene = test::default_scene();
+    for (const Config& c : kConfigs) {
+        ShaderOptions o = with_post();
+        o.depth = c.depth;
+        StageRun clean = run_stages(scene, 96, 64, o, c.caps_off, false);
+        StageRun scrambled = run_stages(scene, 96, 64, o, c.caps_off, true);
+        ImageDiff d = compare_images(scrambled.image, clean.image, 0.5 / 255.0);
+        EXPECT_EQ(d.failing, 0) << c.name << ": scrambling GL state between stages changed " << d.failing
+                                << " pixels (max " << d.max_lsb() << " LSB)";
+    }
+}
+
+TEST(GlState, CacheOffSetsEverythingAndChangesNoPixel) {
+    const Scene scene = test::default_scene();
+    const ShaderOptions o = with_post();
+    const long long c0 = gl_state().calls();
+    test::RenderResult on = test::render_scene(scene, 96, 64, o);
+    const long long with_cache = gl_state().calls() - c0;
+    gl_state().set_cache(false);
+    const long long c1 = gl_state().calls();
+    test::RenderResult off = test::render_scene(scene, 96, 64, o);
+    const long long without = gl_state().calls() - c1;
+    gl_state().set_cache(true);
+    ImageDiff d = compare_images(off.image, on.image, 0.5 / 255.0);
+    EXPECT_EQ(d.failing, 0) << "the cache changed " << d.failing << " pixels";
+    std::printf("[ state    ] GL state calls per frame and set-up: %lld with the cache, %lld without\n", with_cache,
+                without);
+    EXPECT_LT(with_cache * 2, without) << "the cache should skip most state calls";
+}
+
+TEST(GlState, ApplyChangesOnlyWhatDiffers) {
+    auto ctx = create_context(ContextDesc{"osmesa", 16, 16});
+    RenderState s;
+    s.blend = true;
+    s.blend_src = s.blend_dst = GL_ONE;
+    gl_state().apply(s);  // first apply after a context: everything
+    const long long c0 = gl_state().calls();
+    gl_state().apply(s);
+    EXPECT_EQ(gl_state().calls(), c0) << "re-applying the same state made GL calls";
+    s.depth_test = true;
+    gl_state().apply(s);
+    EXPECT_EQ(gl_state().calls(), c0 + 1) << "one field changed, one call expected";
+    EXPECT_TRUE(glIsEnabled(GL_DEPTH_TEST));
+    EXPECT_EQ(read_gl_state(), gl_state().current());
+    // reset(): the next apply sets everything, so GL changed behind the cache is repaired.
+    glDisable(GL_DEPTH_TEST);
+    gl_state().reset();
+    gl_state().apply(s);
+    EXPECT_TRUE(glIsEnabled(GL_DEPTH_TEST));
+    EXPECT_EQ(read_gl_state(), gl_state().current());
+}
+
+TEST(GlState, DefaultsAreGlsOwn) {
+    auto ctx = create_context(ContextDesc{"osmesa", 16, 16});
+    EXPECT_EQ(read_gl_state(), RenderState{}) << "GL " << describe(read_gl_state()) << "\n   RenderState{} "
+                                              << describe(RenderState{});
+}
+
+}  // namespace
+}  // namespace dsr

@@ -1,0 +1,104 @@
+// choose_paths (deferred/paths.h): the one path chooser, pure, for every capability
+// combination the old-GL matrix forces and for a GL without GLSL 1.20.
+#include <gtest/gtest.h>
+
+#include "deferred/paths.h"
+
+namespace dsr {
+namespace {
+
+// A GL 2.1 with everything, then the four fallbacks' capabilities taken away by mask bits:
+// 1 no-mrt, 2 no-depth-texture, 4 no-fbo, 8 no-npot (tests/test_fallbacks.cpp's order).
+Caps caps_for(int mask) {
+    Caps c;
+    c.version = "2.1";
+    c.glsl_version = "1.20";
+    c.gl_major = 2, c.gl_minor = 1, c.glsl_major = 1, c.glsl_minor = 20;
+    c.glsl120 = true;
+    c.draw_buffers = !(mask & 1);
+    c.max_draw_buffers = (mask & 1) ? 1 : 8;
+    c.depth_texture = !(mask & 2);
+    c.fbo = !(mask & 4);
+    c.npot = !(mask & 8);
+    c.texture_float = c.half_float = true;
+    c.occlusion_query = true;
+    return c;
+}
+
+TEST(Paths, EverySixteenCombinationsWithDepthAuto) {
+    for (int mask = 0; mask < 16; ++mask) {
+        ShaderOptions o;
+        o.depth = DepthPath::automatic;
+        Paths p = choose_paths(caps_for(mask), o);
+        SCOPED_TRACE("mask " + std::to_string(mask));
+        EXPECT_TRUE(p.refused.empty()) << p.refused;
+        const bool packed = mask & 2;
+        EXPECT_EQ(p.depth_path, packed ? DepthPath::packed : DepthPath::texture);
+        EXPECT_EQ(p.depth, packed ? "packed" : "texture");
+        EXPECT_EQ(p.gbuffer_targets, packed ? 4 : 3);
+        // MRT needs draw buffers and render to texture (one colour buffer otherwise, §3.2).
+        EXPECT_EQ(p.mrt, !(mask & 1) && !(mask & 4));
+        EXPECT_EQ(p.gbuffer, p.mrt ? "mrt" : "per-target");
+        EXPECT_EQ(p.fbo, !(mask & 4));
+        EXPECT_EQ(p.render_target, (mask & 4) ? "copy" : "fbo");
+        EXPECT_EQ(p.pow2, bool(mask & 8));
+        EXPECT_EQ(p.textures, (mask & 8) ? "pow2" : "npot");
+    }
+}
+
+TEST(Paths, ExplicitDepthPathIsKeptOrRefused) {
+    ShaderOptions o;
+    o.depth = DepthPath::packed;
+    EXPECT_EQ(choose_paths(caps_for(0), o).depth_path, DepthPath::packed);  // asked for, though textures exist
+    o.depth = DepthPath::texture;
+    Paths p = choose_paths(caps_for(2), o);
+    EXPECT_NE(p.refused.find("ARB_depth_texture"), std::string::npos) << p.refused;
+}
+
+TEST(Paths, MrtNeedsEnoughDrawBuffersForTheTargets) {
+    Caps c = caps_for(0);
+    c.max_draw_buffers = 3;  // enough for normal, diffuse, specular; not for the packed depth too
+    ShaderOptions o;
+    o.depth = DepthPath::texture;
+    EXPECT_TRUE(choose_paths(c, o).mrt);
+    o.depth = DepthPath::packed;
+    EXPECT_FALSE(choose_paths(c, o).mrt);
+}
+
+TEST(Paths, NoGlslIsRefusedInOneLine) {
+    Caps c = caps_for(0);
+    c.glsl120 = false;
+    c.glsl_version = "1.10";
+    for (int mask : {0, 15}) {
+        Caps m = caps_for(mask);
+        m.glsl120 = false;
+        m.glsl_version = "";
+        Paths p = choose_paths(m, ShaderOptions{});
+        EXPECT_NE(p.refused.find("GLSL 1.20 is required"), std::string::npos) << p.refused;
+        EXPECT_EQ(p.refused.find('\n'), std::string::npos);
+    }
+    Paths p = choose_paths(c, ShaderOptions{});
+    EXPECT_NE(p.refused.find("offers 1.10"), std::string::npos) << p.refused;
+}
+
+TEST(Paths, FloatOptionsNeedFloatTargets) {
+    Caps c = caps_for(0);
+    c.texture_float = c.half_float = false;
+    ShaderOptions o;
+    o.gbuffer_half = true;
+    EXPECT_NE(choose_paths(c, o).refused.find("half-float"), std::string::npos);
+    o.gbuffer_half = false;
+    o.float_accum = true;
+    EXPECT_NE(choose_paths(c, o).refused.find("float accumulation"), std::string::npos);
+    EXPECT_TRUE(choose_paths(caps_for(0), o).refused.empty());
+}
+
+TEST(Paths, DescribeNamesEveryDecision) {
+    const std::string d = describe(choose_paths(caps_for(1 | 8), ShaderOptions{}));
+    for (const char* s : {"depth", "texture", "G-buffer", "per-target", "render target", "fbo", "textures", "pow2",
+                          "light counting"})
+        EXPECT_NE(d.find(s), std::string::npos) << s << " missing from:\n" << d;
+}
+
+}  // namespace
+}  // namespace dsr
