@@ -14,7 +14,7 @@ uniform sampler2D depth_map;     // unit 3
 uniform vec4 lightpos;           // eye space, w = radius
 uniform vec3 lightcolor;
 uniform vec2 planes;             // §3.4.3: (-f/(f-n), -f*n/(f-n))
-uniform vec3 zrange;             // (near, far, ln(far/near)) for the linear and log encodings
+uniform vec3 zrange;             // (near, far, log2(far/near)) for the linear and log encodings
 
 varying vec2 texcoord;
 varying vec3 vpos;

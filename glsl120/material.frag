@@ -16,7 +16,7 @@ uniform vec3 diffuse;
 uniform vec3 specular;
 uniform float shininess_code;
 uniform vec2 planes;
-uniform vec3 zrange;  // (near, far, ln(far/near))
+uniform vec3 zrange;  // (near, far, log2(far/near))
 uniform float tile;
 
 varying vec2 texcoord;

@@ -1,5 +1,6 @@
 // `dsr bench` and its parts: the ideal fragment count against brute force, positions rebuilt
-// from depth, the generated N-light scenes, the plot, and the command's JSON as later tools read it.
+// from depth, the generated N-light scenes, the plot, the rows' JSON, tables and goals (called
+// directly on hand-made rows, src/analysis/bench_report.h), and the command end to end.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,8 +8,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <sstream>
 #include <string>
 
+#include "analysis/bench_report.h"
+#include "analysis/bench_run.h"
 #include "analysis/bench_scenes.h"
 #include "analysis/ideal_fragments.h"
 #include "analysis/plot.h"
@@ -40,6 +44,37 @@ Image random_positions(int w, int h, std::mt19937& rng) {
             p[3] = 1.0f;
         }
     return img;
+}
+
+// Hand-made rows: what the runner would measure for one scene and light count.
+bench::Row forward_row(const std::string& scene, int lights, const std::string& kind, double ms) {
+    bench::Row r;
+    r.scene = scene;
+    r.renderer = kind;
+    r.lights = lights;
+    r.w = r.h = 64;
+    r.frames = 3;
+    r.ms_median = ms, r.ms_min = ms * 0.9, r.ms_max = ms * 1.2;
+    r.passes = kind == "forward-multi" ? lights : 1;
+    r.err.psnr_db = INFINITY;  // the reference itself
+    r.err.pixels = 64 * 64;
+    return r;
+}
+
+bench::Row deferred_row(const std::string& scene, int lights, double ms, long long frags, long long ideal,
+                        std::vector<std::string> skips_off = {}) {
+    bench::Row r = forward_row(scene, lights, "deferred", ms);
+    r.passes.reset();
+    r.depth = "texture";
+    r.gbuffer = "rgba8";
+    r.scissor = true;
+    r.skips_off = std::move(skips_off);
+    r.light_fragments = frags;
+    r.ideal_fragments = ideal;
+    r.scissor_pixels = 3 * frags;
+    r.lights_drawn = lights;
+    r.err.max_abs = 3.0 / 255.0, r.err.mean_abs = 0.5 / 255.0, r.err.psnr_db = 55.26;
+    return r;
 }
 
 }  // namespace
@@ -224,4 +259,130 @@ TEST(Bench, BadFlagsAreOneClearError) {
         EXPECT_EQ(r.output.rfind("dsr bench: ", 0), 0u) << args << ": " << r.output;
         EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
     }
+}
+
+TEST(Bench, ConfigTextNamesEveryChoice) {
+    bench::Row r = deferred_row("default", 3, 1.0, 10, 10, {"empty_lights"});
+    EXPECT_EQ(bench::config_text(r), "deferred texture sc no-empty_lights");
+    r.depth = "packed", r.encoding = "log", r.scissor = false, r.gbuffer = "half", r.skips_off.clear();
+    EXPECT_EQ(bench::config_text(r), "deferred packed/log - half");
+    EXPECT_EQ(bench::config_text(forward_row("default", 3, "forward-multi", 1.0)), "forward-multi");
+}
+
+// The goals as the report states them, judged on rows made by hand: met, NOT met, and not measured.
+TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
+    std::vector<bench::Row> rows = {
+        forward_row("default", 3, "forward-multi", 5.0),
+        deferred_row("default", 3, 1.0, 110, 100),
+        deferred_row("default", 3, 1.0, 150, 100, {"light_sphere_test"}),
+        forward_row("default", 256, "forward-multi", 40.0),
+        deferred_row("default", 256, 4.0, 200, 100),
+    };
+    // A non-default deferred row of the same count is never the one judged.
+    bench::Row packed = deferred_row("default", 256, 1.0, 100, 100);
+    packed.depth = "packed", packed.encoding = "corrected";
+    rows.insert(rows.begin(), packed);
+    const std::vector<std::string> g = bench::goals(rows, "default", 3);
+    ASSERT_EQ(g.size(), 5u);
+    EXPECT_EQ(g[0], "light_fragments <= 1.25 x ideal, default with 3 lights: 110 / 100 = 1.100 -> met");
+    EXPECT_EQ(g[1], "  (the light sphere test discards in the shader after one depth fetch, so it meets this by "
+                    "construction; fragments entering the light shader, scissor_pixels / ideal = 330 / 100 = 3.300)");
+    EXPECT_EQ(g[2], "  (with the depth-span test only, --no-skip light-sphere-test: 150 / 100 = 1.500)");
+    EXPECT_EQ(g[3], "light_fragments <= 1.25 x ideal, default with 1024 lights: not measured in this run");
+    EXPECT_EQ(g[4], "deferred >= 10x faster than forward multi-pass at 256 lights, default: 40.00 ms / 4.00 ms = "
+                    "10.0x -> met");
+
+    rows.back().light_fragments = 126;  // 1.26 x ideal at 1024 lights, and only 8x faster at 256
+    rows.back().lights = 1024;
+    rows.push_back(deferred_row("default", 256, 5.0, 100, 100));
+    const std::vector<std::string> h = bench::goals(rows, "default", 3);
+    ASSERT_EQ(h.size(), 6u);
+    EXPECT_EQ(h[3], "light_fragments <= 1.25 x ideal, default with 1024 lights: 126 / 100 = 1.260 -> NOT met");
+    EXPECT_EQ(h[5], "deferred >= 10x faster than forward multi-pass at 256 lights, default: 40.00 ms / 5.00 ms = "
+                    "8.0x -> NOT met");
+    EXPECT_EQ(bench::goals({}, "default", 3).back(),
+              "deferred >= 10x faster than forward multi-pass at 256 lights: not measured in this run");
+}
+
+// The JSON keys later tools read, with nulls where a value does not apply.
+TEST(Bench, RowJsonHasEveryKeyAndNulls) {
+    const nlohmann::ordered_json f = bench::row_json(forward_row("default", 3, "forward-single", 2.0));
+    const std::vector<std::string> keys = {
+        "scene", "renderer", "depth", "encoding", "gbuffer", "scissor", "skips_off", "lights", "size", "frames",
+        "ms_median", "ms_min", "ms_max", "light_fragments", "ideal_fragments", "fragments_ratio", "scissor_pixels",
+        "lights_drawn", "passes", "max_lsb", "mean_lsb", "psnr_db", "max_lsb_analytic", "mean_lsb_analytic",
+        "psnr_db_analytic"};
+    std::vector<std::string> got;
+    for (auto& [k, v] : f.items()) got.push_back(k);
+    EXPECT_EQ(got, keys);
+    EXPECT_TRUE(f["depth"].is_null());
+    EXPECT_TRUE(f["light_fragments"].is_null());
+    EXPECT_TRUE(f["ideal_fragments"].is_null());
+    EXPECT_TRUE(f["psnr_db"].is_null());  // infinite: JSON has no inf
+    EXPECT_TRUE(f["max_lsb_analytic"].is_null());
+    EXPECT_EQ(f["passes"], 1);
+    EXPECT_EQ(f["size"], nlohmann::ordered_json::array({64, 64}));
+
+    bench::Row r = deferred_row("analytic", 2, 1.5, 120, 100);
+    r.err_analytic = r.err;
+    const nlohmann::ordered_json d = bench::row_json(r);
+    EXPECT_EQ(d["depth"], "texture");
+    EXPECT_TRUE(d["encoding"].is_null());
+    EXPECT_EQ(d["light_fragments"], 120);
+    EXPECT_DOUBLE_EQ(d["fragments_ratio"].get<double>(), 1.2);
+    EXPECT_DOUBLE_EQ(d["max_lsb"].get<double>(), 3.0);
+    EXPECT_DOUBLE_EQ(d["psnr_db_analytic"].get<double>(), 55.26);
+    EXPECT_TRUE(d["passes"].is_null());
+
+    bench::Summary s;
+    s.machine = "m";
+    s.config.lights_text = "own";
+    s.scenes = {"default"};
+    s.rows = {r};
+    std::vector<std::string> top;
+    const nlohmann::ordered_json whole = bench::to_json(s);
+    for (auto& [k, v] : whole.items()) top.push_back(k);
+    EXPECT_EQ(top, (std::vector<std::string>{"machine", "gl_renderer", "gl_version", "config", "seconds", "goals",
+                                             "notes", "rows"}));
+}
+
+// The printed table: one column per header, "-" where a value does not apply, columns aligned.
+TEST(Bench, TablesHaveOneCellPerColumn) {
+    const std::vector<bench::Row> rows = {forward_row("default", 3, "forward-single", 2.0),
+                                          deferred_row("default", 3, 12.3456, 110, 100)};
+    const std::vector<std::string> c = bench::table_cells(rows[1]);
+    ASSERT_EQ(c.size(), bench::table_header().size());
+    EXPECT_EQ(c[2], "deferred texture sc");
+    EXPECT_EQ(c[4], "12.35");
+    EXPECT_EQ(c[8], "1.10");
+    EXPECT_EQ(c[9], "3");
+    EXPECT_EQ(c[11], "55.3");
+    EXPECT_EQ(c[12], "-");
+    const std::vector<std::string> f = bench::table_cells(rows[0]);
+    EXPECT_EQ(f[6], "-");
+    EXPECT_EQ(f[11], "inf");
+
+    const std::string text = bench::text_table(rows);
+    std::vector<std::string> lines;
+    std::stringstream ss(text);
+    for (std::string l; std::getline(ss, l);) lines.push_back(l);
+    ASSERT_EQ(lines.size(), 4u);  // header, rule, two rows
+    EXPECT_EQ(lines[0].rfind("scene ", 0), 0u) << lines[0];
+    EXPECT_NE(lines[0].find(" lights  configuration "), std::string::npos) << lines[0];
+    EXPECT_EQ(lines[1], std::string(lines[0].size(), '-'));
+    EXPECT_EQ(lines[2].size(), lines[0].size());
+    EXPECT_EQ(lines[3].size(), lines[0].size());
+
+    const std::string md = bench::markdown_table(rows);
+    EXPECT_EQ(md.rfind("| scene | lights | configuration | frames |", 0), 0u) << md;
+    EXPECT_NE(md.find("\n| --- | ---: | --- |"), std::string::npos);
+    EXPECT_NE(md.find("| default | 3 | deferred texture sc | 3 | 12.35 |"), std::string::npos) << md;
+}
+
+TEST(Bench, SlowFramesGetFewerTimedFrames) {
+    EXPECT_EQ(bench::frames_for(10.0, 10), 10);
+    EXPECT_EQ(bench::frames_for(2000.0, 10), 10);
+    EXPECT_EQ(bench::frames_for(4000.0, 10), 5);   // 20 s of frames
+    EXPECT_EQ(bench::frames_for(30000.0, 10), 3);  // at least 3
+    EXPECT_EQ(bench::frames_for(4000.0, 4), 4);
 }

@@ -88,7 +88,7 @@ TEST(DepthCodec, NaiveFloatRoundingIsOffByOne) {
     EXPECT_GT(wrong, kCodes / 8);
 }
 
-// Listings 11/18 as printed: exact without the 8-bit target, broken through it (TRAPS.md).
+// Listings 11/18 as printed: exact without the 8-bit target, broken through it (docs/errata.md #11).
 TEST(DepthCodec, LiteralLosesBytesInRgb8) {
     // Two measures: a code is "wrong" when it does not decode to itself (within half a 24-bit
     // code); its bytes are "off" when the target kept a first or second byte other than the one
@@ -123,7 +123,7 @@ TEST(DepthCodec, LiteralLosesBytesInRgb8) {
     EXPECT_LT(max_err_float_target, 2e-7);  // the defect is the k/256 bytes, not the idea
 }
 
-// TRAPS.md: eye-z error at far/near = 100 around z = 10*near, literal packed vs a 24-bit depth.
+// docs/errata.md #11: eye-z error at far/near = 100 around z = 10*near, literal packed vs a 24-bit depth.
 TEST(DepthCodec, EyeZErrorAtTenTimesNear) {
     const float n = 1.0f, f = 100.0f;
     const glm::vec2 planes = dsr::planes_uniform(n, f);

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include <glm/glm.hpp>
-#include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 
+#include "analysis/sphere_samples.h"
 #include "deferred/scissor.h"
 #include "dsr_error.h"
 
@@ -31,18 +31,8 @@ struct Sphere {
     float r;
 };
 
-const int kSurface = 1500, kInterior = 300, kCap = 200;
-
-// Fibonacci directions: even coverage, so the sampled extent is close to the true one.
-std::vector<glm::dvec3> fibonacci(int n) {
-    std::vector<glm::dvec3> v(n);
-    const double golden = M_PI * (3.0 - std::sqrt(5.0));
-    for (int i = 0; i < n; ++i) {
-        const double y = 1.0 - 2.0 * (i + 0.5) / n, s = std::sqrt(1.0 - y * y);
-        v[i] = {s * std::cos(golden * i), y, s * std::sin(golden * i)};
-    }
-    return v;
-}
+// Surface, interior and near-plane disk points per sphere (src/analysis/sphere_samples.h).
+const dsr::SphereSampleCounts kSamples{1500, 300, 200};
 
 struct Brute {
     double minx = INFINITY, maxx = -INFINITY, miny = INFINITY, maxy = -INFINITY;
@@ -52,7 +42,7 @@ struct Brute {
 
 class Sampler {
 public:
-    explicit Sampler(unsigned seed) : rng_(seed), dirs_(fibonacci(kSurface)) {}
+    explicit Sampler(unsigned seed) : rng_(seed) {}
     std::mt19937_64& rng() { return rng_; }
     double uni(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng_); }
     double log_uni(double a, double b) { return std::exp(uni(std::log(a), std::log(b))); }
@@ -68,10 +58,9 @@ public:
     // Projects every sample point of the sphere with z <= -near and checks it against rect.
     Brute run(const Sphere& s, const Camera& cam, const ScissorRect& rect) {
         Brute b;
-        const glm::dvec3 c(s.c);
-        const double r = s.r, n = cam.near_plane;
-        auto visit = [&](glm::dvec3 p) {
-            if (p.z > -n) return;
+        const double n = cam.near_plane;
+        for (const glm::dvec3& p : dsr::sphere_samples(glm::dvec3(s.c), s.r, n, kSamples, rng_)) {
+            if (p.z > -n) continue;
             ++b.points;
             const double wx = (cam.p00 * p.x / -p.z + 1.0) * 0.5 * cam.w;
             const double wy = (cam.p11 * p.y / -p.z + 1.0) * 0.5 * cam.h;
@@ -79,7 +68,7 @@ public:
             b.miny = std::min(b.miny, wy), b.maxy = std::max(b.maxy, wy);
             const double px = std::floor(wx), py = std::floor(wy);
             // A point projecting outside the viewport covers no pixel.
-            if (px < 0 || px >= cam.w || py < 0 || py >= cam.h) return;
+            if (px < 0 || px >= cam.w || py < 0 || py >= cam.h) continue;
             if (px < rect.x0 || px >= rect.x1 || py < rect.y0 || py >= rect.y1) {
                 if (b.outside++ == 0) {
                     char buf[160];
@@ -88,36 +77,12 @@ public:
                     b.first_miss = buf;
                 }
             }
-        };
-        // Surface, randomly rotated each time so the Fibonacci lattice does not alias.
-        glm::dvec4 q(gauss(), gauss(), gauss(), gauss());
-        q /= glm::length(q);
-        const glm::dmat3 rot = glm::mat3_cast(glm::dquat(q.w, q.x, q.y, q.z));
-        for (const glm::dvec3& d : dirs_) visit(c + r * (rot * d));
-        // Interior: points filling the ball (redundant by convexity, but cheap).
-        for (int i = 0; i < kInterior; ++i) {
-            glm::dvec3 d(gauss(), gauss(), gauss());
-            d /= glm::length(d);
-            visit(c + r * std::cbrt(uni(0, 1)) * d);
-        }
-        // The disk where the sphere meets z = -near: its rim bounds the visible part of a sphere
-        // crossing the near plane. Points exactly on the plane count (z <= -near).
-        const double dz = -n - c.z, rho2 = r * r - dz * dz;
-        if (rho2 >= 0) {
-            const double rho = std::sqrt(rho2);
-            for (int i = 0; i < kCap; ++i) {
-                const double a = 2 * M_PI * (i + uni(0, 1)) / kCap;
-                const double k = (i % 2) ? 1.0 : std::sqrt(uni(0, 1));  // rim and inside
-                visit({c.x + k * rho * std::cos(a), c.y + k * rho * std::sin(a), -n});
-            }
         }
         return b;
     }
 
 private:
-    double gauss() { return std::normal_distribution<double>(0, 1)(rng_); }
     std::mt19937_64 rng_;
-    std::vector<glm::dvec3> dirs_;
 };
 
 ScissorRect scissor(const Sphere& s, const Camera& cam) {

@@ -8,9 +8,9 @@
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/quaternion.hpp>
 
 #include "analysis/analytic_reference.h"
+#include "analysis/sphere_samples.h"
 #include "dsr_error.h"
 #include "gl/caps.h"
 #include "gl/check.h"
@@ -22,39 +22,6 @@ namespace {
 
 bool finite4(const float* p) {
     return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) && std::isfinite(p[3]);
-}
-
-// Sample points of a light's sphere that can be visible surface points, as tests/test_scissor.cpp
-// does: its surface (Fibonacci directions, randomly rotated so the lattice does not alias),
-// points filling the ball, and the disk where it meets z = -near (the rim bounds the visible
-// part of a sphere that crosses the near plane).
-std::vector<glm::dvec3> sphere_samples(const glm::dvec3& c, double r, double near_plane, unsigned seed) {
-    std::mt19937_64 rng(seed);
-    std::normal_distribution<double> gauss(0, 1);
-    std::uniform_real_distribution<double> uni(0, 1);
-    std::vector<glm::dvec3> pts;
-    const int kSurface = 2000, kInterior = 200, kCap = 200;
-    glm::dvec4 q(gauss(rng), gauss(rng), gauss(rng), gauss(rng));
-    q /= glm::length(q);
-    const glm::dmat3 rot = glm::mat3_cast(glm::dquat(q.w, q.x, q.y, q.z));
-    const double golden = M_PI * (3.0 - std::sqrt(5.0));
-    for (int i = 0; i < kSurface; ++i) {
-        const double y = 1.0 - 2.0 * (i + 0.5) / kSurface, s = std::sqrt(1.0 - y * y);
-        pts.push_back(c + r * (rot * glm::dvec3(s * std::cos(golden * i), y, s * std::sin(golden * i))));
-    }
-    for (int i = 0; i < kInterior; ++i) {
-        glm::dvec3 d(gauss(rng), gauss(rng), gauss(rng));
-        pts.push_back(c + r * std::cbrt(uni(rng)) * d / glm::length(d));
-    }
-    const double dz = -near_plane - c.z, rho2 = r * r - dz * dz;
-    if (rho2 >= 0) {
-        const double rho = std::sqrt(rho2);
-        for (int i = 0; i < kCap; ++i) {
-            const double a = 2 * M_PI * (i + uni(rng)) / kCap, k = (i % 2) ? 1.0 : std::sqrt(uni(rng));
-            pts.push_back({c.x + k * rho * std::cos(a), c.y + k * rho * std::sin(a), -near_plane});
-        }
-    }
-    return pts;
 }
 
 struct Projected {
@@ -84,7 +51,8 @@ bool is_gl_error(const Error& e) { return std::string(e.what()).rfind("GL error"
 ScissorCheck check_scissor(const glm::dvec3& light_eye, double radius, double p00, double p11, double near_plane,
                            int w, int h, const ScissorRect& rect, unsigned seed) {
     ScissorCheck k;
-    for (const glm::dvec3& p : sphere_samples(light_eye, radius, near_plane, seed)) {
+    std::mt19937_64 rng(seed);
+    for (const glm::dvec3& p : sphere_samples(light_eye, radius, near_plane, SphereSampleCounts{}, rng)) {
         const Projected pr = project(p, p00, p11, near_plane, w, h);
         if (!pr.visible) continue;
         ++k.points;
@@ -112,12 +80,19 @@ std::vector<std::string> StressResult::failures() const {
     return f;
 }
 
-StressRunner::StressRunner(int max_w, int max_h, const std::string& shader_dir)
-    : ctx_(create_context(ContextDesc{"osmesa", max_w, max_h})), max_w_(max_w), max_h_(max_h), shader_dir_(shader_dir) {
+StressRunner::StressRunner(GLContext& ctx, const std::string& shader_dir)
+    : ctx_(ctx), max_w_(ctx.width()), max_h_(ctx.height()), shader_dir_(shader_dir) {
+    ctx_.make_current();
     renderer_ = probe_caps().renderer;
 }
 
-StressRunner::~StressRunner() { shaders_.clear(); }  // before the context goes
+StressRunner::~StressRunner() {
+    try {
+        ctx_.make_current();  // the shaders' GL objects belong to ctx_
+    } catch (const std::exception&) {
+    }
+    shaders_.clear();
+}
 
 StressResult StressRunner::run(const StressCase& c) {
     const double t0 = now_ms();
@@ -143,6 +118,7 @@ StressResult StressRunner::run(const StressCase& c) {
     Image final_img, p0, pos;
     bool rendered = false;
     try {
+        ctx_.make_current();  // another context may have been made current since the last case
         drain_gl_errors();  // nothing left over from an earlier case counts against this one
         std::unique_ptr<DeferredShader>& ds = shaders_[key];
         if (!ds) ds = std::make_unique<DeferredShader>(probe_caps(), w, h, opts, shader_dir_);

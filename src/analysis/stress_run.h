@@ -54,8 +54,8 @@ struct StressResult {
     bool counts_as_failure() const { return !limit && !passed(); }
 };
 
-// Brute-force scissor check: samples the sphere (eye space) as tests/test_scissor.cpp does
-// (surface, interior, and the disk where it meets z = -near) and counts the samples at
+// Brute-force scissor check: samples the sphere (eye space) with sphere_samples (surface,
+// interior, and the disk where it meets z = -near; as tests/test_scissor.cpp) and counts the samples at
 // z <= -near that project into the w x h viewport (p00 = P[0][0], p11 = P[1][1]) but land on
 // a pixel outside `rect`.
 struct ScissorCheck {
@@ -68,15 +68,16 @@ ScissorCheck check_scissor(const glm::dvec3& light_eye, double radius, double p0
 
 class StressRunner {
 public:
-    // One OSMesa context of max_w x max_h for every case (cases must fit in it). Shader
-    // programs are compiled once per configuration and reused across cases.
-    StressRunner(int max_w, int max_h, const std::string& shader_dir);
+    // Runs every case on `ctx` (the caller's, from create_context; cases must fit in its main
+    // frame buffer, and it must outlive the runner). Shader programs are compiled once per
+    // configuration and reused across cases.
+    StressRunner(GLContext& ctx, const std::string& shader_dir);
     ~StressRunner();
     StressResult run(const StressCase& c);
     const std::string& renderer() const { return renderer_; }
 
 private:
-    std::unique_ptr<GLContext> ctx_;
+    GLContext& ctx_;
     int max_w_, max_h_;
     std::string shader_dir_, renderer_;
     std::map<std::string, std::unique_ptr<DeferredShader>> shaders_;

@@ -18,11 +18,6 @@ namespace dsr {
 
 namespace {
 
-Image opaque(Image img) {
-    for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 1.0f;
-    return img;
-}
-
 // A square close-up, magnified with nearest neighbour so single pixels (and aliasing)
 // stay visible. (x0, y0) is the top-left corner in top-down pixel coordinates.
 Image closeup(const Image& src, int x0, int y0, int size, int zoom) {

@@ -114,8 +114,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     std::vector<FrameStats> all;
     for (int f = 0; f < frames; ++f) all.push_back(ds.render(scene, out_w, out_h));
     if (view != View::final) ds.draw_view(view, out_w, out_h);
-    Image img = read_pixels(out_w, out_h);
-    for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 1.0f;  // images are opaque
+    Image img = opaque(read_pixels(out_w, out_h));
 
     const FrameStats& last = all.back();
     auto med = [&](double StageTimes::*field) {

@@ -33,7 +33,7 @@ std::array<Plane, 6> frustum_planes(const glm::mat4& m) {
 bool sphere_outside(const std::array<Plane, 6>& planes, glm::vec3 center, float radius) {
     const glm::dvec3 c(center);
     for (const Plane& p : planes) {
-        const double dist = glm::dot(glm::dvec3(p.n), c) + p.d;  // xyz only (TRAPS.md)
+        const double dist = glm::dot(glm::dvec3(p.n), c) + p.d;  // xyz only (docs/errata.md #6)
         if (dist < -(double)radius) return true;
     }
     return false;

@@ -19,7 +19,7 @@ struct Plane {
 std::array<Plane, 6> frustum_planes(const glm::mat4& view_proj);
 
 // True when the sphere lies wholly outside one of the planes (distance < -radius), the test of
-// Listing 17 with a 3-component dot (TRAPS.md: a 4-component one adds pos.w*plane.w, and pos.w
+// Listing 17 with a 3-component dot (docs/errata.md #6: a 4-component one adds pos.w*plane.w, and pos.w
 // holds the radius). Conservative: a sphere near a frustum corner, outside the frustum but not
 // wholly outside any single plane, is kept.
 bool sphere_outside(const std::array<Plane, 6>& planes, glm::vec3 center, float radius);

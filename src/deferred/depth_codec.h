@@ -2,7 +2,7 @@
 // does to a colour, so the packed path's error can be checked without GL.
 //
 // Listing 11 writes bytes as k/256, but an 8-bit target stores round(c*255) and gives back
-// byte/255 (TRAPS.md): about half of the first two bytes come back one off, an error up to ~2e-3
+// byte/255 (docs/errata.md #11): about half of the first two bytes come back one off, an error up to ~2e-3
 // in depth. pack_depth writes byte/255 instead and round-trips every 24-bit code exactly; its
 // code k = round(d*(2^24-1)) is the one a 24-bit depth texture holds, and unpack_depth returns
 // k/(2^24-1) as GL does for that texture, so the packed and depth-texture paths agree.
@@ -73,7 +73,7 @@ glm::vec3 pack_depth(float d);
 float unpack_depth(glm::vec3 c);
 
 // What the packed target holds (--depth-encoding). literal and corrected pack the window
-// depth (Listing 13's d); linear packs (-z-n)/(f-n) and log packs ln(-z/n)/ln(f/n), both with
+// depth (Listing 13's d); linear packs (-z-n)/(f-n) and log packs log2(-z/n)/log2(f/n), both with
 // the corrected 24-bit packing. CPU twins of glsl120/depth_codec.glsl's packed_encode /
 // packed_eye_z, in float like the shader.
 enum class DepthEncoding { literal, corrected, linear, log };

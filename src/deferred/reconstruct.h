@@ -12,7 +12,7 @@ glm::vec2 planes_uniform(float near_plane, float far_plane);
 
 // Eye-space z (< 0) from window depth in [0,1]: -planes.y / (planes.x + depth) (Listing 20
 // line 21). Computed in double from the float inputs; its relative error still grows like
-// eps(depth) * far/near near the far plane (TRAPS.md), which the inputs already carry.
+// eps(depth) * far/near near the far plane (docs/accuracy.md), which the inputs already carry.
 float eye_z_from_depth(float depth, glm::vec2 planes);
 
 // The inverse: what GL's depth buffer holds (glDepthRange(0,1)) for eye z < 0, which is also
@@ -22,7 +22,7 @@ float depth_from_eye_z(float z, float near_plane, float far_plane);
 
 // The eye-space view ray (x, y, -1) through window position (win_x, win_y) in pixels, e.g. a
 // pixel centre (i + 0.5, j + 0.5): the clean form of Listing 19, which unprojects at window
-// z = 10, outside [0,1] (TRAPS.md). p00 = P[0][0], p11 = P[1][1] of a symmetric perspective.
+// z = 10, outside [0,1] (docs/errata.md #7). p00 = P[0][0], p11 = P[1][1] of a symmetric perspective.
 glm::vec3 view_ray(float win_x, float win_y, int width, int height, float p00, float p11);
 
 // view_ray at the window corners (0,0), (w,0), (w,h), (0,h), independent of the size:

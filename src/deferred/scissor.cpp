@@ -5,7 +5,7 @@
 // {p in sphere : p.z <= -near} is the range of u/w over the disk of radius r about (l.x, -l.z) in
 // the (u = x, w = -z) plane, cut to w >= near; y is the same problem with l.y. Listing 16's
 // tangent planes through the eye are the tangent lines from the origin to that disk; computing
-// the tangent points directly needs no division by l.z or by nx/ny (TRAPS.md), and the near
+// the tangent points directly needs no division by l.z or by nx/ny (docs/errata.md #5), and the near
 // plane adds the two ends of the chord w = near as candidates. The range over that convex
 // region is attained at one of these candidates, so the result is exact, not just conservative.
 #include "deferred/scissor.h"
@@ -87,7 +87,7 @@ ScissorRect light_scissor(glm::vec3 light_eye, float radius, float p00, float p1
     const double b = -lz;  // the centre's distance in front of the eye
 
     // No sphere point at z <= -near: nothing visible can be lit (a sphere wholly behind the eye
-    // gave Listing 16 a full-screen rectangle, TRAPS.md).
+    // gave Listing 16 a full-screen rectangle, docs/errata.md #5).
     if (b + r < n || width == 0 || height == 0) return {};
 
     // Eye inside the sphere: every view ray may meet a lit point; whole viewport (Lengyel).

@@ -17,6 +17,13 @@ struct Image {
     const float* at(int x, int y) const { return &rgba[(size_t(y) * width + x) * 4]; }
 };
 
+// The image with every alpha set to 1: what dsr writes (a read-back frame's alpha is whatever
+// the passes left in it).
+inline Image opaque(Image img) {
+    for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 1.0f;
+    return img;
+}
+
 // Reads any format OpenImageIO reads. Grey becomes RGB, a missing alpha is 1.
 // Throws dsr::Error naming the path and what went wrong.
 Image load_image(const std::string& path);

@@ -1,4 +1,4 @@
-// The one file that talks to OpenImageIO (DESIGN.md: image files behind one small interface).
+// The one file that talks to OpenImageIO: image files behind one small interface (scene/image.h).
 #include <algorithm>
 #include <cctype>
 #include <cerrno>

@@ -1,0 +1,60 @@
+// What `dsr bench` prints and writes, from measured rows (bench_run.h): the table (text and
+// markdown), the goals judged on the rows, the JSON later tools read, the plot and the markdown
+// report. Pure functions of their arguments, so tests call them on hand-made rows.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/bench_run.h"
+#include "scene/image.h"
+
+namespace dsr::bench {
+
+// One row as JSON: every key of docs/benchmarks.json's rows; null where it does not apply
+// (fragment counts of forward rows, analytic errors of scenes without an analytic reference).
+nlohmann::ordered_json row_json(const Row& r);
+
+// The table's column names, and one row's cells under them.
+const std::vector<std::string>& table_header();
+std::vector<std::string> table_cells(const Row& r);
+
+// The table as `dsr bench` prints it (columns padded, a rule under the header) and as markdown.
+std::string text_table(const std::vector<Row>& rows);
+std::string markdown_table(const std::vector<Row>& rows);
+
+// The row a goal is judged on: `scene` with `lights` lights and `renderer`; for deferred rows
+// with default_config, only the default configuration (depth texture, scissor on, every skip on,
+// RGBA8 G-buffer). Null when the run has no such row.
+const Row* find_row(const std::vector<Row>& rows, const std::string& scene, int lights, const std::string& renderer,
+                    bool default_config = true);
+
+// Goals of the issue, judged on the rows of `scene` (own_lights: its own light count); each line
+// says met, NOT met or not measured; lines starting with two spaces explain the one before.
+std::vector<std::string> goals(const std::vector<Row>& rows, const std::string& scene, int own_lights);
+
+// Run time against error: one panel per scene, a series per renderer kind.
+Image plot_rows(const std::vector<Row>& rows, const std::vector<std::string>& scenes);
+
+// Everything one `dsr bench` run reports.
+struct Summary {
+    std::string machine;                          // machine_name()
+    std::string gl_renderer, gl_version, gl_vendor;
+    Config config;
+    std::vector<std::string> scenes;              // scene names (file_stem), the first one judged
+    double seconds = 0;                           // the whole sweep
+    std::vector<Row> rows;
+    std::vector<std::string> goals, notes;
+};
+
+// docs/benchmarks.json: machine, GL, config, seconds, goals, notes, rows.
+nlohmann::ordered_json to_json(const Summary& s);
+
+// What `dsr bench` prints on stdout: the header lines, the table, the goals and the notes.
+std::string text_report(const Summary& s);
+
+// docs/benchmarks.md; `plot_name` is the plot's file name beside it, linked relatively.
+std::string markdown_report(const Summary& s, const std::string& plot_name);
+
+}  // namespace dsr::bench

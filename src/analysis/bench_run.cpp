@@ -1,0 +1,265 @@
+// The benchmark's runner (bench_run.h): builds every row's renderer, warms up, times the frames
+// interleaved across rows, counts the ideal fragments and compares each image with the references.
+#include "analysis/bench_run.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdarg>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+#include "dsr_clock.h"
+#include "analysis/analytic_reference.h"
+#include "analysis/bench_scenes.h"
+#include "analysis/ideal_fragments.h"
+#include "deferred/deferred_shader.h"
+#include "deferred/reconstruct.h"
+#include "forward/forward_renderer.h"
+#include "gl/readback.h"
+
+namespace dsr::bench {
+
+namespace {
+
+constexpr double kSlowFrameMs = 2000;   // above this, fewer frames (see frames_for)
+constexpr double kSlowRowBudgetMs = 20000;
+
+// Everything one scene variant (scene, light count, size) shares across its rows.
+struct Variant {
+    std::string name;
+    Scene scene;
+    int sweep_index = 0;
+    std::optional<AnalyticTrace> trace;
+    std::vector<uint8_t> interior;
+    std::optional<long long> ideal;
+};
+
+// One row's renderer, alive for the whole variant so that frames can be interleaved.
+struct RowRun {
+    Row row;
+    std::unique_ptr<DeferredShader> ds;
+    std::unique_ptr<ForwardRenderer> fr;
+    std::vector<double> ms;
+    FrameStats last;
+    ForwardStats last_forward;
+    Image image;
+    // One frame; returns its wall time (glFinish-bounded, as measured by the renderer).
+    double frame(const Scene& s, int w, int h) {
+        if (ds) {
+            last = ds->render(s, w, h);
+            return last.ms.frame;
+        }
+        last_forward = fr->render(s);
+        return last_forward.ms_frame;
+    }
+};
+
+Row base_row(const Config& cfg, const Variant& v, const std::string& renderer) {
+    Row r;
+    r.scene = v.name;
+    r.renderer = renderer;
+    r.lights = int(v.scene.lights.size());
+    r.w = cfg.w, r.h = cfg.h;
+    r.sweep_index = v.sweep_index;
+    return r;
+}
+
+std::unique_ptr<RowRun> deferred(const Config& cfg, const Caps& caps, const std::string& shaders, const Variant& v,
+                                 DepthPath depth, DepthEncoding enc, bool scissor, const SkipOptions& skip,
+                                 const std::vector<std::string>& skips_off, bool gbuffer_half) {
+    ShaderOptions o;
+    o.depth = depth;
+    o.encoding = enc;
+    o.scissor = scissor;
+    o.skip = skip;
+    o.gbuffer_half = gbuffer_half;
+    o.post.bloom = o.post.aa = false;  // the tutorial's core passes only; post costs the same on every row
+    auto run = std::make_unique<RowRun>();
+    run->ds = std::make_unique<DeferredShader>(caps, cfg.w, cfg.h, o, shaders);
+    run->ds->set_scene(v.scene);
+    Row& r = run->row = base_row(cfg, v, "deferred");
+    r.depth = depth == DepthPath::texture ? "texture" : "packed";
+    if (depth == DepthPath::packed) r.encoding = encoding_name(enc);
+    r.gbuffer = gbuffer_half ? "half" : "rgba8";
+    r.scissor = scissor;
+    r.skips_off = skips_off;
+    return run;
+}
+
+std::unique_ptr<RowRun> forward(const Config& cfg, const Caps& caps, const std::string& shaders, const Variant& v,
+                                ForwardMode mode) {
+    ForwardOptions o;
+    o.mode = mode;  // float target: both forms round once, as the reference does
+    auto run = std::make_unique<RowRun>();
+    run->fr = std::make_unique<ForwardRenderer>(caps, cfg.w, cfg.h, o, shaders);
+    run->fr->set_scene(v.scene);
+    run->row = base_row(cfg, v, mode == ForwardMode::single ? "forward-single" : "forward-multi");
+    return run;
+}
+
+std::string printf_line(const char* f, ...) __attribute__((format(printf, 1, 2)));
+std::string printf_line(const char* f, ...) {
+    char buf[512];
+    va_list ap;
+    va_start(ap, f);
+    std::vsnprintf(buf, sizeof buf, f, ap);
+    va_end(ap);
+    return buf;
+}
+
+}  // namespace
+
+std::string config_text(const Row& r) {
+    if (r.renderer != "deferred") return r.renderer;
+    std::string s = "deferred " + *r.depth;
+    if (r.encoding) s += "/" + *r.encoding;
+    s += r.scissor ? " sc" : " -";
+    if (r.gbuffer == std::string("half")) s += " half";
+    for (auto& k : r.skips_off) s += " no-" + k;
+    return s;
+}
+
+bool analytic_capable(const Scene& s) {
+    for (const Material& m : s.materials)
+        if (m.diffuse_map >= 0 || m.normal_map >= 0 || m.specular_map >= 0) return false;
+    return true;
+}
+
+int frames_for(double first_ms, int frames) {
+    if (first_ms <= kSlowFrameMs) return frames;
+    return std::min(frames, std::max(3, int(kSlowRowBudgetMs / first_ms)));
+}
+
+std::string machine_name() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line, model = "unknown CPU";
+    while (std::getline(in, line))
+        if (line.rfind("model name", 0) == 0) {
+            model = line.substr(line.find(':') + 2);
+            break;
+        }
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return model + ", " + std::to_string(n) + " logical CPUs";
+}
+
+std::string file_stem(const std::string& path) {
+    std::string b = path.substr(path.find_last_of('/') + 1);
+    return b.substr(0, b.find_last_of('.'));
+}
+
+Runner::Runner(const Config& cfg, const Caps& caps, const std::string& shader_dir)
+    : cfg_(cfg), caps_(caps), shaders_(shader_dir) {}
+
+void Runner::run_scene(const std::string& path, int light_count, int sweep_index, int index, int total) {
+    auto say = [&](const std::string& line) {
+        if (progress) progress(line);
+    };
+    Scene base = load_scene(path);
+    Variant v;
+    v.name = file_stem(path);
+    v.scene = light_count < 0 ? base : with_generated_lights(base, light_count);
+    v.sweep_index = sweep_index;
+    if (analytic_capable(v.scene)) {
+        double t0 = now_ms();
+        v.trace = analytic_trace(v.scene, cfg_.w, cfg_.h);
+        v.interior = interior_mask(*v.trace, cfg_.w, cfg_.h);
+        say(printf_line("bench: analytic reference of %s with %zu lights traced in %.1f s", v.name.c_str(),
+                        v.scene.lights.size(), (now_ms() - t0) / 1000));
+    }
+
+    // Every renderer of the variant is built (shaders compiled) before any frame is timed.
+    std::vector<std::unique_ptr<RowRun>> runs;
+    auto add_deferred = [&](DepthPath d, DepthEncoding e, bool sc, const SkipOptions& skip,
+                            const std::vector<std::string>& skips_off, bool half) {
+        runs.push_back(deferred(cfg_, caps_, shaders_, v, d, e, sc, skip, skips_off, half));
+    };
+    runs.push_back(forward(cfg_, caps_, shaders_, v, ForwardMode::single));  // runs[0]: the forward reference
+    runs.push_back(forward(cfg_, caps_, shaders_, v, ForwardMode::multi));
+    SkipOptions all;
+    for (DepthPath d : {DepthPath::texture, DepthPath::packed})
+        for (bool sc : {false, true}) add_deferred(d, DepthEncoding::corrected, sc, all, {}, false);
+    // Each skip turned off alone, on the default configuration (depth texture, scissor on).
+    for (int k = 0; k < 4; ++k) {
+        SkipOptions s = all;
+        bool* flag[4] = {&s.material_variants, &s.empty_lights, &s.light_depth_test, &s.light_sphere_test};
+        const char* name[4] = {"material_variants", "empty_lights", "light_depth_test", "light_sphere_test"};
+        *flag[k] = false;
+        add_deferred(DepthPath::texture, DepthEncoding::corrected, true, s, {name[k]}, false);
+    }
+    for (DepthEncoding e : {DepthEncoding::literal, DepthEncoding::linear, DepthEncoding::log})
+        add_deferred(DepthPath::packed, e, true, all, {}, false);
+    // Higher-precision G-buffer targets where the GL has them.
+    if (caps_.texture_float && caps_.half_float) {
+        for (DepthPath d : {DepthPath::texture, DepthPath::packed})
+            add_deferred(d, DepthEncoding::corrected, true, all, {}, true);
+    } else if (index == 0) {
+        notes_.push_back("half-float G-buffer rows left out: the GL lacks ARB_texture_float or ARB_half_float_pixel");
+    }
+
+    // Warm-up, then the timed frames interleaved across rows (one frame of each row per round), so
+    // a burst of load from elsewhere on the machine spreads over all rows instead of biasing one.
+    for (auto& run : runs) {
+        double first = 0;
+        for (int i = 0; i < cfg_.warmup; ++i) {
+            double ms = run->frame(v.scene, cfg_.w, cfg_.h);
+            if (i == 0) first = ms;
+            if (ms > kSlowFrameMs) break;  // a slow frame is its own warm-up
+        }
+        run->row.frames = frames_for(first, cfg_.frames);
+    }
+    int rounds = 0;
+    for (auto& run : runs) rounds = std::max(rounds, run->row.frames);
+    for (int f = 0; f < rounds; ++f)
+        for (auto& run : runs) {
+            if (f >= run->row.frames) continue;
+            run->ms.push_back(run->frame(v.scene, cfg_.w, cfg_.h));
+            if (f + 1 == run->row.frames) run->image = opaque(read_pixels(cfg_.w, cfg_.h));
+        }
+
+    // The ideal count from the first depth-texture row's G-buffer, its positions rebuilt the way the
+    // light pass rebuilds them; a light with no colour needs no fragment.
+    for (auto& run : runs) {
+        if (!run->ds || run->ds->options().depth != DepthPath::texture) continue;
+        DeferredShader& ds = *run->ds;
+        Image pos;
+        if (caps_.fbo && caps_.texture_float) {
+            pos = ds.reconstructed_positions();
+        } else {
+            const glm::mat4& P = ds.proj_matrix();
+            pos = positions_from_depth(ds.read_gbuffer(PBuffer::DEPTH),
+                                       planes_uniform(v.scene.camera.near_plane, v.scene.camera.far_plane), P[0][0],
+                                       P[1][1]);
+        }
+        std::vector<glm::vec4> lights;
+        for (const Light& l : v.scene.lights)
+            if (l.color != glm::vec3(0.0f))
+                lights.emplace_back(glm::vec3(ds.view_matrix() * glm::vec4(l.pos, 1.0f)), l.radius);
+        v.ideal = ideal_fragments(pos, lights);
+        break;
+    }
+
+    const Image& ref = runs[0]->image;
+    for (auto& run : runs) {
+        Row& r = run->row;
+        r.ms_median = median(run->ms);
+        r.ms_min = *std::min_element(run->ms.begin(), run->ms.end());
+        r.ms_max = *std::max_element(run->ms.begin(), run->ms.end());
+        if (run->ds) {
+            r.light_fragments = run->last.light_fragments;
+            r.scissor_pixels = run->last.scissor_pixels;
+            r.lights_drawn = run->last.lights_drawn;
+            r.ideal_fragments = v.ideal;
+        } else {
+            r.passes = run->last_forward.passes;
+        }
+        r.err = compare_images(run->image, ref, 1.0 / 255.0);
+        if (v.trace) r.err_analytic = compare_images_masked(run->image, v.trace->image, v.interior, 1.0 / 255.0);
+        say(printf_line("bench [%d/%d] %s, %d lights: %-46s %9.2f ms (%d frames)", index + 1, total, r.scene.c_str(),
+                        r.lights, config_text(r).c_str(), r.ms_median, r.frames));
+        rows_.push_back(r);
+    }
+}
+
+}  // namespace dsr::bench

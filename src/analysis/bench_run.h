@@ -1,0 +1,85 @@
+// The benchmark (`dsr bench`): every configuration of one sweep measured in the same process, on
+// the same context, against the same references. Per row: frame time (median, min, max after
+// warm-up), light-pass fragments (occlusion queries) against the ideal count, and the image's
+// error against the forward reference (and, for scenes with constant materials, against the
+// analytic one). bench_report.h turns the rows into tables, goals, JSON, a plot and a report;
+// src/app/bench_command.cpp only parses flags, runs this, and prints or writes what comes back.
+#pragma once
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/image_metrics.h"
+#include "gl/caps.h"
+#include "scene/scene.h"
+
+namespace dsr::bench {
+
+// What one sweep measures. Defaults: the full sweep; quick() the small one.
+struct Config {
+    bool quick = false;
+    int w = 512, h = 512;
+    int frames = 10, warmup = 2;
+    std::vector<int> lights;  // light counts of the sweep; -1: the scene's own lights
+    std::string lights_text;  // --lights as given (or its default), e.g. "own,32,256"
+};
+
+// One measured configuration. Optional fields are JSON null where they do not apply.
+struct Row {
+    std::string scene, renderer;            // renderer: deferred | forward-single | forward-multi
+    std::optional<std::string> depth, encoding, gbuffer;  // gbuffer: rgba8 | half
+    bool scissor = false;
+    std::vector<std::string> skips_off;
+    int lights = 0, w = 0, h = 0, frames = 0;
+    int sweep_index = 0;                    // place of its light count in --lights (plot marker size)
+    double ms_median = 0, ms_min = 0, ms_max = 0;
+    std::optional<long long> light_fragments, ideal_fragments, scissor_pixels;
+    std::optional<int> lights_drawn, passes;
+    ImageDiff err;                          // vs the forward reference
+    std::optional<ImageDiff> err_analytic;  // vs the analytic reference, interior pixels
+};
+
+// The row's configuration as the tables print it: "forward-multi", "deferred texture sc",
+// "deferred packed/log sc half no-empty_lights", ...
+std::string config_text(const Row& r);
+
+// True when every material is constant (no maps), so the analytic reference applies.
+bool analytic_capable(const Scene& s);
+
+// Frames to time after warm-up: the configured count, unless one frame takes over 2 s (forward
+// passes at 1024 lights on a software rasteriser), then as many as fit in 20 s, at least 3.
+int frames_for(double first_ms, int frames);
+
+// "MODEL NAME, N logical CPUs" from /proc/cpuinfo.
+std::string machine_name();
+
+// A path's file name without folder and extension: a scene's name in the tables.
+std::string file_stem(const std::string& path);
+
+// Measures the rows of each scene variant on the current GL context, which must be at least
+// cfg.w x cfg.h (the caller creates it with create_context).
+class Runner {
+public:
+    Runner(const Config& cfg, const Caps& caps, const std::string& shader_dir);
+
+    // Every row of one scene variant: the scene at `path` with `light_count` lights (-1: its
+    // own); `sweep_index` is the light count's place in cfg.lights; index/total number the
+    // variant in progress lines.
+    void run_scene(const std::string& path, int light_count, int sweep_index, int index, int total);
+
+    const std::vector<Row>& rows() const { return rows_; }
+    const std::vector<std::string>& notes() const { return notes_; }  // configurations left out, and why
+
+    // Called with each progress line (no newline); none by default. `dsr bench` prints them on stderr.
+    std::function<void(const std::string&)> progress;
+
+private:
+    Config cfg_;
+    Caps caps_;
+    std::string shaders_;
+    std::vector<Row> rows_;
+    std::vector<std::string> notes_;
+};
+
+}  // namespace dsr::bench
