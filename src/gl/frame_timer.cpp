@@ -112,9 +112,23 @@ const TimingCheck& choose_timing(const Caps& caps, int w, int h) {
         check.reason = "forced by DSR_TIMING=gpu-timer";
         return check;
     }
-    // Enough work that a real GPU's fill shows (16 full-screen passes) and a driver's fixed cost
-    // does not dominate; the best of 3 tries each way.
-    const int passes = 16;
+    // Enough work that a real GPU's fill shows and a driver's fixed cost (glFinish's round trip)
+    // does not dominate: 4 passes over 1024x1024 in a target of its own where framebuffer
+    // objects exist (so the caller's frame buffer is untouched), else over the current one;
+    // the best of 3 tries each way.
+    const int passes = 4;
+    GLuint fbo = 0, rb = 0;
+    if (caps.fbo) {
+        w = h = 1024;
+        glGenFramebuffersEXT(1, &fbo);
+        glGenRenderbuffersEXT(1, &rb);
+        glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, rb);
+        glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_RGBA8, w, h);
+        glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, 0);
+        glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fbo);
+        glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_RENDERBUFFER_EXT, rb);
+        glDrawBuffer(GL_COLOR_ATTACHMENT0_EXT);
+    }
     glFinish();
     double best_wall = 1e30, best_query = 1e30;
     GLuint q = 0;
@@ -132,6 +146,12 @@ const TimingCheck& choose_timing(const Caps& caps, int w, int h) {
         best_query = std::min(best_query, double(ns) * 1e-6);
     }
     glDeleteQueries(1, &q);
+    if (fbo) {
+        glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+        glDeleteFramebuffersEXT(1, &fbo);
+        glDeleteRenderbuffersEXT(1, &rb);
+        glDrawBuffer(GL_BACK);
+    }
     drain_gl_errors();
     check.query_ms = best_query;
     check.wall_ms = best_wall;

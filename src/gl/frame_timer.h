@@ -24,10 +24,11 @@ struct TimingCheck {
     std::string reason;
 };
 
-// Timer queries where ARB_timer_query exists and, drawn over the current frame buffer of
-// width x height, they read at least half the wall-clock time of the same passes; the wall
-// clock otherwise. Measured once per process (the result is kept). Overwrites the current
-// frame buffer's colour: call before rendering. DSR_TIMING=wall|gpu-timer forces the choice.
+// Timer queries where ARB_timer_query exists and they read at least half the wall-clock time
+// of the same passes (drawn into a 1024x1024 target of their own with framebuffer objects;
+// else over the current frame buffer of width x height, whose colour they overwrite: call
+// before rendering); the wall clock otherwise. Measured once per process (the result is
+// kept). DSR_TIMING=wall|gpu-timer forces the choice.
 const TimingCheck& choose_timing(const Caps& caps, int width, int height);
 
 class FrameTimer {

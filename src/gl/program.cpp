@@ -9,6 +9,8 @@
 
 namespace dsr {
 
+long long Program::built_ = 0;
+
 void Program::use() const { gl_state().use_program(id_); }
 
 
@@ -67,6 +69,7 @@ Program::Program(const std::string& dir, const std::string& vert, const std::str
                  const std::vector<std::string>& defines) {
     name_ = vert + "+" + frag;
     for (auto& d : defines) name_ += " " + d;
+    ++built_;
     GLuint vs = compile(GL_VERTEX_SHADER, with_defines(load_shader_source(dir, vert), defines), vert);
     GLuint fs;
     try {

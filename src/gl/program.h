@@ -30,6 +30,8 @@ public:
     // Binds it through the state cache (gl/state.h), so the cache knows the bound program.
     void use() const;
     GLuint id() const { return id_; }
+    // Programs built so far in this process (tests: resizing must not rebuild any).
+    static long long built() { return built_; }
     const std::string& name() const { return name_; }
 
     // Setters on the current program; a uniform the compiler removed is ignored.
@@ -40,6 +42,7 @@ public:
     void set(const char* name, glm::vec4 v);
 
 private:
+    static long long built_;
     GLint location(const char* name);
     GLuint id_ = 0;
     std::string name_;
