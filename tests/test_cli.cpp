@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
 #include <string>
 
 #include "cli_fixture.h"
@@ -13,7 +16,84 @@ using namespace dsr::test;
 
 namespace {
 void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// The flags a usage text lists in its options section: the first word of each item of an
+// option line ("  -o, --output FILE  ..." gives -o and --output).
+std::set<std::string> usage_flags(const std::string& usage) {
+    std::set<std::string> out;
+    std::stringstream ss(usage.substr(usage.find("\noptions:\n")));
+    for (std::string line; std::getline(ss, line);) {
+        if (line.rfind("  -", 0) != 0) continue;
+        std::string head = line.substr(2, line.find("  ", 2) - 2);
+        std::stringstream items(head);
+        for (std::string item; std::getline(items, item, ',');) {
+            item = item.substr(item.find_first_not_of(' '));
+            out.insert(item.substr(0, item.find(' ')));
+        }
+    }
+    return out;
+}
+
+// The flags a command file's parser compares against (`a == "--flag"`).
+std::set<std::string> parsed_flags(const std::string& source_file) {
+    std::ifstream in(std::string(DSR_SOURCE_DIR) + "/src/app/" + source_file);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string src = ss.str();
+    std::set<std::string> out;
+    const std::regex flag("a == \"(-[^\"]*)\"");
+    for (auto it = std::sregex_iterator(src.begin(), src.end(), flag); it != std::sregex_iterator(); ++it)
+        out.insert((*it)[1]);
+    return out;
+}
+
+std::string joined(const std::set<std::string>& s) {
+    std::string out;
+    for (const std::string& x : s) out += x + " ";
+    return out;
+}
 }  // namespace
+
+// `dsr COMMAND --help` (and -h): that command's usage on stdout, exit 0, nothing run; the
+// usage lists exactly the flags its command file parses (`a == "--flag"` in src/app/).
+TEST(Cli, EveryCommandHasHelpListingItsFlags) {
+    const std::pair<const char*, const char*> files[] = {
+        {"render", "render_command.cpp"}, {"figures", "figures_command.cpp"}, {"bench", "bench_command.cpp"},
+        {"stress", "stress_command.cpp"}, {"info", "info_command.cpp"},       {"gen-textures", nullptr}};
+    for (auto [c, file] : files) {
+        RunResult r = run(std::string(c) + " --help");
+        EXPECT_EQ(r.status, 0) << c << ": " << r.output;
+        EXPECT_EQ(r.output.rfind(std::string("usage: dsr ") + c + " ", 0), 0u) << c << ": " << r.output;
+        EXPECT_NE(r.output.find("\noptions:\n"), std::string::npos) << c << ": " << r.output;
+        if (!file) continue;
+        EXPECT_NE(r.output.find("--context NAME"), std::string::npos) << c << ": " << r.output;
+        const std::set<std::string> parsed = parsed_flags(file), listed = usage_flags(r.output);
+        EXPECT_GT(parsed.size(), 0u) << file;
+        EXPECT_EQ(parsed, listed) << c << ": parsed " << joined(parsed) << "\nlisted " << joined(listed);
+    }
+    RunResult render = run("render --size 32x32 -h");  // -h too, anywhere among the flags
+    EXPECT_EQ(render.status, 0);
+    EXPECT_EQ(render.output.rfind("usage: dsr render ", 0), 0u) << render.output;
+    for (const char* k : {"--gl-state-cache on|off", "--debug-gl", "--context NAME"})
+        EXPECT_NE(render.output.find(k), std::string::npos) << k;
+    RunResult top = run("--help");
+    EXPECT_EQ(top.status, 0);
+    for (auto [c, file] : files) EXPECT_NE(top.output.find(std::string("\n  ") + c + " "), std::string::npos) << c;
+}
+
+// An unknown command is one line on stderr and exit 2; an unknown option one line and exit 1.
+TEST(Cli, UnknownCommandOrOptionIsOneLine) {
+    RunResult r = run("frobnicate");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.output, "dsr: unknown command 'frobnicate' (expected render, figures, bench, stress, info, "
+                        "gen-textures; dsr --help lists them)\n");
+    for (const char* c : {"render --frobnicate", "stress --frobnicate"}) {
+        RunResult o = run(c);
+        EXPECT_EQ(o.status, 1) << c;
+        EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << c << ": " << o.output;
+        EXPECT_NE(o.output.find("unknown option '--frobnicate'"), std::string::npos) << c << ": " << o.output;
+    }
+}
 
 TEST(Cli, RenderWritesImageAndStats) {
     std::string d = temp_dir();

@@ -1,46 +1,52 @@
 // dsr: the tutorial's deferred shading renderer, headless under OSMesa.
 #include <cstdio>
-#include <cstring>
 #include <string>
 #include <vector>
 
 #include "app/commands.h"
+#include "app/usage.h"
 #include "dsr_error.h"
 
-static const char* kUsage =
-    "usage: dsr COMMAND [options]\n"
-    "  render [SCENE] [-o OUT] [--size WxH] [--depth auto|texture|packed]\n"
-    "         [--depth-encoding corrected|literal|linear|log] [--no-skip variants,empty-lights,light-depth-test,light-sphere-test]\n"
-    "         [--scissor on|off] [--lighting equations|listing] [--gbuffer rgba8|half]\n"
-    "         [--frames N] [--stats FILE.json] [--caps no-mrt,no-depth-texture,...]\n"
-    "         [--out-size WxH] [--view final|normal|diffuse|specular|depth|blur-factor|bloom]\n"
-    "         [--bloom|--no-bloom] [--bloom-scale 2|4] [--bloom-taps N] [--bloom-strength S]\n"
-    "         [--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]\n"
-    "         [--aa-kernel text|listing] [--aa-weight W]\n"
-    "  figures [SCENE] [-o DIR] [--size NxN]   the tutorial's figures 4, 6, 8-11 as PNGs\n"
-    "  bench [SCENE] [--quick] [--json FILE] [--report FILE.md] [--size WxH] [--frames N]\n"
-    "        [--lights own,32,256,1024]   depth path x scissor x skips x encodings x lights vs forward\n"
-    "  info [--caps LIST]      GL vendor/renderer/version, capabilities, paths chosen\n"
-    "  gen-textures DIR        write the default scene's procedural textures\n"
-    "  stress [--quick] [--json FILE] [--report FILE.md] [--plot FILE.png] [--only TEXT]\n"
-    "                          numerical stress sweep; exit 1 if an invariant fails\n";
+namespace {
+
+struct Command {
+    const char* name;
+    int (*run)(const std::vector<std::string>&);
+};
+
+// Every entry of dsr::command_usages() (usage.cpp) has its function here.
+const Command kCommands[] = {
+    {"render", dsr::cmd_render}, {"figures", dsr::cmd_figures}, {"bench", dsr::cmd_bench},
+    {"stress", dsr::cmd_stress}, {"info", dsr::cmd_info},       {"gen-textures", dsr::cmd_gen_textures},
+};
+
+}  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 2 || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "help")) {
-        std::fputs(kUsage, argc < 2 ? stderr : stdout);
+    const std::string first = argc < 2 ? "" : argv[1];
+    if (argc < 2 || dsr::is_help_flag(first) || first == "help") {
+        // `dsr help COMMAND`: that command's usage.
+        const dsr::CommandUsage* u = argc > 2 && first == "help" ? dsr::find_command_usage(argv[2]) : nullptr;
+        std::fputs(u ? dsr::command_usage_text(*u).c_str() : dsr::top_usage_text().c_str(), argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
     }
-    std::string cmd = argv[1];
-    std::vector<std::string> args(argv + 2, argv + argc);
-    try {
-        if (cmd == "render") return dsr::cmd_render(args);
-        if (cmd == "info") return dsr::cmd_info(args);
-        if (cmd == "figures") return dsr::cmd_figures(args);
-        if (cmd == "gen-textures") return dsr::cmd_gen_textures(args);
-        if (cmd == "stress") return dsr::cmd_stress(args);
-        if (cmd == "bench") return dsr::cmd_bench(args);
-        std::fprintf(stderr, "dsr: unknown command '%s'\n%s", cmd.c_str(), kUsage);
+    const std::string cmd = first;
+    const std::vector<std::string> args(argv + 2, argv + argc);
+    const dsr::CommandUsage* usage = dsr::find_command_usage(cmd);
+    int (*run)(const std::vector<std::string>&) = nullptr;
+    for (const Command& c : kCommands)
+        if (cmd == c.name) run = c.run;
+    if (!usage || !run) {
+        std::fprintf(stderr, "%s\n", dsr::unknown_command_line(cmd).c_str());
         return 2;
+    }
+    for (const std::string& a : args)
+        if (dsr::is_help_flag(a)) {
+            std::fputs(dsr::command_usage_text(*usage).c_str(), stdout);
+            return 0;
+        }
+    try {
+        return run(args);
     } catch (const dsr::Error& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;

@@ -1,0 +1,144 @@
+// The usage table (usage.h). Keep each entry in step with its command's flag loop: tests/test_cli.cpp
+// checks that every flag a command file parses is listed here, and nothing else.
+#include "app/usage.h"
+
+namespace dsr {
+
+namespace {
+
+const char* kContextOption =
+    "  --context NAME          GL context backend (default: $DSR_CONTEXT, else osmesa)\n";
+
+std::vector<CommandUsage> make_table() {
+    std::vector<CommandUsage> t;
+    t.push_back({"render",
+                 {"[SCENE] [-o OUT] [--size WxH] [--depth auto|texture|packed]",
+                  "[--depth-encoding corrected|literal|linear|log] [--no-skip variants,empty-lights,light-depth-test,light-sphere-test]",
+                  "[--scissor on|off] [--lighting equations|listing] [--gbuffer rgba8|half]",
+                  "[--frames N] [--stats FILE.json] [--caps no-mrt,no-depth-texture,...]",
+                  "[--out-size WxH] [--view final|normal|diffuse|specular|depth|blur-factor|bloom]",
+                  "[--bloom|--no-bloom] [--bloom-scale 2|4] [--bloom-taps N] [--bloom-strength S]",
+                  "[--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]",
+                  "[--aa-kernel text|listing] [--aa-weight W]",
+                  "[--context NAME] [--gl-state-cache on|off] [--debug-gl]"},
+                 "render SCENE (default data/default.scene) with the deferred shader into one image",
+                 "  SCENE                   scene file (default data/default.scene)\n"
+                 "  -o, --output FILE       image to write: .png, .exr, .tif, .jpg or .ppm (default out.png)\n"
+                 "  --size WxH              G-buffer and P-buffer size (default 512x512)\n"
+                 "  --out-size WxH          main frame buffer the final stage scales to (default: --size)\n"
+                 "  --depth auto|texture|packed\n"
+                 "                          depth path; auto: the depth texture where the GL has ARB_depth_texture\n"
+                 "  --depth-encoding corrected|literal|linear|log\n"
+                 "                          what the packed depth target holds (default corrected)\n"
+                 "  --gbuffer rgba8|half    G-buffer target precision (default rgba8, as the tutorial)\n"
+                 "  --no-skip LIST          skips to turn off: variants, empty-lights, light-depth-test,\n"
+                 "                          light-sphere-test (all on by default)\n"
+                 "  --scissor on|off        light scissor rectangles, Listing 16 (default on)\n"
+                 "  --lighting equations|listing\n"
+                 "                          Listing 2 as the equations say (default) or as printed\n"
+                 "  --frames N              frames to render; --stats reports the medians (default 1)\n"
+                 "  --stats FILE.json       per-stage times, light counts and fragments, paths chosen\n"
+                 "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-npot,\n"
+                 "                          no-float, no-glsl (added to $DSR_CAPS)\n"
+                 "  --view NAME             final, normal, diffuse, specular, depth, blur-factor or bloom\n"
+                 "  --bloom, --no-bloom     bloom on or off (default: the scene's post line)\n"
+                 "  --bloom-scale 2|4       bloom buffers at 1/2 or 1/4 of the frame (default 2)\n"
+                 "  --bloom-taps N          blur taps, odd, 3..15 (default 7)\n"
+                 "  --bloom-strength S      weight of the bloom added to the image, 0..16 (default 1)\n"
+                 "  --bloom-mode color|listing\n"
+                 "                          blur intense colours (default) or Listing 22 as printed\n"
+                 "  --aa, --no-aa           anti-alias on or off (default: the scene's post line)\n"
+                 "  --aa-source normal|depth|both\n"
+                 "                          what the edge factor of Equation 7 measures (default normal)\n"
+                 "  --aa-kernel text|listing\n"
+                 "                          all 8 neighbours as the text says (default) or Listing 21's 4\n"
+                 "  --aa-weight W           largest anti-alias offset in pixels, 0..8 (default 1)\n" +
+                     std::string(kContextOption) +
+                     "  --gl-state-cache on|off\n"
+                     "                          off: every pass sets all of its GL state, so a cache bug can be\n"
+                     "                          told from a pass bug (default on)\n"
+                     "  --debug-gl              check GL errors after every stage (also DSR_DEBUG_GL=1)\n"});
+    t.push_back({"figures",
+                 {"[SCENE] [-o DIR] [--size NxN] [--context NAME]"},
+                 "the tutorial's figures 4, 6, 8-11 as PNGs",
+                 "  SCENE                   scene file (default data/default.scene)\n"
+                 "  -o DIR                  folder to write the PNGs into (default docs/figures)\n"
+                 "  --size NxN              square size, at least 64x64 (default 512x512)\n" +
+                     std::string(kContextOption)});
+    t.push_back({"bench",
+                 {"[SCENE] [--quick] [--json FILE.json] [--report FILE.md] [--size WxH] [--frames N]",
+                  "[--lights own,32,256,1024] [--context NAME]"},
+                 "depth path x scissor x skips x encodings x lights vs forward: times, fragments, error",
+                 "  SCENE                   scene to measure (default: data/default.scene and\n"
+                 "                          tests/data/analytic.scene)\n"
+                 "  --quick                 128x128, 1 warm-up + 3 timed frames, lights own,32,256\n"
+                 "  --json FILE.json        every row, the goals and the machine (docs/benchmarks.json)\n"
+                 "  --report FILE.md        markdown report, with the plot beside it as FILE_plot.png\n"
+                 "  --size WxH              frame size (default 512x512)\n"
+                 "  --frames N              timed frames per row, 1..1000 (default 10)\n"
+                 "  --lights LIST           comma-separated light counts; own: the scene's own lights\n"
+                 "                          (default own,32,256,1024)\n" +
+                     std::string(kContextOption)});
+    t.push_back({"stress",
+                 {"[--quick] [--json FILE] [--report FILE.md] [--plot FILE.png] [--only TEXT]",
+                  "[--context NAME]"},
+                 "numerical stress sweep; exit 1 if an invariant fails",
+                 "  --quick                 the quick subset (what `make test` runs)\n"
+                 "  --json FILE             every case's fields (docs/stress.json)\n"
+                 "  --report FILE.md        rewrite the file's generated block (docs/accuracy.md)\n"
+                 "  --plot FILE.png         relative z error against far/near\n"
+                 "  --only TEXT             only the cases whose name contains TEXT\n" +
+                     std::string(kContextOption)});
+    t.push_back({"info",
+                 {"[--caps LIST] [--context NAME]"},
+                 "GL vendor/renderer/version, capabilities, paths chosen",
+                 "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-npot,\n"
+                 "                          no-float, no-glsl (added to $DSR_CAPS)\n" +
+                     std::string(kContextOption)});
+    t.push_back({"gen-textures",
+                 {"DIR"},
+                 "write the default scene's procedural textures",
+                 "  DIR                     folder to write the textures into\n"});
+    return t;
+}
+
+std::string synopsis_text(const CommandUsage& u, const std::string& lead) {
+    std::string s;
+    const std::string indent(lead.size() + u.name.size() + 1, ' ');
+    for (size_t i = 0; i < u.synopsis.size(); ++i)
+        s += (i == 0 ? lead + u.name + " " : indent) + u.synopsis[i] + "\n";
+    return s;
+}
+
+}  // namespace
+
+const std::vector<CommandUsage>& command_usages() {
+    static const std::vector<CommandUsage> t = make_table();
+    return t;
+}
+
+const CommandUsage* find_command_usage(const std::string& name) {
+    for (const CommandUsage& u : command_usages())
+        if (u.name == name) return &u;
+    return nullptr;
+}
+
+std::string command_usage_text(const CommandUsage& u) {
+    return synopsis_text(u, "usage: dsr ") + u.summary + "\n\noptions:\n" + u.options;
+}
+
+std::string top_usage_text() {
+    std::string s = "usage: dsr COMMAND [options]   (dsr COMMAND --help: that command's options)\n";
+    for (const CommandUsage& u : command_usages()) s += synopsis_text(u, "  ") + "      " + u.summary + "\n";
+    return s;
+}
+
+std::string unknown_command_line(const std::string& name) {
+    std::string list;
+    for (const CommandUsage& u : command_usages()) list += (list.empty() ? "" : ", ") + u.name;
+    return "dsr: unknown command '" + name + "' (expected " + list + "; dsr --help lists them)";
+}
+
+bool is_help_flag(const std::string& arg) { return arg == "--help" || arg == "-h"; }
+
+}  // namespace dsr
