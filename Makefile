@@ -6,20 +6,26 @@ CXX ?= g++
 CXXFLAGS ?= -O2 -g
 # Flags the build needs whatever CXXFLAGS the caller passes (e.g. CXXFLAGS="-O1 -g -fsanitize=address").
 DSR_FLAGS := -std=c++17 -Wall -Wextra -Wno-unused-parameter -MMD -MP -Isrc \
-             -DGL_GLEXT_PROTOTYPES -DDSR_SOURCE_DIR=\"$(CURDIR)\"
+             -DDSR_SOURCE_DIR=\"$(CURDIR)\"
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
 DEB_PACKAGES := g++ make pkg-config libosmesa6-dev libglm-dev libopenimageio-dev \
                 nlohmann-json3-dev libgtest-dev
 
-# Renderer core: everything but the command line.  Links without OpenImageIO
-# except for src/scene/image_io.cpp, the one file that includes it.
-CORE_SRC := $(filter-out src/platform/glfw_%.cpp,$(sort $(wildcard src/platform/*.cpp src/gl/*.cpp src/scene/*.cpp \
-                              src/deferred/*.cpp src/forward/*.cpp src/analysis/*.cpp)))
+# GL context backends, linked per executable and never into the core (src/platform/context.h):
+# the headless executables get OSMesa; the viewer will link its GLFW list against libGL.
+HEADLESS_BACKEND_SRC := src/platform/osmesa_context.cpp src/platform/headless_backends.cpp
+# Renderer core: everything but the command line and the context backends.  Links without
+# OpenImageIO except for src/scene/image_io.cpp, the one file that includes it, and calls no
+# GL function beyond GL 1.1 directly (the rest through src/gl/entry_points.h); the Context
+# tests check both with nm.
+CORE_SRC := $(filter-out src/platform/glfw_%.cpp $(HEADLESS_BACKEND_SRC),$(sort $(wildcard src/platform/*.cpp \
+                              src/gl/*.cpp src/scene/*.cpp src/deferred/*.cpp src/forward/*.cpp src/analysis/*.cpp)))
 APP_SRC  := $(sort $(wildcard src/app/*.cpp))
 TEST_SRC := $(sort $(wildcard tests/*.cpp))
 
 CORE_OBJ := $(CORE_SRC:%.cpp=$(BUILD)/obj/%.o)
+HEADLESS_BACKEND_OBJ := $(HEADLESS_BACKEND_SRC:%.cpp=$(BUILD)/obj/%.o)
 APP_OBJ  := $(APP_SRC:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o)
 
@@ -36,10 +42,10 @@ $(BUILD)/libdsr_core.a: $(CORE_OBJ)
 	@rm -f $@
 	ar rcs $@ $^
 
-$(BUILD)/dsr: $(APP_OBJ) $(BUILD)/libdsr_core.a
+$(BUILD)/dsr: $(APP_OBJ) $(HEADLESS_BACKEND_OBJ) $(BUILD)/libdsr_core.a
 	$(CXX) $(CXXFLAGS) $^ $(LIBS) -o $@
 
-$(BUILD)/dsr_tests: $(TEST_OBJ) $(BUILD)/libdsr_core.a
+$(BUILD)/dsr_tests: $(TEST_OBJ) $(HEADLESS_BACKEND_OBJ) $(BUILD)/libdsr_core.a
 	$(CXX) $(CXXFLAGS) $^ -lgtest -lgtest_main $(LIBS) -o $@
 
 # Installs only what is missing; works on a machine that never ran apt-get update.
@@ -92,4 +98,4 @@ figures: deps
 clean:
 	rm -rf $(BUILD) out
 
--include $(CORE_OBJ:.o=.d) $(APP_OBJ:.o=.d) $(TEST_OBJ:.o=.d)
+-include $(CORE_OBJ:.o=.d) $(HEADLESS_BACKEND_OBJ:.o=.d) $(APP_OBJ:.o=.d) $(TEST_OBJ:.o=.d)

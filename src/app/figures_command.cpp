@@ -41,9 +41,11 @@ int cmd_figures(const std::vector<std::string>& argv) {
     Args args("figures", argv);
     std::string dir = "docs/figures", scene_path;
     int n = 512, unused = 0;
+    std::string context = default_context_backend();  // --context, else $DSR_CONTEXT
     while (!args.done()) {
         std::string a = args.next();
         if (a == "-o") dir = args.value(a);
+        else if (a == "--context") context = args.value(a);
         else if (a == "--size") {
             args.size_value(a, n, unused);
             if (n != unused || n < 64) args.fail("--size: expected a square size of at least 64x64, got '" +
@@ -55,7 +57,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
     if (scene_path.empty()) scene_path = resource_dir("data") + "/default.scene";
     Scene scene = load_scene(scene_path);
     mkdir(dir.c_str(), 0755);
-    auto ctx = create_context(ContextDesc{"osmesa", n, n});
+    auto ctx = create_context(ContextDesc{context, n, n});
     Caps caps = probe_caps();
     const std::string shaders = resource_dir("glsl120");
     std::vector<std::string> written;

@@ -11,6 +11,8 @@
 #include "app/files.h"
 #include "deferred/deferred_shader.h"
 #include "gl/caps.h"
+#include "gl/check.h"
+#include "gl/state.h"
 #include "gl/readback.h"
 #include "platform/context.h"
 #include "platform/resources.h"
@@ -41,6 +43,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     bool gbuffer_half = false;
     std::string view_name_arg = "final";
     std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";
+    std::string context = default_context_backend();  // --context, else $DSR_CONTEXT
     while (!args.done()) {
         std::string a = args.next();
         if (a == "-o" || a == "--output") out = args.value(a);
@@ -63,8 +66,7 @@ int cmd_render(const std::vector<std::string>& argv) {
         else if (a == "--frames") frames = args.int_value(a, 1, 100000);
         else if (a == "--stats") stats_path = args.value(a);
         else if (a == "--out-size") args.size_value(a, out_w, out_h);
-        else if (a == "--view") view_name_arg = args.choice(a, {"final", "normal", "diffuse", "specular", "depth",
-                                                                 "blur-factor", "bloom"});
+        else if (a == "--view") view_name_arg = args.choice(a, view_names());
         else if (a == "--bloom") bloom = 1;
         else if (a == "--no-bloom") bloom = 0;
         else if (a == "--bloom-scale") post.bloom_scale = std::stoi(args.choice(a, {"2", "4"}));
@@ -79,6 +81,9 @@ int cmd_render(const std::vector<std::string>& argv) {
         } else if (a == "--aa-kernel") post.aa_kernel = args.choice(a, {"text", "listing"}) == "listing" ? AaKernel::listing : AaKernel::text;
         else if (a == "--aa-weight") post.aa_weight = args.float_value(a, 0.0f, 8.0f);
         else if (a == "--caps") caps_list += "," + args.value(a);
+        else if (a == "--context") context = args.value(a);
+        else if (a == "--gl-state-cache") gl_state().set_cache(args.on_off(a));
+        else if (a == "--debug-gl") set_debug_gl(true);
         else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
         else if (scene_path.empty()) scene_path = a;
         else args.fail("expected one scene file, got also '" + a + "'");
@@ -97,11 +102,11 @@ int cmd_render(const std::vector<std::string>& argv) {
     post.aa = aa < 0 ? scene.post_aa : aa == 1;
     if (view == View::bloom) post.bloom = true;  // the view shows the bloom blur
     // The no-FBO path renders its buffers inside the main frame buffer: make it fit both.
-    auto ctx = create_context(ContextDesc{"osmesa", std::max(w, out_w), std::max(h, out_h)});
+    auto ctx = create_context(ContextDesc{context, std::max(w, out_w), std::max(h, out_h)});
     Caps caps = probe_caps(split_caps(caps_list));
     ShaderOptions opts;
-    if (depth == "auto") opts.depth = caps.depth_texture ? DepthPath::texture : DepthPath::packed;
-    else opts.depth = depth == "texture" ? DepthPath::texture : DepthPath::packed;
+    // auto: choose_paths decides (the depth texture where ARB_depth_texture exists).
+    opts.depth = depth == "auto" ? DepthPath::automatic : depth == "texture" ? DepthPath::texture : DepthPath::packed;
     opts.encoding = encoding_from_name(encoding);
     opts.skip = skip;
     opts.gbuffer_half = gbuffer_half;
@@ -129,12 +134,12 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["view"] = view_name(view);
     j["frames"] = frames;
     j["gl_renderer"] = caps.renderer;
-    j["depth_path"] = opts.depth == DepthPath::texture ? "texture" : "packed";
     const Paths& paths = ds.paths();
+    j["depth_path"] = paths.depth;
     j["paths"] = {{"depth", paths.depth}, {"gbuffer", paths.gbuffer}, {"render_target", paths.render_target},
                   {"textures", paths.textures}};
     j["caps_forced_off"] = caps.forced_off;
-    j["depth_encoding"] = opts.depth == DepthPath::packed ? encoding : "depth-texture";
+    j["depth_encoding"] = paths.depth_path == DepthPath::packed ? encoding : "depth-texture";
     j["lighting"] = listing2 ? "listing" : "equations";
     j["skips"] = {{"variants", skip.material_variants}, {"empty_lights", skip.empty_lights},
                   {"light_depth_test", skip.light_depth_test}, {"light_sphere_test", skip.light_sphere_test}};
@@ -142,6 +147,8 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["gbuffer"] = gbuffer_half ? "half" : "rgba8";
     j["bloom"] = post.bloom;
     j["aa"] = post.aa;
+    j["timing"] = timing_name(last.timing);  // what the per-stage ms below were measured with
+    j["gl_state_cache"] = gl_state().cache();
     j["lights_total"] = last.lights_total;
     j["lights_culled"] = last.lights_culled;
     j["lights_drawn"] = last.lights_drawn;

@@ -37,4 +37,7 @@ std::unique_ptr<GLContext> create_context(const ContextDesc& desc);
 // The backends linked into this executable ("osmesa", ...), for help and error messages.
 std::vector<std::string> context_backends();
 
+// The backend `--context` defaults to: $DSR_CONTEXT when set, else the first of context_backends().
+std::string default_context_backend();
+
 }  // namespace dsr

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "dsr_error.h"
+#include "gl/state.h"
 #include "platform/context.h"
 
 namespace dsr {
@@ -40,6 +41,7 @@ public:
         if (!OSMesaMakeCurrent(ctx_, buffer_.data(), GL_UNSIGNED_BYTE, w_, h_))
             throw Error("OSMesa: cannot make the context current");
         OSMesaPixelStore(OSMESA_Y_UP, 1);
+        gl_state().reset();  // the cache described the other context
     }
 
 private:
