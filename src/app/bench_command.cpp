@@ -39,7 +39,8 @@ bool ends_with(const std::string& s, const std::string& e) {
 
 int cmd_bench(const std::vector<std::string>& argv) {
     Args args("bench", argv);
-    std::string scene_path, json_path, report_path, lights_arg, backend = "osmesa";
+    std::string scene_path, json_path, report_path, lights_arg;
+    std::string backend = default_context_backend();  // --context, else $DSR_CONTEXT
     int w = 0, h = 0, frames = 0;
     bool quick = false;
     while (!args.done()) {

@@ -38,7 +38,8 @@ std::string read_report(const std::string& path) {
 int cmd_stress(const std::vector<std::string>& argv) {
     Args args("stress", argv);
     bool quick = false;
-    std::string json_path, report_path, plot_path, only, backend = "osmesa";
+    std::string json_path, report_path, plot_path, only;
+    std::string backend = default_context_backend();  // --context, else $DSR_CONTEXT
     while (!args.done()) {
         std::string a = args.next();
         if (a == "--quick") quick = true;
