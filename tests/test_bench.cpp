@@ -313,7 +313,7 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
         "lights_drawn", "passes", "max_lsb", "mean_lsb", "psnr_db", "max_lsb_analytic", "mean_lsb_analytic",
         "psnr_db_analytic"};
     std::vector<std::string> got;
-    for (auto& [k, v] : f.items()) got.push_back(k);
+    for (auto it = f.begin(); it != f.end(); ++it) got.push_back(it.key());
     EXPECT_EQ(got, keys);
     EXPECT_TRUE(f["depth"].is_null());
     EXPECT_TRUE(f["light_fragments"].is_null());
@@ -341,7 +341,7 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     s.rows = {r};
     std::vector<std::string> top;
     const nlohmann::ordered_json whole = bench::to_json(s);
-    for (auto& [k, v] : whole.items()) top.push_back(k);
+    for (auto it = whole.begin(); it != whole.end(); ++it) top.push_back(it.key());
     EXPECT_EQ(top, (std::vector<std::string>{"machine", "gl_renderer", "gl_version", "config", "seconds", "goals",
                                              "notes", "rows"}));
 }
