@@ -66,12 +66,7 @@ void DeferredShader::geometry_stage(const Scene& scene) {
 // Render states of Listing 7 lines 7-17: back faces culled, GL_LEQUAL, no blending, no
 // scissor, no alpha test, no fixed-function texturing.
 RenderState DeferredShader::depth_pass_state() {
-    RenderState s;
-    s.cull = true;
-    s.cull_face = GL_BACK;
-    s.depth_test = true;
-    s.depth_func = GL_LEQUAL;
-    s.depth_write = true;
+    RenderState s = opaque_geometry();
     s.color_write = false;  // Listing 8: depth only
     return s;
 }

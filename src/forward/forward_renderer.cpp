@@ -269,15 +269,7 @@ void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
 }
 
 // The surface pass: back faces culled, GL_LEQUAL, depth and colour written, no blending.
-RenderState ForwardRenderer::surface_state() {
-    RenderState s;
-    s.cull = true;
-    s.cull_face = GL_BACK;
-    s.depth_test = true;
-    s.depth_func = GL_LEQUAL;
-    s.depth_write = true;
-    return s;
-}
+RenderState ForwardRenderer::surface_state() { return opaque_geometry(); }
 
 // A further pass over the same fragments, added: GL_EQUAL against the laid-down depth, no
 // depth writes, additive blending.

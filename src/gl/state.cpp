@@ -16,6 +16,16 @@ bool RenderState::operator==(const RenderState& o) const {
 
 RenderState fixed_function_2d() { return RenderState{}; }
 
+RenderState opaque_geometry() {
+    RenderState s;
+    s.cull = true;
+    s.cull_face = GL_BACK;
+    s.depth_test = true;
+    s.depth_func = GL_LEQUAL;
+    s.depth_write = true;
+    return s;
+}
+
 RenderState textured_2d(GLenum env) {
     RenderState s;
     s.texture_2d = true;

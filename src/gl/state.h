@@ -52,6 +52,7 @@ struct RenderState {
 
 // Named starting points the passes refine.
 RenderState fixed_function_2d();    // image-space pass: everything off, colour writes on
+RenderState opaque_geometry();      // 3D surfaces: back faces culled, GL_LEQUAL, depth written
 RenderState textured_2d(GLenum env);  // the same with unit 0 textured (GL_MODULATE / GL_REPLACE)
 
 class GlState {
