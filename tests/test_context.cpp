@@ -13,7 +13,9 @@
 #include <sstream>
 #include <string>
 
+#include "analysis/image_metrics.h"
 #include "cli_fixture.h"
+#include "scene/image.h"
 #include "dsr_error.h"
 #include "gl/entry_points.h"
 #include "gl/gl.h"
@@ -225,4 +227,31 @@ TEST(Context, CommandLineFlagAndEnvironmentPickTheBackend) {
     EXPECT_NE(env.output.find("'nope'"), std::string::npos) << env.output;
     RunResult flag_wins = run("info --context osmesa", "DSR_CONTEXT=nope");
     EXPECT_EQ(flag_wins.status, 0) << flag_wins.output;
+}
+
+// The EGL backend (a pbuffer on the device platform; llvmpipe through Mesa's EGL here, a GPU
+// elsewhere) renders what OSMesa renders: the same renderer objects, another context.
+TEST(Context, EglRendersTheDefaultSceneAsOSMesaDoes) {
+    const std::string d = temp_dir();
+    RunResult info = run("info --context egl");
+    if (info.status != 0) GTEST_SKIP() << "no EGL desktop OpenGL context here: " << info.output;
+    EXPECT_NE(info.output.find("context        EGL "), std::string::npos) << info.output;
+    RunResult e = run("render --context egl --size 160x120 -o " + d + "/egl.png --stats " + d + "/egl.json");
+    ASSERT_EQ(e.status, 0) << e.output;
+    RunResult o = run("render --context osmesa --size 160x120 -o " + d + "/osmesa.png");
+    ASSERT_EQ(o.status, 0) << o.output;
+    ImageDiff diff = compare_images(load_image(d + "/egl.png"), load_image(d + "/osmesa.png"), 1.0 / 255.0);
+    std::printf("[ image    ] EGL vs OSMesa, default scene 160x120: max %.1f LSB, %lld pixels over 1 LSB\n",
+                diff.max_lsb(), diff.failing);
+    EXPECT_LE(diff.max_lsb(), 1.001);
+    EXPECT_EQ(diff.failing, 0);
+}
+
+TEST(Context, EglDeviceOutOfRangeIsOneClearLine) {
+    RunResult info = run("info --context egl");
+    if (info.status != 0) GTEST_SKIP() << "no EGL desktop OpenGL context here: " << info.output;
+    RunResult r = run("info --context egl --egl-device 15");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find("--egl-device 15"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
 }

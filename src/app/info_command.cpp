@@ -26,18 +26,21 @@ int cmd_info(const std::vector<std::string>& argv) {
     Args args("info", argv);
     std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";
     std::string context = default_context_backend();  // --context, else $DSR_CONTEXT
+    int egl_device = -1;                               // --egl-device, else $DSR_EGL_DEVICE, else 0
     while (!args.done()) {
         std::string a = args.next();
         if (a == "--caps")
             caps_list += "," + args.value("--caps");
         else if (a == "--context")
             context = args.value(a);
+        else if (a == "--egl-device")
+            egl_device = args.int_value(a, 0, 15);
         else
             args.fail("unknown option '" + a + "'");
     }
-    auto ctx = create_context(ContextDesc{context, 512, 512});  // big enough to time a pass (timing line)
+    auto ctx = create_context(ContextDesc{context, 512, 512, egl_device});  // big enough to time a pass (timing line)
     Caps caps = probe_caps(split_caps(caps_list));
-    std::printf("context        %s\n%s", ctx->backend().c_str(), describe(caps).c_str());
+    std::printf("context        %s\n%s", ctx->description().c_str(), describe(caps).c_str());
     // The renderer's own chooser with `render`'s defaults (depth auto), so info cannot drift.
     ShaderOptions defaults;
     defaults.depth = DepthPath::automatic;

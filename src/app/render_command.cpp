@@ -158,6 +158,8 @@ int cmd_render(const std::vector<std::string>& argv) {
                {"lights", med(&StageTimes::lights)},     {"bloom", med(&StageTimes::bloom)},
                {"aa", med(&StageTimes::aa)},             {"final", med(&StageTimes::final)},
                {"frame", med(&StageTimes::frame)}};
+    j["frame_ms"] = nlohmann::json::array();  // each frame's wall time, in order: ms.frame is their median
+    for (const FrameStats& s : all) j["frame_ms"].push_back(s.ms.frame);
 
     write_image(out, img);
     if (!stats_path.empty()) write_file_atomic(stats_path, j.dump(2) + "\n");

@@ -7,7 +7,9 @@ namespace dsr {
 namespace {
 
 const char* kContextOption =
-    "  --context NAME          GL context backend (default: $DSR_CONTEXT, else osmesa)\n";
+    "  --context NAME          GL context backend: osmesa or egl (default: $DSR_CONTEXT, else osmesa)\n";
+const char* kEglDeviceOption =
+    "  --egl-device N          with --context egl: the EGL device (default: $DSR_EGL_DEVICE, else 0)\n";
 
 std::vector<CommandUsage> make_table() {
     std::vector<CommandUsage> t;
@@ -20,7 +22,7 @@ std::vector<CommandUsage> make_table() {
                   "[--bloom|--no-bloom] [--bloom-scale 2|4] [--bloom-taps N] [--bloom-strength S]",
                   "[--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]",
                   "[--aa-kernel text|listing] [--aa-weight W]",
-                  "[--context NAME] [--gl-state-cache on|off] [--debug-gl]"},
+                  "[--context NAME] [--egl-device N] [--gl-state-cache on|off] [--debug-gl]"},
                  "render SCENE (default data/default.scene) with the deferred shader into one image",
                  "  SCENE                   scene file (default data/default.scene)\n"
                  "  -o, --output FILE       image to write: .png, .exr, .tif, .jpg or .ppm (default out.png)\n"
@@ -44,7 +46,8 @@ std::vector<CommandUsage> make_table() {
                  "  --bloom, --no-bloom     bloom on or off (default: the scene's post line)\n"
                  "  --bloom-scale 2|4       bloom buffers at 1/2 or 1/4 of the frame (default 2)\n"
                  "  --bloom-taps N          blur taps, odd, 3..15 (default 7)\n"
-                 "  --bloom-strength S      weight of the bloom added to the image, 0..16 (default 1)\n"
+                 "  --bloom-strength S      weight of the bloom added to the image, 0..16 (default 1;\n"
+                 "                          above 1 it adds what 1 adds: GL clamps the colour it scales)\n"
                  "  --bloom-mode color|listing\n"
                  "                          blur intense colours (default) or Listing 22 as printed\n"
                  "  --aa, --no-aa           anti-alias on or off (default: the scene's post line)\n"
@@ -53,7 +56,7 @@ std::vector<CommandUsage> make_table() {
                  "  --aa-kernel text|listing\n"
                  "                          all 8 neighbours as the text says (default) or Listing 21's 4\n"
                  "  --aa-weight W           largest anti-alias offset in pixels, 0..8 (default 1)\n" +
-                     std::string(kContextOption) +
+                     std::string(kContextOption) + kEglDeviceOption +
                      "  --gl-state-cache on|off\n"
                      "                          off: every pass sets all of its GL state, so a cache bug can be\n"
                      "                          told from a pass bug (default on)\n"
@@ -90,15 +93,21 @@ std::vector<CommandUsage> make_table() {
                  "  --only TEXT             only the cases whose name contains TEXT\n" +
                      std::string(kContextOption)});
     t.push_back({"info",
-                 {"[--caps LIST] [--context NAME]"},
+                 {"[--caps LIST] [--context NAME] [--egl-device N]"},
                  "GL vendor/renderer/version, capabilities, paths chosen",
                  "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-npot,\n"
                  "                          no-float, no-glsl (added to $DSR_CAPS)\n" +
-                     std::string(kContextOption)});
+                     std::string(kContextOption) + kEglDeviceOption});
     t.push_back({"gen-textures",
                  {"DIR"},
                  "write the default scene's procedural textures",
                  "  DIR                     folder to write the textures into\n"});
+    t.push_back({"compare",
+                 {"A B [--threshold LSB] [--max-lsb LSB]"},
+                 "compare two image files (RGB, 8-bit LSB) as the image tests do: one line on stdout",
+                 "  A B                     the two images, same size (any format dsr reads)\n"
+                 "  --threshold LSB         count pixels with a channel over this difference (default 2)\n"
+                 "  --max-lsb LSB           exit 1 when the largest difference is over LSB\n"});
     return t;
 }
 

@@ -16,6 +16,8 @@ public:
     virtual int width() const = 0;
     virtual int height() const = 0;
     virtual std::string backend() const = 0;
+    // One line for `dsr info`: the backend and what it runs on (EGL version and vendor ...).
+    virtual std::string description() const { return backend(); }
     // Address of a GL entry point (core or extension) for this context; null when absent.
     virtual void* proc_address(const char* name) const = 0;
     virtual void make_current() = 0;
@@ -25,8 +27,9 @@ public:
 
 // What to create: the backend by name (`--context`), and the main frame buffer's size.
 struct ContextDesc {
-    std::string backend = "osmesa";  // osmesa (headless Mesa); later glfw, egl
+    std::string backend = "osmesa";  // osmesa (headless Mesa) | egl (EGL pbuffer: a GPU, or Mesa); later glfw
     int width = 64, height = 64;
+    int egl_device = -1;             // egl: which EGL_EXT_platform_device device; -1: $DSR_EGL_DEVICE, else 0
 };
 
 // Creates the context, makes it current and loads dsr's GL entry-point table through

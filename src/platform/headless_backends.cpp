@@ -9,9 +9,10 @@
 
 namespace dsr {
 
-std::unique_ptr<GLContext> create_osmesa_context(int width, int height);  // osmesa_context.cpp
+std::unique_ptr<GLContext> create_osmesa_context(int width, int height);         // osmesa_context.cpp
+std::unique_ptr<GLContext> create_egl_context(int width, int height, int device);  // egl_context.cpp
 
-std::vector<std::string> context_backends() { return {"osmesa"}; }
+std::vector<std::string> context_backends() { return {"osmesa", "egl"}; }
 
 std::string default_context_backend() {
     const char* env = std::getenv("DSR_CONTEXT");
@@ -19,8 +20,18 @@ std::string default_context_backend() {
 }
 
 std::unique_ptr<GLContext> create_context(const ContextDesc& d) {
-    if (d.backend == "osmesa") {
-        auto ctx = create_osmesa_context(d.width, d.height);  // current on return
+    std::unique_ptr<GLContext> ctx;  // current on return from its backend
+    if (d.backend == "osmesa") ctx = create_osmesa_context(d.width, d.height);
+    if (d.backend == "egl") {
+        int device = d.egl_device;
+        if (device < 0) {
+            const char* env = std::getenv("DSR_EGL_DEVICE");
+            device = env && *env ? std::atoi(env) : 0;
+        }
+        ctx = create_egl_context(d.width, d.height, device);
+    }
+    if (ctx) {
+        // Reloaded with every context: another backend's entry points may differ.
         load_gl_entry_points(*ctx);
         gl_state().reset();  // a fresh context holds GL's defaults, not the last context's state
         return ctx;
