@@ -71,10 +71,13 @@ test: deps
 	$(BUILD)/dsr_tests
 
 # The old-GL matrix (every combination of no-mrt, no-depth-texture, no-fbo, no-npot), the Mesa
-# overrides and softpipe at full size. `make test` runs the same tests at a small size.
+# overrides and softpipe, the matrix at 640x480 (not a power of two, so the padded path runs at
+# full size; `make test` runs it at 120x90), then tests/legacy_matrix.sh, which writes the
+# generated tables of docs/legacy.md and fails if a render or an image comparison fails.
 test-legacy: deps
 	$(MAKE) -j$(JOBS) all
-	DSR_TEST_SIZE=512 $(BUILD)/dsr_tests --gtest_filter='Fallbacks.*:Legacy.*'
+	DSR_TEST_SIZE=640x480 $(BUILD)/dsr_tests --gtest_filter='Fallbacks.*:Legacy.*'
+	DSR=$(BUILD)/dsr tests/legacy_matrix.sh --report docs/legacy.md 512x512 640x480
 
 # The benchmark sweep (README: "Benchmarks"): docs/benchmarks.md with its table, goals and plot,
 # and the raw rows in docs/benchmarks.json. A few minutes on two cores.

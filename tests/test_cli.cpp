@@ -10,9 +10,12 @@
 #include <sstream>
 #include <string>
 
+#include "analysis/image_metrics.h"
 #include "cli_fixture.h"
+#include "scene/image.h"
 
 using namespace dsr::test;
+using dsr::Image;
 
 namespace {
 void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
@@ -59,7 +62,8 @@ std::string joined(const std::set<std::string>& s) {
 TEST(Cli, EveryCommandHasHelpListingItsFlags) {
     const std::pair<const char*, const char*> files[] = {
         {"render", "render_command.cpp"}, {"figures", "figures_command.cpp"}, {"bench", "bench_command.cpp"},
-        {"stress", "stress_command.cpp"}, {"info", "info_command.cpp"},       {"gen-textures", nullptr}};
+        {"stress", "stress_command.cpp"}, {"info", "info_command.cpp"},       {"gen-textures", nullptr},
+        {"compare", nullptr}};
     for (auto [c, file] : files) {
         RunResult r = run(std::string(c) + " --help");
         EXPECT_EQ(r.status, 0) << c << ": " << r.output;
@@ -76,6 +80,9 @@ TEST(Cli, EveryCommandHasHelpListingItsFlags) {
     EXPECT_EQ(render.output.rfind("usage: dsr render ", 0), 0u) << render.output;
     for (const char* k : {"--gl-state-cache on|off", "--debug-gl", "--context NAME"})
         EXPECT_NE(render.output.find(k), std::string::npos) << k;
+    // compare takes no GL context; its flags are still exactly the usage's.
+    RunResult cmp = run("compare --help");
+    EXPECT_EQ(parsed_flags("compare_command.cpp"), usage_flags(cmp.output)) << cmp.output;
     RunResult top = run("--help");
     EXPECT_EQ(top.status, 0);
     for (auto [c, file] : files) EXPECT_NE(top.output.find(std::string("\n  ") + c + " "), std::string::npos) << c;
@@ -86,7 +93,7 @@ TEST(Cli, UnknownCommandOrOptionIsOneLine) {
     RunResult r = run("frobnicate");
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.output, "dsr: unknown command 'frobnicate' (expected render, figures, bench, stress, info, "
-                        "gen-textures; dsr --help lists them)\n");
+                        "gen-textures, compare; dsr --help lists them)\n");
     for (const char* c : {"render --frobnicate", "stress --frobnicate"}) {
         RunResult o = run(c);
         EXPECT_EQ(o.status, 1) << c;
@@ -121,6 +128,22 @@ TEST(Cli, ExrOutputAndPackedPath) {
     EXPECT_TRUE(exists(d + "/a.exr"));
     std::ifstream in(d + "/s.json");
     EXPECT_EQ(nlohmann::json::parse(in)["depth_path"], "packed");
+    // Read back: the same frame as the 8-bit PNG, to half-float precision (2^-11 of 1, well under
+    // 1 LSB) plus the PNG's rounding (half an LSB); an image with content, alpha 1.
+    ASSERT_EQ(run("render --size 32x32 --depth packed -o " + d + "/a.png").status, 0);
+    const Image exr = dsr::load_image(d + "/a.exr"), png = dsr::load_image(d + "/a.png");
+    ASSERT_EQ(exr.width, 32);
+    ASSERT_EQ(exr.height, 32);
+    const dsr::ImageDiff diff = dsr::compare_images(exr, png, 0.75 / 255);
+    std::printf("[ exr      ] against the PNG: max %.3f LSB, mean %.4f LSB\n", diff.max_lsb(), diff.mean_lsb());
+    EXPECT_LE(diff.max_lsb(), 0.75);
+    EXPECT_GT(diff.max_abs, 0.0) << "the EXR holds more than 8 bits";
+    float lo = 1, hi = 0;
+    for (size_t i = 0; i < exr.rgba.size(); i += 4) {
+        lo = std::min(lo, exr.rgba[i + 1]), hi = std::max(hi, exr.rgba[i + 1]);
+        EXPECT_EQ(exr.rgba[i + 3], 1.0f);
+    }
+    EXPECT_GT(hi - lo, 0.2f) << "a lit scene, not a flat image";
 }
 
 TEST(Cli, BadFlagsAreOneClearError) {
@@ -142,6 +165,8 @@ TEST(Cli, BadFlagsAreOneClearError) {
         RunResult r = run(c.args);
         EXPECT_NE(r.status, 0) << c.args;
         EXPECT_NE(r.output.find(c.expect), std::string::npos) << c.args << " said: " << r.output;
+        EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << c.args << " said: " << r.output;
+        EXPECT_EQ(r.output.back(), '\n') << c.args;
     }
 }
 
@@ -200,7 +225,37 @@ TEST(Cli, OutSizeAndViews) {
         EXPECT_EQ(j["out_size"][0], 80);
         EXPECT_EQ(j["view"], v);
         EXPECT_TRUE(j["ms"].contains("bloom") && j["ms"].contains("aa"));
+        const Image img = dsr::load_image(d + "/" + v + ".png");
+        EXPECT_EQ(img.width, 80) << v;
+        EXPECT_EQ(img.height, 60) << v;
+        float lo = 1, hi = 0;
+        for (size_t i = 0; i < img.rgba.size(); i += 4)
+            for (int c = 0; c < 3; ++c) lo = std::min(lo, img.rgba[i + c]), hi = std::max(hi, img.rgba[i + c]);
+        EXPECT_GT(hi - lo, 0.1f) << v << ": the view has content";
     }
+    // Content: the 80x60 final image is the 64x64 one scaled bilinearly (§3.6). The CPU model
+    // samples texel centres with clamp-to-edge as GL_LINEAR does; the GPU's 8-bit weights and
+    // the PNG's rounding stay within a few LSB.
+    ASSERT_EQ(run("render --size 64x64 --aa -o " + d + "/small.png").status, 0);
+    const Image small = dsr::load_image(d + "/small.png"), big = dsr::load_image(d + "/final.png");
+    Image scaled = big;
+    for (int y = 0; y < 60; ++y)
+        for (int x = 0; x < 80; ++x) {
+            const float u = (x + 0.5f) * 64 / 80 - 0.5f, v = (y + 0.5f) * 64 / 60 - 0.5f;
+            const int x0 = int(std::floor(u)), y0 = int(std::floor(v));
+            const float fx = u - x0, fy = v - y0;
+            auto at = [&](int xx, int yy, int c) {
+                return small.at(std::clamp(xx, 0, 63), std::clamp(yy, 0, 63))[c];
+            };
+            for (int c = 0; c < 3; ++c)
+                scaled.at(x, y)[c] = (1 - fy) * ((1 - fx) * at(x0, y0, c) + fx * at(x0 + 1, y0, c)) +
+                                     fy * ((1 - fx) * at(x0, y0 + 1, c) + fx * at(x0 + 1, y0 + 1, c));
+        }
+    const dsr::ImageDiff sd = dsr::compare_images(big, scaled, 2.0 / 255);
+    std::printf("[ out-size ] 80x60 against the 64x64 frame scaled on the CPU: max %.2f LSB, mean %.3f LSB\n",
+                sd.max_lsb(), sd.mean_lsb());
+    EXPECT_LE(sd.max_lsb(), 4.0);
+    EXPECT_LE(sd.mean_lsb(), 0.5);
     EXPECT_NE(run("render --view albedo").output.find("--view: expected final|normal"), std::string::npos);
 }
 

@@ -1,7 +1,7 @@
 // Old GL 2.x paths: every combination of the four fallbacks renders the default scene like
 // the all-capabilities path. The matrix runs at a small non-power-of-two size here (so the
-// power-of-two padding is exercised); `make test-legacy` runs it at 512x512
-// (DSR_TEST_SIZE=512).
+// power-of-two padding is exercised); `make test-legacy` runs it at 640x480
+// (DSR_TEST_SIZE=640x480; also DSR_TEST_SIZE=N for NxN).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -14,15 +14,24 @@ using namespace dsr::test;
 namespace {
 constexpr double kLsb = 1.0 / 255.0;
 
-int test_size(int fallback) {
+// DSR_TEST_SIZE: WxH, or N for NxN; unset: the small default.
+void test_size(int& w, int& h) {
     const char* e = std::getenv("DSR_TEST_SIZE");
-    return e ? std::atoi(e) : fallback;
+    if (!e) return;
+    char* end = nullptr;
+    w = h = int(std::strtol(e, &end, 10));
+    if (end && *end == 'x') h = int(std::strtol(end + 1, &end, 10));
+    if (w <= 0 || h <= 0 || (end && *end)) {
+        ADD_FAILURE() << "DSR_TEST_SIZE: expected WxH or N, got '" << e << "'";
+        w = 120, h = 90;
+    }
 }
 }  // namespace
 
 TEST(Fallbacks, EveryCombinationMatchesFullCapabilities) {
     const char* names[4] = {"no-mrt", "no-depth-texture", "no-fbo", "no-npot"};
-    const int w = test_size(120), h = test_size(90) ;
+    int w = 120, h = 90;
+    test_size(w, h);
     Scene s = default_scene();
     ShaderOptions opts;
     opts.post.bloom = opts.post.aa = true;  // the post passes sample padded buffers too

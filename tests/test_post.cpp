@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "dsr_error.h"
+#include "gl/state.h"
 #include "render_fixture.h"
 
 using namespace dsr;
@@ -51,10 +52,78 @@ void reference_test(const std::string& name, const Image& actual) {
 }
 }  // namespace
 
+namespace {
+// Renders a second frame after filling P-buffers 1-3 (the anti-alias and bloom targets) with a
+// colour no pass writes; returns how many pixels of each still hold it, and whether P-buffer 0
+// is the image the final pass showed.
+struct PostTouch {
+    long long untouched[4] = {0, 0, 0, 0}, pixels[4] = {0, 0, 0, 0};
+    bool accum_is_image = false;
+};
+PostTouch post_touch(const PostOptions& post) {
+    const int n = 64;
+    Scene s = default_scene();
+    auto ctx = create_context(ContextDesc{"osmesa", n, n});
+    ShaderOptions o;
+    o.post = post;
+    DeferredShader ds(probe_caps(), n, n, o, resource_dir("glsl120"));
+    ds.set_scene(s);
+    ds.render(s, n, n);
+    const float mark[4] = {64 / 255.0f, 128 / 255.0f, 192 / 255.0f, 1.0f};  // exact in 8 bits
+    for (int b = 1; b < 4; ++b) {
+        ds.fb_bind_render(b);
+        gl_state().apply(fixed_function_2d());
+        glClearColor(mark[0], mark[1], mark[2], mark[3]);
+        glClear(GL_COLOR_BUFFER_BIT);
+        ds.fb_unbind_render(b);
+    }
+    ds.render(s, n, n);
+    PostTouch t;
+    const Image shown = read_pixels(n, n);
+    for (int b = 1; b < 4; ++b) {
+        const Image img = ds.read_pbuffer(b);
+        for (size_t p = 0; p < img.rgba.size(); p += 4) {
+            bool same = true;
+            for (int c = 0; c < 4; ++c) same &= std::fabs(img.rgba[p + c] - mark[c]) < 0.5 * kLsb;
+            t.untouched[b] += same;
+            t.pixels[b] += 1;
+        }
+    }
+    const Image accum = ds.read_pbuffer(0);
+    t.accum_is_image = compare_images(accum, shown, 0.5 * kLsb).max_lsb() < 0.5;
+    return t;
+}
+}  // namespace
+
+// With bloom and anti-alias off no post pass is drawn: no time is charged to them, and
+// P-buffers 1-3 keep what was in them through a whole frame. With either on, its buffers are
+// written (so the check can fail).
 TEST(Post, OffCostsNothing) {
     Frame f = render_post(default_scene(), 64, PostOptions{});
     EXPECT_EQ(f.stats.ms.bloom, 0.0);
     EXPECT_EQ(f.stats.ms.aa, 0.0);
+    const PostTouch off = post_touch(PostOptions{});
+    for (int b = 1; b < 4; ++b) {
+        EXPECT_GT(off.pixels[b], 0) << b;
+        EXPECT_EQ(off.untouched[b], off.pixels[b]) << "P-buffer " << b << " written with post off";
+    }
+    EXPECT_TRUE(off.accum_is_image);
+    PostOptions bloom;
+    bloom.bloom = true;
+    const PostTouch b = post_touch(bloom);
+    EXPECT_EQ(b.untouched[1], b.pixels[1]) << "bloom alone leaves the anti-alias buffer";
+    EXPECT_LT(b.untouched[2], b.pixels[2] / 2);
+    EXPECT_LT(b.untouched[3], b.pixels[3] / 2);
+    PostOptions aa;
+    aa.aa = true;
+    const PostTouch a = post_touch(aa);
+    EXPECT_LT(a.untouched[1], a.pixels[1] / 2);  // after the swap, 1 holds the un-anti-aliased frame
+    EXPECT_EQ(a.untouched[2], a.pixels[2]);
+    EXPECT_EQ(a.untouched[3], a.pixels[3]);
+    std::printf("[ post     ] P-buffer 1/2/3 pixels untouched: off %lld/%lld/%lld, bloom %lld/%lld/%lld, aa %lld/%lld/%lld "
+                "of %lld/%lld/%lld\n",
+                off.untouched[1], off.untouched[2], off.untouched[3], b.untouched[1], b.untouched[2], b.untouched[3],
+                a.untouched[1], a.untouched[2], a.untouched[3], off.pixels[1], off.pixels[2], off.pixels[3]);
 }
 
 // Eq. 7: where the normal target is constant the factor is 0 and the offsets vanish, so the

@@ -85,6 +85,7 @@ TEST_P(Stress, Invariants) {
     EXPECT_TRUE(r.scissor_contains_sphere) << r.scissor_first_miss;
     EXPECT_EQ(r.lights_checked, int(c.scene.lights.size()));
     EXPECT_GT(r.z.pixels, 1000) << "the case must show surfaces to measure";
+    EXPECT_EQ(r.zero_normal_shaded, 0) << "zero vertex normals must leave the surface unlit";
 
     if (c.category != "ratio") return;
     // docs/accuracy.md, measured on llvmpipe. Every surface within far/near <= 1e6 survives
@@ -153,6 +154,27 @@ TEST(StressChecks, NonFiniteOutputIsCounted) {
     EXPECT_FALSE(r.passed());
 }
 
+// The zero-normal counter must be able to fail: the same quad with valid normals (0,0,1) is a
+// lit surface, and every pixel of it counts.
+TEST(StressChecks, ZeroNormalCounterCountsLitSurfaces) {
+    StressCase c;
+    for (StressCase& k : stress_cases(true))
+        if (k.name == "zero-normal/texture") c = k;
+    ASSERT_FALSE(c.name.empty());
+    ASSERT_EQ(c.no_reference_meshes.size(), 1u);
+    auto ctx = create_context(ContextDesc{"osmesa", c.width, c.height});
+    StressRunner runner(*ctx, resource_dir("glsl120"));
+    const StressResult zero = runner.run(c);
+    for (Vertex& v : c.scene.meshes[size_t(c.no_reference_meshes[0])].vertices) v.normal = glm::vec3(0, 0, 1);
+    const StressResult valid = runner.run(c);
+    std::printf("[ stress   ] quad pixels taken as lit: zero normals %lld, normals (0,0,1) %lld\n",
+                zero.zero_normal_shaded, valid.zero_normal_shaded);
+    EXPECT_EQ(zero.zero_normal_shaded, 0);
+    EXPECT_TRUE(zero.passed());
+    EXPECT_GT(valid.zero_normal_shaded, 100);
+    EXPECT_FALSE(valid.passed());
+}
+
 namespace {
 
 // A hand-made result of the ratio sweep: what StressRunner::run would return.
@@ -180,6 +202,19 @@ TEST(StressReport, TablesJsonAndBlock) {
     EXPECT_NE(acc.find("| texture | 4e-06 |"), std::string::npos) << acc;
     EXPECT_NE(acc.find("| log | 1e-07 |"), std::string::npos) << acc;
     EXPECT_EQ(stress_accuracy_tables({}), "");
+
+    // The generated summary says whether the goal is met, from the numbers, both ways.
+    std::vector<StressResult> goal = {ratio_result("log", 1e2, 5e-7), ratio_result("log", 1e6, 1.3e-6),
+                                      ratio_result("texture", 1e6, 0.094)};
+    goal[1].z_cpu.max = 1.06e-6;
+    const std::string met = stress_summary(goal);
+    EXPECT_NE(met.find("log measures 5e-07 at 1e2, 1.3e-06 at 1e6 in the renderer: met."), std::string::npos) << met;
+    EXPECT_NE(met.find("- log at 1e6: max 1.3e-06 in the renderer, 1.1e-06 in its CPU twin (1.23x)"), std::string::npos)
+        << met;
+    EXPECT_NE(met.find("- texture at 1e6: max 0.094"), std::string::npos) << met;
+    goal[1].z.max = 2.1e-6;
+    EXPECT_NE(stress_summary(goal).find(": **NOT met**."), std::string::npos) << stress_summary(goal);
+    EXPECT_EQ(stress_summary({}), "");
 
     results[1].nan_pixels = 3;  // an invariant broken
     EXPECT_EQ(stress_limit_failures(results), 0);

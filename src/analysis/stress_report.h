@@ -32,6 +32,11 @@ int stress_limit_failures(const std::vector<StressResult>& results);
 // Relative z error against far/near: window-depth and eye-depth paths, max above, mean below.
 Image stress_accuracy_plot(const std::vector<StressResult>& results);
 
+// The sentences docs/accuracy.md's prose relies on, generated (one "- " line each): the log
+// encoding against the goal (<= 2e-6 up to far/near 1e6: "met" or "**NOT met**") and the log,
+// texture and corrected paths at 1e6 and 1e7 against their CPU twins. Empty without ratio cases.
+std::string stress_summary(const std::vector<StressResult>& results);
+
 // The generated block of docs/accuracy.md, its BEGIN and END markers included.
 std::string stress_report_block(const std::vector<StressResult>& results, bool quick, const std::string& renderer);
 

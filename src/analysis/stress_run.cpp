@@ -74,6 +74,8 @@ std::vector<std::string> StressResult::failures() const {
     if (nan_positions) f.push_back(std::to_string(nan_positions) + " non-finite reconstructed positions");
     if (gl_errors) f.push_back(std::to_string(gl_errors) + " GL errors");
     if (!exception.empty()) f.push_back("exception: " + exception);
+    if (zero_normal_shaded)
+        f.push_back(std::to_string(zero_normal_shaded) + " pixels of zero-normal meshes taken as lit surfaces");
     if (!scissor_contains_sphere)
         f.push_back("scissor misses " + std::to_string(scissor_points_outside) + " sphere points, first " +
                     scissor_first_miss);

@@ -44,6 +44,7 @@ struct StressResult {
                                        // that float rounding moved nearer)
     long long zero_normal_shaded = 0;  // pixels of no_reference_meshes (zero vertex normals) that
                                        // Listing 20's len > 0.1 test takes as a valid normal
+                                       // (an invariant: must be 0)
     ZError z, z_cpu;                   // renderer and CPU twin, over the same pixels
     double max_lsb = -1, mean_lsb = -1;  // -1: no pixel compared
     long long lsb_pixels = 0, lsb_over_2 = 0;  // pixels compared; of them, over 2 LSB

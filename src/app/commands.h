@@ -11,6 +11,7 @@ int cmd_figures(const std::vector<std::string>& args);
 int cmd_gen_textures(const std::vector<std::string>& args);
 int cmd_stress(const std::vector<std::string>& args);
 int cmd_bench(const std::vector<std::string>& args);
+int cmd_compare(const std::vector<std::string>& args);
 
 // Capabilities to hide: DSR_CAPS from the environment plus --caps, comma-separated.
 std::vector<std::string> split_caps(const std::string& list);
