@@ -9,10 +9,15 @@
 
 namespace dsr {
 
-std::unique_ptr<GLContext> create_osmesa_context(int width, int height);         // osmesa_context.cpp
 std::unique_ptr<GLContext> create_egl_context(int width, int height, int device);  // egl_context.cpp
-
+#ifndef DSR_NO_OSMESA
+std::unique_ptr<GLContext> create_osmesa_context(int width, int height);  // osmesa_context.cpp
 std::vector<std::string> context_backends() { return {"osmesa", "egl"}; }
+#else
+// A build for a machine without Mesa (tests/gpu_bench.sh): EGL only, linked against the
+// system's libOpenGL/libEGL (glvnd) instead of libOSMesa.
+std::vector<std::string> context_backends() { return {"egl"}; }
+#endif
 
 std::string default_context_backend() {
     const char* env = std::getenv("DSR_CONTEXT");
@@ -21,7 +26,9 @@ std::string default_context_backend() {
 
 std::unique_ptr<GLContext> create_context(const ContextDesc& d) {
     std::unique_ptr<GLContext> ctx;  // current on return from its backend
+#ifndef DSR_NO_OSMESA
     if (d.backend == "osmesa") ctx = create_osmesa_context(d.width, d.height);
+#endif
     if (d.backend == "egl") {
         int device = d.egl_device;
         if (device < 0) {

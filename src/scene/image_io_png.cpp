@@ -1,0 +1,138 @@
+// The image seam's second backend, for builds that must travel (the GPU machine has libpng at
+// run time and cannot take OpenImageIO's dependencies): PNG (8-bit RGBA, as the OpenImageIO
+// backend writes it) and binary PPM, through libpng. Chosen at build time instead of
+// image_io.cpp (tests/gpu_bench.sh builds with it); the same interface, scene/image.h.
+#include <png.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "dsr_error.h"
+#include "scene/image.h"
+
+namespace dsr {
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+    size_t slash = path.find_last_of('/');
+    size_t dot = path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+    std::string ext = path.substr(dot);
+    for (char& c : ext) c = char(std::tolower((unsigned char)c));
+    return ext;
+}
+
+struct File {
+    FILE* f = nullptr;
+    ~File() {
+        if (f) std::fclose(f);
+    }
+};
+
+uint8_t to_byte(float v) {
+    v = std::isnan(v) ? 0.0f : std::min(1.0f, std::max(0.0f, v));
+    return uint8_t(std::lround(v * 255.0f));
+}
+
+[[noreturn]] void png_fail(png_structp, png_const_charp msg) {
+    throw Error(std::string(msg ? msg : "libpng error"));
+}
+
+}  // namespace
+
+Image load_image(const std::string& path) {
+    const std::string ext = lower_extension(path);
+    if (ext != ".png") throw Error("cannot read image " + path + ": this build reads PNG only (libpng backend)");
+    File in;
+    in.f = std::fopen(path.c_str(), "rb");
+    if (!in.f) throw Error("cannot read image " + path + ": cannot open it");
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, png_fail, nullptr);
+    png_infop info = png_create_info_struct(png);
+    Image img;
+    try {
+        png_init_io(png, in.f);
+        png_read_info(png, info);
+        const png_uint_32 w = png_get_image_width(png, info), h = png_get_image_height(png, info);
+        if (w == 0 || h == 0 || w > 16384 || h > 16384 || size_t(w) * h > (size_t(1) << 26))
+            throw Error(std::to_string(w) + " x " + std::to_string(h) + " pixels (an absurd size)");
+        // Everything to 8-bit RGBA: palette and grey expanded, 16-bit stripped, alpha 255 added.
+        png_set_expand(png);
+        png_set_strip_16(png);
+        png_set_gray_to_rgb(png);
+        png_set_add_alpha(png, 0xff, PNG_FILLER_AFTER);
+        png_read_update_info(png, info);
+        std::vector<uint8_t> bytes(size_t(w) * h * 4);
+        std::vector<png_bytep> rows(h);
+        for (png_uint_32 y = 0; y < h; ++y) rows[y] = &bytes[size_t(y) * w * 4];
+        png_read_image(png, rows.data());
+        png_read_end(png, nullptr);
+        img.width = int(w);
+        img.height = int(h);
+        img.rgba.resize(bytes.size());
+        for (png_uint_32 y = 0; y < h; ++y)  // file row y (top first) -> Image row h-1-y
+            for (size_t i = 0; i < size_t(w) * 4; ++i)
+                img.rgba[size_t(h - 1 - y) * w * 4 + i] = bytes[size_t(y) * w * 4 + i] / 255.0f;
+    } catch (const Error& e) {
+        png_destroy_read_struct(&png, &info, nullptr);
+        throw Error("cannot read image " + path + ": " + e.what());
+    }
+    png_destroy_read_struct(&png, &info, nullptr);
+    return img;
+}
+
+void write_image(const std::string& path, const Image& img) {
+    if (img.width <= 0 || img.height <= 0 || img.rgba.size() != size_t(img.width) * img.height * 4)
+        throw Error("cannot write " + path + ": image has no pixels or the wrong buffer size");
+    const std::string ext = lower_extension(path);
+    if (ext != ".png" && ext != ".ppm")
+        throw Error("cannot write " + path + ": this build writes .png and .ppm only (libpng backend)");
+    const int w = img.width, h = img.height;
+    const int nc = ext == ".png" ? 4 : 3;
+    std::vector<uint8_t> bytes(size_t(w) * h * nc);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < nc; ++c) bytes[(size_t(y) * w + x) * nc + c] = to_byte(img.at(x, h - 1 - y)[c]);
+
+    const std::string tmp = path + ".tmp-" + std::to_string(long(getpid())) + ext;
+    auto fail = [&](const std::string& why) {
+        std::remove(tmp.c_str());
+        throw Error("cannot write " + path + ": " + why);
+    };
+    {
+        File out;
+        out.f = std::fopen(tmp.c_str(), "wb");
+        if (!out.f) fail("cannot create " + tmp);
+        if (nc == 3) {
+            std::fprintf(out.f, "P6\n%d %d\n255\n", w, h);
+            if (std::fwrite(bytes.data(), 1, bytes.size(), out.f) != bytes.size()) fail("write failed");
+        } else {
+            png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, png_fail, nullptr);
+            png_infop info = png_create_info_struct(png);
+            try {
+                png_init_io(png, out.f);
+                png_set_IHDR(png, info, png_uint_32(w), png_uint_32(h), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+                             PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+                png_write_info(png, info);
+                for (int y = 0; y < h; ++y) png_write_row(png, &bytes[size_t(y) * w * 4]);
+                png_write_end(png, nullptr);
+            } catch (const Error& e) {
+                png_destroy_write_struct(&png, &info);
+                fail(e.what());
+            }
+            png_destroy_write_struct(&png, &info);
+        }
+        if (std::fflush(out.f) != 0) fail("write failed");
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) fail("cannot rename " + tmp);
+}
+
+}  // namespace dsr

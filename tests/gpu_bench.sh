@@ -1,0 +1,91 @@
+#!/bin/bash
+# dsr on a real GPU (docs/gpu.md). Two steps, because the GPU machine has no network, no GL
+# headers and no OpenImageIO:
+#
+#   tests/gpu_bench.sh fetch [REV]   here: the Debian .debs the build needs into .gpu/debs and a
+#                                    clean copy of REV (default HEAD) into .gpu/src (.gpu/ is
+#                                    git-ignored; about 6 MB in all)
+#   tests/gpu_bench.sh run OUTDIR    there (carry .gpu): unpack the GL loaders into / and the
+#                                    headers into .gpu/root, build dsr with the EGL backend only
+#                                    and the libpng image backend, then run info, renders and the
+#                                    GPU bench, writing every result into OUTDIR
+#                                    (GPU_BENCH_SMOKE=1: build, info and one small render only;
+#                                    GPU_BENCH_SIZES, _FRAMES, _LIGHTS: the bench's sweep)
+#
+# The build links the system's libEGL/libOpenGL (glvnd, the NVIDIA driver behind them), never
+# libOSMesa; it is the same renderer objects as the headless build.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+step=${1:-}
+
+case "$step" in
+fetch)
+    rev=${2:-HEAD}
+    mkdir -p .gpu/debs
+    (cd .gpu/debs && apt-get download libgl-dev libegl-dev libglx-dev libpng-dev libglm-dev nlohmann-json3-dev \
+        libtinyobjloader-dev libtinyobjloader2rc10 zlib1g-dev libegl1 libglvnd0 libopengl0 libgl1 libglx0)
+    rm -rf .gpu/src && mkdir -p .gpu/src
+    git archive "$rev" | tar -x -C .gpu/src
+    git rev-parse "$rev" > .gpu/src/REVISION
+    du -sh .gpu
+    ;;
+run)
+    out=${2:?usage: tests/gpu_bench.sh run OUTDIR}
+    mkdir -p "$out"
+    log="$out/gpu_log.txt"
+    exec > >(tee "$log") 2>&1
+    # GL loaders (glvnd) into /, as the device notes say; headers and link-time files apart.
+    for f in .gpu/debs/libegl1_*.deb .gpu/debs/libglvnd0_*.deb .gpu/debs/libopengl0_*.deb \
+             .gpu/debs/libgl1_*.deb .gpu/debs/libglx0_*.deb; do dpkg -x "$f" /; done
+    ldconfig
+    sys=.gpu/root
+    rm -rf $sys && mkdir -p $sys
+    for f in .gpu/debs/*.deb; do dpkg -x "$f" $sys; done
+    src=.gpu/src
+    echo "gpu_bench: source $(cat $src/REVISION 2>/dev/null || echo 'working tree')"
+    nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader || true
+    lib=/usr/lib/x86_64-linux-gnu
+    # EGL vendor file of the NVIDIA driver where the loader does not find it by itself.
+    for j in /usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json /usr/share/glvnd/egl_vendor.d/10_nvidia.json; do
+        if [ -f "$j" ] && [ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}" ]; then export __EGL_VENDOR_LIBRARY_FILENAMES=$j; fi
+    done
+    build=$root/.gpu/build
+    mkdir -p $build/obj
+    flags="-std=c++17 -O2 -g -Wall -Wno-unused-parameter -I$root/$src/src -isystem $root/$sys/usr/include \
+           -DDSR_NO_OSMESA -DDSR_SOURCE_DIR=\"$root/$src\""
+    sources=$(cd $src && ls src/gl/*.cpp src/scene/*.cpp src/deferred/*.cpp src/forward/*.cpp src/analysis/*.cpp \
+              src/platform/*.cpp src/app/*.cpp | grep -v -e osmesa_context -e 'image_io\.cpp' -e glfw_)
+    t0=$(date +%s)
+    echo "$sources" | xargs -P "$(nproc)" -I{} sh -c \
+        'mkdir -p "$(dirname '"$build"'/obj/{})" && g++ '"$flags"' -c '"$root/$src"'/{} -o '"$build"'/obj/{}.o'
+    objs=$(echo "$sources" | sed "s|^|$build/obj/|; s|\$|.o|")
+    tol=$root/$sys/usr/lib/x86_64-linux-gnu
+    g++ -o $build/dsr $objs -L$tol -Wl,-rpath,$tol -ltinyobjloader $lib/libEGL.so.1 $lib/libOpenGL.so.0 \
+        -l:libpng16.so.16 -pthread
+    echo "gpu_bench: built in $(( $(date +%s) - t0 )) s: $(ls -la $build/dsr)"
+    dsr=$build/dsr
+    # The binary finds glsl120/ and data/ beside its parent folder or in DSR_SOURCE_DIR.
+    $dsr info --context egl | tee "$out/info.txt"
+    if [ -n "${GPU_BENCH_SMOKE:-}" ]; then  # a check of the build on a machine without a GPU
+        $dsr render --context egl --size 160x120 -o "$out/smoke.png"
+        exit 0
+    fi
+    for s in 1920x1080 3840x2160; do
+        $dsr render --context egl --size $s --no-bloom --no-aa --frames 60 --stats "$out/render_$s.json" \
+            -o "$out/default_$s.png"
+    done
+    $dsr render --context egl --size 1920x1080 --frames 60 --stats "$out/render_post_1920x1080.json" \
+        -o "$out/default_post_1920x1080.png"
+    $dsr render --context egl --size 512x512 --no-bloom --no-aa -o "$out/default_512.png"
+    for s in ${GPU_BENCH_SIZES:-1920x1080}; do
+        $dsr bench $src/data/default.scene --context egl --size $s --frames ${GPU_BENCH_FRAMES:-50} \
+            --lights ${GPU_BENCH_LIGHTS:-own,256,1024,4096} --json "$out/gpu_bench_$s.json" \
+            --report "$out/gpu_bench_$s.md" | tee "$out/gpu_bench_$s.txt"
+    done
+    ;;
+*)
+    sed -n '2,16p' "$0"
+    exit 2
+    ;;
+esac
