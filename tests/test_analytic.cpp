@@ -41,6 +41,39 @@ ImageDiff logged_masked(const std::string& name, const Image& a, const Image& b,
     return d;
 }
 
+// Where the comparison of a triangle renderer with the exact trace measures the renderer and
+// not the sphere's tessellation (issue 10: the trace now hits exact shapes, and the 48x24
+// sphere's facets lie up to 0.43% of r inside the sphere):
+// `untessellated`: interior pixels on meshes that are exactly their triangles (planes, boxes,
+// meshes without a shape); `same_surface`: pixels where the exact trace and the trace of the
+// renderer's triangles see the same mesh (only the sphere silhouettes' coverage differs), less
+// the spheres' own silhouette ring (sphere pixels not interior), where the ray meets the sphere
+// at grazing incidence and the facet's normal is off by gap / cos(incidence), unbounded.
+std::vector<uint8_t> untessellated(const Scene& s, const AnalyticTrace& tr, std::vector<uint8_t> mask) {
+    for (size_t p = 0; p < mask.size(); ++p) {
+        const int m = tr.mesh[p];
+        if (m >= 0 && s.meshes[size_t(m)].shape && s.meshes[size_t(m)].shape->kind == ShapeDesc::Kind::sphere)
+            mask[p] = 0;
+    }
+    return mask;
+}
+std::vector<uint8_t> only_spheres(const Scene& s, const AnalyticTrace& tr, std::vector<uint8_t> mask) {
+    const std::vector<uint8_t> flat = untessellated(s, tr, mask);
+    for (size_t p = 0; p < mask.size(); ++p) mask[p] = mask[p] && !flat[p];
+    return mask;
+}
+std::vector<uint8_t> same_surface(const Scene& s, const AnalyticTrace& exact) {
+    AnalyticOptions tri;
+    tri.triangles = true;
+    const AnalyticTrace t = analytic_trace(s, exact.image.width, exact.image.height, tri);
+    std::vector<uint8_t> mask(exact.mesh.size());
+    const std::vector<uint8_t> interior = interior_mask(exact, exact.image.width, exact.image.height);
+    const std::vector<uint8_t> flat = untessellated(s, exact, std::vector<uint8_t>(mask.size(), 1));
+    for (size_t p = 0; p < mask.size(); ++p)
+        mask[p] = exact.mesh[p] == t.mesh[p] && (flat[p] || interior[p]);
+    return mask;
+}
+
 // A plane seen from straight above, one light above its centre: at the centre pixel (odd size,
 // so its ray is the axis) l = v = h = n = +Y, and everything is computable by hand.
 Scene plane_from_above() {
@@ -94,11 +127,18 @@ TEST(Analytic, RejectsTextureMaps) {
     EXPECT_THROW(analytic_reference(default_scene(), 8, 8), Error);
 }
 
-// The forward renderer against the trace: the same triangles and pixel-centre sampling, so the
-// only differences are float against double arithmetic and the 8-bit output. Interior pixels
-// (3x3 neighbourhood on one mesh in the trace): within the output rounding (measured max 0.50
-// LSB, mean 0.16). All pixels: a pixel or so on a silhouette where GL's float edge test and the
-// exact one disagree (measured 1 of 16384 over 2 LSB), bounded at 0.1%.
+// The forward renderer against the trace. On planes (exactly their triangles) with the same
+// pixel-centre sampling, the only differences are float against double arithmetic and the 8-bit
+// output. Interior pixels (3x3 neighbourhood on one mesh in the trace) of the planes: within the
+// output rounding (measured max 0.50 LSB, mean 0.16). All pixels where the exact shapes and the
+// renderer's triangles show the same mesh: a pixel or so on a silhouette where GL's float edge
+// test and the exact one disagree, bounded at 0.1%.
+// Since the trace hits the exact spheres (issue 10) these assertions hold only where that
+// comparison is valid, so they are restricted to those pixels (`untessellated`, `same_surface`;
+// over every interior pixel the forward image is now max 1.46 LSB off, and over all pixels 19 of
+// 16384 are over 2 LSB, on the spheres' silhouettes). On
+// the spheres' interior pixels the forward error is bounded by the tessellation's own shading
+// difference (the exact trace against the trace of the triangles) plus the same 0.75 LSB.
 TEST(Analytic, ForwardMatchesTrace) {
     Scene s = analytic_scene();
     auto t0 = std::chrono::steady_clock::now();
@@ -108,15 +148,27 @@ TEST(Analytic, ForwardMatchesTrace) {
     std::printf("[ stats    ] trace %dx%d in %.1f ms; %.2f%% of pixels on silhouettes excluded\n", kSize, kSize, ms,
                 100 * excluded_fraction(mask));
     EXPECT_LE(excluded_fraction(mask), 0.06);
+    const auto flat = untessellated(s, tr, mask), spheres = only_spheres(s, tr, mask);
+    const auto same = same_surface(s, tr);
+    AnalyticOptions tri;
+    tri.triangles = true;
+    const ImageDiff tess = logged_masked("exact trace vs trace of the triangles, sphere interiors", tr.image,
+                                         analytic_trace(s, kSize, kSize, tri).image, spheres, kLsb);
     for (ForwardMode mode : {ForwardMode::single, ForwardMode::multi}) {
         const char* name = mode == ForwardMode::single ? "forward single" : "forward multi";
         auto fwd = render_forward(s, kSize, kSize, forward_mode(mode));
-        ImageDiff in = logged_masked(std::string(name) + " vs trace", fwd.image, tr.image, mask, kLsb);
-        ImageDiff all = compare_logged(std::string(name) + " vs trace, all pixels", fwd.image, tr.image, 2 * kLsb);
+        logged_masked(std::string(name) + " vs trace, every interior pixel", fwd.image, tr.image, mask, kLsb);
+        compare_logged(std::string(name) + " vs trace, all pixels", fwd.image, tr.image, 2 * kLsb);
+        ImageDiff in = logged_masked(std::string(name) + " vs trace, planes' interior", fwd.image, tr.image, flat, kLsb);
+        ImageDiff sph = logged_masked(std::string(name) + " vs trace, spheres' interior", fwd.image, tr.image, spheres,
+                                      kLsb);
+        ImageDiff all = logged_masked(std::string(name) + " vs trace, pixels where shapes and triangles agree",
+                                      fwd.image, tr.image, same, 2 * kLsb);
         if (in.max_lsb() > 0.75) write_failure_images("forward_vs_trace", fwd.image, tr.image);
         EXPECT_LE(in.max_lsb(), 0.75);
         EXPECT_LE(in.mean_lsb(), 0.3);
         EXPECT_LE(all.failing_fraction(), 0.001);
+        EXPECT_LE(sph.max_lsb(), tess.max_lsb() + 0.75);
     }
 }
 
@@ -137,7 +189,13 @@ TEST(Analytic, DeferredDepthTextureWithinTwoLsb) {
     ImageDiff q = logged_masked("deferred (depth texture) vs rounded trace", def.image, rounded(tr.image), mask,
                                 2 * kLsb);
     ImageDiff f = logged_masked("deferred (depth texture) vs trace", def.image, tr.image, mask, 2 * kLsb);
-    ImageDiff all = compare_logged("deferred (depth texture) vs trace, all pixels", def.image, tr.image, 2 * kLsb);
+    compare_logged("deferred (depth texture) vs trace, all pixels", def.image, tr.image, 2 * kLsb);
+    // Restricted (issue 10) to the pixels where the exact shapes and the renderer's triangles
+    // show the same mesh, less the spheres' silhouette ring (same_surface): over all pixels 28 of
+    // 16384 are now over 2 LSB, on the spheres' silhouettes, where the exact sphere covers pixels
+    // its facets do not or meets the ray at grazing incidence.
+    ImageDiff all = logged_masked("deferred (depth texture) vs trace, pixels where shapes and triangles agree",
+                                  def.image, tr.image, same_surface(s, tr), 2 * kLsb);
     if (q.max_lsb() > 2) write_failure_images("deferred_vs_trace", def.image, tr.image);
     EXPECT_LE(q.max_lsb(), 2.0);
     EXPECT_LE(f.failing_fraction(), 0.001);
@@ -188,4 +246,236 @@ TEST(Analytic, DeferredErrorIsGBufferAndPassQuantisation) {
     EXPECT_LE(vs_model.failing_fraction(), 0.003);
     EXPECT_LE(vs_model.max_lsb(), 4.0);
     EXPECT_LT(vs_model.mean_lsb(), 0.5 * vs_ref.mean_lsb());
+}
+
+// ---- References that do not share the renderer's code (issue 10) ----
+
+namespace {
+// A plane that fills the view, seen obliquely (about 35 degrees from its normal at the centre
+// of the view), lit by two lights: every pixel is interior, and the material's maps are
+// magnified everywhere (AnalyticTrace::max_texel_footprint < 1), so GL_LINEAR at level 0 is
+// what the renderer samples.
+Scene mapped_plane(glm::vec3 diffuse, glm::vec3 specular, float shininess) {
+    Scene s;
+    s.camera.pos = {0, 2.0f, 1.6f};
+    s.camera.target = {0, 0, -0.6f};
+    s.camera.up = {0, 1, 0};
+    s.camera.fov_deg = 50;
+    s.camera.near_plane = 0.5f;
+    s.camera.far_plane = 20;
+    s.ambient = glm::vec3(0.1f);
+    s.background = {0.25f, 0.5f, 0.75f};
+    Material m;
+    m.name = "mapped";
+    m.diffuse = diffuse;
+    m.specular = specular;
+    m.shininess = shininess;
+    s.materials.push_back(m);
+    s.meshes.push_back(make_plane(8, {0, 0, 0}, 0));
+    s.lights.push_back({{-0.8f, 1.2f, 0.2f}, {1, 0.9f, 0.8f}, 4.0f});
+    s.lights.push_back({{1.0f, 0.6f, -1.2f}, {0.4f, 0.6f, 1}, 2.5f});
+    return s;
+}
+
+// A diffuse map with strong texel-to-texel contrast (so bilinear weights matter), on 8-bit
+// codes: a closed-form pattern of two sinusoids and a hashed checker.
+Image contrast_map(int w, int h) {
+    Image img;
+    img.width = w;
+    img.height = h;
+    img.rgba.assign(size_t(w) * h * 4, 1.0f);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const double u = (i + 0.5) / w, v = (j + 0.5) / h;
+            const unsigned hsh = (unsigned(i) * 73856093u) ^ (unsigned(j) * 19349663u);
+            const double chk = ((i + j) & 1) ? 0.35 : -0.35;
+            float* p = img.at(i, j);
+            p[0] = float(std::round(255 * std::clamp(0.55 + chk + 0.08 * std::sin(6.283 * 3 * u), 0.0, 1.0)) / 255);
+            p[1] = float(std::round(255 * std::clamp(0.5 + 0.4 * std::sin(6.283 * (2 * u + 5 * v)), 0.0, 1.0)) / 255);
+            p[2] = float(((hsh >> 7) % 200 + 40) / 255.0);
+        }
+    return img;
+}
+
+struct MappedResult {
+    ImageDiff rounded, exact;
+    double footprint = 0;
+};
+
+// The depth-texture path against the trace on interior pixels (here: the whole plane).
+MappedResult measure_mapped(const std::string& name, const Scene& s, const AnalyticOptions& opts) {
+    AnalyticTrace tr = analytic_trace(s, kSize, kSize, opts);
+    const auto mask = interior_mask(tr, kSize, kSize);
+    ShaderOptions tex;
+    tex.depth = DepthPath::texture;
+    auto def = render_scene(s, kSize, kSize, tex);
+    MappedResult r;
+    r.footprint = tr.max_texel_footprint;
+    std::printf("[ stats    ] %s: largest pixel footprint %.3f texels (< 1: magnified), %.1f%% interior\n",
+                name.c_str(), r.footprint, 100 * (1 - excluded_fraction(mask)));
+    r.rounded = logged_masked(name + ", deferred (depth texture) vs rounded trace", def.image, rounded(tr.image), mask,
+                              2 * kLsb);
+    r.exact = logged_masked(name + ", deferred (depth texture) vs trace", def.image, tr.image, mask, 2 * kLsb);
+    if (r.rounded.max_lsb() > 2) write_failure_images(name, def.image, tr.image);
+    return r;
+}
+}  // namespace
+
+// The exact shapes against the renderer's triangles. Planes and boxes are exactly their
+// triangles, so the exact and the triangle traces agree there to float rounding of the
+// vertices; the 48x24 sphere's facets lie inside it by at most sphere_tessellation_gap()
+// (closed form for the equatorial facets: the right triangle's hypotenuse midpoint, half of
+// a 10.6-degree arc: 1 - cos(5.3 deg) = 0.43% of r), and the facet's interpolated normal is
+// the radial direction of the facet point, off the exact normal by about gap / cos(incidence).
+TEST(Analytic, ExactShapesAndTheSphereTessellationBound) {
+    const double gap = sphere_tessellation_gap(48, 24);
+    const double pi = 3.14159265358979323846;
+    const double edge = 1 - std::cos(pi / 48);  // the midpoint of one 7.5-degree edge
+    const double diag = 1 - std::cos(0.5 * std::acos(std::cos(2 * pi / 48) * std::cos(pi / 24)));
+    std::printf("[ bound    ] sphere 48x24: facets at most %.5f r inside the sphere (edge midpoint %.5f, quad "
+                "diagonal midpoint %.5f); normal error <= %.3f deg head-on, %.3f deg at 60 deg incidence\n",
+                gap, edge, diag, gap / (1 - gap) * 180 / pi, gap / ((1 - gap) * 0.5) * 180 / pi);
+    EXPECT_GE(gap, edge);
+    EXPECT_LE(gap, diag * 1.0001);
+    EXPECT_LT(gap, 0.005);
+
+    Scene s = analytic_scene();
+    AnalyticTrace exact = analytic_trace(s, kSize, kSize);
+    AnalyticOptions tri;
+    tri.triangles = true;
+    AnalyticTrace tris = analytic_trace(s, kSize, kSize, tri);
+    const auto mask = interior_mask(exact, kSize, kSize);
+    // Per mesh: how far the exact trace is from the triangle trace (interior pixels), in depth
+    // (relative to the sphere's radius) and in shading.
+    for (size_t m = 0; m < s.meshes.size(); ++m) {
+        std::vector<uint8_t> on(mask.size(), 0);
+        double dz = 0;
+        for (size_t p = 0; p < mask.size(); ++p) {
+            on[p] = mask[p] && exact.mesh[p] == int(m) && tris.mesh[p] == int(m);
+            if (on[p]) dz = std::max(dz, std::fabs(exact.eye_depth[p] - tris.eye_depth[p]));
+        }
+        const bool sphere = s.meshes[m].shape->kind == ShapeDesc::Kind::sphere;
+        ImageDiff d = logged_masked("mesh " + std::to_string(m) + (sphere ? " (sphere)" : " (plane)") +
+                                        ", exact vs triangle trace",
+                                    exact.image, tris.image, on, 2 * kLsb);
+        std::printf("[ bound    ] mesh %zu: max depth difference %.5f (radius %.2f)\n", m, dz,
+                    sphere ? s.meshes[m].shape->radius : 0.0f);
+        if (!sphere) {
+            EXPECT_LE(d.max_lsb(), 0.01);
+            EXPECT_LE(dz, 1e-5);
+        } else {
+            // Facets are inside the sphere: the exact hit is nearer, by at most gap / cos(incidence).
+            EXPECT_GT(d.max_lsb(), 0.0);
+            EXPECT_GT(dz, 0.0);
+        }
+    }
+    // The exact sphere is hit where the triangles are not (the facets lie inside it), never the
+    // other way round.
+    long long only_exact = 0, only_tris = 0;
+    for (size_t p = 0; p < mask.size(); ++p) {
+        if (exact.mesh[p] == 1 && tris.mesh[p] != 1) ++only_exact;
+        if (tris.mesh[p] == 1 && exact.mesh[p] != 1) ++only_tris;
+    }
+    std::printf("[ bound    ] sphere 1: %lld pixels hit only by the exact sphere, %lld only by its triangles\n",
+                only_exact, only_tris);
+    EXPECT_EQ(only_tris, 0);
+}
+
+// Exact shapes by hand: a ray straight down the axis of a sphere meets it at distance - r.
+TEST(Analytic, ExactSphereByHand) {
+    Scene s = plane_from_above();
+    s.meshes.clear();
+    s.meshes.push_back(make_sphere(1.0f, {0, 0, 0}, 0));
+    const int n = 65;
+    AnalyticTrace t = analytic_trace(s, n, n);
+    EXPECT_NEAR(t.eye_depth[32 * n + 32], 4.0, 1e-12);
+    AnalyticOptions tri;
+    tri.triangles = true;
+    // The pole of the tessellated sphere is a vertex: the same depth there.
+    EXPECT_NEAR(analytic_trace(s, n, n, tri).eye_depth[32 * n + 32], 4.0, 1e-6);
+    // A box seen from above: its top face at y = 0.5.
+    s.meshes.clear();
+    s.meshes.push_back(make_box({1, 1, 1}, {0, 0, 0}, 0));
+    EXPECT_NEAR(analytic_trace(s, n, n).eye_depth[32 * n + 32], 4.5, 1e-12);
+    // From inside the box nothing is seen (back faces culled).
+    s.camera.pos = {0, 0.2f, 0};
+    EXPECT_EQ(analytic_trace(s, n, n).mesh[32 * n + 32], -1);
+}
+
+TEST(Analytic, RefusesMapsWithoutAClosedForm) {
+    Scene s = mapped_plane(glm::vec3(0.8f), glm::vec3(0), 1);
+    s.textures.push_back(contrast_map(8, 8));
+    s.materials[0].diffuse_map = 0;
+    EXPECT_THROW(analytic_trace(s, 8, 8), Error);  // diffuse maps need bilinear_diffuse_maps
+    AnalyticOptions o;
+    o.bilinear_diffuse_maps = true;
+    EXPECT_NO_THROW(analytic_trace(s, 8, 8, o));
+    s.materials[0].normal_map = 0;
+    EXPECT_THROW(analytic_trace(s, 8, 8, o), Error);  // a normal map with no formula
+    o.bump_maps[0] = BumpMap{};
+    EXPECT_NO_THROW(analytic_trace(s, 8, 8, o));
+    s.materials[0].specular_map = 0;
+    EXPECT_THROW(analytic_trace(s, 8, 8, o), Error);  // specular maps: none
+    s.materials[0].specular_map = -1;
+    s.meshes.push_back(make_sphere(0.5f, {0, 0.5f, 0}, 0));
+    EXPECT_THROW(analytic_trace(s, 8, 8, o), Error);  // a map on a sphere: no uv here
+}
+
+// (ii) A textured plane seen without minification: the reference samples the map bilinearly
+// on the CPU as GL_LINEAR at level 0 does. Goals (issue 10): <= 2 LSB diffuse only, <= 4 LSB
+// with specular, against the correctly rounded trace on interior pixels.
+TEST(Analytic, DeferredTexturedPlaneMatchesBilinearReference) {
+    AnalyticOptions o;
+    o.bilinear_diffuse_maps = true;
+    Scene diffuse = mapped_plane(glm::vec3(1.0f), glm::vec3(0), 1);
+    diffuse.textures.push_back(contrast_map(32, 32));
+    diffuse.materials[0].diffuse_map = 0;
+    MappedResult d = measure_mapped("textured plane, diffuse only", diffuse, o);
+    EXPECT_GT(d.footprint, 0.1);
+    EXPECT_LT(d.footprint, 1.0);
+    EXPECT_LE(d.rounded.max_lsb(), 2.0 + 1e-3);  // whole codes; 1e-3 absorbs float's k/255
+
+    Scene spec = diffuse;
+    spec.materials[0].specular = glm::vec3(0.5f);
+    spec.materials[0].shininess = 32;
+    MappedResult sp = measure_mapped("textured plane, with specular", spec, o);
+    EXPECT_LE(sp.rounded.max_lsb(), 4.0 + 1e-3);
+
+    // The check can fail: the reference with the map's rows flipped (t -> 1 - t) is far off.
+    Scene flipped = diffuse;
+    const Image& map = diffuse.textures[0];
+    for (int j = 0; j < map.height; ++j)
+        for (int i = 0; i < map.width; ++i)
+            for (int k = 0; k < 4; ++k) flipped.textures[0].at(i, j)[k] = map.at(i, map.height - 1 - j)[k];
+    AnalyticTrace tr_flip = analytic_trace(flipped, kSize, kSize, o);
+    ShaderOptions tex;
+    tex.depth = DepthPath::texture;
+    auto def = render_scene(diffuse, kSize, kSize, tex);
+    ImageDiff bad = compare_images_masked(def.image, tr_flip.image, interior_mask(tr_flip, kSize, kSize), 2 * kLsb);
+    std::printf("[ image    ] against a reference with the map flipped: max %.1f LSB\n", bad.max_lsb());
+    EXPECT_GT(bad.max_lsb(), 20.0);
+}
+
+// (i) A normal-mapped plane whose map is made from a closed form (sinusoidal bumps,
+// make_bump_normal_map); the reference shades with the formula's exact normal at the hit's uv,
+// not the texture. Goal (issue 10): <= 3 LSB against the correctly rounded trace, interior.
+TEST(Analytic, DeferredNormalMappedPlaneMatchesClosedForm) {
+    const BumpMap bumps{0.04, 2};
+    Scene s = mapped_plane(glm::vec3(0.8f), glm::vec3(0.3f), 16);
+    s.textures.push_back(make_bump_normal_map(bumps, 64, 64));
+    s.materials[0].normal_map = 0;
+    AnalyticOptions o;
+    o.bump_maps[0] = bumps;
+    MappedResult r = measure_mapped("normal-mapped plane", s, o);
+    EXPECT_LE(r.rounded.max_lsb(), 3.0 + 1e-3);
+    // The bumps are visible: against the flat plane's trace the render is far off.
+    Scene flat = s;
+    flat.materials[0].normal_map = -1;
+    AnalyticTrace tf = analytic_trace(flat, kSize, kSize);
+    ShaderOptions tex;
+    tex.depth = DepthPath::texture;
+    auto def = render_scene(s, kSize, kSize, tex);
+    ImageDiff bad = compare_images_masked(def.image, tf.image, interior_mask(tf, kSize, kSize), 2 * kLsb);
+    std::printf("[ image    ] normal-mapped plane against the flat plane's trace: max %.1f LSB\n", bad.max_lsb());
+    EXPECT_GT(bad.max_lsb(), 20.0);
 }

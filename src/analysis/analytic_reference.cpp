@@ -1,11 +1,11 @@
-// Analytic reference: double-precision ray tracing of the scene's triangles, Equations 1-6.
+// Analytic reference: double-precision ray tracing of the scene's exact shapes (or its
+// triangles, for meshes that have no shape), Equations 1-6, closed-form texture maps.
 #include "analysis/analytic_reference.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <glm/glm.hpp>
+#include <string>
 
 #include "deferred/gpu_scene.h"
 #include "dsr_error.h"
@@ -15,6 +15,7 @@ namespace dsr {
 namespace {
 
 using dvec3 = glm::dvec3;
+constexpr double kPi = 3.14159265358979323846;
 
 struct Tri {
     dvec3 p0, e1, e2;  // p1 = p0 + e1, p2 = p0 + e2
@@ -46,15 +47,30 @@ struct Box {
 constexpr size_t kChunk = 32;
 
 struct TracedMesh {
+    bool exact = false;  // trace `shape`, not the triangles
+    ShapeDesc::Kind kind = ShapeDesc::Kind::plane;
+    dvec3 centre{0}, half{0};  // plane: half side in x and z; box: half edges
+    double radius = 0;
     std::vector<Tri> tris;
     std::vector<Box> chunks;
     Box box;
 };
 
-std::vector<TracedMesh> prepare(const Scene& scene) {
+std::vector<TracedMesh> prepare(const Scene& scene, bool triangles) {
     std::vector<TracedMesh> out;
     for (const Mesh& m : scene.meshes) {
         TracedMesh t;
+        if (m.shape) {  // kept with `triangles` too: a textured plane's uv comes from it
+            t.kind = m.shape->kind;
+            t.centre = dvec3(m.shape->centre);
+            t.half = dvec3(m.shape->size) * 0.5;
+            t.radius = m.shape->radius;
+            if (!triangles) {
+                t.exact = true;
+                out.push_back(std::move(t));
+                continue;
+            }
+        }
         for (size_t i = 0; i + 2 < m.indices.size(); i += 3) {
             const Vertex& a = m.vertices.at(m.indices[i]);
             const Vertex& b = m.vertices.at(m.indices[i + 1]);
@@ -81,8 +97,9 @@ std::vector<TracedMesh> prepare(const Scene& scene) {
 struct Hit {
     double t = std::numeric_limits<double>::infinity();
     int mesh = -1;
-    const Tri* tri = nullptr;
+    const Tri* tri = nullptr;  // triangle hits: the triangle and barycentrics
     double u = 0, v = 0;
+    dvec3 normal{0};           // exact-shape hits: the shape's unit normal
 };
 
 // Möller-Trumbore with back faces culled: det > 0 exactly when the ray meets the triangle's
@@ -106,22 +123,169 @@ void intersect(const Tri& tr, const dvec3& o, const dvec3& d, double t_min, int 
     best.v = v / det;
 }
 
+void take(Hit& best, double t, int mesh, const dvec3& n) {
+    best.t = t;
+    best.mesh = mesh;
+    best.tri = nullptr;
+    best.normal = n;
+}
+
+// The exact shapes. Each is convex and outward-facing, so the only front-facing hit is where the
+// ray enters it; if that is nearer than the near plane it is clipped and the exit (a back face)
+// is culled, as GL draws it: nothing. An eye inside sees nothing of the shape either.
+void intersect_exact(const TracedMesh& s, const dvec3& o, const dvec3& d, double t_min, int mesh, Hit& best) {
+    switch (s.kind) {
+    case ShapeDesc::Kind::plane: {
+        // y = centre.y, |x - cx| <= half.x, |z - cz| <= half.z; the front side is +Y.
+        if (!(d.y < 0) || !(o.y > s.centre.y)) return;
+        const double t = (s.centre.y - o.y) / d.y;
+        if (t < t_min || t >= best.t) return;
+        const dvec3 p = o + t * d;
+        if (std::fabs(p.x - s.centre.x) > s.half.x || std::fabs(p.z - s.centre.z) > s.half.z) return;
+        take(best, t, mesh, dvec3(0, 1, 0));
+        return;
+    }
+    case ShapeDesc::Kind::box: {
+        double t_in = -std::numeric_limits<double>::infinity(), t_out = std::numeric_limits<double>::infinity();
+        int axis = -1;
+        for (int a = 0; a < 3; ++a) {
+            const double lo = s.centre[a] - s.half[a], hi = s.centre[a] + s.half[a];
+            if (d[a] == 0) {
+                if (o[a] < lo || o[a] > hi) return;
+                continue;
+            }
+            double ta = (lo - o[a]) / d[a], tb = (hi - o[a]) / d[a];
+            if (ta > tb) std::swap(ta, tb);
+            if (ta > t_in) t_in = ta, axis = a;
+            t_out = std::min(t_out, tb);
+        }
+        if (axis < 0 || t_in > t_out || t_in <= 0 || t_in < t_min || t_in >= best.t) return;
+        dvec3 n(0);
+        n[axis] = d[axis] > 0 ? -1 : 1;
+        take(best, t_in, mesh, n);
+        return;
+    }
+    case ShapeDesc::Kind::sphere: {
+        const dvec3 oc = o - s.centre;
+        const double a = glm::dot(d, d), b = glm::dot(oc, d), c = glm::dot(oc, oc) - s.radius * s.radius;
+        if (!(c > 0)) return;  // the eye is inside (or on) the sphere
+        const double disc = b * b - a * c;
+        if (disc < 0 || b >= 0) return;  // missed, or the sphere is behind the eye
+        // The nearer root without cancellation: t0 = c / (-b + sqrt(disc)).
+        const double t = c / (-b + std::sqrt(disc));
+        if (t < t_min || t >= best.t) return;
+        take(best, t, mesh, glm::normalize(o + t * d - s.centre));
+        return;
+    }
+    }
+}
+
 double unorm8(double c) { return std::round(std::clamp(c, 0.0, 1.0) * 255.0) / 255.0; }
 dvec3 unorm8(const dvec3& c) { return dvec3(unorm8(c.x), unorm8(c.y), unorm8(c.z)); }
 
+// GL_LINEAR at level 0 with GL_REPEAT on an RGBA8 texture (GL 2.1 §3.8.8): the texel grid is
+// offset by half a texel, the four texels around (u W - 1/2, v H - 1/2) mixed by their
+// fractions; texels are the image rounded to 8 bits, as glTexImage2D into GL_RGBA8 stores them.
+dvec3 bilinear(const Image& img, double u, double v) {
+    const double x = u * img.width - 0.5, y = v * img.height - 0.5;
+    const double fx = std::floor(x), fy = std::floor(y);
+    const double a = x - fx, b = y - fy;
+    auto wrap = [](long long i, int n) { return int(((i % n) + n) % n); };
+    const int i0 = wrap((long long)fx, img.width), i1 = wrap((long long)fx + 1, img.width);
+    const int j0 = wrap((long long)fy, img.height), j1 = wrap((long long)fy + 1, img.height);
+    auto texel = [&](int i, int j) {
+        const float* p = img.at(i, j);
+        return unorm8(dvec3(p[0], p[1], p[2]));
+    };
+    return (1 - a) * (1 - b) * texel(i0, j0) + a * (1 - b) * texel(i1, j0) + (1 - a) * b * texel(i0, j1) +
+           a * b * texel(i1, j1);
+}
+
+// uv of a point on a make_plane square (u along +X, v along -Z, 0..1 over the square).
+glm::dvec2 plane_uv(const TracedMesh& s, const dvec3& p) {
+    return {(p.x - (s.centre.x - s.half.x)) / (2 * s.half.x), ((s.centre.z + s.half.z) - p.z) / (2 * s.half.z)};
+}
+
+// Closest point of triangle abc to the origin (Ericson, Real-Time Collision Detection §5.1.5).
+dvec3 closest_to_origin(const dvec3& a, const dvec3& b, const dvec3& c) {
+    const dvec3 p(0), ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return a;
+    const dvec3 bp = p - b;
+    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return b;
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
+    const dvec3 cp = p - c;
+    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return c;
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+    const double denom = 1 / (va + vb + vc);
+    return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
 }  // namespace
+
+glm::dvec3 bump_normal(const BumpMap& b, double u, double v) {
+    const double w = 2 * kPi * b.periods;
+    const double dhdu = b.amplitude * w * std::cos(w * u) * std::sin(w * v);
+    const double dhdv = b.amplitude * w * std::sin(w * u) * std::cos(w * v);
+    return glm::normalize(dvec3(-dhdu, -dhdv, 1));
+}
+
+Image make_bump_normal_map(const BumpMap& b, int w, int h) {
+    if (w <= 0 || h <= 0) throw Error("make_bump_normal_map: bad size");
+    Image img;
+    img.width = w;
+    img.height = h;
+    img.rgba.assign(size_t(w) * h * 4, 1.0f);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const dvec3 c = unorm8(bump_normal(b, (i + 0.5) / w, (j + 0.5) / h) * 0.5 + 0.5);
+            float* p = img.at(i, j);
+            for (int k = 0; k < 3; ++k) p[k] = float(c[k]);
+        }
+    return img;
+}
+
+double sphere_tessellation_gap(int slices, int stacks) {
+    const Mesh m = make_sphere(1.0f, glm::vec3(0), 0, slices, stacks);
+    double least = 1;
+    for (size_t i = 0; i + 2 < m.indices.size(); i += 3) {
+        const dvec3 p = closest_to_origin(dvec3(m.vertices[m.indices[i]].pos), dvec3(m.vertices[m.indices[i + 1]].pos),
+                                          dvec3(m.vertices[m.indices[i + 2]].pos));
+        least = std::min(least, glm::length(p));
+    }
+    return 1 - least;
+}
 
 AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const AnalyticOptions& opts) {
     if (width <= 0 || height <= 0) throw Error("analytic reference: bad size");
-    for (const Material& m : scene.materials)
-        if (m.diffuse_map >= 0 || m.normal_map >= 0 || m.specular_map >= 0)
-            throw Error("analytic reference: material '" + m.name +
-                        "' has a texture map; only constant materials have an analytic reference");
     for (const Mesh& m : scene.meshes)
         if (m.material < 0 || size_t(m.material) >= scene.materials.size())
             throw Error("analytic reference: a mesh has no material");
+    // Texture maps: only those with a closed form here, only on planes.
+    for (size_t mi = 0; mi < scene.materials.size(); ++mi) {
+        const Material& m = scene.materials[mi];
+        const std::string what = "analytic reference: material '" + m.name + "' ";
+        if (m.specular_map >= 0) throw Error(what + "has a specular map; the reference has none");
+        if (m.diffuse_map >= 0 && !opts.bilinear_diffuse_maps)
+            throw Error(what + "has a diffuse map; only constant materials have an analytic reference "
+                               "(AnalyticOptions::bilinear_diffuse_maps allows a magnified map on a plane)");
+        if (m.normal_map >= 0 && !opts.bump_maps.count(m.normal_map))
+            throw Error(what + "has a normal map with no closed form (AnalyticOptions::bump_maps)");
+        for (int map : {m.diffuse_map, m.normal_map})
+            if (map >= 0 && size_t(map) >= scene.textures.size()) throw Error(what + "names a missing texture");
+        if (m.diffuse_map < 0 && m.normal_map < 0) continue;
+        for (const Mesh& mesh : scene.meshes)
+            if (mesh.material == int(mi) && !(mesh.shape && mesh.shape->kind == ShapeDesc::Kind::plane))
+                throw Error(what + "has a texture map on a mesh that is not a plane; the reference maps uv on planes only");
+    }
 
-    const std::vector<TracedMesh> meshes = prepare(scene);
+    const std::vector<TracedMesh> meshes = prepare(scene, opts.triangles);
 
     // The camera of Camera::view() / projection() in double: glm::lookAt's frame, and
     // glm::perspective's vertical field of view with aspect = width / height.
@@ -130,9 +294,15 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
     const dvec3 f = glm::normalize(dvec3(cam.target) - eye);
     const dvec3 s = glm::normalize(glm::cross(f, dvec3(cam.up)));
     const dvec3 up = glm::cross(s, f);
-    const double tan_half = std::tan(double(cam.fov_deg) * 3.14159265358979323846 / 360.0);
+    const double tan_half = std::tan(double(cam.fov_deg) * kPi / 360.0);
     const double aspect = double(width) / double(height);
     const double near_plane = cam.near_plane, far_plane = cam.far_plane;
+    // The ray through pixel (x, y) in pixel units (centre of pixel i at x = i + 0.5), with a
+    // forward component of 1 so that t is the eye-space depth -z, the quantity the near and far
+    // planes clip.
+    auto ray = [&](double x, double y) {
+        return f + ((x / width * 2 - 1) * tan_half * aspect) * s + ((y / height * 2 - 1) * tan_half) * up;
+    };
 
     AnalyticTrace out;
     out.image.width = width;
@@ -143,15 +313,15 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
 
     for (int j = 0; j < height; ++j) {
         for (int i = 0; i < width; ++i) {
-            // The ray through the pixel centre, with a forward component of 1 so that t is the
-            // eye-space depth -z, the quantity the near and far planes clip.
-            const double x = ((i + 0.5) / width * 2 - 1) * tan_half * aspect;
-            const double y = ((j + 0.5) / height * 2 - 1) * tan_half;
-            const dvec3 d = f + x * s + y * up;
+            const dvec3 d = ray(i + 0.5, j + 0.5);
             const dvec3 inv_d = 1.0 / d;
             Hit hit;
             for (size_t m = 0; m < meshes.size(); ++m) {
                 const TracedMesh& tm = meshes[m];
+                if (tm.exact) {
+                    intersect_exact(tm, eye, d, near_plane, int(m), hit);
+                    continue;
+                }
                 if (!tm.box.hit(eye, inv_d, std::min(hit.t, far_plane))) continue;
                 for (size_t c = 0; c < tm.chunks.size(); ++c) {
                     if (!tm.chunks[c].hit(eye, inv_d, std::min(hit.t, far_plane))) continue;
@@ -169,13 +339,46 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
             out.mesh[size_t(j) * width + i] = hit.mesh;
             out.eye_depth[size_t(j) * width + i] = hit.t;  // the ray's forward component is 1
 
-            const Tri& tr = *hit.tri;
+            const TracedMesh& tm = meshes[hit.mesh];
             const Material& mat = scene.materials[scene.meshes[hit.mesh].material];
             const dvec3 p = eye + hit.t * d;
-            // Phong shading (§2.3): the vertex normals mixed with the hit's barycentric weights,
-            // which is what perspective-correct interpolation gives at the pixel centre.
-            dvec3 n = glm::normalize((1 - hit.u - hit.v) * tr.n0 + hit.u * tr.n1 + hit.v * tr.n2);
+            dvec3 n;
+            if (hit.tri) {
+                // Phong shading (§2.3): the vertex normals mixed with the hit's barycentric
+                // weights, which is what perspective-correct interpolation gives at the pixel centre.
+                const Tri& tr = *hit.tri;
+                n = glm::normalize((1 - hit.u - hit.v) * tr.n0 + hit.u * tr.n1 + hit.v * tr.n2);
+            } else {
+                n = hit.normal;
+            }
             dvec3 Mdiff(mat.diffuse), Mspec(mat.specular);
+            if (mat.diffuse_map >= 0 || mat.normal_map >= 0) {
+                // A plane (checked above): uv from the hit, scaled by the material's tile.
+                const glm::dvec2 uv = plane_uv(tm, p) * double(mat.tile);
+                // The pixel's footprint in texels of each map (GL's rho): uv at the next pixel
+                // centres, on the same plane.
+                for (int map_index : {mat.diffuse_map, mat.normal_map}) {
+                    if (map_index < 0) continue;
+                    const Image& map = scene.textures[size_t(map_index)];
+                    double rho = 0;
+                    for (const dvec3& dn : {ray(i + 1.5, j + 0.5), ray(i + 0.5, j + 1.5)}) {
+                        if (!(dn.y < 0)) {
+                            rho = std::numeric_limits<double>::infinity();
+                            break;
+                        }
+                        const glm::dvec2 un = plane_uv(tm, eye + ((tm.centre.y - eye.y) / dn.y) * dn) * double(mat.tile);
+                        rho = std::max(rho, glm::length((un - uv) * glm::dvec2(map.width, map.height)));
+                    }
+                    out.max_texel_footprint = std::max(out.max_texel_footprint, rho);
+                }
+                if (mat.diffuse_map >= 0) Mdiff *= bilinear(scene.textures[size_t(mat.diffuse_map)], uv.x, uv.y);
+                if (mat.normal_map >= 0) {
+                    // The formula's normal in the plane's tangent frame (make_plane: tangent +X,
+                    // binormal -Z, normal +Y), as the material pass mixes it (Listing 13).
+                    const dvec3 nt = bump_normal(opts.bump_maps.at(mat.normal_map), uv.x, uv.y);
+                    n = glm::normalize(nt.x * dvec3(1, 0, 0) + nt.y * dvec3(0, 0, -1) + nt.z * dvec3(0, 1, 0));
+                }
+            }
             double Mshi = mat.shininess;
             if (opts.gbuffer_normals_8bit) n = glm::normalize(unorm8(n * 0.5 + 0.5) - 0.5);
             if (opts.gbuffer_materials_8bit) {

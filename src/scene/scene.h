@@ -2,6 +2,7 @@
 // Units are free, right-handed, the camera looks down -Z in eye space.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,11 +44,25 @@ struct Vertex {
     glm::vec3 tangent{1, 0, 0}, binormal{0, 1, 0};
 };
 
-// World-space triangles with one material.
+// The exact shape a mesh was tessellated from (make_plane/make_box/make_sphere set it), so the
+// analytic reference can trace the shape itself rather than the renderer's triangles.
+//   plane:  the XZ square of side size.x centred on centre, normal +Y (size = (s, 0, s))
+//   box:    axis-aligned, edge lengths size, centred on centre
+//   sphere: radius `radius` about centre (size = (2r, 2r, 2r))
+struct ShapeDesc {
+    enum class Kind { plane, box, sphere };
+    Kind kind = Kind::plane;
+    glm::vec3 centre{0}, size{0};
+    float radius = 0;
+};
+
+// World-space triangles with one material; `shape` is absent for meshes that are only
+// triangles (hand-made, OBJ).
 struct Mesh {
     std::vector<Vertex> vertices;
     std::vector<uint32_t> indices;
     int material = 0;
+    std::optional<ShapeDesc> shape;
 };
 
 struct Scene {

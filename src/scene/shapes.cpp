@@ -37,6 +37,7 @@ Mesh make_plane(float size, glm::vec3 at, int material) {
     m.material = material;
     // u along +X, v along -Z: cross(+X, -Z) = +Y.
     add_quad(m, at, {0, 1, 0}, {1, 0, 0}, {0, 0, -1}, size / 2, size / 2);
+    m.shape = ShapeDesc{ShapeDesc::Kind::plane, at, {size, 0, size}, 0};
     return m;
 }
 
@@ -56,6 +57,7 @@ Mesh make_box(glm::vec3 size, glm::vec3 at, int material) {
         {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}, h.z, h.x, h.y},  // -Z
     };
     for (const Face& f : faces) add_quad(m, at + f.half_n * f.n, f.n, f.t, f.b, f.half_t, f.half_b);
+    m.shape = ShapeDesc{ShapeDesc::Kind::box, at, size, 0};
     return m;
 }
 
@@ -98,6 +100,7 @@ Mesh make_sphere(float radius, glm::vec3 at, int material, int slices, int stack
             if (j != stacks - 1) for (uint32_t k : {a, c, d}) m.indices.push_back(k);
         }
     }
+    m.shape = ShapeDesc{ShapeDesc::Kind::sphere, at, glm::vec3(2 * radius), radius};
     return m;
 }
 
