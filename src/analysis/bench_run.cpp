@@ -8,10 +8,12 @@
 #include <cstdarg>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <memory>
 
 #include "dsr_clock.h"
 #include "analysis/analytic_reference.h"
+#include "analysis/bench_floor.h"
 #include "analysis/bench_scenes.h"
 #include "analysis/ideal_fragments.h"
 #include "deferred/deferred_shader.h"
@@ -88,15 +90,28 @@ std::unique_ptr<RowRun> deferred(const Config& cfg, const Caps& caps, const std:
     return run;
 }
 
+// float_target: an RGBA32F target copied to the main buffer at the end (both forms round once,
+// as the reference does); otherwise straight into the RGBA8 main buffer, every additive pass
+// rounded to 8 bits, as Listing 4 ran in 2005 (framebuffer += light).
 std::unique_ptr<RowRun> forward(const Config& cfg, const Caps& caps, const std::string& shaders, const Variant& v,
-                                ForwardMode mode) {
+                                ForwardMode mode, bool float_target) {
     ForwardOptions o;
-    o.mode = mode;  // float target: both forms round once, as the reference does
+    o.mode = mode;
+    o.float_target = float_target;
     auto run = std::make_unique<RowRun>();
     run->fr = std::make_unique<ForwardRenderer>(caps, cfg.w, cfg.h, o, shaders);
     run->fr->set_scene(v.scene);
     run->row = base_row(cfg, v, mode == ForwardMode::single ? "forward-single" : "forward-multi");
+    run->row.accum = float_target ? "float" : "rgba8";
     return run;
+}
+
+GbufferLayout layout_of(const DeferredShader& ds) {
+    GbufferLayout l;
+    l.depth_texture = ds.options().depth == DepthPath::texture;
+    l.targets = ds.paths().gbuffer_targets;
+    l.half = ds.options().gbuffer_half;
+    return l;
 }
 
 std::string printf_line(const char* f, ...) __attribute__((format(printf, 1, 2)));
@@ -112,7 +127,7 @@ std::string printf_line(const char* f, ...) {
 }  // namespace
 
 std::string config_text(const Row& r) {
-    if (r.renderer != "deferred") return r.renderer;
+    if (r.renderer != "deferred") return r.accum ? r.renderer + " " + *r.accum : r.renderer;
     std::string s = "deferred " + *r.depth;
     if (r.encoding) s += "/" + *r.encoding;
     s += r.scissor ? " sc" : " -";
@@ -175,8 +190,15 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
                             const std::vector<std::string>& skips_off, bool half) {
         runs.push_back(deferred(cfg_, caps_, shaders_, v, d, e, sc, skip, skips_off, half));
     };
-    runs.push_back(forward(cfg_, caps_, shaders_, v, ForwardMode::single));  // runs[0]: the forward reference
-    runs.push_back(forward(cfg_, caps_, shaders_, v, ForwardMode::multi));
+    // runs[0], float single-pass: the forward reference. The RGBA8 forms are the baseline a 2005
+    // user would have run; the speed goal takes the faster of each kind.
+    const bool float_forward = caps_.fbo && caps_.texture_float;
+    if (!float_forward && index == 0)
+        notes_.push_back("float forward rows left out (no ARB_texture_float or EXT_framebuffer_object): the forward "
+                         "reference is then the RGBA8 single-pass render");
+    for (ForwardMode m : {ForwardMode::single, ForwardMode::multi})
+        for (bool f : {true, false})
+            if (!f || float_forward) runs.push_back(forward(cfg_, caps_, shaders_, v, m, f));
     SkipOptions all;
     for (DepthPath d : {DepthPath::texture, DepthPath::packed})
         for (bool sc : {false, true}) add_deferred(d, DepthEncoding::corrected, sc, all, {}, false);
@@ -198,8 +220,24 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
         notes_.push_back("half-float G-buffer rows left out: the GL lacks ARB_texture_float or ARB_half_float_pixel");
     }
 
+    // The floor (bench_floor.h): one FloorBench per G-buffer layout the deferred rows use.
+    std::map<GbufferLayout, std::unique_ptr<FloorBench>> floors;
+    std::map<GbufferLayout, std::vector<double>> fill_ms;
+    if (caps_.fbo) {
+        for (auto& run : runs)
+            if (run->ds && !floors.count(layout_of(*run->ds))) {
+                const GbufferLayout l = layout_of(*run->ds);
+                floors[l] = std::make_unique<FloorBench>(caps_, cfg_.w, cfg_.h, l, shaders_);
+                floors[l]->set_scene(v.scene);
+            }
+    } else if (index == 0) {
+        notes_.push_back("floor not measured: it renders into framebuffer objects (EXT_framebuffer_object)");
+    }
+
     // Warm-up, then the timed frames interleaved across rows (one frame of each row per round), so
     // a burst of load from elsewhere on the machine spreads over all rows instead of biasing one.
+    for (auto& [l, fb] : floors)
+        for (int i = 0; i < cfg_.warmup; ++i) fb->fill_frame(v.scene);
     for (auto& run : runs) {
         double first = 0;
         for (int i = 0; i < cfg_.warmup; ++i) {
@@ -211,33 +249,42 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
     }
     int rounds = 0;
     for (auto& run : runs) rounds = std::max(rounds, run->row.frames);
-    for (int f = 0; f < rounds; ++f)
+    for (int f = 0; f < rounds; ++f) {
         for (auto& run : runs) {
             if (f >= run->row.frames) continue;
             run->ms.push_back(run->frame(v.scene, cfg_.w, cfg_.h));
             if (f + 1 == run->row.frames) run->image = opaque(read_pixels(cfg_.w, cfg_.h));
         }
+        if (f < cfg_.frames)  // (a) in the same rounds, as many frames as the fast rows
+            for (auto& [l, fb] : floors) fill_ms[l].push_back(fb->fill_frame(v.scene));
+    }
+    std::map<GbufferLayout, FloorParts> parts;
+    for (auto& [l, fb] : floors) {
+        FloorParts p;
+        p.fill_ms = median(fill_ms[l]);
+        p.light_ns_per_fragment = fb->light_ns_per_fragment();
+        parts[l] = p;
+    }
 
-    // The ideal count from the first depth-texture row's G-buffer, its positions rebuilt the way the
-    // light pass rebuilds them; a light with no colour needs no fragment.
-    for (auto& run : runs) {
-        if (!run->ds || run->ds->options().depth != DepthPath::texture) continue;
-        DeferredShader& ds = *run->ds;
-        Image pos;
-        if (caps_.fbo && caps_.texture_float) {
-            pos = ds.reconstructed_positions();
-        } else {
-            const glm::mat4& P = ds.proj_matrix();
-            pos = positions_from_depth(ds.read_gbuffer(PBuffer::DEPTH),
-                                       planes_uniform(v.scene.camera.near_plane, v.scene.camera.far_plane), P[0][0],
-                                       P[1][1]);
+    // The ideal count from exact surface points, not from the light shader's reconstruction: the
+    // analytic trace's exact eye depth where the scene allows, otherwise the first depth-texture
+    // row's 24-bit depth codes decoded in double. A light with no colour needs no fragment.
+    const glm::dvec2 pscale = projection_scale(v.scene.camera, cfg_.w, cfg_.h);
+    std::optional<std::string> ideal_source;
+    if (v.trace) {
+        v.ideal = ideal_fragments(surface_from_eye_depth(v.trace->eye_depth, cfg_.w, cfg_.h, pscale),
+                                  eye_lights(v.scene));
+        ideal_source = "analytic";
+    } else {
+        for (auto& run : runs) {
+            if (!run->ds || run->ds->options().depth != DepthPath::texture) continue;
+            const SurfacePoints pts =
+                surface_from_depth_codes(run->ds->read_gbuffer_depth_codes(), cfg_.w, cfg_.h,
+                                         v.scene.camera.near_plane, v.scene.camera.far_plane, pscale);
+            v.ideal = ideal_fragments(pts, eye_lights(v.scene));
+            ideal_source = "depth24";
+            break;
         }
-        std::vector<glm::vec4> lights;
-        for (const Light& l : v.scene.lights)
-            if (l.color != glm::vec3(0.0f))
-                lights.emplace_back(glm::vec3(ds.view_matrix() * glm::vec4(l.pos, 1.0f)), l.radius);
-        v.ideal = ideal_fragments(pos, lights);
-        break;
     }
 
     const Image& ref = runs[0]->image;
@@ -247,10 +294,22 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
         r.ms_min = *std::min_element(run->ms.begin(), run->ms.end());
         r.ms_max = *std::max_element(run->ms.begin(), run->ms.end());
         if (run->ds) {
-            r.light_fragments = run->last.light_fragments;
+            r.light_fragments = run->last.counted_light_fragments();
+            r.light_invocations = run->last.light_invocations;
             r.scissor_pixels = run->last.scissor_pixels;
             r.lights_drawn = run->last.lights_drawn;
             r.ideal_fragments = v.ideal;
+            r.ideal_source = ideal_source;
+            auto p = parts.find(layout_of(*run->ds));
+            if (p != parts.end()) {
+                FloorParts fp = p->second;
+                fp.post_ms = post_floor_ms(run->ds->options().post, cfg_.w, cfg_.h, fp.light_ns_per_fragment);
+                r.floor_fill_ms = fp.fill_ms;
+                r.floor_light_ns = fp.light_ns_per_fragment;
+                r.floor_post_ms = fp.post_ms;
+                r.floor_ms = floor_ms(fp, v.ideal);
+                r.floor_ratio = floor_ratio(r.ms_median, r.floor_ms);
+            }
         } else {
             r.passes = run->last_forward.passes;
         }

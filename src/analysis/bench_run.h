@@ -1,8 +1,9 @@
 // The benchmark (`dsr bench`): every configuration of one sweep measured in the same process, on
 // the same context, against the same references. Per row: frame time (median, min, max after
-// warm-up), light-pass fragments (occlusion queries) against the ideal count, and the image's
-// error against the forward reference (and, for scenes with constant materials, against the
-// analytic one). bench_report.h turns the rows into tables, goals, JSON, a plot and a report;
+// warm-up), light-pass fragments (occlusion queries) and light-shader invocations (pipeline
+// statistics) against the ideal count, the frame against its floor (bench_floor.h), and the
+// image's error against the forward reference (and, for scenes with constant materials,
+// against the analytic one). bench_report.h turns the rows into tables, goals, JSON, a plot and a report;
 // src/app/bench_command.cpp only parses flags, runs this, and prints or writes what comes back.
 #pragma once
 #include <functional>
@@ -28,14 +29,21 @@ struct Config {
 // One measured configuration. Optional fields are JSON null where they do not apply.
 struct Row {
     std::string scene, renderer;            // renderer: deferred | forward-single | forward-multi
+    std::optional<std::string> accum;       // forward rows: "float" (RGBA32F target) | "rgba8" (the main buffer)
     std::optional<std::string> depth, encoding, gbuffer;  // gbuffer: rgba8 | half
     bool scissor = false;
     std::vector<std::string> skips_off;
     int lights = 0, w = 0, h = 0, frames = 0;
     int sweep_index = 0;                    // place of its light count in --lights (plot marker size)
     double ms_median = 0, ms_min = 0, ms_max = 0;
-    std::optional<long long> light_fragments, ideal_fragments, scissor_pixels;
+    // light_fragments: samples that passed the light passes (occlusion queries); light_invocations:
+    // fragments that entered the light shader (ARB_pipeline_statistics_query); null where the GL
+    // lacks the query. ideal_fragments: from exact surface points (ideal_source says which).
+    std::optional<long long> light_fragments, light_invocations, ideal_fragments, scissor_pixels;
+    std::optional<std::string> ideal_source;  // "analytic" (exact eye depth) | "depth24" (G-buffer depth in double)
     std::optional<int> lights_drawn, passes;
+    // The frame's floor (bench_floor.h), deferred rows: its parts, floor_ms and ms_median / floor_ms.
+    std::optional<double> floor_fill_ms, floor_light_ns, floor_post_ms, floor_ms, floor_ratio;
     ImageDiff err;                          // vs the forward reference
     std::optional<ImageDiff> err_analytic;  // vs the analytic reference, interior pixels
 };

@@ -1,7 +1,10 @@
 #include "analysis/ideal_fragments.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "deferred/reconstruct.h"
 
@@ -83,6 +86,122 @@ long long ideal_fragments_brute(const Image& positions, const std::vector<glm::v
                 const float* p = positions.at(x, y);
                 n += p[3] > 0.5f && inside(p, l);
             }
+    }
+    return n;
+}
+
+glm::dvec2 projection_scale(const Camera& camera, int width, int height) {
+    const double t = std::tan(double(camera.fov_deg) * M_PI / 360.0);
+    const double aspect = double(width) / double(height);
+    return {1.0 / (aspect * t), 1.0 / t};
+}
+
+namespace {
+
+SurfacePoints empty_points(int w, int h) {
+    SurfacePoints s;
+    s.width = w, s.height = h;
+    s.p.assign(size_t(w) * h, glm::dvec3(0));
+    s.surface.assign(size_t(w) * h, 0);
+    return s;
+}
+
+// The pixel-centre ray scaled to eye depth `depth` (> 0).
+glm::dvec3 point_at_depth(int x, int y, int w, int h, glm::dvec2 p, double depth) {
+    const double xn = 2.0 * (x + 0.5) / w - 1.0, yn = 2.0 * (y + 0.5) / h - 1.0;
+    return {xn * depth / p.x, yn * depth / p.y, -depth};
+}
+
+inline bool inside(const glm::dvec3& q, const glm::dvec4& l) {
+    const glm::dvec3 d = q - glm::dvec3(l);
+    return glm::dot(d, d) < l.w * l.w;
+}
+
+}  // namespace
+
+SurfacePoints surface_from_eye_depth(const std::vector<double>& eye_depth, int w, int h, glm::dvec2 p) {
+    SurfacePoints s = empty_points(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * w + x;
+            const double d = i < eye_depth.size() ? eye_depth[i] : 0.0;
+            if (!(d > 0)) continue;
+            s.p[i] = point_at_depth(x, y, w, h, p, d);
+            s.surface[i] = 1;
+        }
+    return s;
+}
+
+SurfacePoints surface_from_depth_codes(const std::vector<uint32_t>& codes, int w, int h, double n, double f,
+                                       glm::dvec2 p) {
+    SurfacePoints s = empty_points(w, h);
+    const double p22 = -(f + n) / (f - n), p32 = -2.0 * f * n / (f - n);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * w + x;
+            const uint32_t code = (i < codes.size() ? codes[i] : 0xffffffffu) >> 8;
+            if (code >= 0xffffffu) continue;  // the clear value 1: background
+            const double d = double(code) / 16777215.0;
+            const double z = -p32 / (2.0 * d - 1.0 + p22);
+            s.p[i] = point_at_depth(x, y, w, h, p, -z);
+            s.surface[i] = 1;
+        }
+    return s;
+}
+
+std::vector<glm::dvec4> eye_lights(const Scene& scene) {
+    const Camera& c = scene.camera;
+    const glm::dmat4 view = glm::lookAt(glm::dvec3(c.pos), glm::dvec3(c.target), glm::dvec3(c.up));
+    std::vector<glm::dvec4> out;
+    for (const Light& l : scene.lights)
+        if (l.color != glm::vec3(0.0f))
+            out.emplace_back(glm::dvec3(view * glm::dvec4(glm::dvec3(l.pos), 1.0)), double(l.radius));
+    return out;
+}
+
+long long ideal_fragments(const SurfacePoints& s, const std::vector<glm::dvec4>& lights) {
+    constexpr int kTile = 16;
+    struct DTile {
+        int x0, y0, x1, y1;
+        glm::dvec3 lo, hi;
+    };
+    std::vector<DTile> tiles;
+    const double inf = std::numeric_limits<double>::infinity();
+    for (int ty = 0; ty < s.height; ty += kTile)
+        for (int tx = 0; tx < s.width; tx += kTile) {
+            DTile t{tx, ty, std::min(tx + kTile, s.width), std::min(ty + kTile, s.height), glm::dvec3(inf),
+                    glm::dvec3(-inf)};
+            for (int y = t.y0; y < t.y1; ++y)
+                for (int x = t.x0; x < t.x1; ++x) {
+                    const size_t i = size_t(y) * s.width + x;
+                    if (!s.surface[i]) continue;
+                    t.lo = glm::min(t.lo, s.p[i]);
+                    t.hi = glm::max(t.hi, s.p[i]);
+                }
+            if (t.lo.x <= t.hi.x) tiles.push_back(t);
+        }
+    long long n = 0;
+    for (const glm::dvec4& l : lights) {
+        if (!(l.w > 0)) continue;
+        const glm::dvec3 c(l);
+        for (const DTile& t : tiles) {
+            const glm::dvec3 d = glm::max(glm::max(t.lo - c, c - t.hi), glm::dvec3(0.0));
+            if (glm::dot(d, d) > l.w * l.w) continue;  // exact in double: the box holds every point
+            for (int y = t.y0; y < t.y1; ++y)
+                for (int x = t.x0; x < t.x1; ++x) {
+                    const size_t i = size_t(y) * s.width + x;
+                    n += s.surface[i] && inside(s.p[i], l);
+                }
+        }
+    }
+    return n;
+}
+
+long long ideal_fragments_brute(const SurfacePoints& s, const std::vector<glm::dvec4>& lights) {
+    long long n = 0;
+    for (const glm::dvec4& l : lights) {
+        if (!(l.w > 0)) continue;
+        for (size_t i = 0; i < s.p.size(); ++i) n += s.surface[i] && inside(s.p[i], l);
     }
     return n;
 }

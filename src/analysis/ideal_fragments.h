@@ -3,11 +3,13 @@
 // per-pixel test would shade; `dsr bench` sets FrameStats::light_fragments (occlusion queries)
 // against it. Pure math, no GL.
 #pragma once
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "scene/image.h"
+#include "scene/scene.h"
 
 namespace dsr {
 
@@ -26,5 +28,40 @@ long long ideal_fragments(const Image& positions, const std::vector<glm::vec4>& 
 
 // The same count by testing every (light, pixel) pair: the definition, for tests.
 long long ideal_fragments_brute(const Image& positions, const std::vector<glm::vec4>& lights);
+
+// The bench's ideal count is made from exact surface points in double, not from the light
+// shader's reconstruction: the analytic trace's exact eye depth where the scene allows,
+// otherwise the G-buffer's 24-bit depth codes decoded in double. Eye-space points, one per
+// pixel (row 0 at the bottom), on the ray through the pixel's centre.
+struct SurfacePoints {
+    int width = 0, height = 0;
+    std::vector<glm::dvec3> p;     // eye space
+    std::vector<uint8_t> surface;  // 1 where the pixel sees a surface, 0 for background
+};
+
+// The projection's P[0][0] and P[1][1] in double for a camera and a w x h frame
+// (glm::perspective: 1 / (aspect tan(fov/2)), 1 / tan(fov/2)).
+glm::dvec2 projection_scale(const Camera& camera, int width, int height);
+
+// From exact eye depths (AnalyticTrace::eye_depth: -z of the hit, 0 for background): the point at
+// that depth on each pixel-centre ray, x = x_ndc * depth / p00, y = y_ndc * depth / p11, z = -depth.
+SurfacePoints surface_from_eye_depth(const std::vector<double>& eye_depth, int width, int height, glm::dvec2 p);
+
+// From a depth texture's GL_UNSIGNED_INT codes (read_depth_codes) of a 24-bit depth buffer: window
+// depth d = (code >> 8) / (2^24 - 1) in double, eye z inverted through glm::perspective's depth
+// mapping with these near and far planes (z = -P32 / (2d - 1 + P22)), x and y along the pixel-centre
+// ray. d = 1 (the clear value) is background.
+SurfacePoints surface_from_depth_codes(const std::vector<uint32_t>& codes, int width, int height, double near_plane,
+                                       double far_plane, glm::dvec2 p);
+
+// Lights in eye space, in double: the camera's view (glm::lookAt in double) applied to each light
+// with non-zero colour (a light with no colour needs no fragment); w = radius.
+std::vector<glm::dvec4> eye_lights(const Scene& scene);
+
+// The count on exact points: a pixel counts for a light when its point lies strictly inside the
+// sphere (|p - c|^2 < r^2, in double). Tiled like the float count; equal to ideal_fragments_brute's
+// definition applied in double.
+long long ideal_fragments(const SurfacePoints& s, const std::vector<glm::dvec4>& lights);
+long long ideal_fragments_brute(const SurfacePoints& s, const std::vector<glm::dvec4>& lights);
 
 }  // namespace dsr

@@ -152,7 +152,10 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["lights_total"] = last.lights_total;
     j["lights_culled"] = last.lights_culled;
     j["lights_drawn"] = last.lights_drawn;
-    j["light_fragments"] = last.light_fragments;
+    // null where the GL cannot count them (no occlusion queries / no ARB_pipeline_statistics_query)
+    const std::optional<long long> frags = last.counted_light_fragments();
+    j["light_fragments"] = frags ? nlohmann::json(*frags) : nlohmann::json(nullptr);
+    j["light_invocations"] = last.light_invocations ? nlohmann::json(*last.light_invocations) : nlohmann::json(nullptr);
     j["scissor_pixels"] = last.scissor_pixels;
     j["ms"] = {{"geometry", med(&StageTimes::geometry)}, {"ambient", med(&StageTimes::ambient)},
                {"lights", med(&StageTimes::lights)},     {"bloom", med(&StageTimes::bloom)},

@@ -157,6 +157,11 @@ Image DeferredShader::read_gbuffer(int target) {
                         target == PBuffer::DEPTH);
 }
 
+std::vector<uint32_t> DeferredShader::read_gbuffer_depth_codes() {
+    if (opts_.depth != DepthPath::texture) throw Error("read_gbuffer_depth_codes: the packed path has no depth texture");
+    return read_depth_codes(gbuf().texture(PBuffer::DEPTH), w_, h_, gbuf().texture_width(), gbuf().texture_height());
+}
+
 Image DeferredShader::read_pbuffer(int fb) {
     const PBuffer& b = pbuf(fb);
     return read_texture(b.texture(0), b.width(), b.height(), b.texture_width(), b.texture_height(), false);

@@ -6,6 +6,7 @@
 //   final_stage.cpp     §3.6  P-buffer 0 to the main frame buffer, fixed function
 #pragma once
 #include <memory>
+#include <optional>
 #include <tuple>
 #include <string>
 #include <vector>
@@ -40,8 +41,18 @@ struct StageTimes {
 
 struct FrameStats {
     int lights_total = 0, lights_culled = 0, lights_drawn = 0;
-    long long light_fragments = 0;  // fragments the light passes shaded (occlusion queries; with the
-                                    // light depth test, those that passed it)
+    long long light_fragments = 0;  // samples that passed the light passes (occlusion queries): what
+                                    // survived the in-shader light tests; 0 and not counted when
+                                    // fragments_counted is false (no occlusion queries)
+    bool fragments_counted = false;
+    // Fragments that entered the light shader, summed over the light passes (ARB_pipeline_
+    // statistics_query, GL_FRAGMENT_SHADER_INVOCATIONS_ARB): what the passes pay, discards
+    // included. Null where the GL lacks the extension, never 0 for "not counted".
+    std::optional<long long> light_invocations;
+    // light_fragments as an optional: null where it was not counted.
+    std::optional<long long> counted_light_fragments() const {
+        return fragments_counted ? std::optional<long long>(light_fragments) : std::nullopt;
+    }
     long long scissor_pixels = 0;   // sum of the rectangles the light quads were limited to
     StageTimes ms;
     TimingSource timing = TimingSource::wall;
@@ -102,6 +113,10 @@ public:
     // Read a buffer back (views and tests): a G-buffer target, its depth texture
     // (PBuffer::DEPTH, as grey), or P-buffer `fb`.
     Image read_gbuffer(int target);
+    // After geometry_stage, on the depth-texture path: the G-buffer's depth texture as its raw
+    // GL_UNSIGNED_INT codes (24-bit depth in the high bits: window depth = code / (2^32 - 1)),
+    // w x h, row 0 at the bottom; no float rounding on the way. Throws on the packed path.
+    std::vector<uint32_t> read_gbuffer_depth_codes();
     // After geometry_stage: the eye-space position each pixel's depth reconstructs to, exactly as
     // the light pass computes it (same decoder, planes and view rays), in float: rgb = (x, y, z),
     // alpha 1 where the G-buffer has a surface, 0 elsewhere.

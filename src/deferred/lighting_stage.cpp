@@ -83,7 +83,9 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
     light_prog_.set("zrange", zrange_);
 
     const bool count = paths_.count_fragments;
-    std::vector<GLuint> queries;
+    const bool invocations = caps_.pipeline_statistics;
+    stats.fragments_counted = count;
+    std::vector<GLuint> queries, inv_queries;
     stats.lights_total = int(scene.lights.size());
     for (const Light& light : scene.lights) {
         if (sphere_outside(frustum, light.pos, light.radius)) {
@@ -119,7 +121,13 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
             glGenQueries(1, &queries.back());
             glBeginQuery(GL_SAMPLES_PASSED, queries.back());
         }
+        if (invocations) {  // beside the occlusion query: every fragment that ran the shader
+            inv_queries.push_back(0);
+            glGenQueries(1, &inv_queries.back());
+            glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, inv_queries.back());
+        }
         draw_rect(0, 0, float(w_), float(h_), true);
+        if (invocations) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
         if (count) glEndQuery(GL_SAMPLES_PASSED);
     }
     // unbind_light(): nothing to restore, the next pass states what it needs.
@@ -129,6 +137,16 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
         glGetQueryObjectuiv(q, GL_QUERY_RESULT, &samples);
         stats.light_fragments += samples;
         glDeleteQueries(1, &q);
+    }
+    if (invocations) {
+        long long n = 0;
+        for (GLuint q : inv_queries) {
+            GLuint fragments = 0;  // one pass: at most w x h, fits 32 bits
+            glGetQueryObjectuiv(q, GL_QUERY_RESULT, &fragments);
+            n += fragments;
+            glDeleteQueries(1, &q);
+        }
+        stats.light_invocations = n;
     }
 }
 

@@ -26,11 +26,13 @@ static std::string gl_string(GLenum e) {
 }
 
 Caps probe_caps(const std::vector<std::string>& force_off) {
-    static const char* known[] = {"no-mrt", "no-depth-texture", "no-fbo", "no-npot", "no-float", "no-glsl"};
+    static const char* known[] = {"no-mrt",   "no-depth-texture",   "no-fbo",           "no-npot",
+                                  "no-float", "no-glsl", "no-occlusion-query", "no-pipeline-stats"};
     for (const auto& f : force_off)
         if (std::none_of(std::begin(known), std::end(known), [&](const char* k) { return f == k; }))
             throw Error("unknown capability '" + f +
-                        "' (expected no-mrt, no-depth-texture, no-fbo, no-npot, no-float or no-glsl)");
+                        "' (expected no-mrt, no-depth-texture, no-fbo, no-npot, no-float, no-glsl, "
+                        "no-occlusion-query or no-pipeline-stats)");
     auto off = [&](const char* k) { return std::find(force_off.begin(), force_off.end(), k) != force_off.end(); };
 
     Caps c;
@@ -57,7 +59,12 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
                       !off("no-float");
     c.half_float = (at_least(c.gl_major, c.gl_minor, 3, 0) || has_extension("GL_ARB_half_float_pixel")) &&
                    !off("no-float");
-    c.occlusion_query = at_least(c.gl_major, c.gl_minor, 1, 5) || has_extension("GL_ARB_occlusion_query");
+    c.occlusion_query = (at_least(c.gl_major, c.gl_minor, 1, 5) || has_extension("GL_ARB_occlusion_query")) &&
+                        !off("no-occlusion-query");
+    // GL_FRAGMENT_SHADER_INVOCATIONS_ARB through the GL 1.5 query calls: no entry point of its own.
+    c.pipeline_statistics = (at_least(c.gl_major, c.gl_minor, 4, 6) ||
+                             has_extension("GL_ARB_pipeline_statistics_query")) &&
+                            !off("no-pipeline-stats");
     c.timer_query = has_extension("GL_ARB_timer_query") || has_extension("GL_EXT_timer_query");
     c.forced_off = force_off;
     while (glGetError() != GL_NO_ERROR) {}
@@ -81,6 +88,7 @@ std::string describe(const Caps& c) {
       << "  " << yn(c.texture_float) << " float targets            (ARB_texture_float)\n"
       << "  " << yn(c.half_float) << " half-float targets       (ARB_half_float_pixel)\n"
       << "  " << yn(c.occlusion_query) << " occlusion queries        (ARB_occlusion_query)\n"
+      << "  " << yn(c.pipeline_statistics) << " pipeline statistics      (ARB_pipeline_statistics_query)\n"
       << "  " << yn(c.timer_query) << " timer queries            (ARB_timer_query)\n";
     if (!c.forced_off.empty()) {
         o << "forced off:";

@@ -18,12 +18,14 @@ struct Caps {
     bool texture_float = false;      // ARB_texture_float
     bool half_float = false;         // ARB_half_float_pixel
     bool occlusion_query = false;    // ARB_occlusion_query (core in 1.5): light_fragments
+    bool pipeline_statistics = false;  // ARB_pipeline_statistics_query (core in 4.6): light_invocations
     bool timer_query = false;        // ARB_timer_query / EXT_timer_query
     std::vector<std::string> forced_off;  // names hidden by --caps / DSR_CAPS
 };
 
 // Reads the current context. `force_off` lists capabilities to report missing
-// (no-mrt, no-depth-texture, no-fbo, no-npot, no-float, no-glsl); unknown names throw dsr::Error.
+// (no-mrt, no-depth-texture, no-fbo, no-npot, no-float, no-glsl, no-occlusion-query,
+// no-pipeline-stats); unknown names throw dsr::Error.
 Caps probe_caps(const std::vector<std::string>& force_off = {});
 
 // One line per capability with the extension it comes from, for `dsr info`.

@@ -44,4 +44,17 @@ Image read_texture(GLuint tex, int w, int h, int tw, int th, bool depth) {
     return img;
 }
 
+std::vector<uint32_t> read_depth_codes(GLuint tex, int w, int h, int tw, int th) {
+    std::vector<GLuint> all(size_t(tw) * th);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, all.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    check_gl("reading a depth texture back");
+    std::vector<uint32_t> out(size_t(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) out[size_t(y) * w + x] = all[size_t(y) * tw + x];
+    return out;
+}
+
 }  // namespace dsr

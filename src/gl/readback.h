@@ -1,5 +1,8 @@
 // Reading the main frame buffer back (final image of §3.6) into an Image.
 #pragma once
+#include <cstdint>
+#include <vector>
+
 #include "gl/gl.h"
 #include "scene/image.h"
 
@@ -11,5 +14,10 @@ Image read_pixels(int width, int height);
 // The w x h content (lower left) of a texture of tw x th texels (larger when padded to
 // powers of two), as float RGBA; a depth texture (depth = true) comes back as grey, alpha 1.
 Image read_texture(GLuint texture, int w, int h, int tw, int th, bool depth);
+
+// The w x h content of a depth texture as GL_UNSIGNED_INT codes (window depth = code /
+// (2^32 - 1); a 24-bit depth buffer fills the high 24 bits), row 0 at the bottom: read
+// without the float conversion read_texture makes.
+std::vector<uint32_t> read_depth_codes(GLuint texture, int w, int h, int tw, int th);
 
 }  // namespace dsr
