@@ -191,9 +191,12 @@ TEST(PBuffer, RenderTargetAndTextureAtOnceFails) {
     pb.unbind_render();
 }
 
-// The regression image: the default scene through the default path, against tests/ref.
-// Tolerance: llvmpipe is deterministic on one machine; other CPUs (SIMD width) may round
-// differently, so 2 LSB per channel with at most 0.1% of pixels beyond it (Filament's rule).
+// The regression image: the default scene through the default path, against tests/ref
+// (tests/ref/README.md: how it was made, what checks it independently). Tolerance: llvmpipe is
+// deterministic on one machine and the reference was made on this machine's llvmpipe, so
+// max <= 2 LSB with at most 0.01% of pixels over 1 LSB (issue 10; it was max 8 with 0.1% over
+// 2). Another CPU (SIMD width, LLVM version) may round differently: find out why before
+// making a new reference.
 TEST(Pipeline, DefaultSceneMatchesReference) {
     Scene s = default_scene();
     auto r = render_scene(s, kSize, kSize, ShaderOptions{});
@@ -206,8 +209,8 @@ TEST(Pipeline, DefaultSceneMatchesReference) {
         write_failure_images("default_texture_256", r.image, r.image);
         FAIL() << "no reference: " << e.what() << " (the actual image was written to build/test-output)";
     }
-    ImageDiff d = compare_logged("default scene vs reference", r.image, ref, 2 * kLsb);
-    bool ok = d.max_lsb() <= 8 && d.failing_fraction() <= 0.001;
+    ImageDiff d = compare_logged("default scene vs reference", r.image, ref, 1 * kLsb);
+    bool ok = d.max_lsb() <= 2 && d.failing_fraction() <= 1e-4;
     if (!ok) write_failure_images("default_texture_256", r.image, ref);
     EXPECT_TRUE(ok) << "max " << d.max_lsb() << " LSB, failing " << d.failing_fraction();
 }
