@@ -1,8 +1,5 @@
 #include "analysis/image_metrics.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,28 +8,39 @@
 
 namespace dsr {
 
-namespace {
-OIIO::ImageBuf rgb_buf(const Image& img) {
-    OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::FLOAT);
-    OIIO::ImageBuf buf(spec);
-    buf.set_pixels(OIIO::ROI(0, img.width, 0, img.height, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT, img.rgba.data());
-    return buf;
-}
-}  // namespace
-
+// Plain C++ (it was OpenImageIO's ImageBufAlgo::compare): the renderer core stays free of
+// OpenImageIO but for the image-file seam (scene/image_io.cpp), so a libpng build can travel.
+// Same definitions: over RGB, the mean and RMS of the per-channel absolute differences, their
+// maximum, and the pixels where any channel differs by more than fail_threshold.
 ImageDiff compare_images(const Image& a, const Image& b, double fail_threshold) {
     if (a.width != b.width || a.height != b.height)
         throw Error("compare_images: sizes differ (" + std::to_string(a.width) + "x" + std::to_string(a.height) +
                     " vs " + std::to_string(b.width) + "x" + std::to_string(b.height) + ")");
-    OIIO::ImageBuf A = rgb_buf(a), B = rgb_buf(b);
-    OIIO::ROI rgb(0, a.width, 0, a.height, 0, 1, 0, 3);
-    auto r = OIIO::ImageBufAlgo::compare(A, B, float(fail_threshold), 1e30f, rgb);
+    // Differences in float and the threshold as float, as OpenImageIO computed them, so an
+    // error of exactly the threshold (k/255 - j/255) counts the same; sums in double.
+    double sum = 0, sum_sq = 0;
+    float max_err = 0;
+    const float threshold = float(fail_threshold);
+    long long failing = 0;
+    const size_t n = size_t(a.width) * a.height;
+    for (size_t p = 0; p < n; ++p) {
+        float worst = 0;
+        for (int c = 0; c < 3; ++c) {
+            const float e = std::fabs(a.rgba[p * 4 + c] - b.rgba[p * 4 + c]);
+            sum += e;
+            sum_sq += double(e) * e;
+            worst = std::max(worst, e);
+        }
+        max_err = std::max(max_err, worst);
+        if (worst > threshold) ++failing;
+    }
     ImageDiff d;
-    d.max_abs = r.maxerror;
-    d.mean_abs = r.meanerror;
-    d.psnr_db = r.maxerror > 0 ? 20.0 * std::log10(1.0 / r.rms_error) : std::numeric_limits<double>::infinity();
-    d.failing = (long long)r.nfail;
-    d.pixels = (long long)a.width * a.height;
+    d.max_abs = max_err;
+    d.mean_abs = n ? sum / double(n * 3) : 0;
+    const double rms = n ? std::sqrt(sum_sq / double(n * 3)) : 0;
+    d.psnr_db = max_err > 0 ? 20.0 * std::log10(1.0 / rms) : std::numeric_limits<double>::infinity();
+    d.failing = failing;
+    d.pixels = (long long)n;
     return d;
 }
 
