@@ -10,7 +10,7 @@ DSR_FLAGS := -std=c++17 -Wall -Wextra -Wno-unused-parameter -MMD -MP -Isrc \
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
 DEB_PACKAGES := g++ make pkg-config libosmesa6-dev libglm-dev libopenimageio-dev \
-                nlohmann-json3-dev libgtest-dev
+                nlohmann-json3-dev libgtest-dev libtinyobjloader-dev
 
 # GL context backends, linked per executable and never into the core (src/platform/context.h):
 # the headless executables get OSMesa; the viewer will link its GLFW list against libGL.
@@ -29,9 +29,10 @@ HEADLESS_BACKEND_OBJ := $(HEADLESS_BACKEND_SRC:%.cpp=$(BUILD)/obj/%.o)
 APP_OBJ  := $(APP_SRC:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o)
 
-LIBS := -lOSMesa -lOpenImageIO -lOpenImageIO_Util -pthread
+# tinyobjloader: Debian's shared library (float build), as its tinyobjloader.pc says.
+LIBS := -lOSMesa -lOpenImageIO -lOpenImageIO_Util -ltinyobjloader -pthread
 
-.PHONY: all run test test-legacy deps clean figures bench stress
+.PHONY: all run test test-legacy test-sanitizers deps fuzz fuzz-deps clean figures bench stress
 all: $(BUILD)/dsr $(BUILD)/dsr_tests
 
 $(BUILD)/obj/%.o: %.cpp
@@ -69,6 +70,72 @@ run: deps
 test: deps
 	$(MAKE) -j$(JOBS) all
 	$(BUILD)/dsr_tests
+	$(MAKE) test-sanitizers
+
+# The OBJ/MTL and scene-file loaders again under AddressSanitizer + UBSan (a second build of
+# the loader objects and tests/test_obj.cpp without its GL tests, tinyobjloader compiled from
+# Debian's header so it is checked too), then one full render of a mesh scene under
+# LeakSanitizer (the normal objects linked with -fsanitize=leak), which must report no leak.
+ASAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined
+ASAN_SRC := src/scene/obj_loader.cpp src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/shapes.cpp \
+            src/scene/camera.cpp src/scene/image_io.cpp tests/fuzz/tinyobj_impl.cpp tests/test_obj.cpp
+ASAN_OBJ := $(ASAN_SRC:%.cpp=$(BUILD)/asan/obj/%.o)
+
+$(BUILD)/asan/obj/%.o: %.cpp
+	@mkdir -p $(@D)
+	$(CXX) $(CPPFLAGS) $(DSR_FLAGS) -DDSR_OBJ_LOADER_ONLY $(ASAN_FLAGS) -c $< -o $@
+
+$(BUILD)/asan/dsr_obj_tests: $(ASAN_OBJ)
+	$(CXX) $(ASAN_FLAGS) $^ -lgtest -lgtest_main -lOpenImageIO -lOpenImageIO_Util -pthread -o $@
+
+$(BUILD)/asan/dsr_lsan: $(APP_OBJ) $(HEADLESS_BACKEND_OBJ) $(BUILD)/libdsr_core.a
+	@mkdir -p $(@D)
+	$(CXX) $(CXXFLAGS) -fsanitize=leak $^ $(LIBS) -o $@
+
+test-sanitizers: $(BUILD)/asan/dsr_obj_tests $(BUILD)/asan/dsr_lsan
+	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(BUILD)/asan/dsr_obj_tests
+	@mkdir -p $(BUILD)/asan/out
+	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
+	  $(BUILD)/asan/dsr_lsan render data/mesh.scene --size 128x128 -o $(BUILD)/asan/out/mesh.png
+	@echo "test-sanitizers: loader tests clean under ASan + UBSan; mesh render leak-free under LeakSanitizer"
+
+# `make fuzz`: the scene-file and OBJ/MTL loaders under libFuzzer + ASan + UBSan (clang from
+# Debian), each for FUZZ_SECONDS from its seed corpus in tests/fuzz/<target>/ with the keyword
+# dictionary tests/fuzz/<target>.dict. New inputs go to $(BUILD)/fuzz/corpus/<target>/ (the seeds
+# in tests/ are never written), findings to $(BUILD)/fuzz/<target>-crash-* (make fails); each
+# finding becomes a case in tests/test_obj.cpp.
+FUZZ_SECONDS ?= 60
+FUZZ_CXX := clang++
+FUZZ_PACKAGES := clang libclang-rt-14-dev
+FUZZ_FLAGS := -std=c++17 -O1 -g -fno-omit-frame-pointer -Isrc -DDSR_SOURCE_DIR=\"$(CURDIR)\" \
+              -fsanitize=address,undefined -fno-sanitize-recover=undefined
+FUZZ_LIB_SRC := src/scene/obj_loader.cpp src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/shapes.cpp \
+                src/scene/camera.cpp src/scene/image_io.cpp tests/fuzz/tinyobj_impl.cpp
+FUZZ_LIB_OBJ := $(FUZZ_LIB_SRC:%.cpp=$(BUILD)/fuzz/obj/%.o)
+FUZZ_TARGETS := obj scene_file
+
+$(BUILD)/fuzz/obj/%.o: %.cpp
+	@mkdir -p $(@D)
+	$(FUZZ_CXX) $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link -MMD -MP -c $< -o $@
+
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.cpp $(FUZZ_LIB_OBJ)
+	$(FUZZ_CXX) $(FUZZ_FLAGS) -fsanitize=fuzzer $^ -lOpenImageIO -lOpenImageIO_Util -pthread -o $@
+
+fuzz-deps:
+	@$(MAKE) --no-print-directory deps DEB_PACKAGES="$(FUZZ_PACKAGES)"
+
+fuzz: deps fuzz-deps
+	$(MAKE) -j$(JOBS) $(FUZZ_TARGETS:%=$(BUILD)/fuzz/fuzz_%)
+	@set -o pipefail; for t in $(FUZZ_TARGETS); do \
+	  mkdir -p $(BUILD)/fuzz/corpus/$$t; \
+	  echo "make fuzz: $$t for $(FUZZ_SECONDS) s (log: $(BUILD)/fuzz/$$t.log)"; \
+	  $(BUILD)/fuzz/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 -max_len=16384 \
+	    -dict=tests/fuzz/$$t.dict -artifact_prefix=$(BUILD)/fuzz/$$t- -print_final_stats=1 \
+	    $(BUILD)/fuzz/corpus/$$t tests/fuzz/$$t >$(BUILD)/fuzz/$$t.log 2>&1 \
+	    || { tail -n 40 $(BUILD)/fuzz/$$t.log; echo "make fuzz: $$t FOUND A PROBLEM (input in $(BUILD)/fuzz/$$t-*)"; exit 1; }; \
+	  grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb|^#[0-9]+ +DONE' $(BUILD)/fuzz/$$t.log; \
+	done
+
 
 # The old-GL matrix (every combination of no-mrt, no-depth-texture, no-fbo, no-npot), the Mesa
 # overrides and softpipe, the matrix at 640x480 (not a power of two, so the padded path runs at
@@ -101,4 +168,5 @@ figures: deps
 clean:
 	rm -rf $(BUILD) out
 
--include $(CORE_OBJ:.o=.d) $(HEADLESS_BACKEND_OBJ:.o=.d) $(APP_OBJ:.o=.d) $(TEST_OBJ:.o=.d)
+-include $(CORE_OBJ:.o=.d) $(HEADLESS_BACKEND_OBJ:.o=.d) $(APP_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(ASAN_OBJ:.o=.d) \
+         $(FUZZ_LIB_OBJ:.o=.d)

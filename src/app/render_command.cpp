@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include <sys/resource.h>
+
 #include <nlohmann/json.hpp>
 
 #include "dsr_clock.h"
@@ -95,7 +97,9 @@ int cmd_render(const std::vector<std::string>& argv) {
         args.fail("--stats: expected a file ending .json, got '" + stats_path + "'");
     if (scene_path.empty()) scene_path = resource_dir("data") + "/default.scene";
 
+    const double load_start = now_ms();
     Scene scene = load_scene(scene_path);  // every input error surfaces before any output
+    const double load_ms = now_ms() - load_start;
     if (out_w == 0) out_w = w, out_h = h;
     View view = view_from_name(view_name_arg);
     post.bloom = bloom < 0 ? scene.post_bloom : bloom == 1;
@@ -161,6 +165,13 @@ int cmd_render(const std::vector<std::string>& argv) {
                {"lights", med(&StageTimes::lights)},     {"bloom", med(&StageTimes::bloom)},
                {"aa", med(&StageTimes::aa)},             {"final", med(&StageTimes::final)},
                {"frame", med(&StageTimes::frame)}};
+    size_t triangles = 0;
+    for (const Mesh& m : scene.meshes) triangles += m.indices.size() / 3;
+    struct rusage usage {};
+    getrusage(RUSAGE_SELF, &usage);
+    j["load_ms"] = load_ms;
+    j["triangles"] = triangles;
+    j["peak_rss_mb"] = double(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
     j["frame_ms"] = nlohmann::json::array();  // each frame's wall time, in order: ms.frame is their median
     for (const FrameStats& s : all) j["frame_ms"].push_back(s.ms.frame);
 

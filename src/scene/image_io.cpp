@@ -50,6 +50,11 @@ Image load_image(const std::string& path) {
     const int w = spec.width, h = spec.height, nc = spec.nchannels;
     if (w <= 0 || h <= 0 || nc <= 0 || spec.depth > 1)
         throw Error("cannot read image " + path + ": unsupported size or channel layout");
+    // Refused before anything is allocated: a header can claim any size.
+    if (w > 16384 || h > 16384 || size_t(w) * size_t(h) > (size_t(1) << 26) || nc > 64)
+        throw Error("cannot read image " + path + ": " + std::to_string(w) + " x " + std::to_string(h) + " pixels, " +
+                    std::to_string(nc) + " channels; expected at most 16384 per side, 67108864 pixels and 64 channels "
+                    "(an absurd size)");
 
     std::vector<float> raw(size_t(w) * h * nc);
     if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, raw.data())) {

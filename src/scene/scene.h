@@ -35,6 +35,7 @@ struct Material {
     float shininess = 16.0f;
     int diffuse_map = -1, normal_map = -1, specular_map = -1;
     float tile = 1.0f;
+    float opacity = 1.0f;  // MTL d (or 1 - Tr); kept for the transparency issue, not drawn yet
 };
 
 // Tangent frame per vertex (Listing 10's a2v): tangent follows +u, binormal +v.
@@ -65,6 +66,31 @@ struct Mesh {
     std::optional<ShapeDesc> shape;
 };
 
+// An OBJ model as parsed, in object space: one Mesh per material group (Listing 9), whose
+// `material` indexes Scene::materials. Parsed once per resolved path however many `mesh` lines
+// name it (scene/obj_loader.h).
+struct MeshModel {
+    std::string path;  // as resolved
+    std::vector<Mesh> groups;
+    size_t triangles = 0;
+};
+
+// One `mesh` line: its model, transform and material override.
+// model_matrix() = translate(at) * rotate_y(rotate_y_deg) * scale(scale), in double.
+// Phase 1 of issue 11: each instance is also baked to world space on the CPU into
+// Scene::meshes[first_mesh, first_mesh + mesh_count) (one per group), because every renderer
+// reads world-space Scene::meshes today. Phase 2 uploads each model once in object space and
+// draws every instance with its model matrix, composed camera-relative in double.
+struct MeshInstance {
+    int model = -1;  // index into Scene::models
+    double scale = 1, rotate_y_deg = 0;
+    glm::dvec3 at{0};
+    int material = -1;  // `material NAME`: every group drawn with it; -1: the MTL's
+    size_t first_mesh = 0, mesh_count = 0;
+    int line = 0;  // in the scene file
+    glm::dmat4 model_matrix() const;
+};
+
 struct Scene {
     std::string path;  // the scene file, "" for scenes built in code
     Camera camera;
@@ -75,11 +101,18 @@ struct Scene {
     std::vector<Mesh> meshes;
     std::vector<Light> lights;
     bool post_bloom = false, post_aa = false;  // `post bloom aa` directive
+    std::vector<MeshModel> models;         // `mesh` lines' OBJ models, object space
+    std::vector<MeshInstance> instances;   // one per `mesh` line
+    std::vector<std::string> warnings;     // statements the loaders read and ignored
 };
 
 // Parses a scene file (format in README.md). Throws dsr::Error whose message is
 // "FILE:LINE: expected ..., got ..." for any mistake; textures are loaded here.
+// Warnings (statements of OBJ/MTL files dsr ignores) are in Scene::warnings and printed to stderr.
 Scene load_scene(const std::string& path);
+// The same from text in memory: `path` names it in messages and resolves relative files;
+// warnings are only collected.
+Scene parse_scene(const std::string& path, const std::string& text);
 
 // Shapes of the scene format, in world space, with normals, uvs and tangent frames.
 Mesh make_plane(float size, glm::vec3 at, int material);       // XZ square, normal +Y, uv 0..1

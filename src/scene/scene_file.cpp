@@ -3,6 +3,7 @@
 // Directives that take keywords accept them in any order, each once.
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -13,7 +14,10 @@
 #include <string>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "dsr_error.h"
+#include "scene/obj_loader.h"
 #include "scene/scene.h"
 
 namespace dsr {
@@ -125,8 +129,24 @@ public:
     }
 
     Scene run() {
+        std::error_code ec;
+        if (std::filesystem::is_directory(path_, ec))
+            throw Error("cannot open scene file " + path_ + ": expected a file, got a directory");
         std::ifstream in(path_);
         if (!in) throw Error("cannot open scene file " + path_ + ": " + std::strerror(errno));
+        run(in);
+        if (in.bad()) throw Error("cannot read scene file " + path_ + ": " + std::strerror(errno));
+        return finish();
+    }
+
+    Scene run_text(const std::string& text) {
+        std::istringstream in(text);
+        run(in);
+        return finish();
+    }
+
+private:
+    void run(std::istream& in) {
         std::string text;
         for (int number = 1; std::getline(in, text); ++number) {
             if (!text.empty() && text.back() == '\r') text.pop_back();  // CRLF files
@@ -135,21 +155,24 @@ public:
             Line line(path_, number, std::move(tokens));
             directive(line);
         }
-        if (in.bad()) throw Error("cannot read scene file " + path_ + ": " + std::strerror(errno));
+    }
+
+    Scene finish() {
         if (camera_line_ == 0) throw Error(path_ + ": no camera line");
         return std::move(scene_);
     }
 
-private:
+
     void directive(Line& line) {
         const std::string kinds =
-            "a directive (camera, ambient, background, material, plane, box, sphere, light, post)";
+            "a directive (camera, ambient, background, material, plane, box, sphere, mesh, light, post)";
         const std::string d = line.word(kinds);
         if (d == "camera") camera(line);
         else if (d == "ambient") { scene_.ambient = line.colour("ambient"); line.end(); }
         else if (d == "background") { scene_.background = line.colour("background"); line.end(); }
         else if (d == "material") material(line);
         else if (d == "plane" || d == "box" || d == "sphere") shape(line, d);
+        else if (d == "mesh") mesh(line);
         else if (d == "light") light(line);
         else if (d == "post") post(line);
         else line.expected_last(kinds);
@@ -227,6 +250,10 @@ private:
             if (scene_.texture_paths[i] == resolved) return int(i);
         Image img;
         try {
+            std::error_code ec;
+            if (std::filesystem::is_directory(resolved, ec)) throw Error("expected a file, got a directory");
+            if (std::filesystem::exists(resolved, ec) && !std::filesystem::is_regular_file(resolved, ec))
+                throw Error("expected a regular file");
             img = load_image(resolved);
         } catch (const Error& e) {
             line.fail("expected a readable image for " + key + ", got '" + file + "': " + e.what());
@@ -262,6 +289,96 @@ private:
         if (kind == "plane") scene_.meshes.push_back(make_plane(size.x, at, material));
         else if (kind == "box") scene_.meshes.push_back(make_box(size, at, material));
         else scene_.meshes.push_back(make_sphere(size.x, at, material));
+    }
+
+    // mesh FILE.obj [scale S] [at X Y Z] [rotate_y DEGREES] [material NAME]
+    void mesh(Line& line) {
+        const std::string file = line.word("an OBJ file name");
+        std::filesystem::path p(file);
+        if (p.is_relative()) p = dir_ / p;
+        const std::string resolved = p.lexically_normal().string();
+        const std::vector<std::string> keys = {"scale", "at", "rotate_y", "material"};
+        std::set<std::string> seen;
+        MeshInstance inst;
+        inst.line = line.number();
+        while (!line.done()) {
+            const std::string k = line.key(keys, seen);
+            if (k == "scale") inst.scale = line.positive("mesh scale");
+            else if (k == "at") inst.at = glm::dvec3(line.vec3("mesh at"));
+            else if (k == "rotate_y") inst.rotate_y_deg = line.number("mesh rotate_y (degrees)");
+            else inst.material = material_named(line);
+        }
+        // The same file is parsed once (cached by resolved path), its materials and textures
+        // added to the scene once.
+        auto cached = model_index_.find(resolved);
+        if (cached == model_index_.end()) {
+            ObjModel obj;
+            try {
+                obj = load_obj(resolved);
+            } catch (const Error& e) {
+                line.fail("expected a readable OBJ file for mesh, got '" + file + "': " + e.what());
+            }
+            std::vector<int> tex(obj.textures.size());
+            for (size_t i = 0; i < obj.textures.size(); ++i) {
+                tex[i] = -1;
+                for (size_t j = 0; j < scene_.texture_paths.size() && tex[i] < 0; ++j)
+                    if (scene_.texture_paths[j] == obj.texture_paths[i]) tex[i] = int(j);
+                if (tex[i] < 0) {
+                    scene_.textures.push_back(std::move(obj.textures[i]));
+                    scene_.texture_paths.push_back(obj.texture_paths[i]);
+                    tex[i] = int(scene_.textures.size() - 1);
+                }
+            }
+            const int base = int(scene_.materials.size());
+            for (Material m : obj.materials) {
+                for (int* map : {&m.diffuse_map, &m.normal_map, &m.specular_map})
+                    if (*map >= 0) *map = tex[size_t(*map)];
+                scene_.materials.push_back(m);
+                material_lines_.push_back(line.number());
+            }
+            MeshModel model;
+            model.path = resolved;
+            model.triangles = obj.triangles;
+            model.groups = std::move(obj.groups);
+            for (Mesh& g : model.groups) g.material += base;
+            for (std::string& w : obj.warnings) scene_.warnings.push_back(std::move(w));
+            scene_.models.push_back(std::move(model));
+            cached = model_index_.emplace(resolved, int(scene_.models.size() - 1)).first;
+        }
+        inst.model = cached->second;
+        // Phase 1: bake the instance to world space (renderers read Scene::meshes); phase 2
+        // draws the object-space model with model_matrix() instead.
+        const glm::dmat4 m = inst.model_matrix();
+        const glm::dmat3 r = glm::dmat3(m) / inst.scale;  // rotation only: the scale is uniform
+        inst.first_mesh = scene_.meshes.size();
+        for (const Mesh& g : scene_.models[size_t(inst.model)].groups) {
+            Mesh w;
+            w.material = inst.material >= 0 ? inst.material : g.material;
+            w.indices = g.indices;
+            w.vertices.reserve(g.vertices.size());
+            for (const Vertex& v : g.vertices) {
+                Vertex o = v;
+                const glm::dvec3 pos = glm::dvec3(m * glm::dvec4(glm::dvec3(v.pos), 1.0));
+                o.pos = glm::vec3(pos);
+                if (!std::isfinite(o.pos.x) || !std::isfinite(o.pos.y) || !std::isfinite(o.pos.z))
+                    line.fail("expected scale and at that keep '" + file + "' within float range, got a vertex at " +
+                              fmt(float(pos.x)) + " " + fmt(float(pos.y)) + " " + fmt(float(pos.z)));
+                o.normal = glm::vec3(r * glm::dvec3(v.normal));
+                o.tangent = glm::vec3(r * glm::dvec3(v.tangent));
+                o.binormal = glm::vec3(r * glm::dvec3(v.binormal));
+                w.vertices.push_back(o);
+            }
+            scene_.meshes.push_back(std::move(w));
+        }
+        inst.mesh_count = scene_.meshes.size() - inst.first_mesh;
+        scene_.instances.push_back(inst);
+    }
+
+    int material_named(Line& line) {
+        const std::string& name = line.word("a material name");
+        for (size_t i = 0; i < scene_.materials.size(); ++i)
+            if (scene_.materials[i].name == name) return int(i);
+        line.expected_last("a material defined on an earlier line");
     }
 
     void light(Line& line) {
@@ -300,10 +417,23 @@ private:
     Scene scene_;
     int camera_line_ = 0;
     std::vector<int> material_lines_;  // parallel to scene_.materials
+    std::map<std::string, int> model_index_;  // resolved OBJ path -> scene_.models
 };
 
 }  // namespace
 
-Scene load_scene(const std::string& path) { return Parser(path).run(); }
+glm::dmat4 MeshInstance::model_matrix() const {
+    glm::dmat4 m = glm::translate(glm::dmat4(1.0), at);
+    m = glm::rotate(m, glm::radians(rotate_y_deg), glm::dvec3(0, 1, 0));
+    return glm::scale(m, glm::dvec3(scale));
+}
+
+Scene load_scene(const std::string& path) {
+    Scene s = Parser(path).run();
+    for (const std::string& w : s.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    return s;
+}
+
+Scene parse_scene(const std::string& path, const std::string& text) { return Parser(path).run_text(text); }
 
 }  // namespace dsr

@@ -1,11 +1,15 @@
 // The scene format's shapes, built in world space with the tangent frames the material pass
 // needs (Listing 10): tangent = direction of +u, binormal = direction of +v, and
 // cross(tangent, binormal) = normal everywhere, so a tangent-space normal map reads the same
-// on every face. Triangles wind counter-clockwise seen from outside (GL front faces).
+// on every face. The plane's and box's frames come from compute_tangents (scene/tangents.h),
+// the routine OBJ meshes use (every figure and image is byte-identical to the hand-written
+// frames it replaced); the sphere keeps its exact analytic frame (see make_sphere).
+// Triangles wind counter-clockwise seen from outside (GL front faces).
 #include <cmath>
 
 #include "dsr_error.h"
 #include "scene/scene.h"
+#include "scene/tangents.h"
 
 namespace dsr {
 
@@ -23,8 +27,6 @@ void add_quad(Mesh& m, glm::vec3 centre, glm::vec3 n, glm::vec3 t, glm::vec3 b, 
         v.pos = centre + (2 * uv.x - 1) * half_t * t + (2 * uv.y - 1) * half_b * b;
         v.normal = n;
         v.uv = uv;
-        v.tangent = t;
-        v.binormal = b;
         m.vertices.push_back(v);
     }
     for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
@@ -37,6 +39,7 @@ Mesh make_plane(float size, glm::vec3 at, int material) {
     m.material = material;
     // u along +X, v along -Z: cross(+X, -Z) = +Y.
     add_quad(m, at, {0, 1, 0}, {1, 0, 0}, {0, 0, -1}, size / 2, size / 2);
+    compute_tangents(m);
     m.shape = ShapeDesc{ShapeDesc::Kind::plane, at, {size, 0, size}, 0};
     return m;
 }
@@ -57,6 +60,7 @@ Mesh make_box(glm::vec3 size, glm::vec3 at, int material) {
         {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}, h.z, h.x, h.y},  // -Z
     };
     for (const Face& f : faces) add_quad(m, at + f.half_n * f.n, f.n, f.t, f.b, f.half_t, f.half_b);
+    compute_tangents(m);
     m.shape = ShapeDesc{ShapeDesc::Kind::box, at, size, 0};
     return m;
 }
@@ -85,6 +89,9 @@ Mesh make_sphere(float radius, glm::vec3 at, int material, int slices, int stack
             vx.pos = at + radius * vx.normal;
             vx.uv = {u, v};
             // dP/du / |dP/du| is the azimuthal direction, which also stays defined at the poles.
+            // The sphere keeps this exact frame of its parametrisation rather than
+            // compute_tangents' per-vertex average of the facets, which on a coarse sphere leans
+            // up to 40 degrees off a facet's dP/dv (Shapes.TangentFollowsUAndBinormalFollowsV).
             vx.tangent = glm::vec3(-sin_p, 0, -cos_p);
             vx.binormal = glm::cross(vx.normal, vx.tangent);
             m.vertices.push_back(vx);
