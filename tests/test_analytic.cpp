@@ -219,6 +219,10 @@ TEST(Analytic, DeferredDepthTextureWithinTwoLsb) {
 // 8.5% of channels (mean 0.054 LSB), a rare 2-3 (0.10% of pixels) where float and double land
 // on opposite sides of a rounding step (a normal component one code off moves a highlight). So the model accounts for the error: the deferred path's mean error
 // against the model must be well under its mean error against the reference.
+// Those figures were measured against the trace of the renderer's triangles. Against the exact
+// spheres (issue 10) the model leaves out the 48x24 tessellation: 8-bit normals 1.86 / 0.059,
+// all three 2.37 / 0.244, the render 2.06 / 0.253, and against the model max 4.00, mean 0.060,
+// 28 of 15650 pixels off by 1.5 LSB or more (0.18%); the assertions below are unchanged.
 TEST(Analytic, DeferredErrorIsGBufferAndPassQuantisation) {
     Scene s = analytic_scene();
     AnalyticTrace tr = analytic_trace(s, kSize, kSize);
