@@ -52,13 +52,15 @@ run)
     done
     build=$root/.gpu/build
     mkdir -p $build/obj
-    flags="-std=c++17 -O2 -g -Wall -Wno-unused-parameter -I$root/$src/src -isystem $root/$sys/usr/include \
-           -DDSR_NO_OSMESA -DDSR_SOURCE_DIR=\"$root/$src\""
+    # A response file, so the quoted DSR_SOURCE_DIR survives xargs and sh.
+    flags=$build/flags
+    printf '%s\n' -std=c++17 -O2 -g -Wall -Wno-unused-parameter "-I$root/$src/src" "-isystem" "$root/$sys/usr/include" \
+        -DDSR_NO_OSMESA "-DDSR_SOURCE_DIR=\\\"$root/$src\\\"" > $flags
     sources=$(cd $src && ls src/gl/*.cpp src/scene/*.cpp src/deferred/*.cpp src/forward/*.cpp src/analysis/*.cpp \
               src/platform/*.cpp src/app/*.cpp | grep -v -e osmesa_context -e 'image_io\.cpp' -e glfw_)
     t0=$(date +%s)
     echo "$sources" | xargs -P "$(nproc)" -I{} sh -c \
-        'mkdir -p "$(dirname '"$build"'/obj/{})" && g++ '"$flags"' -c '"$root/$src"'/{} -o '"$build"'/obj/{}.o'
+        'mkdir -p "$(dirname '"$build"'/obj/{})" && g++ @'"$flags"' -c '"$root/$src"'/{} -o '"$build"'/obj/{}.o'
     objs=$(echo "$sources" | sed "s|^|$build/obj/|; s|\$|.o|")
     tol=$root/$sys/usr/lib/x86_64-linux-gnu
     g++ -o $build/dsr $objs -L$tol -Wl,-rpath,$tol -ltinyobjloader $lib/libEGL.so.1 $lib/libOpenGL.so.0 \
