@@ -4,6 +4,7 @@
 // (DSR_TEST_SIZE=640x480; also DSR_TEST_SIZE=N for NxN).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "render_fixture.h"
@@ -58,10 +59,14 @@ TEST(Fallbacks, EveryCombinationMatchesFullCapabilities) {
         EXPECT_EQ(r.paths.depth, (mask & 2) ? "packed" : "texture") << label;
         EXPECT_EQ(r.paths.render_target, (mask & 4) ? "copy" : "fbo") << label;
         EXPECT_EQ(r.paths.textures, (mask & 8) ? "pow2" : "npot") << label;
-        // Same lights, same fragments: the fallbacks change where bytes live, not what is lit.
-        EXPECT_EQ(r.stats.light_fragments, full.stats.light_fragments) << label;
-        // Tolerance: the depth paths differ by rounding (1 LSB); the pow2 path's bilinear bloom
-        // upscale reads a quarter texel of padding on the last row and column (a few LSB there).
+        // Same lights, same fragments: the fallbacks change where bytes live, not what is lit. The
+        // packed codec and the copied depth (no-fbo) rebuild positions that differ in the last
+        // bits, so a pixel whose surface point lies on a light's sphere to within float rounding
+        // may fall on either side: at 640x480 one fragment in 194459 did. At most 1 in 10^5.
+        const long long tol = std::max(1LL, full.stats.light_fragments / 100000);
+        EXPECT_LE(std::llabs(r.stats.light_fragments - full.stats.light_fragments), tol) << label;
+        // Tolerance: the depth paths differ by rounding (1 LSB), the copy path by up to 3; the pow2
+        // path's bloom add keeps to the content's edge texels (post_stage.cpp, draw_quad_clamped).
         EXPECT_LE(d.max_lsb(), 8.0) << label;
         EXPECT_LE(d.failing_fraction(), 0.01) << label;
         if (d.max_lsb() > 8.0 || d.failing_fraction() > 0.01)
