@@ -41,7 +41,8 @@ std::vector<CommandUsage> make_table() {
                  "  --frames N              frames to render; --stats reports the medians (default 1)\n"
                  "  --stats FILE.json       per-stage times, light counts and fragments, paths chosen\n"
                  "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-npot,\n"
-                 "                          no-float, no-glsl (added to $DSR_CAPS)\n"
+                 "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats\n"
+                 "                          (added to $DSR_CAPS)\n"
                  "  --view NAME             final, normal, diffuse, specular, depth, blur-factor or bloom\n"
                  "  --bloom, --no-bloom     bloom on or off (default: the scene's post line)\n"
                  "  --bloom-scale 2|4       bloom buffers at 1/2 or 1/4 of the frame (default 2)\n"
@@ -96,7 +97,8 @@ std::vector<CommandUsage> make_table() {
                  {"[--caps LIST] [--context NAME] [--egl-device N]"},
                  "GL vendor/renderer/version, capabilities, paths chosen",
                  "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-npot,\n"
-                 "                          no-float, no-glsl (added to $DSR_CAPS)\n" +
+                 "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats\n"
+                 "                          (added to $DSR_CAPS)\n" +
                      std::string(kContextOption) + kEglDeviceOption});
     t.push_back({"gen-textures",
                  {"DIR"},
