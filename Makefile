@@ -10,17 +10,25 @@ DSR_FLAGS := -std=c++17 -Wall -Wextra -Wno-unused-parameter -MMD -MP -Isrc \
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
 DEB_PACKAGES := g++ make pkg-config libosmesa6-dev libglm-dev libopenimageio-dev \
-                nlohmann-json3-dev libgtest-dev libtinyobjloader-dev
+                nlohmann-json3-dev libgtest-dev libtinyobjloader-dev libegl-dev
 
 # GL context backends, linked per executable and never into the core (src/platform/context.h):
-# the headless executables get OSMesa; the viewer will link its GLFW list against libGL.
-HEADLESS_BACKEND_SRC := src/platform/osmesa_context.cpp src/platform/headless_backends.cpp
+# the headless executables get OSMesa and EGL (on Mesa both dispatch through the one shared
+# libglapi, so the GL 1.1 calls the core links from libOSMesa reach whichever context is current);
+# the viewer will link its GLFW list against libGL.
+HEADLESS_BACKEND_SRC := src/platform/osmesa_context.cpp src/platform/egl_context.cpp src/platform/headless_backends.cpp
 # Renderer core: everything but the command line and the context backends.  Links without
 # OpenImageIO except for src/scene/image_io.cpp, the one file that includes it, and calls no
 # GL function beyond GL 1.1 directly (the rest through src/gl/entry_points.h); the Context
 # tests check both with nm.
-CORE_SRC := $(filter-out src/platform/glfw_%.cpp $(HEADLESS_BACKEND_SRC),$(sort $(wildcard src/platform/*.cpp \
-                              src/gl/*.cpp src/scene/*.cpp src/deferred/*.cpp src/forward/*.cpp src/analysis/*.cpp)))
+# The image seam's backend: IMAGE_IO=oiio (OpenImageIO, default) or png (libpng: PNG and PPM
+# only, for builds that must travel; tests/gpu_bench.sh builds that way).
+IMAGE_IO ?= oiio
+IMAGE_IO_SRC := $(if $(filter png,$(IMAGE_IO)),src/scene/image_io_png.cpp,src/scene/image_io.cpp)
+IMAGE_IO_LIBS := $(if $(filter png,$(IMAGE_IO)),-lpng,-lOpenImageIO -lOpenImageIO_Util)
+CORE_SRC := $(filter-out src/platform/glfw_%.cpp $(HEADLESS_BACKEND_SRC) src/scene/image_io%.cpp,$(sort $(wildcard src/platform/*.cpp \
+                              src/gl/*.cpp src/scene/*.cpp src/deferred/*.cpp src/forward/*.cpp src/analysis/*.cpp))) \
+            $(IMAGE_IO_SRC)
 APP_SRC  := $(sort $(wildcard src/app/*.cpp))
 TEST_SRC := $(sort $(wildcard tests/*.cpp))
 
@@ -30,7 +38,7 @@ APP_OBJ  := $(APP_SRC:%.cpp=$(BUILD)/obj/%.o)
 TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o)
 
 # tinyobjloader: Debian's shared library (float build), as its tinyobjloader.pc says.
-LIBS := -lOSMesa -lOpenImageIO -lOpenImageIO_Util -ltinyobjloader -pthread
+LIBS := -lOSMesa -lEGL $(IMAGE_IO_LIBS) -ltinyobjloader -pthread
 
 .PHONY: all run test test-legacy test-sanitizers deps fuzz fuzz-deps clean figures bench stress
 all: $(BUILD)/dsr $(BUILD)/dsr_tests
