@@ -46,6 +46,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     std::string view_name_arg = "final";
     std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";
     std::string context = default_context_backend();  // --context, else $DSR_CONTEXT
+    int egl_device = -1;                               // --egl-device, else $DSR_EGL_DEVICE, else 0
     while (!args.done()) {
         std::string a = args.next();
         if (a == "-o" || a == "--output") out = args.value(a);
@@ -84,6 +85,7 @@ int cmd_render(const std::vector<std::string>& argv) {
         else if (a == "--aa-weight") post.aa_weight = args.float_value(a, 0.0f, 8.0f);
         else if (a == "--caps") caps_list += "," + args.value(a);
         else if (a == "--context") context = args.value(a);
+        else if (a == "--egl-device") egl_device = args.int_value(a, 0, 15);
         else if (a == "--gl-state-cache") gl_state().set_cache(args.on_off(a));
         else if (a == "--debug-gl") set_debug_gl(true);
         else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
@@ -106,7 +108,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     post.aa = aa < 0 ? scene.post_aa : aa == 1;
     if (view == View::bloom) post.bloom = true;  // the view shows the bloom blur
     // The no-FBO path renders its buffers inside the main frame buffer: make it fit both.
-    auto ctx = create_context(ContextDesc{context, std::max(w, out_w), std::max(h, out_h)});
+    auto ctx = create_context(ContextDesc{context, std::max(w, out_w), std::max(h, out_h), egl_device});
     Caps caps = probe_caps(split_caps(caps_list));
     ShaderOptions opts;
     // auto: choose_paths decides (the depth texture where ARB_depth_texture exists).
