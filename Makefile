@@ -78,7 +78,7 @@ run: deps
 test: deps
 	$(MAKE) -j$(JOBS) all
 	$(BUILD)/dsr_tests
-	$(MAKE) test-sanitizers
+	$(MAKE) -j$(JOBS) test-sanitizers
 
 # The OBJ/MTL and scene-file loaders again under AddressSanitizer + UBSan (a second build of
 # the loader objects and tests/test_obj.cpp without its GL tests, tinyobjloader compiled from
@@ -101,9 +101,10 @@ $(BUILD)/asan/dsr_lsan: $(APP_OBJ) $(HEADLESS_BACKEND_OBJ) $(BUILD)/libdsr_core.
 	$(CXX) $(CXXFLAGS) -fsanitize=leak $^ $(LIBS) -o $@
 
 test-sanitizers: $(BUILD)/asan/dsr_obj_tests $(BUILD)/asan/dsr_lsan
-	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 $(BUILD)/asan/dsr_obj_tests
+	ASAN_OPTIONS=detect_leaks=1:fast_unwind_on_malloc=0 UBSAN_OPTIONS=print_stacktrace=1 \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp $(BUILD)/asan/dsr_obj_tests --gtest_brief=1
 	@mkdir -p $(BUILD)/asan/out
-	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 \
+	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=1 \
 	  $(BUILD)/asan/dsr_lsan render data/mesh.scene --size 128x128 -o $(BUILD)/asan/out/mesh.png
 	@echo "test-sanitizers: loader tests clean under ASan + UBSan; mesh render leak-free under LeakSanitizer"
 
