@@ -86,7 +86,7 @@ test: deps
 # LeakSanitizer (the normal objects linked with -fsanitize=leak), which must report no leak.
 ASAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined
 ASAN_SRC := src/scene/obj_loader.cpp src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/shapes.cpp \
-            src/scene/camera.cpp src/scene/image_io.cpp tests/fuzz/tinyobj_impl.cpp tests/test_obj.cpp
+            src/scene/camera.cpp src/scene/image_io.cpp src/scene/image_extension.cpp tests/fuzz/tinyobj_impl.cpp tests/test_obj.cpp
 ASAN_OBJ := $(ASAN_SRC:%.cpp=$(BUILD)/asan/obj/%.o)
 
 $(BUILD)/asan/obj/%.o: %.cpp
@@ -119,7 +119,7 @@ FUZZ_PACKAGES := clang libclang-rt-14-dev
 FUZZ_FLAGS := -std=c++17 -O1 -g -fno-omit-frame-pointer -Isrc -DDSR_SOURCE_DIR=\"$(CURDIR)\" \
               -fsanitize=address,undefined -fno-sanitize-recover=undefined
 FUZZ_LIB_SRC := src/scene/obj_loader.cpp src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/shapes.cpp \
-                src/scene/camera.cpp src/scene/image_io.cpp tests/fuzz/tinyobj_impl.cpp
+                src/scene/camera.cpp src/scene/image_io.cpp src/scene/image_extension.cpp tests/fuzz/tinyobj_impl.cpp
 FUZZ_LIB_OBJ := $(FUZZ_LIB_SRC:%.cpp=$(BUILD)/fuzz/obj/%.o)
 FUZZ_TARGETS := obj scene_file
 .SECONDARY: $(FUZZ_LIB_OBJ)  # kept between runs (make would delete them as intermediates)
@@ -145,7 +145,6 @@ fuzz: deps fuzz-deps
 	    || { tail -n 40 $(BUILD)/fuzz/$$t.log; echo "make fuzz: $$t FOUND A PROBLEM (input in $(BUILD)/fuzz/$$t-*)"; exit 1; }; \
 	  grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb|^#[0-9]+ +DONE' $(BUILD)/fuzz/$$t.log; \
 	done
-
 
 # The old-GL matrix (every combination of no-mrt, no-depth-texture, no-fbo, no-npot), the Mesa
 # overrides and softpipe, the matrix at 640x480 (not a power of two, so the padded path runs at

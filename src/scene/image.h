@@ -24,6 +24,10 @@ inline Image opaque(Image img) {
     return img;
 }
 
+// ".png" for "dir/Name.PNG": the extension lower-cased with its dot, "" when there is none
+// (both image backends pick the format by it).
+std::string image_extension(const std::string& path);
+
 // Reads any format OpenImageIO reads. Grey becomes RGB, a missing alpha is 1.
 // Throws dsr::Error naming the path and what went wrong.
 Image load_image(const std::string& path);

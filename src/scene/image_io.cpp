@@ -21,15 +21,6 @@ namespace dsr {
 
 namespace {
 
-std::string lower_extension(const std::string& path) {
-    size_t slash = path.find_last_of('/');
-    size_t dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-    std::string ext = path.substr(dot);
-    for (char& c : ext) c = char(std::tolower((unsigned char)c));
-    return ext;
-}
-
 // OIIO keeps a per-thread error string; read it so the message says what went wrong.
 std::string oiio_message(const std::string& fallback) {
     std::string m = OIIO::geterror();
@@ -91,7 +82,7 @@ void write_image(const std::string& path, const Image& img) {
     if (img.width <= 0 || img.height <= 0 || img.rgba.size() != size_t(img.width) * img.height * 4)
         throw Error("cannot write " + path + ": image has no pixels or the wrong buffer size");
 
-    const std::string ext = lower_extension(path);
+    const std::string ext = image_extension(path);
     // The output plugin is chosen by the target's name; the temp name keeps the extension too.
     auto out = OIIO::ImageOutput::create(path);
     if (!out) throw Error("cannot write " + path + ": " + oiio_message("no writer for this extension"));

@@ -22,15 +22,6 @@ namespace dsr {
 
 namespace {
 
-std::string lower_extension(const std::string& path) {
-    size_t slash = path.find_last_of('/');
-    size_t dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-    std::string ext = path.substr(dot);
-    for (char& c : ext) c = char(std::tolower((unsigned char)c));
-    return ext;
-}
-
 struct File {
     FILE* f = nullptr;
     ~File() {
@@ -50,7 +41,7 @@ uint8_t to_byte(float v) {
 }  // namespace
 
 Image load_image(const std::string& path) {
-    const std::string ext = lower_extension(path);
+    const std::string ext = image_extension(path);
     if (ext != ".png") throw Error("cannot read image " + path + ": this build reads PNG only (libpng backend)");
     File in;
     in.f = std::fopen(path.c_str(), "rb");
@@ -92,7 +83,7 @@ Image load_image(const std::string& path) {
 void write_image(const std::string& path, const Image& img) {
     if (img.width <= 0 || img.height <= 0 || img.rgba.size() != size_t(img.width) * img.height * 4)
         throw Error("cannot write " + path + ": image has no pixels or the wrong buffer size");
-    const std::string ext = lower_extension(path);
+    const std::string ext = image_extension(path);
     if (ext != ".png" && ext != ".ppm")
         throw Error("cannot write " + path + ": this build writes .png and .ppm only (libpng backend)");
     const int w = img.width, h = img.height;
