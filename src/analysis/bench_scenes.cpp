@@ -31,12 +31,13 @@ glm::vec3 hue(float h) {
 
 Scene with_generated_lights(const Scene& scene, int n) {
     if (n < 0) throw Error("bench scenes: negative light count");
-    if (scene.meshes.empty()) throw Error("bench scenes: the scene has no geometry to spread lights over");
+    if (scene.objects.empty()) throw Error("bench scenes: the scene has no geometry to spread lights over");
     glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
-    for (const Mesh& m : scene.meshes)
-        for (const Vertex& v : m.vertices) {
-            lo = glm::min(lo, v.pos);
-            hi = glm::max(hi, v.pos);
+    for (const Object& o : scene.objects)
+        for (const Vertex& v : scene.meshes.at(o.mesh).vertices) {
+            const glm::vec3 p(o.model * glm::dvec4(glm::dvec3(v.pos), 1.0));
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
         }
     Scene out = scene;
     out.lights.clear();

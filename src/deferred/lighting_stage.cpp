@@ -97,7 +97,9 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
             ++stats.lights_culled;  // adds nothing
             continue;
         }
-        glm::vec3 eye = glm::vec3(view_ * glm::vec4(light.pos, 1.0f));
+        // In double, rounded once: far from the origin, view_ * pos in float would lose the
+        // light's position to the world coordinates' rounding (stress case coords).
+        const glm::vec3 eye = scene.camera.to_eye(light.pos);
         ScissorRect r = light_scissor(eye, light.radius, proj_[0][0], proj_[1][1], near_plane, w_, h_);
         long long n = r.area();
         if (n <= 0) {
