@@ -26,6 +26,7 @@
 #include "scene/tangents.h"
 
 #ifndef DSR_OBJ_LOADER_ONLY
+#include "analysis/large_mesh.h"
 #include "cli_fixture.h"
 #include "render_fixture.h"
 #endif
@@ -676,34 +677,11 @@ TEST(ObjAssets, WindmillMapsAreUsed) {
 // A generated 1-million-triangle grid (a height field, so it is lit unevenly) loads and renders.
 TEST(ObjLarge, MillionTriangles) {
     const int n = 708;  // 708 x 708 quads = 1,002,528 triangles
-    const std::string obj = dsr::test::test_output_dir() + "/grid_1m.obj";
-    {
-        std::ofstream o(obj);
-        char buf[96];
-        for (int j = 0; j <= n; ++j)
-            for (int i = 0; i <= n; ++i) {
-                const double x = double(i) / n * 2 - 1, z = double(j) / n * 2 - 1;
-                std::snprintf(buf, sizeof buf, "v %.6f %.6f %.6f\n", x, 0.1 * std::sin(9 * x) * std::cos(7 * z), z);
-                o << buf;
-            }
-        for (int j = 0; j <= n; ++j)
-            for (int i = 0; i <= n; ++i) {
-                std::snprintf(buf, sizeof buf, "vt %.6f %.6f\n", double(i) / n, double(j) / n);
-                o << buf;
-            }
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i) {
-                const int a = j * (n + 1) + i + 1, b = a + 1, c = b + n + 1, d = a + n + 1;
-                std::snprintf(buf, sizeof buf, "f %d/%d %d/%d %d/%d %d/%d\n", a, a, d, d, c, c, b, b);
-                o << buf;
-            }
-    }
-    const std::string scene_path = dsr::test::test_output_dir() + "/grid_1m.scene";
-    std::ofstream(scene_path) << "camera pos 0 2.2 2.2 target 0 0 0 up 0 1 0 fov 50 near 0.1 far 20\n"
-                                 "ambient 0.1 0.1 0.1\n"
-                                 "material m diffuse 0.8 0.8 0.8 specular 0.3 0.3 0.3 shininess 32\n"
-                                 "mesh grid_1m.obj material m\n"
-                                 "light point pos 0 1 0 color 1 1 1 radius 3\n";
+    const std::string dir = dsr::test::test_output_dir() + "/grid";
+    std::error_code ec;
+    fs::remove_all(dir, ec);  // written afresh: the test times the load of a file it just wrote
+    const std::string scene_path = dsr::write_grid_scene(dir, n);
+    const std::string obj = dir + "/grid_708.obj";
     const double t0 = dsr::now_ms();
     const dsr::Scene scene = dsr::load_scene(scene_path);
     const double load_ms = dsr::now_ms() - t0;
