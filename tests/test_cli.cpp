@@ -211,6 +211,11 @@ TEST(Cli, FiguresWritesEveryFile) {
                           "fig9_closeup_with_aa", "fig10a_horizontal_blur", "fig10b_vertical_blur",
                           "fig10c_composed_blur", "fig11_without_bloom", "fig11_with_bloom"})
         EXPECT_TRUE(exists(d + "/" + f + ".png")) << f;
+    // Beside Figure 6, the windmill from ../shared/assets when present (issue 11).
+    const bool windmill = exists(std::string(DSR_SOURCE_DIR) + "/../shared/assets/windmill/windmill.obj");
+    for (const char* f : {"windmill_final", "windmill_normal", "windmill_specular"})
+        EXPECT_EQ(exists(d + "/" + f + ".png"), windmill) << f;
+    if (!windmill) EXPECT_NE(r.output.find("windmill figure skipped"), std::string::npos) << r.output;
 }
 
 // The final stage scales the deferred buffers to the output size (§3.6), and every view runs.

@@ -64,7 +64,7 @@ std::vector<CommandUsage> make_table() {
                      "  --debug-gl              check GL errors after every stage (also DSR_DEBUG_GL=1)\n"});
     t.push_back({"figures",
                  {"[SCENE] [-o DIR] [--size NxN] [--context NAME]"},
-                 "the tutorial's figures 4, 6, 8-11 as PNGs",
+                 "the tutorial's figures 4, 6, 8-11 as PNGs (and the windmill model beside Figure 6 when ../shared/assets has it)",
                  "  SCENE                   scene file (default data/default.scene)\n"
                  "  -o DIR                  folder to write the PNGs into (default docs/figures)\n"
                  "  --size NxN              square size, at least 64x64 (default 512x512)\n" +
