@@ -28,6 +28,8 @@
 #ifndef DSR_OBJ_LOADER_ONLY
 #include "analysis/large_mesh.h"
 #include "cli_fixture.h"
+#include "deferred/gpu_scene.h"
+#include "platform/context.h"
 #include "render_fixture.h"
 #endif
 
@@ -672,6 +674,61 @@ TEST(ObjAssets, WindmillMapsAreUsed) {
     EXPECT_EQ(with_spec, 1) << "map_Ns on the base";
     const size_t tris = s.triangle_count();
     EXPECT_EQ(tris, 66u + 2u * 1328u) << "quads triangulated";
+}
+
+// Issue 11: the same OBJ used twice is uploaded once and drawn with two transforms. A box of two
+// material groups, instanced left and right of the view: the vertex buffer holds its corners once,
+// the draws are one per group per instance, and both instances appear where their transforms put
+// them (the left one turned, the right one scaled).
+TEST(ObjInstances, UploadedOnceDrawnPerInstance) {
+    const std::string dir = dsr::test::test_output_dir() + "/instances";
+    fs::create_directories(dir);
+    std::ofstream(dir + "/box.mtl") << "newmtl red\nKd 0.9 0.2 0.2\nnewmtl blue\nKd 0.2 0.3 0.9\n";
+    std::ofstream(dir + "/box.obj") << "mtllib box.mtl\n"
+                                       "v -0.5 -0.5 -0.5\nv 0.5 -0.5 -0.5\nv 0.5 0.5 -0.5\nv -0.5 0.5 -0.5\n"
+                                       "v -0.5 -0.5 0.5\nv 0.5 -0.5 0.5\nv 0.5 0.5 0.5\nv -0.5 0.5 0.5\n"
+                                       "usemtl red\nf 5 6 7 8\nf 2 1 4 3\nf 6 2 3 7\nf 1 5 8 4\n"
+                                       "usemtl blue\nf 8 7 3 4\nf 1 2 6 5\n";
+    std::ofstream(dir + "/s.scene") << "camera pos 0 1.5 5 target 0 0 0 up 0 1 0 fov 50 near 0.1 far 50\n"
+                                       "ambient 0.3 0.3 0.3\n"
+                                       "mesh box.obj at -1.4 0 0 rotate_y 30\n"
+                                       "mesh box.obj at 1.4 0 0 scale 1.5\n"
+                                       "light point pos 0 3 3 color 1 1 1 radius 10\n";
+    const dsr::Scene s = dsr::load_scene(dir + "/s.scene");
+    ASSERT_EQ(s.meshes.size(), 2u);
+    ASSERT_EQ(s.objects.size(), 4u);
+    size_t vertices = 0;
+    for (const dsr::Mesh& m : s.meshes) vertices += m.vertices.size();
+    {
+        auto ctx = dsr::create_context(dsr::ContextDesc{"osmesa", 64, 64});
+        const dsr::GpuScene gpu(s);
+        EXPECT_EQ(gpu.uploaded_vertices(), vertices) << "each mesh once";
+        EXPECT_EQ(gpu.triangle_count(), 2 * s.models[0].triangles) << "drawn twice";
+        ASSERT_EQ(gpu.ranges().size(), 4u) << "one draw per material group per instance";
+        EXPECT_EQ(gpu.ranges()[0].material, gpu.ranges()[1].material) << "ordered by material";
+    }
+    const int w = 160, h = 96;
+    const dsr::test::RenderResult r = dsr::test::render_scene(s, w, h, dsr::ShaderOptions{});
+    dsr::write_image(dir + "/instances.png", dsr::opaque(r.image));
+    // Each half of the image: its instance's pixels, centred where the transform put it.
+    double cx[2] = {0, 0};
+    int n[2] = {0, 0};
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float* p = r.image.at(x, y);
+            if (p[0] + p[1] + p[2] < 3.0f / 255) continue;
+            const int half = x < w / 2 ? 0 : 1;
+            cx[half] += x;
+            ++n[half];
+        }
+    ASSERT_GT(n[0], 200);
+    ASSERT_GT(n[1], 200);
+    EXPECT_GT(n[1], 1.5 * n[0]) << "the right instance is scaled 1.5x";
+    // The centroids lie near the projections of the instances' origins (+-1.4, 0, 0).
+    for (int k = 0; k < 2; ++k) {
+        const glm::vec4 c = s.camera.projection(float(w) / h) * s.camera.view() * glm::vec4(k ? 1.4f : -1.4f, 0, 0, 1);
+        EXPECT_NEAR(cx[k] / n[k], (c.x / c.w * 0.5 + 0.5) * w, 4) << (k ? "right" : "left");
+    }
 }
 
 // A generated 1-million-triangle grid (a height field, so it is lit unevenly) loads and renders.

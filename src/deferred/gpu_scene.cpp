@@ -49,6 +49,7 @@ GpuScene::GpuScene(const Scene& scene, bool pow2_textures) {
         verts.insert(verts.end(), mesh.vertices.begin(), mesh.vertices.end());
         for (uint32_t i : mesh.indices) idx.push_back(base + i);
     }
+    uploaded_vertices_ = verts.size();
     // One draw per object, ordered by material so a material's state is set once (Listing 9).
     object_ranges_.resize(scene.objects.size());
     models_.resize(scene.objects.size());

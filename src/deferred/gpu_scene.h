@@ -63,13 +63,14 @@ public:
     size_t object_count() const { return object_ranges_.size(); }
     const GpuMaterial& material(int i) const { return materials_[i]; }
     size_t triangle_count() const { return triangles_; }  // drawn, over objects
+    size_t uploaded_vertices() const { return uploaded_vertices_; }  // in the vertex buffer: each mesh once
     // A 1x1 tangent-space normal map pointing straight out (128,128,255): what a material
     // without a map reads when the shader variants are off.
     GLuint flat_normal() const { return flat_normal_.id(); }
 
 private:
     GLuint vbo_ = 0, ibo_ = 0;
-    size_t triangles_ = 0;
+    size_t triangles_ = 0, uploaded_vertices_ = 0;
     std::vector<glm::dmat4> models_;     // per object
     std::vector<glm::mat4> modelviews_;  // per object, from set_view
     std::vector<Texture> textures_;
