@@ -6,6 +6,8 @@
 
 #include "deferred/culling.h"
 #include "deferred/deferred_shader.h"
+#include "deferred/light_params.h"
+#include "deferred/light_volume.h"
 #include "deferred/reconstruct.h"
 #include "deferred/scissor.h"
 #include "gl/check.h"
@@ -67,7 +69,9 @@ void DeferredShader::draw_ambient(const Scene& scene) {
     glColor4f(1, 1, 1, 1);
 }
 
-// Listing 17: cull against the view frustum, scissor, one quad per light.
+// Listing 17: cull against the view frustum, scissor, one quad per light. Culling and the
+// rectangle come from the light's volume (light_volume.h): a sphere as in the tutorial, a spot's
+// cone, or a directional light's full screen (never culled, never scissored).
 void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats& stats) {
     const auto frustum = frustum_planes(proj_ * view_);
     const auto rays = corner_rays(proj_[0][0], proj_[1][1]);
@@ -88,7 +92,8 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
     std::vector<GLuint> queries, inv_queries;
     stats.lights_total = int(scene.lights.size());
     for (const Light& light : scene.lights) {
-        if (sphere_outside(frustum, light.pos, light.radius)) {
+        const LightVolume volume = light_volume(light);
+        if (volume_outside(frustum, volume)) {
             ++stats.lights_culled;
             continue;
         }
@@ -97,11 +102,10 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
             ++stats.lights_culled;  // adds nothing
             continue;
         }
-        glm::vec3 eye = glm::vec3(view_ * glm::vec4(light.pos, 1.0f));
-        ScissorRect r = light_scissor(eye, light.radius, proj_[0][0], proj_[1][1], near_plane, w_, h_);
+        ScissorRect r = volume_scissor(transformed(volume, view_), proj_[0][0], proj_[1][1], near_plane, w_, h_);
         long long n = r.area();
         if (n <= 0) {
-            if (skip_empty) {  // the sphere reaches no visible pixel: Listing 17 line 31
+            if (skip_empty) {  // the volume reaches no visible pixel: Listing 17 line 31
                 ++stats.lights_culled;
                 continue;
             }
@@ -114,8 +118,12 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
         gl_state().apply(light_pass_state(light_prog_.id(), !full));
         stats.scissor_pixels += n;
         ++stats.lights_drawn;
-        light_prog_.set("lightpos", glm::vec4(eye, light.radius));  // set_light_params
-        light_prog_.set("lightcolor", light.color);
+        const LightParams lp = light_params(light, view_);  // set_light_params
+        light_prog_.set("lightpos", lp.pos);
+        light_prog_.set("lightcolor", lp.color);
+        light_prog_.set("lightdir", lp.dir);
+        light_prog_.set("lightspot", lp.spot);
+        light_prog_.set("lightatt", lp.att);
         if (count) {
             queries.push_back(0);
             glGenQueries(1, &queries.back());
