@@ -29,11 +29,12 @@ struct Camera {
 // radius is S_radius of Equation 2 when `attenuation` is off; with it, the distance where
 // color_max / (kc + kl d + kq d^2) falls to `threshold` (attenuation_radius), beyond which the
 // light adds nothing.
+// The first three fields stay pos, color, radius so {pos, color, radius} still makes a point light.
 struct Light {
     enum class Type { point, spot, directional };
-    Type type = Type::point;
     glm::vec3 pos{0}, color{1};
     float radius = 1.0f;
+    Type type = Type::point;
     glm::vec3 dir{0, 0, -1};      // spot, directional: unit direction the light travels
     float angle_deg = 45.0f;      // spot: cone half-angle in (0, 90]
     float exponent = 0.0f;        // spot: GL_SPOT_EXPONENT, >= 0
