@@ -78,13 +78,17 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
     for (int i = 0; i < 4; ++i) corner_rays_[i] = rays[i];
     const float near_plane = scene.camera.near_plane;
 
-    gl_state().apply(light_pass_state(light_prog_.id(), false));  // bind_light()
-    light_prog_.set("normal_map", 0);
-    light_prog_.set("diffuse_map", 1);
-    light_prog_.set("specular_map", 2);
-    light_prog_.set("depth_map", 3);
-    light_prog_.set("planes", planes_);
-    light_prog_.set("zrange", zrange_);
+    // bind_light(): the frame's uniforms on both light programs (deferred_shader.h: the
+    // tutorial's point lights take the variant without the type and law selection).
+    for (Program* prog : {&light_prog_, &light_any_prog_}) {
+        gl_state().apply(light_pass_state(prog->id(), false));
+        prog->set("normal_map", 0);
+        prog->set("diffuse_map", 1);
+        prog->set("specular_map", 2);
+        prog->set("depth_map", 3);
+        prog->set("planes", planes_);
+        prog->set("zrange", zrange_);
+    }
 
     const bool count = paths_.count_fragments;
     const bool invocations = caps_.pipeline_statistics;
@@ -115,15 +119,16 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
         const bool full = !scissors || n == (long long)w_ * h_;
         if (full) n = (long long)w_ * h_;
         else glScissor(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);  // set_light_scissor (Listing 16)
-        gl_state().apply(light_pass_state(light_prog_.id(), !full));
+        Program& prog = tutorial_light(light) ? light_prog_ : light_any_prog_;
+        gl_state().apply(light_pass_state(prog.id(), !full));
         stats.scissor_pixels += n;
         ++stats.lights_drawn;
         const LightParams lp = light_params(light, view_);  // set_light_params
-        light_prog_.set("lightpos", lp.pos);
-        light_prog_.set("lightcolor", lp.color);
-        light_prog_.set("lightdir", lp.dir);
-        light_prog_.set("lightspot", lp.spot);
-        light_prog_.set("lightatt", lp.att);
+        prog.set("lightpos", lp.pos);
+        prog.set("lightcolor", lp.color);
+        prog.set("lightdir", lp.dir);
+        prog.set("lightspot", lp.spot);
+        prog.set("lightatt", lp.att);
         if (count) {
             queries.push_back(0);
             glGenQueries(1, &queries.back());

@@ -29,7 +29,7 @@ ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, Forwar
 
 ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, const ForwardOptions& opts,
                                  const std::string& shader_dir)
-    : caps_(caps), w_(width), h_(height), opts_(opts) {
+    : caps_(caps), w_(width), h_(height), opts_(opts), shader_dir_(shader_dir) {
     if (!caps.glsl120) throw Error("forward: GLSL 1.20 is required and this GL offers " + caps.glsl_version);
     if (width <= 0 || height <= 0) throw Error("forward: bad size");
     if (opts.float_target) {
@@ -53,11 +53,22 @@ ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, const 
         glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
         batch_ = std::clamp((int(comps) - 64) / 20, 1, std::max(1, opts.max_lights_per_pass));
     }
+    build_programs(false);
+    check_gl("forward: creating the renderer");
+}
+
+ForwardRenderer::~ForwardRenderer() = default;
+
+// The tutorial's point lights take forward.frag with LIGHT_POINT_ONLY (lighting.glsl: no type or
+// law selection, the cost the forward rows always had); a scene with any other light the general
+// shader. Rebuilt only when a scene needs the other kind.
+void ForwardRenderer::build_programs(bool any_light) {
     for (int nm = 0; nm < 2; ++nm) {
         std::vector<std::string> defs = {"MAX_LIGHTS " + std::to_string(batch_)};
         if (nm) defs.push_back("NORMAL_MAP");
-        if (opts.listing2_literal) defs.push_back("LISTING2_LITERAL");
-        prog_[nm] = Program(shader_dir, "forward.vert", "forward.frag", defs);
+        if (opts_.listing2_literal) defs.push_back("LISTING2_LITERAL");
+        if (!any_light) defs.push_back("LIGHT_POINT_ONLY");
+        prog_[nm] = Program(shader_dir_, "forward.vert", "forward.frag", defs);
         prog_[nm].use();
         prog_[nm].set("normaltex", 0);
         prog_[nm].set("colortex", 1);
@@ -66,12 +77,17 @@ ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, const 
         for (int k = 0; k < 5; ++k) loc_light_[nm][k] = glGetUniformLocation(prog_[nm].id(), names[k]);
     }
     gl_state().use_program(0);
-    check_gl("forward: creating the renderer");
+    any_light_ = any_light;
 }
 
-ForwardRenderer::~ForwardRenderer() = default;
+bool ForwardRenderer::needs_any_light(const Scene& scene) {
+    for (const Light& l : scene.lights)
+        if (l.type != Light::Type::point || l.attenuation) return true;
+    return false;
+}
 
 void ForwardRenderer::set_scene(const Scene& scene) {
+    if (needs_any_light(scene) != any_light_) build_programs(!any_light_);
     gpu_ = std::make_unique<GpuScene>(scene);
     // Bounding sphere per mesh: centre of the bounding box, radius to the farthest vertex.
     bounds_.clear();
@@ -143,6 +159,7 @@ void ForwardRenderer::draw_mesh(size_t mesh, ForwardStats& st) {
 ForwardStats ForwardRenderer::render(const Scene& scene) {
     if (!gpu_) throw Error("forward: render before set_scene");
     if (scene.meshes.size() != bounds_.size()) throw Error("forward: render with a scene other than set_scene's");
+    if (needs_any_light(scene) != any_light_) build_programs(!any_light_);  // not set_scene's lights
     ForwardStats st;
     const double t0 = now_ms();
     const Camera& cam = scene.camera;

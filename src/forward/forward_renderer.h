@@ -80,12 +80,16 @@ private:
     void set_lights(Program& prog, const std::vector<int>& lights, size_t first, size_t count, glm::vec3 ambient);
     void draw_mesh(size_t mesh, ForwardStats& st);
     bool touches(size_t mesh, const Light& light) const;
+    void build_programs(bool any_light);         // prog_ and loc_light_, with or without LIGHT_POINT_ONLY
+    static bool needs_any_light(const Scene& scene);  // a light other than the tutorial's point light
     void copy_to_main();
 
     Caps caps_;
     int w_, h_;
     ForwardOptions opts_;
     int batch_ = 1;
+    std::string shader_dir_;
+    bool any_light_ = false;  // prog_ built for every light type (else LIGHT_POINT_ONLY)
     Program prog_[2];  // [normal map?]
     GLint loc_light_[2][5] = {{-1, -1, -1, -1, -1}, {-1, -1, -1, -1, -1}};  // [nm][LightParams field]
     std::unique_ptr<PBuffer> target_;  // RGBA32F accumulation, when opts_.float_target
