@@ -36,7 +36,7 @@ Scene plane_scene(float spec) {
     m.specular = glm::vec3(spec);
     m.shininess = 10;
     s.materials.push_back(m);
-    s.meshes.push_back(make_plane(6, {0, 0, 0}, 0));
+    add_plane(s, 6, {0, 0, 0}, 0);
     return s;
 }
 

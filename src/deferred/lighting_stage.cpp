@@ -106,7 +106,9 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
             ++stats.lights_culled;  // adds nothing
             continue;
         }
-        ScissorRect r = volume_scissor(transformed(volume, view_), proj_[0][0], proj_[1][1], near_plane, w_, h_);
+        // In double, rounded once (Camera::to_eye): far from the origin, view_ * pos in float would
+        // lose the light's position to the world coordinates' rounding (stress case coords).
+        ScissorRect r = volume_scissor(to_eye(volume, scene.camera), proj_[0][0], proj_[1][1], near_plane, w_, h_);
         long long n = r.area();
         if (n <= 0) {
             if (skip_empty) {  // the volume reaches no visible pixel: Listing 17 line 31
@@ -123,7 +125,7 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
         gl_state().apply(light_pass_state(prog.id(), !full));
         stats.scissor_pixels += n;
         ++stats.lights_drawn;
-        const LightParams lp = light_params(light, view_);  // set_light_params
+        const LightParams lp = light_params(light, scene.camera);  // set_light_params
         prog.set("lightpos", lp.pos);
         prog.set("lightcolor", lp.color);
         prog.set("lightdir", lp.dir);
