@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "analysis/bench_scenes.h"
+#include "analysis/ideal_fragments.h"
 #include "deferred/light_volume.h"
 #include "dsr_error.h"
 #include "platform/resources.h"
@@ -59,6 +60,36 @@ TEST(BenchScenes, LargeLightsEachCoverMostOfTheScreen) {
                 100 * min_frac);
     EXPECT_GT(min_frac, 0.5);
     EXPECT_GT(rmin, 3.0);
+}
+
+// The ideal count over cones and full-screen volumes: the tiled count equals the brute-force one,
+// a cone counts only points within its angle, a directional light every surface point.
+TEST(BenchScenes, IdealCountsUseTheVolumes) {
+    SurfacePoints sp;
+    sp.width = 64, sp.height = 48;
+    for (int y = 0; y < sp.height; ++y)
+        for (int x = 0; x < sp.width; ++x) {  // a tilted floor under the camera, a hole of background
+            const double px = (x - 32) * 0.1, pz = -2 - y * 0.1;
+            sp.p.push_back({px, -1 + 0.02 * y, pz});
+            sp.surface.push_back(!(x > 40 && y > 30));
+        }
+    long long surface = 0;
+    for (uint8_t v : sp.surface) surface += v;
+    EyeVolume sphere, cone, all;
+    sphere.pos = cone.pos = {0.3, 0.5, -4};
+    sphere.radius = cone.radius = 2.5;
+    cone.kind = LightVolume::Kind::cone;
+    cone.axis = glm::normalize(glm::dvec3(0.2, -1, -0.3));
+    cone.cos_angle = std::cos(glm::radians(30.0));
+    all.kind = LightVolume::Kind::full_screen;
+    for (const auto& set : {std::vector<EyeVolume>{sphere}, {cone}, {all}, {sphere, cone, all}})
+        EXPECT_EQ(ideal_fragments(sp, set), ideal_fragments_brute(sp, set));
+    const long long ns = ideal_fragments(sp, {sphere}), nc = ideal_fragments(sp, {cone});
+    std::printf("[ stats    ] ideal: sphere %lld, its 30-degree cone %lld, directional %lld of %lld surface\n", ns, nc,
+                ideal_fragments(sp, {all}), surface);
+    EXPECT_GT(nc, 0);
+    EXPECT_LT(nc, ns / 2);
+    EXPECT_EQ(ideal_fragments(sp, {all}), surface);
 }
 
 TEST(BenchScenes, LightSpecs) {
