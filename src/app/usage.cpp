@@ -71,7 +71,7 @@ std::vector<CommandUsage> make_table() {
                      std::string(kContextOption)});
     t.push_back({"bench",
                  {"[SCENE] [--quick] [--json FILE.json] [--report FILE.md] [--size WxH] [--frames N]",
-                  "[--lights own,32,256,1024] [--context NAME]"},
+                  "[--lights own,32,256,1024,1024-overlap,32-large] [--context NAME]"},
                  "depth path x scissor x skips x encodings x lights vs forward: times, fragments, error",
                  "  SCENE                   scene to measure (default: data/default.scene and\n"
                  "                          tests/data/analytic.scene)\n"
@@ -80,8 +80,11 @@ std::vector<CommandUsage> make_table() {
                  "  --report FILE.md        markdown report, with the plot beside it as FILE_plot.png\n"
                  "  --size WxH              frame size (default 512x512)\n"
                  "  --frames N              timed frames per row, 1..1000 (default 10)\n"
-                 "  --lights LIST           comma-separated light counts; own: the scene's own lights\n"
-                 "                          (default own,32,256,1024)\n" +
+                 "  --lights LIST           comma-separated light counts; own: the scene's own lights;\n"
+                 "                          N-overlap: N lights (a multiple of 8) in clusters of 8, every\n"
+                 "                          lit pixel inside at least 8; N-large: 9 boxes and N lights\n"
+                 "                          covering most of the screen, as LearnOpenGL's demo\n"
+                 "                          (default own,32,256,1024,1024-overlap,32-large)\n" +
                      std::string(kContextOption)});
     t.push_back({"stress",
                  {"[--quick] [--json FILE] [--report FILE.md] [--plot FILE.png] [--only TEXT]",

@@ -180,7 +180,12 @@ private:
     std::unique_ptr<PBuffer> position_buf_;
     std::string shader_dir_;
     glm::vec3 zrange_{0};
+    // The light pass (light.frag): light_prog_ for the tutorial's point lights with Equation 2
+    // (LIGHT_POINT_ONLY: no type or law selection, the tutorial's cost), light_any_prog_ for spot,
+    // directional and attenuated lights (lighting.glsl light_contribution).
     Program light_prog_;
+    Program light_any_prog_;
+    static bool tutorial_light(const Light& l) { return l.type == Light::Type::point && !l.attenuation; }
     Program blur_prog_[2];              // [select]
     Program aa_prog_[2];                // [factor only]
     std::unique_ptr<GpuScene> gpu_;

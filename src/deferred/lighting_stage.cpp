@@ -6,6 +6,8 @@
 
 #include "deferred/culling.h"
 #include "deferred/deferred_shader.h"
+#include "deferred/light_params.h"
+#include "deferred/light_volume.h"
 #include "deferred/reconstruct.h"
 #include "deferred/scissor.h"
 #include "gl/check.h"
@@ -67,20 +69,26 @@ void DeferredShader::draw_ambient(const Scene& scene) {
     glColor4f(1, 1, 1, 1);
 }
 
-// Listing 17: cull against the view frustum, scissor, one quad per light.
+// Listing 17: cull against the view frustum, scissor, one quad per light. Culling and the
+// rectangle come from the light's volume (light_volume.h): a sphere as in the tutorial, a spot's
+// cone, or a directional light's full screen (never culled, never scissored).
 void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats& stats) {
     const auto frustum = frustum_planes(proj_ * view_);
     const auto rays = corner_rays(proj_[0][0], proj_[1][1]);
     for (int i = 0; i < 4; ++i) corner_rays_[i] = rays[i];
     const float near_plane = scene.camera.near_plane;
 
-    gl_state().apply(light_pass_state(light_prog_.id(), false));  // bind_light()
-    light_prog_.set("normal_map", 0);
-    light_prog_.set("diffuse_map", 1);
-    light_prog_.set("specular_map", 2);
-    light_prog_.set("depth_map", 3);
-    light_prog_.set("planes", planes_);
-    light_prog_.set("zrange", zrange_);
+    // bind_light(): the frame's uniforms on both light programs (deferred_shader.h: the
+    // tutorial's point lights take the variant without the type and law selection).
+    for (Program* prog : {&light_prog_, &light_any_prog_}) {
+        gl_state().apply(light_pass_state(prog->id(), false));
+        prog->set("normal_map", 0);
+        prog->set("diffuse_map", 1);
+        prog->set("specular_map", 2);
+        prog->set("depth_map", 3);
+        prog->set("planes", planes_);
+        prog->set("zrange", zrange_);
+    }
 
     const bool count = paths_.count_fragments;
     const bool invocations = caps_.pipeline_statistics;
@@ -88,7 +96,8 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
     std::vector<GLuint> queries, inv_queries;
     stats.lights_total = int(scene.lights.size());
     for (const Light& light : scene.lights) {
-        if (sphere_outside(frustum, light.pos, light.radius)) {
+        const LightVolume volume = light_volume(light);
+        if (volume_outside(frustum, volume)) {
             ++stats.lights_culled;
             continue;
         }
@@ -97,13 +106,12 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
             ++stats.lights_culled;  // adds nothing
             continue;
         }
-        // In double, rounded once: far from the origin, view_ * pos in float would lose the
-        // light's position to the world coordinates' rounding (stress case coords).
-        const glm::vec3 eye = scene.camera.to_eye(light.pos);
-        ScissorRect r = light_scissor(eye, light.radius, proj_[0][0], proj_[1][1], near_plane, w_, h_);
+        // In double, rounded once (Camera::to_eye): far from the origin, view_ * pos in float would
+        // lose the light's position to the world coordinates' rounding (stress case coords).
+        ScissorRect r = volume_scissor(to_eye(volume, scene.camera), proj_[0][0], proj_[1][1], near_plane, w_, h_);
         long long n = r.area();
         if (n <= 0) {
-            if (skip_empty) {  // the sphere reaches no visible pixel: Listing 17 line 31
+            if (skip_empty) {  // the volume reaches no visible pixel: Listing 17 line 31
                 ++stats.lights_culled;
                 continue;
             }
@@ -113,11 +121,16 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
         const bool full = !scissors || n == (long long)w_ * h_;
         if (full) n = (long long)w_ * h_;
         else glScissor(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);  // set_light_scissor (Listing 16)
-        gl_state().apply(light_pass_state(light_prog_.id(), !full));
+        Program& prog = tutorial_light(light) ? light_prog_ : light_any_prog_;
+        gl_state().apply(light_pass_state(prog.id(), !full));
         stats.scissor_pixels += n;
         ++stats.lights_drawn;
-        light_prog_.set("lightpos", glm::vec4(eye, light.radius));  // set_light_params
-        light_prog_.set("lightcolor", light.color);
+        const LightParams lp = light_params(light, scene.camera);  // set_light_params
+        prog.set("lightpos", lp.pos);
+        prog.set("lightcolor", lp.color);
+        prog.set("lightdir", lp.dir);
+        prog.set("lightspot", lp.spot);
+        prog.set("lightatt", lp.att);
         if (count) {
             queries.push_back(0);
             glGenQueries(1, &queries.back());

@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "deferred/light_params.h"
 #include "gl/caps.h"
 #include "gl/pbuffer.h"
 #include "gl/program.h"
@@ -79,20 +80,23 @@ private:
     void set_lights(Program& prog, const std::vector<int>& lights, size_t first, size_t count, glm::vec3 ambient);
     void draw_object(size_t object, ForwardStats& st);
     bool touches(size_t object, const Light& light) const;
+    void build_programs(bool any_light);         // prog_ and loc_light_, with or without LIGHT_POINT_ONLY
+    static bool needs_any_light(const Scene& scene);  // a light other than the tutorial's point light
     void copy_to_main();
 
     Caps caps_;
     int w_, h_;
     ForwardOptions opts_;
     int batch_ = 1;
+    std::string shader_dir_;
+    bool any_light_ = false;  // prog_ built for every light type (else LIGHT_POINT_ONLY)
     Program prog_[2];  // [normal map?]
-    GLint loc_lightpos_[2] = {-1, -1}, loc_lightcolor_[2] = {-1, -1};
+    GLint loc_light_[2][5] = {{-1, -1, -1, -1, -1}, {-1, -1, -1, -1, -1}};  // [nm][LightParams field]
     std::unique_ptr<PBuffer> target_;  // RGBA32F accumulation, when opts_.float_target
     std::unique_ptr<GpuScene> gpu_;
     std::vector<Bound> bounds_;
     glm::mat4 view_{1};
-    std::vector<glm::vec4> eye_lights_;  // per frame: eye-space position, w = radius
-    std::vector<glm::vec3> light_colors_;
+    std::vector<LightParams> light_params_;  // per frame, eye space
     std::vector<char> light_visible_;   // per frame: not culled by the frustum
 };
 
