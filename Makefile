@@ -56,7 +56,7 @@ TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o) $(VIEWER_LOGIC_SRC:%.cpp=$(BUILD)
 # tinyobjloader: Debian's shared library (float build), as its tinyobjloader.pc says.
 LIBS := -lOSMesa -lEGL $(IMAGE_IO_LIBS) -ltinyobjloader -pthread
 
-.PHONY: all run test test-legacy test-sanitizers deps fuzz fuzz-deps clean figures bench stress
+.PHONY: all run test test-legacy test-sanitizers deps fuzz fuzz-deps clean figures bench stress viewer-docs
 all: $(BUILD)/dsr $(BUILD)/dsr_view $(BUILD)/dsr_tests
 
 $(BUILD)/obj/%.o: %.cpp
@@ -200,6 +200,13 @@ stress: deps
 figures: deps
 	$(MAKE) -j$(JOBS) $(BUILD)/dsr
 	$(BUILD)/dsr figures -o docs/figures
+
+# docs/viewer.md's frame times under Xvfb and docs/viewer.png, the window with its panel, taken
+# from Xvfb's root window with ImageMagick (installed by this target only).
+viewer-docs: deps
+	@$(MAKE) --no-print-directory deps DEB_PACKAGES="imagemagick"
+	$(MAKE) -j$(JOBS) $(BUILD)/dsr $(BUILD)/dsr_view
+	DSR=$(BUILD)/dsr tests/viewer_docs.sh --report docs/viewer.md --shot docs/viewer.png 512x512 1280x720
 
 clean:
 	rm -rf $(BUILD) out

@@ -36,12 +36,13 @@ TEST(ViewerScript, EveryCommandParses) {
         "set scissor off\r\n"
         "set view normal\n"
         "set no-skip variants,light-depth-test\n"
+        "set overlay on\n"
         "frames 3\n"
         "screenshot out/a.png\n"
         "size 0 0\n"
         "quit\n",
         "s.txt");
-    ASSERT_EQ(s.commands.size(), 9u);
+    ASSERT_EQ(s.commands.size(), 10u);
     EXPECT_EQ(s.commands[0].kind, ScriptCommand::size);
     EXPECT_EQ(s.commands[0].w, 640);
     EXPECT_EQ(s.commands[0].h, 480);
@@ -52,11 +53,12 @@ TEST(ViewerScript, EveryCommandParses) {
     EXPECT_EQ(s.commands[2].name, "scissor");
     EXPECT_EQ(s.commands[2].value, "off");
     EXPECT_EQ(s.commands[3].value, "normal");
-    EXPECT_EQ(s.commands[5].count, 3);
-    EXPECT_EQ(s.commands[6].value, "out/a.png");
-    EXPECT_EQ(s.commands[7].w, 0);
-    EXPECT_EQ(s.commands[8].kind, ScriptCommand::quit);
-    EXPECT_EQ(s.where(s.commands[8]), "s.txt:12: ");
+    EXPECT_EQ(s.commands[5].name, "overlay");
+    EXPECT_EQ(s.commands[6].count, 3);
+    EXPECT_EQ(s.commands[7].value, "out/a.png");
+    EXPECT_EQ(s.commands[8].w, 0);
+    EXPECT_EQ(s.commands[9].kind, ScriptCommand::quit);
+    EXPECT_EQ(s.where(s.commands[9]), "s.txt:13: ");
 }
 
 TEST(ViewerScript, BadLineIsOneErrorNamingFileAndLine) {
@@ -72,6 +74,7 @@ TEST(ViewerScript, BadLineIsOneErrorNamingFileAndLine) {
         {"set bloom-strength 99\n", "s.txt:1: set bloom-strength: expected a number in [0.000000, 16.000000], got '99'"},
         {"set no-skip fast\n", "s.txt:1: set no-skip: expected variants, empty-lights, light-depth-test, light-sphere-test"},
         {"set frobnicate 1\n", "s.txt:1: set: expected an option name (depth, depth-encoding,"},
+        {"set overlay maybe\n", "s.txt:1: set overlay: expected on|off, got 'maybe'"},
         {"set scissor\n", "s.txt:1: expected 'set NAME VALUE', got 'set scissor'"},
         {"camera pos 0 0 5 target 0 0 0 up 0 1\n", "s.txt:1: expected 'camera pos X Y Z target X Y Z up X Y Z'"},
         {"camera pos 0 0 5 look 0 0 0 up 0 1 0\n", "s.txt:1: camera: expected 'target', got 'look'"},

@@ -127,7 +127,8 @@ std::vector<CommandUsage> make_table() {
                  "  --script FILE           run FILE's commands, one a line: size W H (0 0 minimises),\n"
                  "                          camera pos X Y Z target X Y Z up X Y Z, set NAME VALUE (an\n"
                  "                          option below by its name without dashes: set scissor off,\n"
-                 "                          set view normal, set bloom on), frames N, screenshot FILE, quit\n" +
+                 "                          set view normal, set bloom on; or panel, overlay, animate\n"
+                 "                          on|off), frames N, screenshot FILE, quit\n" +
                      std::string(kCapsOption) + kRendererOptions + kStateOptions +
                      "\nkeys:\n"
                      "  W A S D, Q E            move; Q/E down/up; shift: 4x faster; scroll: speed\n"

@@ -40,6 +40,11 @@ const char* kCommands = "size, camera, set, frames, screenshot or quit";
 
 }  // namespace
 
+const std::vector<std::string>& viewer_settings() {
+    static const std::vector<std::string> s = {"panel", "overlay", "animate"};
+    return s;
+}
+
 Script parse_script(const std::string& text, const std::string& path) {
     Script script;
     script.path = path;
@@ -83,12 +88,16 @@ Script parse_script(const std::string& text, const std::string& path) {
         } else if (cmd == "set") {
             want_words(3, "set NAME VALUE");
             const RenderOption* o = find_render_option(w[1]);
-            if (!o) {
+            bool own = false;
+            for (const std::string& v : viewer_settings()) own |= w[1] == v;
+            if (!o && !own) {
                 std::string names;
                 for (const RenderOption& r : render_options()) names += (names.empty() ? "" : ", ") + r.name;
+                for (const std::string& v : viewer_settings()) names += ", " + v;
                 fail(path, n, "set: expected an option name (" + names + "), got '" + w[1] + "'");
             }
-            const std::string err = check_render_option(*o, w[2]);
+            const std::string err = o ? check_render_option(*o, w[2])
+                                      : w[2] == "on" || w[2] == "off" ? "" : "expected on|off, got '" + w[2] + "'";
             if (!err.empty()) fail(path, n, "set " + w[1] + ": " + err);
             c.name = w[1];
             c.value = w[2];

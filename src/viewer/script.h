@@ -4,7 +4,8 @@
 //
 //   size W H                                  resize the window (0 0: minimise)
 //   camera pos X Y Z target X Y Z up X Y Z    place the camera (fov, near, far stay the scene's)
-//   set NAME VALUE                            a renderer option by its `render` flag name
+//   set NAME VALUE                            a renderer option by its `render` flag name, or
+//                                             panel|overlay|animate on|off (the viewer's own)
 //   frames N                                  render N frames
 //   screenshot FILE                           the deferred image (no panel), written with the image seam
 //   quit                                      close the viewer
@@ -32,6 +33,9 @@ struct Script {
     // "FILE:LINE: " for error messages.
     std::string where(const ScriptCommand& c) const { return path + ":" + std::to_string(c.line) + ": "; }
 };
+
+// The viewer's own settings `set` takes beside the option table's (each on|off).
+const std::vector<std::string>& viewer_settings();
 
 // Throws dsr::Error "FILE:LINE: expected ..., got '...'" on the first bad line, or when the file
 // cannot be read.

@@ -367,7 +367,12 @@ int Viewer::run(const Script* script) {
                     st_.fly = FlyCamera::from(camera_);
                     break;
                 case ScriptCommand::set:
-                    if (!apply_option(*find_render_option(c.name), c.value)) throw Error(where + "set " + st_.option_error);
+                    if (const RenderOption* o = find_render_option(c.name)) {
+                        if (!apply_option(*o, c.value)) throw Error(where + "set " + st_.option_error);
+                    } else {  // the viewer's own: panel, overlay, animate
+                        bool& b = c.name == "panel" ? st_.panel : c.name == "overlay" ? st_.overlay : st_.animate;
+                        b = c.value == "on";
+                    }
                     break;
                 case ScriptCommand::frames:
                     for (int i = 0; i < c.count && !quit_ && !glfwWindowShouldClose(ctx_->window()); ++i) frame(nullptr);
