@@ -46,7 +46,7 @@ VIEWER_GUI_SRC := $(sort $(wildcard src/viewer/viewer_*.cpp)) src/platform/glfw_
 VIEWER_LOGIC_SRC := $(filter-out src/viewer/viewer_%.cpp,$(sort $(wildcard src/viewer/*.cpp)))
 VIEWER_OBJ := $(VIEWER_GUI_SRC:%.cpp=$(BUILD)/obj/%.o) $(VIEWER_LOGIC_SRC:%.cpp=$(BUILD)/obj/%.o)
 IMGUI_OBJ := $(BUILD)/obj/imgui/imgui_impl_glfw.o $(BUILD)/obj/imgui/imgui_impl_opengl2.o
-VIEWER_LIBS := -lglfw -lGL -limgui $(IMAGE_IO_LIBS) -ltinyobjloader -pthread
+VIEWER_LIBS := -lglfw -lGL -limgui -lstb $(IMAGE_IO_LIBS) -ltinyobjloader -pthread
 
 CORE_OBJ := $(CORE_SRC:%.cpp=$(BUILD)/obj/%.o)
 HEADLESS_BACKEND_OBJ := $(HEADLESS_BACKEND_SRC:%.cpp=$(BUILD)/obj/%.o)

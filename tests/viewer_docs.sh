@@ -58,10 +58,14 @@ for SIZE in "${sizes[@]}"; do
   echo "| ${SIZE/x/×} | $frames | $frame | $loop |" >> "$out"
 done
 if [[ -n $shot ]]; then
-  printf 'set overlay on\nframes 1000000\n' > "$tmp/shot.script"
+  # The viewer writes ready.png after 40 frames (the panel is laid out and its plot has a few
+  # seconds), then keeps drawing while the root window is taken.
+  printf 'set overlay on\nframes 40\nscreenshot %s\nframes 1000000\n' "$tmp/ready.png" > "$tmp/shot.script"
   "$D" view --size 1280x720 --script "$tmp/shot.script" >/dev/null &
   viewer=$!
-  sleep 8  # the window is up and the panel has a few seconds of plot
+  for _ in $(seq 600); do [[ -e $tmp/ready.png ]] && break; sleep 0.1; done
+  [[ -e $tmp/ready.png ]] || { echo "viewer_docs.sh: the viewer did not reach its screenshot in 60 s" >&2; exit 1; }
+  sleep 1
   import -window root -crop 1280x720+0+0 +repage "$shot"
   kill "$viewer"; wait "$viewer" 2>/dev/null || true; viewer=""
   echo "wrote $shot" >&2

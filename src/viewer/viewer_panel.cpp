@@ -58,7 +58,7 @@ void option_widget(ViewerState& st, const RenderOption& o) {
         }
         case OptionKind::subset: {
             // --no-skip: a checkbox per member, ticked when the skip is off.
-            ImGui::TextUnformatted(o.name.c_str());
+            ImGui::TextUnformatted((o.name + " (ticked: skip off)").c_str());
             std::vector<std::string> off;
             if (value != "none") {
                 size_t a = 0;
@@ -69,9 +69,9 @@ void option_widget(ViewerState& st, const RenderOption& o) {
                     a = b + 1;
                 }
             }
+            ImGui::Indent();
             for (const std::string& m : o.values) {
                 bool in = std::find(off.begin(), off.end(), m) != off.end();
-                ImGui::SameLine();
                 if (ImGui::Checkbox(m.c_str(), &in)) {
                     std::vector<std::string> next;
                     for (const std::string& k : o.values) {
@@ -83,6 +83,7 @@ void option_widget(ViewerState& st, const RenderOption& o) {
                     request(v.empty() ? "none" : v);
                 }
             }
+            ImGui::Unindent();
             break;
         }
     }
@@ -107,13 +108,6 @@ void draw_panel(ViewerState& st, const DeferredShader& ds, const Scene& frame_sc
     ImGui::SameLine();
     ImGui::Checkbox("scissor overlay (O)", &st.overlay);
     ImGui::Text("camera speed %.3g/s (scroll), R resets", double(st.fly.speed));
-
-    if (ImGui::CollapsingHeader("options (the render flags)", ImGuiTreeNodeFlags_DefaultOpen)) {
-        ImGui::PushItemWidth(150);
-        for (const RenderOption& o : render_options()) option_widget(st, o);
-        ImGui::PopItemWidth();
-        if (!st.option_error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", st.option_error.c_str());
-    }
 
     if (ImGui::CollapsingHeader("frame", ImGuiTreeNodeFlags_DefaultOpen)) {
         const StageTimes& m = st.last.ms;
@@ -160,6 +154,13 @@ void draw_panel(ViewerState& st, const DeferredShader& ds, const Scene& frame_sc
                              ImVec2(0, 40));
         }
     }
+    if (ImGui::CollapsingHeader("options (the render flags)", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::PushItemWidth(150);
+        for (const RenderOption& o : render_options()) option_widget(st, o);
+        ImGui::PopItemWidth();
+        if (!st.option_error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", st.option_error.c_str());
+    }
+
     ImGui::End();
     (void)frame_scene;
 }
