@@ -58,7 +58,7 @@ TEST(ViewerScript, EveryCommandParses) {
     EXPECT_EQ(s.commands[7].value, "out/a.png");
     EXPECT_EQ(s.commands[8].w, 0);
     EXPECT_EQ(s.commands[9].kind, ScriptCommand::quit);
-    EXPECT_EQ(s.where(s.commands[9]), "s.txt:13: ");
+    EXPECT_EQ(s.where(s.commands[9]), "s.txt:12: ");
 }
 
 TEST(ViewerScript, BadLineIsOneErrorNamingFileAndLine) {

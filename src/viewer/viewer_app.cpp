@@ -96,7 +96,7 @@ Viewer::Viewer(const ViewerConfig& cfg) : cfg_(cfg) {
     gl_state().reset();
     const char* env_caps = std::getenv("DSR_CAPS");
     st_.caps = probe_caps(split_list(std::string(env_caps ? env_caps : "") + "," + cfg.caps_list));
-    st_.renderer = st_.caps.renderer;
+    st_.renderer = st_.caps.renderer + ", GL " + st_.caps.version;
 
     glfwSetWindowUserPointer(ctx_->window(), this);
     // Installed before ImGui's, which chains to them.
