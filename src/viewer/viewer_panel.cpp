@@ -125,9 +125,9 @@ void draw_panel(ViewerState& st, const DeferredShader& ds, const Scene& frame_sc
             }
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted("loop");
+            ImGui::TextUnformatted("loop");  // the previous frame's: this one is still being drawn
             ImGui::TableNextColumn();
-            ImGui::Text("%8.2f ms  (with panel, swap)", st.loop_ms);
+            ImGui::Text("%8.2f ms  (last frame: with panel, swap)", st.loop_ms);
             ImGui::EndTable();
         }
         const FrameStats& s = st.last;
