@@ -128,6 +128,17 @@ TEST(OptionTable, EveryValueRoundTripsAndRenderDefaultsHold) {
     EXPECT_FALSE(r.resolved(s).post.bloom);
     set_render_option(r, *find_render_option("view"), "bloom");
     EXPECT_TRUE(r.resolved(s).post.bloom) << "the bloom view needs the bloom pass";
+    // The one-line helpers for plain fields.
+    const RenderOption sw = switch_option("x", &ShaderOptions::gbuffer_half);
+    RenderOption in = sw;  // an integer entry's checks (integer_option makes them for an int field)
+    in.kind = OptionKind::integer, in.lo = 8, in.hi = 512;
+    EXPECT_EQ(check_render_option(in, "32"), "");
+    EXPECT_EQ(check_render_option(in, "7"), "expected an integer in [8, 512], got '7'");
+    EXPECT_EQ(check_render_option(in, "3.5"), "expected an integer in [8, 512], got '3.5'");
+    RenderOptions q;
+    EXPECT_EQ(set_render_option(q, sw, "on"), "");
+    EXPECT_TRUE(q.shader.gbuffer_half);
+    EXPECT_EQ(sw.get(q), "on");
     const std::vector<std::string> flags = render_option_flags();
     for (const char* f : {"--depth", "--bloom", "--no-bloom", "--aa", "--no-aa", "--no-skip", "--view", "--aa-weight"})
         EXPECT_NE(std::find(flags.begin(), flags.end(), f), flags.end()) << f;

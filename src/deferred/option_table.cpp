@@ -69,9 +69,7 @@ std::vector<RenderOption> make_table() {
     t.push_back(choice(
         "gbuffer", {"rgba8", "half"}, [](const RenderOptions& r) { return r.shader.gbuffer_half ? "half" : "rgba8"; },
         [](RenderOptions& r, const std::string& v) { r.shader.gbuffer_half = v == "half"; }));
-    t.push_back(RenderOption{"scissor", OptionKind::on_off, {"on", "off"}, 0, 0, true,
-                             [](const RenderOptions& r) { return on_off(r.shader.scissor); },
-                             [](RenderOptions& r, const std::string& v) { r.shader.scissor = v == "on"; }});
+    t.push_back(switch_option("scissor", &ShaderOptions::scissor));
     t.push_back(choice(
         "lighting", {"equations", "listing"},
         [](const RenderOptions& r) { return r.shader.listing2_literal ? "listing" : "equations"; },
@@ -136,6 +134,18 @@ std::vector<RenderOption> make_table() {
 
 }  // namespace
 
+RenderOption switch_option(std::string name, bool ShaderOptions::*field) {
+    return RenderOption{std::move(name), OptionKind::on_off, {"on", "off"}, 0, 0, true,
+                        [field](const RenderOptions& r) { return on_off(r.shader.*field); },
+                        [field](RenderOptions& r, const std::string& v) { r.shader.*field = v == "on"; }};
+}
+
+RenderOption integer_option(std::string name, int lo, int hi, int ShaderOptions::*field) {
+    return RenderOption{std::move(name), OptionKind::integer, {}, float(lo), float(hi), true,
+                        [field](const RenderOptions& r) { return std::to_string(r.shader.*field); },
+                        [field](RenderOptions& r, const std::string& v) { r.shader.*field = std::atoi(v.c_str()); }};
+}
+
 ShaderOptions RenderOptions::resolved(const Scene& scene) const {
     ShaderOptions s = shader;
     s.post.bloom = bloom < 0 ? scene.post_bloom : bloom == 1;
@@ -169,6 +179,15 @@ std::string check_render_option(const RenderOption& o, const std::string& v) {
             const double d = v.empty() ? 0 : std::strtod(v.c_str(), &end);
             if (v.empty() || errno != 0 || *end != '\0' || !(d >= o.lo && d <= o.hi))
                 return "expected a number in [" + std::to_string(o.lo) + ", " + std::to_string(o.hi) + "], got '" + v + "'";
+            return "";
+        }
+        case OptionKind::integer: {
+            char* end = nullptr;
+            errno = 0;
+            const long n = v.empty() ? 0 : std::strtol(v.c_str(), &end, 10);
+            if (v.empty() || errno != 0 || *end != '\0' || n < long(o.lo) || n > long(o.hi))
+                return "expected an integer in [" + std::to_string(long(o.lo)) + ", " + std::to_string(long(o.hi)) +
+                       "], got '" + v + "'";
             return "";
         }
         case OptionKind::subset: {

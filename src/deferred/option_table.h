@@ -28,6 +28,7 @@ enum class OptionKind {
     on_off,  // on|off: --NAME on|off
     toggle,  // on|off, given as --NAME / --no-NAME on the command line, `set NAME on|off` in a script
     number,  // a float in [lo, hi]: --NAME X
+    integer, // an integer in [lo, hi]: --NAME N
     subset,  // a comma-separated subset of `values` (or `none`): --NAME a,b
 };
 
@@ -35,13 +36,19 @@ struct RenderOption {
     std::string name;  // the flag without dashes: `set NAME VALUE`, the panel's label
     OptionKind kind;
     std::vector<std::string> values;  // choice and subset members
-    float lo = 0, hi = 0;             // number range
+    float lo = 0, hi = 0;             // number and integer range
     // True when a change needs a new DeferredShader (other programs or buffer formats); false
     // when the next frame picks it up as it is (the view).
     bool rebuild = true;
     std::function<std::string(const RenderOptions&)> get;  // the value as `set` takes it
     std::function<void(RenderOptions&, const std::string&)> put;  // a value already checked
 };
+
+// Entries for a plain ShaderOptions field, so a new option is one line in make_table:
+//   t.push_back(switch_option("depth-bounds", &ShaderOptions::depth_bounds));
+//   t.push_back(integer_option("tile-size", 8, 512, &ShaderOptions::tile_size));
+RenderOption switch_option(std::string name, bool ShaderOptions::*field);  // on|off
+RenderOption integer_option(std::string name, int lo, int hi, int ShaderOptions::*field);
 
 // Every option, in the order the panel shows them.
 const std::vector<RenderOption>& render_options();

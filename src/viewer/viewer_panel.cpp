@@ -56,6 +56,21 @@ void option_widget(ViewerState& st, const RenderOption& o) {
             }
             break;
         }
+        case OptionKind::integer: {  // as number: applied when the slider is let go
+            static std::map<std::string, int> editing;
+            const auto it = editing.find(o.name);
+            int n = it != editing.end() ? it->second : std::atoi(value.c_str());
+            ImGui::SliderInt(o.name.c_str(), &n, int(o.lo), int(o.hi));
+            if (ImGui::IsItemDeactivatedAfterEdit()) {
+                request(std::to_string(n));
+                editing.erase(o.name);
+            } else if (ImGui::IsItemActive()) {
+                editing[o.name] = n;
+            } else {
+                editing.erase(o.name);
+            }
+            break;
+        }
         case OptionKind::subset: {
             // --no-skip: a checkbox per member, ticked when the skip is off.
             ImGui::TextUnformatted((o.name + " (ticked: skip off)").c_str());
