@@ -10,12 +10,13 @@ DSR_FLAGS := -std=c++17 -Wall -Wextra -Wno-unused-parameter -MMD -MP -Isrc \
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
 DEB_PACKAGES := g++ make pkg-config libosmesa6-dev libglm-dev libopenimageio-dev \
-                nlohmann-json3-dev libgtest-dev libtinyobjloader-dev libegl-dev
+                nlohmann-json3-dev libgtest-dev libtinyobjloader-dev libegl-dev \
+                libglfw3-dev libimgui-dev libgl1-mesa-dri xvfb
 
 # GL context backends, linked per executable and never into the core (src/platform/context.h):
 # the headless executables get OSMesa and EGL (on Mesa both dispatch through the one shared
 # libglapi, so the GL 1.1 calls the core links from libOSMesa reach whichever context is current);
-# the viewer will link its GLFW list against libGL.
+# the viewer (build/dsr_view) links its GLFW list against the system libGL.
 HEADLESS_BACKEND_SRC := src/platform/osmesa_context.cpp src/platform/egl_context.cpp src/platform/headless_backends.cpp
 # Renderer core: everything but the command line and the context backends.  Links without
 # OpenImageIO except for src/scene/image_io.cpp, the one file that includes it, and calls no
@@ -29,19 +30,34 @@ IMAGE_IO_LIBS := $(if $(filter png,$(IMAGE_IO)),-lpng,-lOpenImageIO -lOpenImageI
 CORE_SRC := $(filter-out src/platform/glfw_%.cpp $(HEADLESS_BACKEND_SRC) src/scene/image_io%.cpp,$(sort $(wildcard src/platform/*.cpp \
                               src/gl/*.cpp src/scene/*.cpp src/deferred/*.cpp src/forward/*.cpp src/analysis/*.cpp))) \
             $(IMAGE_IO_SRC)
-APP_SRC  := $(sort $(wildcard src/app/*.cpp))
+# src/app/viewer_main.cpp is dsr_view's main (the `view` command's flags); `dsr view` execs it.
+APP_SRC  := $(filter-out src/app/viewer_%.cpp,$(sort $(wildcard src/app/*.cpp)))
 TEST_SRC := $(sort $(wildcard tests/*.cpp))
+
+# The viewer (issue 14): its own executable, because it links the system libGL (through GLFW)
+# and the headless ones link libOSMesa. src/viewer/ files that use GLFW or Dear ImGui are named
+# viewer_*.cpp; the others are pure logic (script parsing, the fly camera, the plot history),
+# linked into dsr_tests too. Dear ImGui's GLFW and OpenGL2 backends are compiled from the
+# sources Debian's libimgui-dev ships among its examples.
+IMGUI_BACKENDS := /usr/share/doc/libimgui-dev/examples/backends
+VIEWER_GUI_SRC := $(sort $(wildcard src/viewer/viewer_*.cpp)) src/platform/glfw_context.cpp \
+                  src/platform/glfw_backends.cpp src/app/viewer_main.cpp src/app/args.cpp \
+                  src/app/render_flags.cpp src/app/usage.cpp
+VIEWER_LOGIC_SRC := $(filter-out src/viewer/viewer_%.cpp,$(sort $(wildcard src/viewer/*.cpp)))
+VIEWER_OBJ := $(VIEWER_GUI_SRC:%.cpp=$(BUILD)/obj/%.o) $(VIEWER_LOGIC_SRC:%.cpp=$(BUILD)/obj/%.o)
+IMGUI_OBJ := $(BUILD)/obj/imgui/imgui_impl_glfw.o $(BUILD)/obj/imgui/imgui_impl_opengl2.o
+VIEWER_LIBS := -lglfw -lGL -limgui -lstb $(IMAGE_IO_LIBS) -ltinyobjloader -pthread
 
 CORE_OBJ := $(CORE_SRC:%.cpp=$(BUILD)/obj/%.o)
 HEADLESS_BACKEND_OBJ := $(HEADLESS_BACKEND_SRC:%.cpp=$(BUILD)/obj/%.o)
 APP_OBJ  := $(APP_SRC:%.cpp=$(BUILD)/obj/%.o)
-TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o)
+TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o) $(VIEWER_LOGIC_SRC:%.cpp=$(BUILD)/obj/%.o)
 
 # tinyobjloader: Debian's shared library (float build), as its tinyobjloader.pc says.
 LIBS := -lOSMesa -lEGL $(IMAGE_IO_LIBS) -ltinyobjloader -pthread
 
-.PHONY: all run test test-legacy test-sanitizers deps fuzz fuzz-deps clean figures bench stress
-all: $(BUILD)/dsr $(BUILD)/dsr_tests
+.PHONY: all run test test-legacy test-sanitizers deps fuzz fuzz-deps clean figures bench stress viewer-docs
+all: $(BUILD)/dsr $(BUILD)/dsr_view $(BUILD)/dsr_tests
 
 $(BUILD)/obj/%.o: %.cpp
 	@mkdir -p $(@D)
@@ -53,6 +69,17 @@ $(BUILD)/libdsr_core.a: $(CORE_OBJ)
 
 $(BUILD)/dsr: $(APP_OBJ) $(HEADLESS_BACKEND_OBJ) $(BUILD)/libdsr_core.a
 	$(CXX) $(CXXFLAGS) $^ $(LIBS) -o $@
+
+# Foreign code: built as its authors wrote it, warnings off; only the viewer links it.
+$(BUILD)/obj/imgui/%.o: $(IMGUI_BACKENDS)/%.cpp
+	@mkdir -p $(@D)
+	$(CXX) $(CPPFLAGS) -std=c++17 -I/usr/include/imgui -I/usr/include/imgui/backends $(CXXFLAGS) -w -c $< -o $@
+
+$(BUILD)/obj/src/viewer/viewer_%.o: DSR_FLAGS += -I/usr/include/imgui -I/usr/include/imgui/backends
+
+# No libOSMesa here (the Viewer tests check with nm); `dsr view` runs this file beside it.
+$(BUILD)/dsr_view: $(VIEWER_OBJ) $(IMGUI_OBJ) $(BUILD)/libdsr_core.a
+	$(CXX) $(CXXFLAGS) $^ $(VIEWER_LIBS) -o $@
 
 $(BUILD)/dsr_tests: $(TEST_OBJ) $(HEADLESS_BACKEND_OBJ) $(BUILD)/libdsr_core.a
 	$(CXX) $(CXXFLAGS) $^ -lgtest -lgtest_main $(LIBS) -o $@
@@ -177,8 +204,16 @@ figures: deps
 	$(MAKE) -j$(JOBS) $(BUILD)/dsr
 	$(BUILD)/dsr figures -o docs/figures
 
+# docs/viewer.md's frame times under Xvfb and docs/viewer.png, the window with its panel, taken
+# from Xvfb's root window with ImageMagick (installed by this target only).
+viewer-docs: deps
+	@$(MAKE) --no-print-directory deps DEB_PACKAGES="imagemagick"
+	$(MAKE) -j$(JOBS) $(BUILD)/dsr $(BUILD)/dsr_view
+	DSR=$(BUILD)/dsr tests/viewer_docs.sh --report docs/viewer.md --shot docs/viewer.png 512x512 1280x720
+
 clean:
 	rm -rf $(BUILD) out
 
 -include $(CORE_OBJ:.o=.d) $(HEADLESS_BACKEND_OBJ:.o=.d) $(APP_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(ASAN_OBJ:.o=.d) \
+         $(VIEWER_OBJ:.o=.d) \
          $(FUZZ_LIB_OBJ:.o=.d)

@@ -18,7 +18,7 @@ struct Command {
 const Command kCommands[] = {
     {"render", dsr::cmd_render}, {"figures", dsr::cmd_figures}, {"bench", dsr::cmd_bench},
     {"stress", dsr::cmd_stress}, {"info", dsr::cmd_info},       {"gen-textures", dsr::cmd_gen_textures},
-    {"compare", dsr::cmd_compare},
+    {"compare", dsr::cmd_compare},      {"view", dsr::cmd_view},
 };
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "app/args.h"
 #include "app/commands.h"
 #include "app/files.h"
+#include "app/render_flags.h"
 #include "deferred/deferred_shader.h"
 #include "gl/caps.h"
 #include "gl/check.h"
@@ -36,14 +37,9 @@ bool has_ext(const std::string& path, const char* ext) {
 
 int cmd_render(const std::vector<std::string>& argv) {
     Args args("render", argv);
-    std::string scene_path, out = "out.png", stats_path, depth = "auto", encoding = "corrected";
+    std::string scene_path, out = "out.png", stats_path;
     int w = 512, h = 512, out_w = 0, out_h = 0, frames = 1;
-    bool scissor = true, listing2 = false;
-    int bloom = -1, aa = -1;  // -1: as the scene's `post` line says
-    PostOptions post;
-    SkipOptions skip;
-    bool gbuffer_half = false;
-    std::string view_name_arg = "final";
+    RenderOptions ro;  // the option table's flags (deferred/option_table.h)
     std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";
     std::string context = default_context_backend();  // --context, else $DSR_CONTEXT
     int egl_device = -1;                               // --egl-device, else $DSR_EGL_DEVICE, else 0
@@ -51,38 +47,10 @@ int cmd_render(const std::vector<std::string>& argv) {
         std::string a = args.next();
         if (a == "-o" || a == "--output") out = args.value(a);
         else if (a == "--size") args.size_value(a, w, h);
-        else if (a == "--depth") depth = args.choice(a, {"auto", "texture", "packed"});
-        else if (a == "--depth-encoding") encoding = args.choice(a, {"corrected", "literal", "linear", "log"});
-        else if (a == "--gbuffer") gbuffer_half = args.choice(a, {"rgba8", "half"}) == "half";
-        else if (a == "--no-skip") {
-            for (const std::string& k : split_caps(args.value(a))) {
-                if (k == "variants") skip.material_variants = false;
-                else if (k == "empty-lights") skip.empty_lights = false;
-                else if (k == "light-depth-test") skip.light_depth_test = false;
-                else if (k == "light-sphere-test") skip.light_sphere_test = false;
-                else args.fail("--no-skip: expected variants, empty-lights, light-depth-test or light-sphere-test, got '" +
-                               k + "'");
-            }
-        }
-        else if (a == "--scissor") scissor = args.on_off(a);
-        else if (a == "--lighting") listing2 = args.choice(a, {"equations", "listing"}) == "listing";
         else if (a == "--frames") frames = args.int_value(a, 1, 100000);
         else if (a == "--stats") stats_path = args.value(a);
         else if (a == "--out-size") args.size_value(a, out_w, out_h);
-        else if (a == "--view") view_name_arg = args.choice(a, view_names());
-        else if (a == "--bloom") bloom = 1;
-        else if (a == "--no-bloom") bloom = 0;
-        else if (a == "--bloom-scale") post.bloom_scale = std::stoi(args.choice(a, {"2", "4"}));
-        else if (a == "--bloom-taps") post.bloom_taps = std::stoi(args.choice(a, {"3", "5", "7", "9", "11", "13", "15"}));
-        else if (a == "--bloom-strength") post.bloom_strength = args.float_value(a, 0.0f, 16.0f);
-        else if (a == "--bloom-mode") post.bloom_listing = args.choice(a, {"color", "listing"}) == "listing";
-        else if (a == "--aa") aa = 1;
-        else if (a == "--no-aa") aa = 0;
-        else if (a == "--aa-source") {
-            std::string v = args.choice(a, {"normal", "depth", "both"});
-            post.aa_source = v == "normal" ? AaSource::normal : v == "depth" ? AaSource::depth : AaSource::both;
-        } else if (a == "--aa-kernel") post.aa_kernel = args.choice(a, {"text", "listing"}) == "listing" ? AaKernel::listing : AaKernel::text;
-        else if (a == "--aa-weight") post.aa_weight = args.float_value(a, 0.0f, 8.0f);
+        else if (parse_render_flag(args, a, ro)) continue;
         else if (a == "--caps") caps_list += "," + args.value(a);
         else if (a == "--context") context = args.value(a);
         else if (a == "--egl-device") egl_device = args.int_value(a, 0, 15);
@@ -103,22 +71,14 @@ int cmd_render(const std::vector<std::string>& argv) {
     Scene scene = load_scene(scene_path);  // every input error surfaces before any output
     const double load_ms = now_ms() - load_start;
     if (out_w == 0) out_w = w, out_h = h;
-    View view = view_from_name(view_name_arg);
-    post.bloom = bloom < 0 ? scene.post_bloom : bloom == 1;
-    post.aa = aa < 0 ? scene.post_aa : aa == 1;
-    if (view == View::bloom) post.bloom = true;  // the view shows the bloom blur
+    const View view = ro.view;
     // The no-FBO path renders its buffers inside the main frame buffer: make it fit both.
     auto ctx = create_context(ContextDesc{context, std::max(w, out_w), std::max(h, out_h), egl_device});
     Caps caps = probe_caps(split_caps(caps_list));
-    ShaderOptions opts;
-    // auto: choose_paths decides (the depth texture where ARB_depth_texture exists).
-    opts.depth = depth == "auto" ? DepthPath::automatic : depth == "texture" ? DepthPath::texture : DepthPath::packed;
-    opts.encoding = encoding_from_name(encoding);
-    opts.skip = skip;
-    opts.gbuffer_half = gbuffer_half;
-    opts.listing2_literal = listing2;
-    opts.scissor = scissor;
-    opts.post = post;
+    // depth auto: choose_paths decides (the depth texture where ARB_depth_texture exists).
+    const ShaderOptions opts = ro.resolved(scene);
+    const PostOptions& post = opts.post;
+    const SkipOptions& skip = opts.skip;
 
     DeferredShader ds(caps, w, h, opts, resource_dir("glsl120"));
     ds.set_scene(scene);
@@ -145,12 +105,12 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["paths"] = {{"depth", paths.depth}, {"gbuffer", paths.gbuffer}, {"render_target", paths.render_target},
                   {"textures", paths.textures}};
     j["caps_forced_off"] = caps.forced_off;
-    j["depth_encoding"] = paths.depth_path == DepthPath::packed ? encoding : "depth-texture";
-    j["lighting"] = listing2 ? "listing" : "equations";
+    j["depth_encoding"] = paths.depth_path == DepthPath::packed ? encoding_name(opts.encoding) : "depth-texture";
+    j["lighting"] = opts.listing2_literal ? "listing" : "equations";
     j["skips"] = {{"variants", skip.material_variants}, {"empty_lights", skip.empty_lights},
                   {"light_depth_test", skip.light_depth_test}, {"light_sphere_test", skip.light_sphere_test}};
-    j["scissor"] = scissor;
-    j["gbuffer"] = gbuffer_half ? "half" : "rgba8";
+    j["scissor"] = opts.scissor;
+    j["gbuffer"] = opts.gbuffer_half ? "half" : "rgba8";
     j["bloom"] = post.bloom;
     j["aa"] = post.aa;
     j["timing"] = timing_name(last.timing);  // what the per-stage ms below were measured with

@@ -11,6 +11,43 @@ const char* kContextOption =
 const char* kEglDeviceOption =
     "  --egl-device N          with --context egl: the EGL device (default: $DSR_EGL_DEVICE, else 0)\n";
 
+const char* kCapsOption =
+    "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-npot,\n"
+    "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats\n"
+    "                          (added to $DSR_CAPS)\n";
+// The option table's flags (deferred/option_table.h): `render` and `view` take them all, and the
+// viewer's `set NAME VALUE` takes each by its name without dashes.
+const char* kRendererOptions =
+    "  --depth auto|texture|packed\n"
+    "                          depth path; auto: the depth texture where the GL has ARB_depth_texture\n"
+    "  --depth-encoding corrected|literal|linear|log\n"
+    "                          what the packed depth target holds (default corrected)\n"
+    "  --gbuffer rgba8|half    G-buffer target precision (default rgba8, as the tutorial)\n"
+    "  --scissor on|off        light scissor rectangles, Listing 16 (default on)\n"
+    "  --lighting equations|listing\n"
+    "                          Listing 2 as the equations say (default) or as printed\n"
+    "  --no-skip LIST          skips to turn off: variants, empty-lights, light-depth-test,\n"
+    "                          light-sphere-test (all on by default)\n"
+    "  --view NAME             final, normal, diffuse, specular, depth, blur-factor or bloom\n"
+    "  --bloom, --no-bloom     bloom on or off (default: the scene's post line)\n"
+    "  --bloom-scale 2|4       bloom buffers at 1/2 or 1/4 of the frame (default 2)\n"
+    "  --bloom-taps N          blur taps, odd, 3..15 (default 7)\n"
+    "  --bloom-strength S      weight of the bloom added to the image, 0..16 (default 1;\n"
+    "                          above 1 it adds what 1 adds: GL clamps the colour it scales)\n"
+    "  --bloom-mode color|listing\n"
+    "                          blur intense colours (default) or Listing 22 as printed\n"
+    "  --aa, --no-aa           anti-alias on or off (default: the scene's post line)\n"
+    "  --aa-source normal|depth|both\n"
+    "                          what the edge factor of Equation 7 measures (default normal)\n"
+    "  --aa-kernel text|listing\n"
+    "                          all 8 neighbours as the text says (default) or Listing 21's 4\n"
+    "  --aa-weight W           largest anti-alias offset in pixels, 0..8 (default 1)\n";
+const char* kStateOptions =
+    "  --gl-state-cache on|off\n"
+    "                          off: every pass sets all of its GL state, so a cache bug can be\n"
+    "                          told from a pass bug (default on)\n"
+    "  --debug-gl              check GL errors after every stage (also DSR_DEBUG_GL=1)\n";
+
 std::vector<CommandUsage> make_table() {
     std::vector<CommandUsage> t;
     t.push_back({"render",
@@ -28,40 +65,10 @@ std::vector<CommandUsage> make_table() {
                  "  -o, --output FILE       image to write: .png, .exr, .tif, .jpg or .ppm (default out.png)\n"
                  "  --size WxH              G-buffer and P-buffer size (default 512x512)\n"
                  "  --out-size WxH          main frame buffer the final stage scales to (default: --size)\n"
-                 "  --depth auto|texture|packed\n"
-                 "                          depth path; auto: the depth texture where the GL has ARB_depth_texture\n"
-                 "  --depth-encoding corrected|literal|linear|log\n"
-                 "                          what the packed depth target holds (default corrected)\n"
-                 "  --gbuffer rgba8|half    G-buffer target precision (default rgba8, as the tutorial)\n"
-                 "  --no-skip LIST          skips to turn off: variants, empty-lights, light-depth-test,\n"
-                 "                          light-sphere-test (all on by default)\n"
-                 "  --scissor on|off        light scissor rectangles, Listing 16 (default on)\n"
-                 "  --lighting equations|listing\n"
-                 "                          Listing 2 as the equations say (default) or as printed\n"
                  "  --frames N              frames to render; --stats reports the medians (default 1)\n"
-                 "  --stats FILE.json       per-stage times, light counts and fragments, paths chosen\n"
-                 "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-npot,\n"
-                 "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats\n"
-                 "                          (added to $DSR_CAPS)\n"
-                 "  --view NAME             final, normal, diffuse, specular, depth, blur-factor or bloom\n"
-                 "  --bloom, --no-bloom     bloom on or off (default: the scene's post line)\n"
-                 "  --bloom-scale 2|4       bloom buffers at 1/2 or 1/4 of the frame (default 2)\n"
-                 "  --bloom-taps N          blur taps, odd, 3..15 (default 7)\n"
-                 "  --bloom-strength S      weight of the bloom added to the image, 0..16 (default 1;\n"
-                 "                          above 1 it adds what 1 adds: GL clamps the colour it scales)\n"
-                 "  --bloom-mode color|listing\n"
-                 "                          blur intense colours (default) or Listing 22 as printed\n"
-                 "  --aa, --no-aa           anti-alias on or off (default: the scene's post line)\n"
-                 "  --aa-source normal|depth|both\n"
-                 "                          what the edge factor of Equation 7 measures (default normal)\n"
-                 "  --aa-kernel text|listing\n"
-                 "                          all 8 neighbours as the text says (default) or Listing 21's 4\n"
-                 "  --aa-weight W           largest anti-alias offset in pixels, 0..8 (default 1)\n" +
-                     std::string(kContextOption) + kEglDeviceOption +
-                     "  --gl-state-cache on|off\n"
-                     "                          off: every pass sets all of its GL state, so a cache bug can be\n"
-                     "                          told from a pass bug (default on)\n"
-                     "  --debug-gl              check GL errors after every stage (also DSR_DEBUG_GL=1)\n"});
+                 "  --stats FILE.json       per-stage times, light counts and fragments, paths chosen\n" +
+                     std::string(kCapsOption) + kRendererOptions +
+                     std::string(kContextOption) + kEglDeviceOption + kStateOptions});
     t.push_back({"figures",
                  {"[SCENE] [-o DIR] [--size NxN] [--context NAME]"},
                  "the tutorial's figures 4, 6, 8-11 as PNGs (and the windmill model beside Figure 6 when ../shared/assets has it)",
@@ -113,6 +120,33 @@ std::vector<CommandUsage> make_table() {
                  "  A B                     the two images, same size (any format dsr reads)\n"
                  "  --threshold LSB         count pixels with a channel over this difference (default 2)\n"
                  "  --max-lsb LSB           exit 1 when the largest difference is over LSB\n"});
+    t.push_back({"view",
+                 {"[SCENE] [--size WxH] [--script FILE] [--caps LIST] [render's renderer options:",
+                  "--depth, --depth-encoding, --gbuffer, --scissor, --lighting, --no-skip, --view,",
+                  "--bloom|--no-bloom, --bloom-*, --aa|--no-aa, --aa-*] [--gl-state-cache on|off] [--debug-gl]"},
+                 "the renderer in a window (GLFW, GL 2.1) with a panel of every option, buffer and cost",
+                 "  SCENE                   scene file (default data/default.scene)\n"
+                 "  --size WxH              the window's size at start (default 512x512)\n"
+                 "  --script FILE           run FILE's commands, one a line: size W H (0 0 minimises),\n"
+                 "                          camera pos X Y Z target X Y Z up X Y Z, set NAME VALUE (an\n"
+                 "                          option below by its name without dashes: set scissor off,\n"
+                 "                          set view normal, set bloom on; or panel, overlay, animate\n"
+                 "                          on|off), frames N, screenshot FILE, quit\n" +
+                     std::string(kCapsOption) + kRendererOptions + kStateOptions +
+                     "\nkeys:\n"
+                     "  W A S D, Q E            move; Q/E down/up; shift: 4x faster; scroll: speed\n"
+                     "  right mouse button      hold and drag to look around\n"
+                     "  R                       back to the scene's camera\n"
+                     "  F1 or Tab               show or hide the panel\n"
+                     "  1..7, V (shift+V)       buffer shown: final, normal, diffuse, specular, depth,\n"
+                     "                          blur-factor, bloom (next, previous)\n"
+                     "  C                       scissor on/off      O   scissor-rectangle overlay\n"
+                     "  B                       bloom on/off        N   anti-alias on/off\n"
+                     "  P                       depth path: texture/packed\n"
+                     "  L                       animate the lights (turn about the scene's target)\n"
+                     "  F12                     screenshot of the deferred image (no panel) into\n"
+                     "                          ./dsr_view_DATE_TIME.png; its path is printed\n"
+                     "  Esc                     quit\n"});
     return t;
 }
 

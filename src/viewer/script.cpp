@@ -1,0 +1,137 @@
+#include "viewer/script.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "deferred/option_table.h"
+#include "dsr_error.h"
+#include "scene/image.h"
+
+namespace dsr {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& path, int line, const std::string& what) {
+    throw Error(path + ":" + std::to_string(line) + ": " + what);
+}
+
+bool to_float(const std::string& s, float& out) {
+    char* end = nullptr;
+    errno = 0;
+    const double d = s.empty() ? 0 : std::strtod(s.c_str(), &end);
+    if (s.empty() || errno != 0 || *end != '\0' || !std::isfinite(d) || std::fabs(d) > 1e12) return false;
+    out = float(d);
+    return true;
+}
+
+bool to_int(const std::string& s, long lo, long hi, int& out) {
+    char* end = nullptr;
+    errno = 0;
+    const long n = s.empty() ? 0 : std::strtol(s.c_str(), &end, 10);
+    if (s.empty() || errno != 0 || *end != '\0' || n < lo || n > hi) return false;
+    out = int(n);
+    return true;
+}
+
+const char* kCommands = "size, camera, set, frames, screenshot or quit";
+
+}  // namespace
+
+const std::vector<std::string>& viewer_settings() {
+    static const std::vector<std::string> s = {"panel", "overlay", "animate"};
+    return s;
+}
+
+Script parse_script(const std::string& text, const std::string& path) {
+    Script script;
+    script.path = path;
+    std::istringstream in(text);
+    int n = 0;
+    for (std::string raw; std::getline(in, raw);) {
+        ++n;
+        std::string line = raw.substr(0, raw.find('#'));
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::istringstream ls(line);
+        std::vector<std::string> w;
+        for (std::string t; ls >> t;) w.push_back(t);
+        if (w.empty()) continue;
+        ScriptCommand c{};
+        c.line = n;
+        const std::string& cmd = w[0];
+        auto want_words = [&](size_t count, const char* form) {
+            if (w.size() != count)
+                fail(path, n, std::string("expected '") + form + "', got '" + line.substr(line.find_first_not_of(" \t")) + "'");
+        };
+        if (cmd == "size") {
+            want_words(3, "size W H");
+            if (!to_int(w[1], 0, 8192, c.w) || !to_int(w[2], 0, 8192, c.h) || ((c.w == 0) != (c.h == 0)))
+                fail(path, n, "size: expected W H, each in [1, 8192] (or 0 0 to minimise), got '" + w[1] + " " + w[2] + "'");
+            c.kind = ScriptCommand::size;
+        } else if (cmd == "camera") {
+            want_words(13, "camera pos X Y Z target X Y Z up X Y Z");
+            const char* keys[3] = {"pos", "target", "up"};
+            glm::vec3* dst[3] = {&c.pos, &c.target, &c.up};
+            for (int k = 0; k < 3; ++k) {
+                if (w[1 + 4 * k] != keys[k])
+                    fail(path, n, std::string("camera: expected '") + keys[k] + "', got '" + w[1 + 4 * k] + "'");
+                for (int i = 0; i < 3; ++i)
+                    if (!to_float(w[2 + 4 * k + i], (*dst[k])[i]))
+                        fail(path, n, std::string("camera ") + keys[k] + ": expected a finite number, got '" +
+                                          w[2 + 4 * k + i] + "'");
+            }
+            if (glm::length(c.target - c.pos) <= 0 || glm::length(glm::cross(c.target - c.pos, c.up)) <= 0)
+                fail(path, n, "camera: expected target apart from pos and up not along the view direction");
+            c.kind = ScriptCommand::camera;
+        } else if (cmd == "set") {
+            want_words(3, "set NAME VALUE");
+            const RenderOption* o = find_render_option(w[1]);
+            bool own = false;
+            for (const std::string& v : viewer_settings()) own |= w[1] == v;
+            if (!o && !own) {
+                std::string names;
+                for (const RenderOption& r : render_options()) names += (names.empty() ? "" : ", ") + r.name;
+                for (const std::string& v : viewer_settings()) names += ", " + v;
+                fail(path, n, "set: expected an option name (" + names + "), got '" + w[1] + "'");
+            }
+            const std::string err = o ? check_render_option(*o, w[2])
+                                      : w[2] == "on" || w[2] == "off" ? "" : "expected on|off, got '" + w[2] + "'";
+            if (!err.empty()) fail(path, n, "set " + w[1] + ": " + err);
+            c.name = w[1];
+            c.value = w[2];
+            c.kind = ScriptCommand::set;
+        } else if (cmd == "frames") {
+            want_words(2, "frames N");
+            if (!to_int(w[1], 1, 1000000, c.count))
+                fail(path, n, "frames: expected an integer in [1, 1000000], got '" + w[1] + "'");
+            c.kind = ScriptCommand::frames;
+        } else if (cmd == "screenshot") {
+            want_words(2, "screenshot FILE");
+            const std::string ext = image_extension(w[1]);
+            if (ext != ".png" && ext != ".exr" && ext != ".tif" && ext != ".tiff" && ext != ".jpg" && ext != ".ppm")
+                fail(path, n, "screenshot: expected a file ending .png, .exr, .tif, .jpg or .ppm, got '" + w[1] + "'");
+            c.value = w[1];
+            c.kind = ScriptCommand::screenshot;
+        } else if (cmd == "quit") {
+            want_words(1, "quit");
+            c.kind = ScriptCommand::quit;
+        } else {
+            fail(path, n, std::string("expected ") + kCommands + ", got '" + cmd + "'");
+        }
+        script.commands.push_back(c);
+    }
+    return script;
+}
+
+Script load_script(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error(path + ": cannot read the script");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) throw Error(path + ": cannot read the script");
+    return parse_script(ss.str(), path);
+}
+
+}  // namespace dsr

@@ -1,0 +1,45 @@
+// The viewer's `--script FILE`: one command per line, so it runs without a person (the tests
+// drive it this way under Xvfb). Parsed whole before the window opens, so a bad line is one
+// error naming FILE:LINE and nothing runs. Pure: no GL, no window.
+//
+//   size W H                                  resize the window (0 0: minimise)
+//   camera pos X Y Z target X Y Z up X Y Z    place the camera (fov, near, far stay the scene's)
+//   set NAME VALUE                            a renderer option by its `render` flag name, or
+//                                             panel|overlay|animate on|off (the viewer's own)
+//   frames N                                  render N frames
+//   screenshot FILE                           the deferred image (no panel), written with the image seam
+//   quit                                      close the viewer
+// `#` starts a comment; blank lines are skipped.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace dsr {
+
+struct ScriptCommand {
+    enum Kind { size, camera, set, frames, screenshot, quit } kind;
+    int line = 0;                        // 1-based, for FILE:LINE in errors while it runs
+    int w = 0, h = 0;                    // size
+    glm::vec3 pos{0}, target{0}, up{0};  // camera
+    std::string name, value;             // set (checked against the option table); screenshot: value = FILE
+    int count = 0;                       // frames
+};
+
+struct Script {
+    std::string path;
+    std::vector<ScriptCommand> commands;
+    // "FILE:LINE: " for error messages.
+    std::string where(const ScriptCommand& c) const { return path + ":" + std::to_string(c.line) + ": "; }
+};
+
+// The viewer's own settings `set` takes beside the option table's (each on|off).
+const std::vector<std::string>& viewer_settings();
+
+// Throws dsr::Error "FILE:LINE: expected ..., got '...'" on the first bad line, or when the file
+// cannot be read.
+Script parse_script(const std::string& text, const std::string& path);
+Script load_script(const std::string& path);
+
+}  // namespace dsr

@@ -1,0 +1,22 @@
+// `dsr view`: the same renderer in a GLFW window, with a Dear ImGui panel (viewer_app.cpp,
+// viewer_panel.cpp). app/viewer_main.cpp parses the command line into a ViewerConfig.
+#pragma once
+#include <string>
+
+#include "deferred/option_table.h"
+
+namespace dsr {
+
+struct ViewerConfig {
+    std::string scene_path;  // empty: data/default.scene
+    int width = 512, height = 512;  // the window's framebuffer at start (render's --size default)
+    RenderOptions options;          // the option table's flags
+    std::string caps_list;          // --caps, added to $DSR_CAPS
+    std::string script_path;        // --script FILE; empty: a person drives it
+};
+
+// Opens the window and runs until it is closed, Esc, or the script's `quit`. Returns the exit
+// status; throws dsr::Error (one line, FILE:LINE for the script) on bad input or a failure.
+int run_viewer(const ViewerConfig& config);
+
+}  // namespace dsr

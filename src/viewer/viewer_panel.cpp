@@ -1,0 +1,196 @@
+// The viewer's Dear ImGui panel. Its option widgets are made from the option table
+// (deferred/option_table.h), one per entry by kind, so an option added to the table appears
+// here with the name `render` and `set` use, and nothing in this file changes.
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <vector>
+
+#include "viewer/scissor_overlay.h"
+#include "viewer/viewer_state.h"
+
+namespace dsr {
+
+namespace {
+
+// One widget for one table entry; a change is queued in st.pending.
+void option_widget(ViewerState& st, const RenderOption& o) {
+    const std::string value = o.get(st.options);
+    auto request = [&](const std::string& v) {
+        if (v != value) st.pending.emplace_back(&o, v);
+    };
+    switch (o.kind) {
+        case OptionKind::on_off:
+        case OptionKind::toggle: {
+            bool on = value == "on";
+            if (ImGui::Checkbox(o.name.c_str(), &on)) request(on ? "on" : "off");
+            break;
+        }
+        case OptionKind::choice: {
+            if (ImGui::BeginCombo(o.name.c_str(), value.c_str())) {
+                for (const std::string& v : o.values)
+                    if (ImGui::Selectable(v.c_str(), v == value)) request(v);
+                ImGui::EndCombo();
+            }
+            break;
+        }
+        case OptionKind::number: {
+            // The slider edits a copy; the option changes when the slider is let go (each change
+            // builds the shader's programs anew).
+            static std::map<std::string, float> editing;
+            const auto it = editing.find(o.name);
+            float f = it != editing.end() ? it->second : std::strtof(value.c_str(), nullptr);
+            ImGui::SliderFloat(o.name.c_str(), &f, o.lo, o.hi, "%.2f");
+            if (ImGui::IsItemDeactivatedAfterEdit()) {
+                char buf[32];
+                std::snprintf(buf, sizeof buf, "%g", double(f));
+                request(buf);
+                editing.erase(o.name);
+            } else if (ImGui::IsItemActive()) {
+                editing[o.name] = f;
+            } else {
+                editing.erase(o.name);
+            }
+            break;
+        }
+        case OptionKind::integer: {  // as number: applied when the slider is let go
+            static std::map<std::string, int> editing;
+            const auto it = editing.find(o.name);
+            int n = it != editing.end() ? it->second : std::atoi(value.c_str());
+            ImGui::SliderInt(o.name.c_str(), &n, int(o.lo), int(o.hi));
+            if (ImGui::IsItemDeactivatedAfterEdit()) {
+                request(std::to_string(n));
+                editing.erase(o.name);
+            } else if (ImGui::IsItemActive()) {
+                editing[o.name] = n;
+            } else {
+                editing.erase(o.name);
+            }
+            break;
+        }
+        case OptionKind::subset: {
+            // --no-skip: a checkbox per member, ticked when the skip is off.
+            ImGui::TextUnformatted((o.name + " (ticked: skip off)").c_str());
+            std::vector<std::string> off;
+            if (value != "none") {
+                size_t a = 0;
+                while (a <= value.size()) {
+                    size_t b = value.find(',', a);
+                    if (b == std::string::npos) b = value.size();
+                    if (b > a) off.push_back(value.substr(a, b - a));
+                    a = b + 1;
+                }
+            }
+            ImGui::Indent();
+            for (const std::string& m : o.values) {
+                bool in = std::find(off.begin(), off.end(), m) != off.end();
+                if (ImGui::Checkbox(m.c_str(), &in)) {
+                    std::vector<std::string> next;
+                    for (const std::string& k : o.values) {
+                        const bool was = std::find(off.begin(), off.end(), k) != off.end();
+                        if (k == m ? in : was) next.push_back(k);
+                    }
+                    std::string v;
+                    for (const std::string& k : next) v += (v.empty() ? "" : ",") + k;
+                    request(v.empty() ? "none" : v);
+                }
+            }
+            ImGui::Unindent();
+            break;
+        }
+    }
+}
+
+std::string count_text(std::optional<long long> n) { return n ? std::to_string(*n) : std::string("n/a"); }
+
+}  // namespace
+
+void draw_panel(ViewerState& st, const DeferredShader& ds, const Scene& frame_scene, int w, int h) {
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    if (!ImGui::Begin("dsr view  (F1 hides)", &st.panel)) {
+        ImGui::End();
+        return;
+    }
+    ImGui::Text("%s", st.renderer.c_str());
+    const Paths& p = ds.paths();
+    ImGui::Text("%dx%d  depth %s  timing %s", w, h, p.depth.c_str(), timing_name(st.last.timing));
+    ImGui::Checkbox("animate lights (L)", &st.animate);
+    ImGui::SameLine();
+    ImGui::Checkbox("scissor overlay (O)", &st.overlay);
+    ImGui::Text("camera speed %.3g/s (scroll), R resets", double(st.fly.speed));
+
+    if (ImGui::CollapsingHeader("frame", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const StageTimes& m = st.last.ms;
+        const std::pair<const char*, double> stages[] = {{"geometry", m.geometry}, {"ambient", m.ambient},
+                                                         {"lights", m.lights},     {"bloom", m.bloom},
+                                                         {"aa", m.aa},             {"final", m.final},
+                                                         {"frame", m.frame}};
+        if (ImGui::BeginTable("stages", 2, ImGuiTableFlags_SizingFixedFit)) {
+            for (const auto& [name, ms] : stages) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(name);
+                ImGui::TableNextColumn();
+                ImGui::Text("%8.2f ms", ms);
+            }
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted("loop");  // the previous frame's: this one is still being drawn
+            ImGui::TableNextColumn();
+            ImGui::Text("%8.2f ms  (last frame: with panel, swap)", st.loop_ms);
+            ImGui::EndTable();
+        }
+        const FrameStats& s = st.last;
+        ImGui::Text("lights %d: %d drawn, %d culled", s.lights_total, s.lights_drawn, s.lights_culled);
+        ImGui::Text("light_fragments   %s", count_text(s.counted_light_fragments()).c_str());
+        ImGui::Text("light_invocations %s", count_text(s.light_invocations).c_str());
+        ImGui::Text("ideal             %s%s", count_text(st.ideal).c_str(),
+                    st.ideal ? "  (once a second)" : "  (depth-texture path only)");
+        if (st.ideal && *st.ideal > 0 && s.light_invocations)
+            ImGui::Text("invocations / ideal %.3f", double(*s.light_invocations) / double(*st.ideal));
+        ImGui::Text("scissor_pixels    %lld", s.scissor_pixels);
+
+        std::vector<float> frame_ms, lights_ms;
+        for (const FrameSample& f : st.history) {
+            frame_ms.push_back(float(f.frame_ms));
+            lights_ms.push_back(float(f.lights_ms));
+        }
+        float top = 1;
+        for (float v : frame_ms) top = std::max(top, v);
+        if (!frame_ms.empty()) {
+            ImGui::PlotLines("frame ms", frame_ms.data(), int(frame_ms.size()), 0, "last 5 s", 0, top * 1.1f,
+                             ImVec2(0, 60));
+            ImGui::PlotLines("lights ms", lights_ms.data(), int(lights_ms.size()), 0, nullptr, 0, top * 1.1f,
+                             ImVec2(0, 40));
+        }
+    }
+    if (ImGui::CollapsingHeader("options (the render flags)", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::PushItemWidth(150);
+        for (const RenderOption& o : render_options()) option_widget(st, o);
+        ImGui::PopItemWidth();
+        if (!st.option_error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", st.option_error.c_str());
+    }
+
+    ImGui::End();
+    (void)frame_scene;
+}
+
+void draw_scissor_overlay(const ViewerState& st, const DeferredShader& ds, const Scene& frame_scene, int w, int h) {
+    ImDrawList* dl = ImGui::GetForegroundDrawList();
+    const ShaderOptions& o = ds.options();
+    for (const LightRect& lr : light_scissor_rects(frame_scene, ds.view_matrix(), ds.proj_matrix(), w, h, o.scissor,
+                                                   o.skip.empty_lights)) {
+        const glm::vec3 c = glm::clamp(frame_scene.lights[lr.light].color, glm::vec3(0.25f), glm::vec3(1));
+        const ImU32 col = IM_COL32(int(c.r * 255), int(c.g * 255), int(c.b * 255), 220);
+        // GL window pixels (origin bottom-left) to ImGui's (origin top-left).
+        dl->AddRect(ImVec2(float(lr.rect.x0), float(h - lr.rect.y1)), ImVec2(float(lr.rect.x1), float(h - lr.rect.y0)), col);
+    }
+    (void)st;
+}
+
+}  // namespace dsr
