@@ -3,6 +3,12 @@
 // varyings as the material pass (Listing 10), so the forward and deferred paths light the
 // same interpolated position and tangent frame. Meshes are in object space: modelview =
 // view * model, composed in double on the CPU per object.
+// The depth pre-pass of the multi-pass form (Listing 4) draws with this program too, and the
+// later passes may use the other variant (normal map or not): `invariant` makes gl_Position the
+// same bits in every program built from this code, so GL_EQUAL passes exactly the pre-pass's
+// fragments. (ftransform() alone promises invariance only with the fixed-function pipeline; on
+// an NVIDIA H200 the fixed-function pre-pass left up to 51 LSB of light out, docs/gpu.md.)
+invariant gl_Position;
 varying vec2 texcoord;
 varying vec3 vpos;
 varying vec3 normal;
@@ -11,8 +17,6 @@ varying vec3 binormal;
 
 void main()
 {
-    // ftransform() is invariant with the fixed-function depth pre-pass, so the GL_EQUAL
-    // depth test of the multi-pass form (Listing 4) passes exactly the pre-pass's fragments.
     gl_Position = ftransform();
     texcoord = gl_MultiTexCoord0.xy;
     vpos = (gl_ModelViewMatrix * gl_Vertex).xyz;

@@ -57,7 +57,7 @@ run)
     printf '%s\n' -std=c++17 -O2 -g -Wall -Wno-unused-parameter "-I$root/$src/src" "-isystem" "$root/$sys/usr/include" \
         -DDSR_NO_OSMESA "-DDSR_SOURCE_DIR=\\\"$root/$src\\\"" > $flags
     sources=$(cd $src && ls src/gl/*.cpp src/scene/*.cpp src/deferred/*.cpp src/forward/*.cpp src/analysis/*.cpp \
-              src/platform/*.cpp src/app/*.cpp | grep -v -e osmesa_context -e 'image_io\.cpp' -e glfw_)
+              src/platform/*.cpp src/app/*.cpp | grep -v -e osmesa_context -e 'image_io\.cpp' -e glfw_ -e 'app/viewer_')
     t0=$(date +%s)
     echo "$sources" | xargs -P "$(nproc)" -I{} sh -c \
         'mkdir -p "$(dirname '"$build"'/obj/{})" && g++ @'"$flags"' -c '"$root/$src"'/{} -o '"$build"'/obj/{}.o'

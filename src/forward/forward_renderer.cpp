@@ -261,12 +261,14 @@ void ForwardRenderer::draw_single(const Scene& scene, ForwardStats& st) {
 }
 
 // Listing 4: for each light, each object it affects, added to the frame buffer. The depth
-// pre-pass (fixed function, as §3.3.1's) leaves only the visible surface for GL_EQUAL, so
-// hidden fragments are not shaded and each visible one gets each light once. The ambient pass
-// (Eq. 6, Listing 1) lays the surfaces down.
+// pre-pass leaves only the visible surface for GL_EQUAL, so hidden fragments are not shaded and
+// each visible one gets each light once. It draws with the passes' own vertex stage
+// (forward.vert, `invariant gl_Position`), colour writes off, not fixed function: GL_EQUAL needs
+// the same depth bits in every pass. The ambient pass (Eq. 6, Listing 1) lays the surfaces down.
 void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
     RenderState depth = surface_state();
     depth.color_write = false;
+    depth.program = prog_[0].id();
     gl_state().apply(depth);
     gpu_->draw_all();
     ++st.passes;
