@@ -15,12 +15,16 @@ uniform vec4 lightpos;           // eye space, w = radius
 uniform vec3 lightcolor;
 uniform vec2 planes;             // §3.4.3: (-f/(f-n), -f*n/(f-n))
 uniform vec3 zrange;             // (near, far, log2(far/near)) for the linear and log encodings
+uniform vec2 uv_scale;           // VOLUME: G-buffer texture coordinates per window pixel
 
 varying vec2 texcoord;
 varying vec3 vpos;
 
 void main()
 {
+#ifdef VOLUME
+    vec2 texcoord = gl_FragCoord.xy * uv_scale;  // the pixel centre, as the quad's interpolation gives
+#endif
     vec3 pos;
     pos.z = surface_eye_z(depth_map, texcoord, planes, zrange);  // pos.z = -planes.y/(planes.x+depth)
 #ifdef LIGHT_DEPTH_TEST

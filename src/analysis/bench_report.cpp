@@ -26,9 +26,11 @@ json row_json(const Row& r) {
     j["depth"] = r.depth ? json(*r.depth) : json(nullptr);
     j["encoding"] = r.encoding ? json(*r.encoding) : json(nullptr);
     j["gbuffer"] = r.gbuffer ? json(*r.gbuffer) : json(nullptr);
+    j["light_geometry"] = r.light_geometry ? json(*r.light_geometry) : json(nullptr);
     j["scissor"] = r.scissor;
     j["skips_off"] = r.skips_off;
     j["lights"] = r.lights;
+    j["lights_label"] = r.lights_label;
     j["size"] = {r.w, r.h};
     j["frames"] = r.frames;
     j["ms_median"] = r.ms_median;
@@ -60,6 +62,9 @@ json row_json(const Row& r) {
     j["floor_post_ms"] = opt(r.floor_post_ms);
     j["floor_ms"] = opt(r.floor_ms);
     j["floor_ratio"] = opt(r.floor_ratio);
+    j["light_passes"] = opt(r.light_passes);
+    j["depth_copy_ms"] = opt(r.depth_copy_ms);
+    j["max_lsb_vs_quad"] = r.err_quad ? json(r.err_quad->max_lsb()) : json(nullptr);
     return j;
 }
 
@@ -154,7 +159,8 @@ const Row* find_row(const std::vector<Row>& rows, const std::string& scene, int 
     for (const Row& r : rows) {
         if (r.scene != scene || r.lights != lights || r.renderer != renderer) continue;
         if (renderer == "deferred" && default_config &&
-            !(r.depth == std::string("texture") && r.scissor && r.skips_off.empty() && r.gbuffer == std::string("rgba8")))
+            !(r.depth == std::string("texture") && r.scissor && r.skips_off.empty() && r.gbuffer == std::string("rgba8") &&
+              r.light_geometry == std::string("quad")))
             continue;
         return &r;
     }
@@ -239,6 +245,85 @@ std::vector<std::string> goals(const std::vector<Row>& rows, const std::string& 
     } else {
         out.push_back("deferred >= 10x faster than the faster forward multi-pass at 256 lights: not measured in this run");
     }
+    const std::vector<std::string> g = geometry_goals(rows, scene, own_lights);
+    out.insert(out.end(), g.begin(), g.end());
+    return out;
+}
+
+const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& scene, int lights,
+                             const std::string& geometry) {
+    for (const Row& r : rows)
+        if (r.scene == scene && r.lights == lights && r.renderer == "deferred" && r.depth == std::string("texture") &&
+            r.scissor && r.skips_off.empty() && r.gbuffer == std::string("rgba8") &&
+            r.light_geometry == geometry)
+            return &r;
+    return nullptr;
+}
+
+// Issue 12's goals for the light geometries.
+std::vector<std::string> geometry_goals(const std::vector<Row>& rows, const std::string& scene, int own_lights) {
+    std::vector<std::string> out;
+    for (int n : {own_lights, 1024}) {
+        const std::string where = scene + " with " + std::to_string(n) + " lights";
+        const Row* s = find_geometry_row(rows, scene, n, "stencil");
+        if (!s || !s->ideal_fragments || *s->ideal_fragments <= 0 || !s->light_invocations)
+            out.push_back("stencil light_invocations <= 1.25 x ideal, " + where + ": not measured in this run");
+        else
+            out.push_back("stencil light_invocations <= 1.25 x ideal, " + where + ": " +
+                          over(*s->light_invocations, *s->ideal_fragments) + " -> " +
+                          (double(*s->light_invocations) <= 1.25 * double(*s->ideal_fragments) ? "met" : "NOT met"));
+    }
+    // Scenes the light generators name by their --lights entry (bench_scenes.h).
+    const Row* tq = nullptr;
+    const Row* tt = nullptr;
+    for (const Row& r : rows)
+        if (r.scene.find("1024-overlap") != std::string::npos || r.lights_label == "1024-overlap") {
+            if (!tq) tq = find_geometry_row(rows, r.scene, r.lights, "quad");
+            if (!tt) tt = find_geometry_row(rows, r.scene, r.lights, "tiles");
+        }
+    if (tq && tt)
+        out.push_back("tiles >= 3x faster than quad on 1024-overlap: " + format_number("%.2f", tq->ms_median) +
+                      " ms / " + format_number("%.2f", tt->ms_median) + " ms = " +
+                      format_number("%.2f", tq->ms_median / tt->ms_median) + "x -> " +
+                      (tq->ms_median >= 3 * tt->ms_median ? "met" : "NOT met"));
+    else
+        out.push_back("tiles >= 3x faster than quad on 1024-overlap: not measured in this run");
+    const Row* best = nullptr;
+    const Row* fwd = nullptr;
+    for (const Row& r : rows)
+        if (r.lights_label == "32-large") {
+            if (r.renderer == "deferred" && r.skips_off.empty() && r.gbuffer == std::string("rgba8") &&
+                (!best || r.ms_median < best->ms_median))
+                best = &r;
+            if (r.renderer == "forward-single" && (!fwd || r.ms_median < fwd->ms_median)) fwd = &r;
+        }
+    if (best && fwd)
+        out.push_back("best deferred >= 1.5x faster than forward single-pass on 32-large: " + config_text(*fwd) + " " +
+                      format_number("%.2f", fwd->ms_median) + " ms / " + config_text(*best) + " " +
+                      format_number("%.2f", best->ms_median) + " ms = " +
+                      format_number("%.2f", fwd->ms_median / best->ms_median) + "x -> " +
+                      (fwd->ms_median >= 1.5 * best->ms_median ? "met" : "NOT met"));
+    else
+        out.push_back("best deferred >= 1.5x faster than forward single-pass on 32-large: not measured in this run");
+    // Every geometry's image against quad's, every light count of the scene.
+    double worst = -1;
+    std::string worst_row;
+    int compared = 0;
+    for (const Row& r : rows)
+        if (r.scene == scene && r.renderer == "deferred" && r.err_quad && r.light_geometry &&
+            *r.light_geometry != "quad") {
+            ++compared;
+            if (r.err_quad->max_lsb() > worst) {
+                worst = r.err_quad->max_lsb();
+                worst_row = config_text(r) + " at " + std::to_string(r.lights) + " lights";
+            }
+        }
+    if (compared == 0)
+        out.push_back("every light geometry within 1 LSB of quad's image, " + scene + ": not measured in this run");
+    else
+        out.push_back("every light geometry within 1 LSB of quad's image, " + scene + ": largest " +
+                      format_number("%.0f", worst) + " LSB (" + worst_row + ", " + std::to_string(compared) +
+                      " rows) -> " + (worst <= 1 ? "met" : "NOT met"));
     return out;
 }
 
@@ -282,6 +367,9 @@ json to_json(const Summary& s) {
     j["gl_version"] = s.gl_version;
     j["config"] = {{"quick", cfg.quick}, {"size", {cfg.w, cfg.h}}, {"frames", cfg.frames}, {"warmup", cfg.warmup},
                    {"lights", cfg.lights_text}, {"scenes", s.scenes}};
+    std::vector<std::string> geometries;
+    for (LightGeometry g : cfg.geometries) geometries.push_back(light_geometry_name(g));
+    j["config"]["light_geometries"] = geometries;
     j["seconds"] = s.seconds;
     j["goals"] = s.goals;
     j["notes"] = s.notes;

@@ -10,6 +10,7 @@
 #include "dsr_clock.h"
 #include "app/args.h"
 #include "app/commands.h"
+#include "analysis/frame_ideal.h"
 #include "app/files.h"
 #include "deferred/deferred_shader.h"
 #include "gl/caps.h"
@@ -43,6 +44,9 @@ int cmd_render(const std::vector<std::string>& argv) {
     PostOptions post;
     SkipOptions skip;
     bool gbuffer_half = false;
+    std::string light_geometry = "quad";
+    bool depth_bounds = false;
+    int tile_size = 32, tile_lights = 8;
     std::string view_name_arg = "final";
     std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";
     std::string context = default_context_backend();  // --context, else $DSR_CONTEXT
@@ -83,6 +87,10 @@ int cmd_render(const std::vector<std::string>& argv) {
             post.aa_source = v == "normal" ? AaSource::normal : v == "depth" ? AaSource::depth : AaSource::both;
         } else if (a == "--aa-kernel") post.aa_kernel = args.choice(a, {"text", "listing"}) == "listing" ? AaKernel::listing : AaKernel::text;
         else if (a == "--aa-weight") post.aa_weight = args.float_value(a, 0.0f, 8.0f);
+        else if (a == "--light-geometry") light_geometry = args.choice(a, {"quad", "volume", "stencil", "tiles"});
+        else if (a == "--depth-bounds") depth_bounds = args.on_off(a);
+        else if (a == "--tile-size") tile_size = args.int_value(a, 8, 512);
+        else if (a == "--tile-lights") tile_lights = args.int_value(a, 1, 32);
         else if (a == "--caps") caps_list += "," + args.value(a);
         else if (a == "--context") context = args.value(a);
         else if (a == "--egl-device") egl_device = args.int_value(a, 0, 15);
@@ -119,6 +127,10 @@ int cmd_render(const std::vector<std::string>& argv) {
     opts.listing2_literal = listing2;
     opts.scissor = scissor;
     opts.post = post;
+    opts.light_geometry = light_geometry_from_name(light_geometry);
+    opts.depth_bounds = depth_bounds;
+    opts.tile_size = tile_size;
+    opts.tile_lights = tile_lights;
 
     DeferredShader ds(caps, w, h, opts, resource_dir("glsl120"));
     ds.set_scene(scene);
@@ -163,10 +175,23 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["light_fragments"] = frags ? nlohmann::json(*frags) : nlohmann::json(nullptr);
     j["light_invocations"] = last.light_invocations ? nlohmann::json(*last.light_invocations) : nlohmann::json(nullptr);
     j["scissor_pixels"] = last.scissor_pixels;
+    j["light_geometry"] = light_geometry_name(paths.light_geometry);  // as run: stencil may fall back to volume
+    j["light_geometry_asked"] = light_geometry;
+    if (!paths.light_geometry_note.empty()) j["light_geometry_note"] = paths.light_geometry_note;
+    if (paths.light_geometry == LightGeometry::stencil) j["stencil_faces"] = stencil_faces_name(paths.stencil_faces);
+    if (paths.light_geometry == LightGeometry::tiles) j["tiles"] = {{"size", tile_size}, {"lights_per_pass", tile_lights}};
+    j["depth_bounds"] = paths.depth_bounds;
+    j["light_passes"] = last.light_passes;
+    j["lights_as_quads"] = last.lights_as_quads;
+    if (!stats_path.empty()) {  // reads the G-buffer back: only when asked for
+        const FrameIdeal ideal = frame_ideal_fragments(ds, scene);
+        j["ideal_fragments"] = ideal.fragments ? nlohmann::json(*ideal.fragments) : nlohmann::json(nullptr);
+        j["ideal_source"] = ideal.source;
+    }
     j["ms"] = {{"geometry", med(&StageTimes::geometry)}, {"ambient", med(&StageTimes::ambient)},
                {"lights", med(&StageTimes::lights)},     {"bloom", med(&StageTimes::bloom)},
                {"aa", med(&StageTimes::aa)},             {"final", med(&StageTimes::final)},
-               {"frame", med(&StageTimes::frame)}};
+               {"depth_copy", med(&StageTimes::depth_copy)}, {"frame", med(&StageTimes::frame)}};
     size_t triangles = 0;
     for (const Mesh& m : scene.meshes) triangles += m.indices.size() / 3;
     struct rusage usage {};

@@ -22,6 +22,7 @@ std::vector<CommandUsage> make_table() {
                   "[--bloom|--no-bloom] [--bloom-scale 2|4] [--bloom-taps N] [--bloom-strength S]",
                   "[--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]",
                   "[--aa-kernel text|listing] [--aa-weight W]",
+                  "[--light-geometry quad|volume|stencil|tiles] [--depth-bounds on|off] [--tile-size N] [--tile-lights N]",
                   "[--context NAME] [--egl-device N] [--gl-state-cache on|off] [--debug-gl]"},
                  "render SCENE (default data/default.scene) with the deferred shader into one image",
                  "  SCENE                   scene file (default data/default.scene)\n"
@@ -41,8 +42,9 @@ std::vector<CommandUsage> make_table() {
                  "  --frames N              frames to render; --stats reports the medians (default 1)\n"
                  "  --stats FILE.json       per-stage times, light counts and fragments, paths chosen\n"
                  "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-npot,\n"
-                 "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats\n"
-                 "                          (added to $DSR_CAPS)\n"
+                 "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats,\n"
+                 "                          no-stencil, no-packed-depth-stencil, no-stencil-separate,\n"
+                 "                          no-stencil-two-side, no-depth-bounds (added to $DSR_CAPS)\n"
                  "  --view NAME             final, normal, diffuse, specular, depth, blur-factor or bloom\n"
                  "  --bloom, --no-bloom     bloom on or off (default: the scene's post line)\n"
                  "  --bloom-scale 2|4       bloom buffers at 1/2 or 1/4 of the frame (default 2)\n"
@@ -56,7 +58,15 @@ std::vector<CommandUsage> make_table() {
                  "                          what the edge factor of Equation 7 measures (default normal)\n"
                  "  --aa-kernel text|listing\n"
                  "                          all 8 neighbours as the text says (default) or Listing 21's 4\n"
-                 "  --aa-weight W           largest anti-alias offset in pixels, 0..8 (default 1)\n" +
+                 "  --aa-weight W           largest anti-alias offset in pixels, 0..8 (default 1)\n"
+                 "  --light-geometry quad|volume|stencil|tiles\n"
+                 "                          how each light reaches its pixels: scissored quad (default, the\n"
+                 "                          tutorial's), volume mesh back faces, stencil-masked volume, or\n"
+                 "                          screen tiles with several lights per pass\n"
+                 "  --depth-bounds on|off   quad: EXT_depth_bounds_test on each light's depth span (default off;\n"
+                 "                          refused where the GL lacks it, as llvmpipe does)\n"
+                 "  --tile-size N           tiles: pixels per tile side, 8..512 (default 32)\n"
+                 "  --tile-lights N         tiles: lights per pass, 1..32 (default 8)\n" +
                      std::string(kContextOption) + kEglDeviceOption +
                      "  --gl-state-cache on|off\n"
                      "                          off: every pass sets all of its GL state, so a cache bug can be\n"
@@ -71,7 +81,7 @@ std::vector<CommandUsage> make_table() {
                      std::string(kContextOption)});
     t.push_back({"bench",
                  {"[SCENE] [--quick] [--json FILE.json] [--report FILE.md] [--size WxH] [--frames N]",
-                  "[--lights own,32,256,1024] [--context NAME]"},
+                  "[--lights own,32,256,1024,1024-overlap,32-large] [--light-geometry LIST] [--context NAME]"},
                  "depth path x scissor x skips x encodings x lights vs forward: times, fragments, error",
                  "  SCENE                   scene to measure (default: data/default.scene and\n"
                  "                          tests/data/analytic.scene)\n"
@@ -81,7 +91,9 @@ std::vector<CommandUsage> make_table() {
                  "  --size WxH              frame size (default 512x512)\n"
                  "  --frames N              timed frames per row, 1..1000 (default 10)\n"
                  "  --lights LIST           comma-separated light counts; own: the scene's own lights\n"
-                 "                          (default own,32,256,1024)\n" +
+                 "                          (default own,32,256,1024)\n"
+                 "  --light-geometry LIST   light geometries to measure: quad, volume, stencil, tiles\n"
+                 "                          (default all four)\n" +
                      std::string(kContextOption)});
     t.push_back({"stress",
                  {"[--quick] [--json FILE] [--report FILE.md] [--plot FILE.png] [--only TEXT]",
@@ -97,8 +109,9 @@ std::vector<CommandUsage> make_table() {
                  {"[--caps LIST] [--context NAME] [--egl-device N]"},
                  "GL vendor/renderer/version, capabilities, paths chosen",
                  "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-npot,\n"
-                 "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats\n"
-                 "                          (added to $DSR_CAPS)\n" +
+                 "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats,\n"
+                 "                          no-stencil, no-packed-depth-stencil, no-stencil-separate,\n"
+                 "                          no-stencil-two-side, no-depth-bounds (added to $DSR_CAPS)\n" +
                      std::string(kContextOption) + kEglDeviceOption});
     t.push_back({"gen-textures",
                  {"DIR"},

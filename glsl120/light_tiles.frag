@@ -1,0 +1,58 @@
+#version 120
+// Light geometry `tiles` (src/deferred/light_geometry_tiles.cpp): up to MAX_LIGHTS point lights
+// per pass (§3.4.3's "multiple lights per pass"). The G-buffer is read once, then Listing 20's
+// light loop runs over the group, with light.frag's per-light tests (LIGHT_DEPTH_TEST,
+// LIGHT_SPHERE_TEST) as `continue`; the sum is blended once. A pixel no light reaches is
+// discarded (nothing to add; light_fragments counts the rest).
+#include "depth_codec.glsl"
+#include "lighting.glsl"
+
+uniform sampler2D normal_map;    // unit 0
+uniform sampler2D diffuse_map;   // unit 1
+uniform sampler2D specular_map;  // unit 2
+uniform sampler2D depth_map;     // unit 3
+uniform vec4 lightpos[MAX_LIGHTS];    // eye space, w = radius
+uniform vec3 lightcolor[MAX_LIGHTS];
+uniform int light_count;              // lights of this pass, <= MAX_LIGHTS
+uniform vec2 planes;
+uniform vec3 zrange;
+
+varying vec2 texcoord;
+varying vec3 vpos;
+
+void main()
+{
+    vec3 pos;
+    pos.z = surface_eye_z(depth_map, texcoord, planes, zrange);
+    pos.xy = vpos.xy / vpos.z * pos.z;
+    vec3 normal = texture2D(normal_map, texcoord).xyz - 0.5;
+    float len = length(normal);
+    if (len <= 0.1)
+        discard;  // background and degenerate normals: unlit
+    normal /= len;
+    vec3 diffuse = texture2D(diffuse_map, texcoord).rgb;
+    vec4 specular = texture2D(specular_map, texcoord);
+    float shininess = decode_shininess(specular.a);
+    vec3 c = vec3(0.0);
+    bool any = false;
+    for (int i = 0; i < MAX_LIGHTS; ++i) {
+        if (i >= light_count)
+            break;
+        vec4 lp = lightpos[i];
+#ifdef LIGHT_DEPTH_TEST
+        if (abs(pos.z - lp.z) > lp.w)
+            continue;
+#endif
+#ifdef LIGHT_SPHERE_TEST
+        vec3 d = pos - lp.xyz;
+        if (dot(d, d) >= lp.w * lp.w)
+            continue;
+#endif
+        // Each light's term clamped to [0, 1] as its own pass's 8-bit blend would be.
+        c += clamp(lighting(lightcolor[i], lp.xyz, lp.w, pos, normal, diffuse, specular.rgb, shininess), 0.0, 1.0);
+        any = true;
+    }
+    if (!any)
+        discard;
+    gl_FragColor = vec4(c, 1.0);
+}
