@@ -22,8 +22,12 @@ uniform float shininess;        // M_shi of Equation 4, exactly
 uniform float tile;
 uniform vec3 ambient;
 uniform int nlights;
-uniform vec4 lightpos[MAX_LIGHTS];    // eye space, w = S_radius
-uniform vec3 lightcolor[MAX_LIGHTS];  // S_diff = S_spec
+// One light as five vec4s (lighting.glsl light_contribution; deferred/light_params.h).
+uniform vec4 lightpos[MAX_LIGHTS];    // eye space, w = radius
+uniform vec4 lightcolor[MAX_LIGHTS];  // S_diff = S_spec, w = type
+uniform vec4 lightdir[MAX_LIGHTS];
+uniform vec4 lightspot[MAX_LIGHTS];
+uniform vec4 lightatt[MAX_LIGHTS];
 
 varying vec2 texcoord;
 varying vec3 vpos;
@@ -45,7 +49,8 @@ void main()
     vec3 c = ambient * Mdiff;  // Equation 6 (zero on additive passes)
     for (int i = 0; i < MAX_LIGHTS; ++i) {
         if (i >= nlights) break;
-        c += lighting(lightcolor[i], lightpos[i].xyz, lightpos[i].w, vpos, n, Mdiff, Mspec, shininess);
+        c += light_contribution(lightpos[i], lightcolor[i], lightdir[i], lightspot[i], lightatt[i], vpos, n, Mdiff,
+                                Mspec, shininess);
     }
     gl_FragColor = vec4(c, 1.0);
 }

@@ -1,5 +1,6 @@
 #version 120
-// Lighting pass for one point light (Listing 20). Variants: PACKED_DEPTH (depth from the
+// Lighting pass for one light (Listing 20), of any type (lighting.glsl light_contribution:
+// point, spot, directional; Equation 2 or the attenuation law). Variants: PACKED_DEPTH (depth from the
 // RGB8 target, Listing 18 / ENC_* encodings), LISTING2_LITERAL, LIGHT_DEPTH_TEST (reject
 // surfaces in front of or behind the light's sphere before shading), LIGHT_SPHERE_TEST (reject
 // surface points outside the sphere), OUTPUT_POSITION (write the
@@ -12,7 +13,10 @@ uniform sampler2D diffuse_map;   // unit 1
 uniform sampler2D specular_map;  // unit 2
 uniform sampler2D depth_map;     // unit 3
 uniform vec4 lightpos;           // eye space, w = radius
-uniform vec3 lightcolor;
+uniform vec4 lightcolor;         // rgb, w = type (0 point, 1 spot, 2 directional)
+uniform vec4 lightdir;           // eye-space unit direction, w = cos(half-angle)
+uniform vec4 lightspot;          // (cos of the soft edge's inner angle, exponent, -, -)
+uniform vec4 lightatt;           // (KC, KL, KQ, law): lighting.glsl
 uniform vec2 planes;             // §3.4.3: (-f/(f-n), -f*n/(f-n))
 uniform vec3 zrange;             // (near, far, log2(far/near)) for the linear and log encodings
 uniform vec2 uv_scale;           // VOLUME: G-buffer texture coordinates per window pixel
@@ -30,14 +34,18 @@ void main()
 #ifdef LIGHT_DEPTH_TEST
     // Beyond the tutorial: a surface outside the sphere's depth span [z-r, z+r] (background
     // included: it sits at the far plane) cannot be lit; reject it before any other work.
-    if (abs(pos.z - lightpos.z) > lightpos.w)
+    // A spot's cone lies in the sphere about its apex; a directional light has no span.
+    if (lightcolor.w < 1.5 && abs(pos.z - lightpos.z) > lightpos.w)
         discard;
 #endif
     pos.xy = vpos.xy / vpos.z * pos.z;
 #ifdef LIGHT_SPHERE_TEST
     // A point outside the sphere gets att = 0 (Equation 2): nothing to add, so no G-buffer reads.
+    // A spot adds nothing on or outside its cone either (GL_SPOT_CUTOFF).
     vec3 d = pos - lightpos.xyz;
-    if (dot(d, d) >= lightpos.w * lightpos.w)
+    if (lightcolor.w < 1.5 && dot(d, d) >= lightpos.w * lightpos.w)
+        discard;
+    if (lightcolor.w > 0.5 && lightcolor.w < 1.5 && dot(d, lightdir.xyz) <= length(d) * lightdir.w)
         discard;
 #endif
 
@@ -51,7 +59,7 @@ void main()
 #endif
     vec3 diffuse = texture2D(diffuse_map, texcoord).rgb;
     vec4 specular = texture2D(specular_map, texcoord);
-    vec3 c = lighting(lightcolor, lightpos.xyz, lightpos.w, pos, normal, diffuse, specular.rgb,
-                      decode_shininess(specular.a));
+    vec3 c = light_contribution(lightpos, lightcolor, lightdir, lightspot, lightatt, pos, normal, diffuse,
+                                specular.rgb, decode_shininess(specular.a));
     gl_FragColor = vec4(c, 1.0);
 }

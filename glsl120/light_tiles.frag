@@ -1,5 +1,5 @@
 #version 120
-// Light geometry `tiles` (src/deferred/light_geometry_tiles.cpp): up to MAX_LIGHTS point lights
+// Light geometry `tiles` (src/deferred/light_geometry_tiles.cpp): up to MAX_LIGHTS lights of any type
 // per pass (§3.4.3's "multiple lights per pass"). The G-buffer is read once, then Listing 20's
 // light loop runs over the group, with light.frag's per-light tests (LIGHT_DEPTH_TEST,
 // LIGHT_SPHERE_TEST) as `continue`; the sum is blended once. A pixel no light reaches is
@@ -11,8 +11,11 @@ uniform sampler2D normal_map;    // unit 0
 uniform sampler2D diffuse_map;   // unit 1
 uniform sampler2D specular_map;  // unit 2
 uniform sampler2D depth_map;     // unit 3
-uniform vec4 lightpos[MAX_LIGHTS];    // eye space, w = radius
-uniform vec3 lightcolor[MAX_LIGHTS];
+uniform vec4 lightpos[MAX_LIGHTS];    // lighting.glsl light_contribution's five vec4s per light
+uniform vec4 lightcolor[MAX_LIGHTS];
+uniform vec4 lightdir[MAX_LIGHTS];
+uniform vec4 lightspot[MAX_LIGHTS];
+uniform vec4 lightatt[MAX_LIGHTS];
 uniform int light_count;              // lights of this pass, <= MAX_LIGHTS
 uniform vec2 planes;
 uniform vec3 zrange;
@@ -39,17 +42,21 @@ void main()
         if (i >= light_count)
             break;
         vec4 lp = lightpos[i];
+        float type = lightcolor[i].w;
 #ifdef LIGHT_DEPTH_TEST
-        if (abs(pos.z - lp.z) > lp.w)
+        if (type < 1.5 && abs(pos.z - lp.z) > lp.w)
             continue;
 #endif
 #ifdef LIGHT_SPHERE_TEST
         vec3 d = pos - lp.xyz;
-        if (dot(d, d) >= lp.w * lp.w)
+        if (type < 1.5 && dot(d, d) >= lp.w * lp.w)
+            continue;
+        if (type > 0.5 && type < 1.5 && dot(d, lightdir[i].xyz) <= length(d) * lightdir[i].w)
             continue;
 #endif
         // Each light's term clamped to [0, 1] as its own pass's 8-bit blend would be.
-        c += clamp(lighting(lightcolor[i], lp.xyz, lp.w, pos, normal, diffuse, specular.rgb, shininess), 0.0, 1.0);
+        c += clamp(light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, normal, diffuse,
+                                      specular.rgb, shininess), 0.0, 1.0);
         any = true;
     }
     if (!any)

@@ -1,12 +1,10 @@
-// Equations 1-5 for one point light, in eye space (Listing 2, corrected; docs/errata.md):
+// Equations 1-5 in eye space (Listing 2, corrected; docs/errata.md):
 //  * v points from p to the viewer (Eq. 5); Listing 2 uses +normalize(p), which points away.
 //  * h is built from the unit l (Eq. 5); Listing 2 adds the unnormalised l, so h ~ l.
-// Returns att * (I_diff + I_spec); the ambient term is the fixed-function pass (Eq. 6).
-vec3 lighting(vec3 Scolor, vec3 Spos, float Sradius, vec3 p, vec3 n, vec3 Mdiff, vec3 Mspec, float Mshi)
+// brdf() returns I_diff + I_spec for light colour Scolor arriving along l (from p towards the
+// light, not normalised, dist = length(l)); the ambient term is the fixed-function pass (Eq. 6).
+vec3 brdf(vec3 Scolor, vec3 l, float dist, vec3 p, vec3 n, vec3 Mdiff, vec3 Mspec, float Mshi)
 {
-    vec3 l = Spos - p;                          // from p towards the light
-    float dist = length(l);
-    float att = max(0.0, 1.0 - dist / Sradius); // Equation 2
 #ifdef LISTING2_LITERAL
     vec3 v = normalize(p);
     vec3 h = normalize(v + l);
@@ -20,7 +18,54 @@ vec3 lighting(vec3 Scolor, vec3 Spos, float Sradius, vec3 p, vec3 n, vec3 Mdiff,
 #endif
     vec3 Idiff = max(0.0, dot(l, n)) * Mdiff * Scolor;               // Equation 3
     vec3 Ispec = pow(max(0.0, dot(h, n)), Mshi) * Mspec * Scolor;    // Equation 4
-    return att * (Idiff + Ispec);                                    // Equation 1
+    return Idiff + Ispec;
+}
+
+// The tutorial's point light: att * (I_diff + I_spec), Equation 1 with Equation 2's attenuation.
+vec3 lighting(vec3 Scolor, vec3 Spos, float Sradius, vec3 p, vec3 n, vec3 Mdiff, vec3 Mspec, float Mshi)
+{
+    vec3 l = Spos - p;                          // from p towards the light
+    float dist = length(l);
+    float att = max(0.0, 1.0 - dist / Sradius); // Equation 2
+    return att * brdf(Scolor, l, dist, p, n, Mdiff, Mspec, Mshi);
+}
+
+// One light of any type (issue 12) at eye-space point p; scene/light_law.h is its CPU twin and
+// documents the laws. Five vec4s per light, so multi-light shaders can hold them in uniform arrays:
+//   Lpos   = (eye-space position, radius)               directional: unused
+//   Lcolor = (S_diff = S_spec, type)                    type 0 point, 1 spot, 2 directional
+//   Ldir   = (eye-space unit direction the light travels, cos of the half-angle)   spot, directional
+//   Lspot  = (cos of the soft edge's inner angle, GL_SPOT_EXPONENT, -, -)          spot
+//   Latt   = (KC, KL, KQ, law)   law 0: Equation 2, max(0, 1 - d / radius);
+//                                law 1: 1 / (KC + KL d + KQ d^2) for d < radius, else 0
+// Spot: 0 on and outside the cone (GL_SPOT_CUTOFF), inside cos(theta)^E times
+// smoothstep(cos half-angle, Lspot.x, cos theta). Directional: l = -dir, no attenuation.
+vec3 light_contribution(vec4 Lpos, vec4 Lcolor, vec4 Ldir, vec4 Lspot, vec4 Latt,
+                        vec3 p, vec3 n, vec3 Mdiff, vec3 Mspec, float Mshi)
+{
+    vec3 l;
+    float dist;
+    float f;
+    if (Lcolor.w > 1.5) {
+        l = -Ldir.xyz;
+        dist = 1.0;
+        f = 1.0;
+    } else {
+        l = Lpos.xyz - p;
+        dist = length(l);
+        if (Latt.w > 0.5)
+            f = dist < Lpos.w ? 1.0 / (Latt.x + Latt.y * dist + Latt.z * dist * dist) : 0.0;
+        else
+            f = max(0.0, 1.0 - dist / Lpos.w);  // Equation 2
+        if (Lcolor.w > 0.5) {
+            float c = dot(-l, Ldir.xyz) / max(dist, 1e-30);  // cos theta from the axis
+            float edge = c > Ldir.w ? smoothstep(Ldir.w, Lspot.x, c) : 0.0;
+            f *= Lspot.y > 0.0 ? edge * pow(max(c, 0.0), Lspot.y) : edge;
+        }
+    }
+    if (f <= 0.0)
+        return vec3(0.0);
+    return f * brdf(Lcolor.rgb, l, dist, p, n, Mdiff, Mspec, Mshi);
 }
 
 // Shininess in the specular target's 8-bit alpha (Listing 20 reads specular.w): stored as

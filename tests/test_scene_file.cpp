@@ -1,5 +1,6 @@
 // Scene-file parser: every kind of mistake gives "FILE:LINE: expected ..., got '...'" with the
 // right line, and the shipped scenes parse into something the renderer can draw.
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -257,6 +258,73 @@ TEST_F(SceneFileTest, TexturesDeduplicatedByResolvedPath) {
     ASSERT_EQ(s.textures.size(), 1u);
     EXPECT_EQ(s.materials[0].normal_map, 0);
     EXPECT_EQ(s.materials[1].diffuse_map, 0);
+}
+
+}  // namespace
+
+namespace {
+
+class LightLines : public SceneFileTest {};
+
+// Issue 12's light syntax: spot, directional, attenuation; the laws' fields land in Light.
+TEST_F(LightLines, SpotDirectionalAttenuation) {
+    const std::string path = write("lights.scene",
+                                   header() +
+                                       "light spot pos 0 3 0 dir 0 -2 0 color 1 1 1 radius 5 angle 30 exponent 4\n"
+                                       "light directional dir 0 0 -3 color 0.2 0.2 0.3\n"
+                                       "light point pos 1 1 1 color 1 0.5 0.5 attenuation 1 0.7 1.8\n"
+                                       "light point pos 1 1 1 color 1 1 1 attenuation 1 0.7 1.8 threshold 0.05\n"
+                                       "light spot angle 90 dir 1 0 0 color 1 1 1 attenuation 1 0 1 pos 0 0 0\n");
+    const dsr::Scene s = dsr::load_scene(path);
+    ASSERT_EQ(s.lights.size(), 5u);
+    EXPECT_EQ(s.lights[0].type, dsr::Light::Type::spot);
+    EXPECT_EQ(s.lights[0].dir, glm::vec3(0, -1, 0));  // normalised
+    EXPECT_FLOAT_EQ(s.lights[0].angle_deg, 30);
+    EXPECT_FLOAT_EQ(s.lights[0].exponent, 4);
+    EXPECT_FALSE(s.lights[0].attenuation);
+    EXPECT_EQ(s.lights[1].type, dsr::Light::Type::directional);
+    EXPECT_EQ(s.lights[1].dir, glm::vec3(0, 0, -1));
+    EXPECT_TRUE(s.lights[2].attenuation);
+    EXPECT_FLOAT_EQ(s.lights[2].threshold, 5.0f / 256.0f);
+    // Radius where I_max / (1 + 0.7 d + 1.8 d^2) = T: the law there equals I_max / T.
+    for (int i : {2, 3}) {
+        const dsr::Light& l = s.lights[size_t(i)];
+        const double d = l.radius;
+        EXPECT_NEAR((1 + 0.7 * d + 1.8 * d * d) * l.threshold, 1.0, 1e-5) << i;
+    }
+    EXPECT_LT(s.lights[3].radius, s.lights[2].radius);
+    EXPECT_NEAR(s.lights[4].radius, std::sqrt(256.0 / 5 - 1), 1e-4);
+}
+
+TEST_F(LightLines, BadValuesNameTheLine) {
+    const std::string spot = "light spot pos 0 3 0 dir 0 -1 0 color 1 1 1 radius 5 ";
+    expect_error(header() + spot + "angle 0\n", 3, {"expected spot angle in (0, 90] degrees", "got '0'"});
+    expect_error(header() + spot + "angle 90.5\n", 3, {"expected spot angle in (0, 90] degrees", "got '90.5'"});
+    expect_error(header() + spot + "angle 30 exponent -1\n", 3, {"expected spot exponent >= 0", "got '-1'"});
+    expect_error(header() + "light spot pos 0 3 0 dir 0 0 0 color 1 1 1 radius 5 angle 30\n", 3,
+                 {"expected a non-zero light dir", "got '0'"});
+    expect_error(header() + "light spot pos 0 3 0 dir 0 -1 0 color 1 1 1 radius 5\n", 3,
+                 {"expected angle", "got end of line"});
+    expect_error(header() + "light spot pos 0 3 0 dir 0 -1 0 color 1 1 1 angle 20\n", 3,
+                 {"expected radius or attenuation", "got end of line"});
+    expect_error(header() + "light directional dir 0 -1 0 color 1 1 1 radius 3\n", 3,
+                 {"expected one of dir, color", "got 'radius'"});
+    expect_error(header() + "light directional color 1 1 1\n", 3, {"expected dir", "got end of line"});
+    expect_error(header() + "light point pos 0 1 0 color 1 1 1 attenuation 1 -0.7 1.8\n", 3,
+                 {"expected attenuation KL >= 0", "got '-0.7'"});
+    expect_error(header() + "light point pos 0 1 0 color 1 1 1 attenuation 0 0.7 1.8\n", 3,
+                 {"expected attenuation KC > 0", "got '0'"});
+    expect_error(header() + "light point pos 0 1 0 color 1 1 1 attenuation 1 0 0\n", 3,
+                 {"expected attenuation KL or KQ > 0"});
+    expect_error(header() + "light point pos 0 1 0 color 1 1 1 radius 2 attenuation 1 1 1\n", 3,
+                 {"expected radius or attenuation, not both", "got 'attenuation'"});
+    expect_error(header() + "light point pos 0 1 0 color 1 1 1 radius 2 threshold 0.1\n", 3,
+                 {"expected threshold only with attenuation"});
+    expect_error(header() + "light point pos 0 1 0 color 1 1 1 attenuation 1 1 1 threshold 0\n", 3,
+                 {"expected attenuation threshold > 0", "got '0'"});
+    expect_error(header() + "light point pos 0 1 0 color 0.1 0.1 0.1 attenuation 60 1 1\n", 3,
+                 {"expected attenuation under which the light reaches threshold"});
+    expect_error(header() + "light area pos 0 1 0\n", 3, {"expected light kind 'point', 'spot' or 'directional'", "got 'area'"});
 }
 
 }  // namespace

@@ -392,11 +392,31 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
             const dvec3 v = glm::normalize(eye - p);     // Eq. 5: from p to the viewer
             dvec3 c = pass(Mdiff * dvec3(scene.ambient));  // Eq. 6
             for (const Light& light : scene.lights) {
-                dvec3 l = dvec3(light.pos) - p;  // towards the light (docs/errata.md #3)
-                const double dist = glm::length(l);
-                const double att = std::max(0.0, 1.0 - dist / double(light.radius));  // Eq. 2
-                if (att <= 0) continue;
-                l = dist > 0 ? l / dist : n;
+                // The laws of README "Scene files" (issue 12), written again here from their
+                // definitions rather than taken from scene/light_law.h.
+                dvec3 l;
+                double att = 1.0;  // directional: no attenuation
+                if (light.type == Light::Type::directional) {
+                    l = -glm::normalize(dvec3(light.dir));
+                } else {
+                    l = dvec3(light.pos) - p;  // towards the light (docs/errata.md #3)
+                    const double dist = glm::length(l);
+                    const double R = light.radius;
+                    if (!light.attenuation) att = std::max(0.0, 1.0 - dist / R);  // Eq. 2
+                    else att = dist < R ? 1.0 / (light.kc + dist * (light.kl + dist * double(light.kq))) : 0.0;
+                    if (att <= 0) continue;
+                    l = dist > 0 ? l / dist : n;
+                    if (light.type == Light::Type::spot) {
+                        // GL_SPOT_CUTOFF: nothing at or beyond the half-angle; inside, the
+                        // exponent's cos^E times a smoothstep over the outer fifth of the angle.
+                        const double theta = std::acos(std::clamp(glm::dot(-l, glm::normalize(dvec3(light.dir))), -1.0, 1.0));
+                        const double a = glm::radians(double(light.angle_deg));
+                        if (!(theta < a)) continue;
+                        const double co = std::cos(a), ci = std::cos(0.8 * a), ct = std::cos(theta);
+                        const double t = std::clamp((ct - co) / (ci - co), 0.0, 1.0);
+                        att *= t * t * (3 - 2 * t) * (light.exponent > 0 ? std::pow(ct, double(light.exponent)) : 1.0);
+                    }
+                }
                 const dvec3 hv = l + v;
                 const double hl = glm::length(hv);
                 const dvec3 h = hl > 1e-12 ? hv / hl : n;  // Eq. 5

@@ -178,12 +178,19 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
     auto say = [&](const std::string& line) {
         if (progress) progress(line);
     };
-    Scene base = load_scene(path);
+    const LightSpec spec{light_count, size_t(sweep_index) < cfg_.light_sets.size() ? cfg_.light_sets[size_t(sweep_index)]
+                                                                                   : LightSet::spread};
     Variant v;
-    v.name = file_stem(path);
-    v.scene = light_count < 0 ? base : with_generated_lights(base, light_count);
+    v.name = bench_scene_name(file_stem(path), spec);
+    for (const Row& r : rows_)
+        if (r.scene == v.name && r.lights == light_count) return;  // "large" replaces every base: once
+    Scene base = load_scene(path);
+    v.scene = bench_scene(base, spec);
     v.sweep_index = sweep_index;
-    v.lights_label = light_count < 0 ? "own" : std::to_string(light_count);
+    v.lights_label = light_count < 0 ? "own"
+                     : std::to_string(light_count) + (spec.set == LightSet::overlap ? "-overlap"
+                                                      : spec.set == LightSet::large ? "-large"
+                                                                                    : "");
     if (analytic_capable(v.scene)) {
         double t0 = now_ms();
         v.trace = analytic_trace(v.scene, cfg_.w, cfg_.h);
@@ -285,7 +292,7 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
     std::optional<std::string> ideal_source;
     if (v.trace) {
         v.ideal = ideal_fragments(surface_from_eye_depth(v.trace->eye_depth, cfg_.w, cfg_.h, pscale),
-                                  eye_lights(v.scene));
+                                  eye_volumes(v.scene));
         ideal_source = "analytic";
     } else {
         for (auto& run : runs) {
@@ -293,7 +300,7 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
             const SurfacePoints pts =
                 surface_from_depth_codes(run->ds->read_gbuffer_depth_codes(), cfg_.w, cfg_.h,
                                          v.scene.camera.near_plane, v.scene.camera.far_plane, pscale);
-            v.ideal = ideal_fragments(pts, eye_lights(v.scene));
+            v.ideal = ideal_fragments(pts, eye_volumes(v.scene));
             ideal_source = "depth24";
             break;
         }

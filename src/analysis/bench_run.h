@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/bench_scenes.h"
 #include "analysis/image_metrics.h"
 #include "deferred/options.h"
 #include "gl/caps.h"
@@ -24,6 +25,7 @@ struct Config {
     int w = 512, h = 512;
     int frames = 10, warmup = 2;
     std::vector<int> lights;  // light counts of the sweep; -1: the scene's own lights
+    std::vector<LightSet> light_sets;  // parallel to lights (bench_scenes.h); missing: spread
     std::string lights_text;  // --lights as given (or its default), e.g. "own,32,256"
     // Light geometries with rows of their own (the default configuration with each); quad's rows
     // are always there.

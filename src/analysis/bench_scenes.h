@@ -2,6 +2,8 @@
 // its lights replaced by N generated ones spread over the floor of its bounding box. No GL.
 #pragma once
 #include <cstdint>
+#include <optional>
+#include <string>
 
 #include "scene/scene.h"
 
@@ -16,5 +18,36 @@ namespace dsr {
 // the empty-light skip avoids. n = 0 gives a scene with no lights. Throws dsr::Error for a scene
 // without meshes or n < 0.
 Scene with_generated_lights(const Scene& scene, int n);
+
+// `--lights` items beyond plain counts (issue 12):
+//   spread   N         with_generated_lights (above)
+//   overlap  N-overlap with_overlapping_lights: every lit pixel inside at least 8 lights
+//   large    N-large   large_lights_scene: LearnOpenGL's demo, the base scene replaced
+enum class LightSet { spread, overlap, large };
+struct LightSpec {
+    int count = -1;  // -1: the scene's own lights ("own")
+    LightSet set = LightSet::spread;
+};
+// "own", "N", "N-overlap" or "N-large" with N in [0, 65536] (overlap: a multiple of 8); nullopt
+// for anything else.
+std::optional<LightSpec> parse_light_spec(const std::string& item);
+// The bench variant of `base` a spec stands for, and its name in the tables: the base name,
+// "NAME-overlap", or "large" (not a variant of the base: the same for every base).
+Scene bench_scene(const Scene& base, const LightSpec& spec);
+std::string bench_scene_name(const std::string& base_name, const LightSpec& spec);
+
+// n lights (a multiple of 8, else dsr::Error) in n / 8 clusters of 8 that share a centre and a
+// radius (placed as with_generated_lights places n / 8 lights, so clusters overlap about 2.5-fold
+// too), each of the 8 its own hue at 1/8 of the brightness: a pixel inside one light is inside its
+// 7 cluster mates, so every lit pixel lies in at least 8 lights (about 20 on average), the
+// many-lights-per-pixel case that multi-light passes exist for. No light is switched off.
+Scene with_overlapping_lights(const Scene& scene, int n);
+
+// A scene like LearnOpenGL's deferred shading demo (seeds/001): 9 unit boxes on a 3 x 3 grid of
+// spacing 3 about the origin (constant materials, so it has an analytic reference), the camera at
+// (0, 0, 5) looking down -z with a 45 degree fov, ambient 0.1, and n lights at hashed positions in
+// [-3, 3]^3 with colours in [0.5, 1]^3 and LearnOpenGL's attenuation (1, 0.7, 1.8) at threshold
+// 5/256, radius about 4.5-5.1: each sphere covers most of the screen.
+Scene large_lights_scene(int n);
 
 }  // namespace dsr

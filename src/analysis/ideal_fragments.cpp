@@ -159,12 +159,15 @@ std::vector<glm::dvec4> eye_lights(const Scene& scene) {
     return out;
 }
 
-long long ideal_fragments(const SurfacePoints& s, const std::vector<glm::dvec4>& lights) {
+namespace {
+
+struct DTile {
+    int x0, y0, x1, y1;
+    glm::dvec3 lo, hi;
+};
+
+std::vector<DTile> surface_tiles(const SurfacePoints& s) {
     constexpr int kTile = 16;
-    struct DTile {
-        int x0, y0, x1, y1;
-        glm::dvec3 lo, hi;
-    };
     std::vector<DTile> tiles;
     const double inf = std::numeric_limits<double>::infinity();
     for (int ty = 0; ty < s.height; ty += kTile)
@@ -180,6 +183,13 @@ long long ideal_fragments(const SurfacePoints& s, const std::vector<glm::dvec4>&
                 }
             if (t.lo.x <= t.hi.x) tiles.push_back(t);
         }
+    return tiles;
+}
+
+}  // namespace
+
+long long ideal_fragments(const SurfacePoints& s, const std::vector<glm::dvec4>& lights) {
+    const std::vector<DTile> tiles = surface_tiles(s);
     long long n = 0;
     for (const glm::dvec4& l : lights) {
         if (!(l.w > 0)) continue;
@@ -203,6 +213,60 @@ long long ideal_fragments_brute(const SurfacePoints& s, const std::vector<glm::d
         if (!(l.w > 0)) continue;
         for (size_t i = 0; i < s.p.size(); ++i) n += s.surface[i] && inside(s.p[i], l);
     }
+    return n;
+}
+
+std::vector<EyeVolume> eye_volumes(const Scene& scene) {
+    const Camera& c = scene.camera;
+    const glm::dmat4 view = glm::lookAt(glm::dvec3(c.pos), glm::dvec3(c.target), glm::dvec3(c.up));
+    std::vector<EyeVolume> out;
+    for (const Light& l : scene.lights) {
+        if (l.color == glm::vec3(0.0f)) continue;
+        const LightVolume w = light_volume(l);
+        EyeVolume e;
+        e.kind = w.kind;
+        e.pos = glm::dvec3(view * glm::dvec4(glm::dvec3(w.pos), 1.0));
+        e.axis = glm::normalize(glm::dmat3(view) * glm::dvec3(w.axis));
+        e.radius = w.radius;
+        e.cos_angle = std::cos(glm::radians(double(l.angle_deg)));
+        out.push_back(e);
+    }
+    return out;
+}
+
+bool inside(const EyeVolume& v, const glm::dvec3& p) {
+    if (v.kind == LightVolume::Kind::full_screen) return true;
+    const glm::dvec3 d = p - v.pos;
+    const double d2 = glm::dot(d, d);
+    if (!(d2 < v.radius * v.radius)) return false;
+    return v.kind == LightVolume::Kind::sphere || glm::dot(d, v.axis) > std::sqrt(d2) * v.cos_angle;
+}
+
+long long ideal_fragments(const SurfacePoints& s, const std::vector<EyeVolume>& lights) {
+    const std::vector<DTile> tiles = surface_tiles(s);
+    long long n = 0;
+    for (const EyeVolume& l : lights) {
+        const bool all = l.kind == LightVolume::Kind::full_screen;
+        if (!all && !(l.radius > 0)) continue;
+        for (const DTile& t : tiles) {
+            if (!all) {  // the ball about the centre or apex holds the whole volume
+                const glm::dvec3 d = glm::max(glm::max(t.lo - l.pos, l.pos - t.hi), glm::dvec3(0.0));
+                if (glm::dot(d, d) > l.radius * l.radius) continue;
+            }
+            for (int y = t.y0; y < t.y1; ++y)
+                for (int x = t.x0; x < t.x1; ++x) {
+                    const size_t i = size_t(y) * s.width + x;
+                    n += s.surface[i] && inside(l, s.p[i]);
+                }
+        }
+    }
+    return n;
+}
+
+long long ideal_fragments_brute(const SurfacePoints& s, const std::vector<EyeVolume>& lights) {
+    long long n = 0;
+    for (const EyeVolume& l : lights)
+        for (size_t i = 0; i < s.p.size(); ++i) n += s.surface[i] && inside(l, s.p[i]);
     return n;
 }
 

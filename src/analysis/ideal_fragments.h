@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "deferred/light_volume.h"
 #include "scene/image.h"
 #include "scene/scene.h"
 
@@ -63,5 +64,20 @@ std::vector<glm::dvec4> eye_lights(const Scene& scene);
 // definition applied in double.
 long long ideal_fragments(const SurfacePoints& s, const std::vector<glm::dvec4>& lights);
 long long ideal_fragments_brute(const SurfacePoints& s, const std::vector<glm::dvec4>& lights);
+
+// Any light type (issue 12): its volume in eye space, in double (deferred/light_volume.h's kinds).
+// A pixel counts when its point lies strictly inside: the sphere as above; the cone when also
+// strictly within the half-angle of the axis (the spot adds nothing on or outside it); full screen
+// (directional) at every surface pixel.
+struct EyeVolume {
+    LightVolume::Kind kind = LightVolume::Kind::sphere;
+    glm::dvec3 pos{0}, axis{0, 0, -1};  // eye space; axis unit
+    double radius = 0, cos_angle = 0;
+};
+// The camera's view (glm::lookAt in double) applied to each light with non-zero colour.
+std::vector<EyeVolume> eye_volumes(const Scene& scene);
+bool inside(const EyeVolume& v, const glm::dvec3& p);
+long long ideal_fragments(const SurfacePoints& s, const std::vector<EyeVolume>& lights);
+long long ideal_fragments_brute(const SurfacePoints& s, const std::vector<EyeVolume>& lights);
 
 }  // namespace dsr

@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -62,22 +63,21 @@ int cmd_bench(const std::vector<std::string>& argv) {
     if (quick) cfg.w = cfg.h = 128, cfg.frames = 3, cfg.warmup = 1;
     if (w) cfg.w = w, cfg.h = h;
     if (frames) cfg.frames = frames;
-    // --lights: comma-separated counts; "own" is the scene's own lights.
-    cfg.lights_text = !lights_arg.empty() ? lights_arg : quick ? "own,32,256" : "own,32,256,1024";
+    // --lights: comma-separated counts; "own" is the scene's own lights; N-overlap and N-large the
+    // generated scenes of bench_scenes.h.
+    cfg.lights_text = !lights_arg.empty() ? lights_arg
+                      : quick             ? "own,32,256"
+                                          : "own,32,256,1024,1024-overlap,32-large";
     {
         std::stringstream ss(cfg.lights_text);
         std::string item;
         while (std::getline(ss, item, ',')) {
-            if (item == "own") {
-                cfg.lights.push_back(-1);
-                continue;
-            }
-            char* end = nullptr;
-            long n = std::strtol(item.c_str(), &end, 10);
-            if (item.empty() || *end || n < 0 || n > 65536)
-                args.fail("--lights: expected a comma-separated list of counts in [0, 65536] or 'own', got '" +
-                          cfg.lights_text + "'");
-            cfg.lights.push_back(int(n));
+            const std::optional<LightSpec> spec = parse_light_spec(item);
+            if (!spec)
+                args.fail("--lights: expected a comma-separated list of 'own', counts N in [0, 65536], N-overlap "
+                          "(N a multiple of 8) or N-large, got '" + item + "' in '" + cfg.lights_text + "'");
+            cfg.lights.push_back(spec->count);
+            cfg.light_sets.push_back(spec->set);
         }
         if (cfg.lights.empty()) args.fail("--lights: expected at least one count, got ''");
     }

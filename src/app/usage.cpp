@@ -90,8 +90,11 @@ std::vector<CommandUsage> make_table() {
                  "  --report FILE.md        markdown report, with the plot beside it as FILE_plot.png\n"
                  "  --size WxH              frame size (default 512x512)\n"
                  "  --frames N              timed frames per row, 1..1000 (default 10)\n"
-                 "  --lights LIST           comma-separated light counts; own: the scene's own lights\n"
-                 "                          (default own,32,256,1024)\n"
+                 "  --lights LIST           comma-separated light counts; own: the scene's own lights;\n"
+                 "                          N-overlap: N lights (a multiple of 8) in clusters of 8, every\n"
+                 "                          lit pixel inside at least 8; N-large: 9 boxes and N lights\n"
+                 "                          covering most of the screen, as LearnOpenGL's demo\n"
+                 "                          (default own,32,256,1024,1024-overlap,32-large)\n"
                  "  --light-geometry LIST   light geometries to measure: quad, volume, stencil, tiles\n"
                  "                          (default all four)\n" +
                      std::string(kContextOption)});

@@ -19,6 +19,8 @@
 #include "deferred/options.h"
 #include "deferred/paths.h"
 #include "deferred/render_targets.h"
+#include "deferred/light_params.h"
+#include "deferred/light_volume.h"
 #include "deferred/scissor.h"
 #include "gl/caps.h"
 #include "gl/frame_timer.h"
@@ -172,15 +174,17 @@ private:
     void draw_material(int target);
     void draw_ambient(const Scene& scene);
     void draw_lighting(const Scene& scene, bool scissors, FrameStats& stats);
-    // One visible light of the frame: eye-space centre, radius, colour and scissor rectangle.
+    // One visible light of the frame: its shader parameters, eye-space volume and scissor rectangle.
     struct LightDraw {
         const Light* light;
-        glm::vec3 eye;
+        LightParams params;
+        LightVolume eye;   // light_volume.h, in eye space
         ScissorRect rect;  // the whole viewport when `full`
         bool full;
     };
     std::vector<LightDraw> visible_lights(const Scene& scene, bool scissors, FrameStats& stats);
     void set_light_uniforms(Program& prog);
+    static void set_light_params(Program& prog, const LightParams& lp);
     // One file per geometry (light_geometry_*.cpp).
     void draw_lights_quad(const std::vector<LightDraw>& lights, FrameStats& stats);
     void draw_lights_volume(const std::vector<LightDraw>& lights, FrameStats& stats);
@@ -189,8 +193,11 @@ private:
     // The light's quad over its scissor rectangle (Listing 16): quad geometry, and the volume
     // geometries' lights whose mesh the far plane would clip.
     void draw_light_quad(const LightDraw& l, class LightQueries& q);
-    // The back faces (or all faces) of a light's volume mesh, in eye space.
+    // A light's volume mesh (light_volume.h volume_mesh), in eye space: spheres as the unit
+    // sphere's mesh scaled and moved by the model-view, cones as their own mesh.
     void draw_light_mesh(const LightDraw& l);
+    // Lights the volume geometries draw as quads: directional (full screen, no mesh) and volumes
+    // whose mesh reaches past the far plane, where its back faces would be clipped away.
     bool mesh_past_far(const LightDraw& l) const;
     void build_volume_mesh();
     // Screen-aligned quad over [x0,x1]x[y0,y1] (window pixels), texcoord 0 = 0..1;

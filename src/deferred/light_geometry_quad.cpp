@@ -21,10 +21,11 @@ float window_depth(float z, glm::vec2 planes) { return (planes.x * z + planes.y)
 void DeferredShader::draw_light_quad(const LightDraw& l, LightQueries& q) {
     RenderState s = light_pass_state(light_prog_.id(), !l.full);
     if (!l.full) glScissor(l.rect.x0, l.rect.y0, l.rect.x1 - l.rect.x0, l.rect.y1 - l.rect.y0);  // set_light_scissor
-    if (paths_.depth_bounds) {
-        const float r = l.light->radius;
+    if (paths_.depth_bounds && l.eye.kind != LightVolume::Kind::full_screen) {
+        // The depth span of the volume's bounding sphere (a cone's lies inside its apex sphere's).
+        const BoundingSphere b = bounding_sphere(l.eye);
         const float n = zrange_.x, f = zrange_.y;
-        const float z_near = std::min(-n, l.eye.z + r), z_far = std::max(-f, l.eye.z - r);
+        const float z_near = std::min(-n, b.centre.z + b.radius), z_far = std::max(-f, b.centre.z - b.radius);
         s.depth_bounds_test = true;
         s.depth_test = true;  // the bounds test reads the depth buffer; GL_ALWAYS keeps the rest as it was
         s.depth_func = GL_ALWAYS;
@@ -32,8 +33,7 @@ void DeferredShader::draw_light_quad(const LightDraw& l, LightQueries& q) {
         glDepthBoundsEXT(std::max(0.0f, window_depth(z_near, planes_)), std::min(1.0f, window_depth(z_far, planes_)));
     }
     gl_state().apply(s);
-    light_prog_.set("lightpos", glm::vec4(l.eye, l.light->radius));  // set_light_params
-    light_prog_.set("lightcolor", l.light->color);
+    set_light_params(light_prog_, l.params);
     q.begin();
     draw_rect(0, 0, float(w_), float(h_), true);
     q.end();

@@ -86,8 +86,7 @@ void DeferredShader::draw_lights_stencil(const std::vector<LightDraw>& lights, F
             draw_light_mesh(l);
         }
         gl_state().apply(light);
-        light_volume_prog_.set("lightpos", glm::vec4(l.eye, l.light->radius));
-        light_volume_prog_.set("lightcolor", l.light->color);
+        set_light_params(light_volume_prog_, l.params);
         q.begin();
         draw_light_mesh(l);
         q.end();

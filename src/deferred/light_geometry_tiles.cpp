@@ -28,8 +28,8 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     set_light_uniforms(light_tiles_prog_);
     gl_state().apply(light_pass_state(light_tiles_prog_.id(), false));
     LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
-    std::vector<glm::vec4> pos(size_t(n), glm::vec4(0));
-    std::vector<glm::vec3> color(size_t(n), glm::vec3(0));
+    // lighting.glsl's five vec4s per light, one uniform array each (light_params.h).
+    std::vector<glm::vec4> pos(size_t(n)), color(size_t(n)), dir(size_t(n)), spot(size_t(n)), att(size_t(n));
     int passes = 0;
     for (int y = 0; y < ty; ++y)
         for (int x = 0; x < tx; ++x) {
@@ -37,12 +37,18 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
             for (size_t g = 0; g < bin.size(); g += size_t(n)) {
                 const int count = int(std::min(bin.size() - g, size_t(n)));
                 for (int k = 0; k < count; ++k) {
-                    const LightDraw& l = lights[size_t(bin[g + k])];
-                    pos[size_t(k)] = glm::vec4(l.eye, l.light->radius);
-                    color[size_t(k)] = l.light->color;
+                    const LightParams& p = lights[size_t(bin[g + k])].params;
+                    pos[size_t(k)] = p.pos;
+                    color[size_t(k)] = p.color;
+                    dir[size_t(k)] = p.dir;
+                    spot[size_t(k)] = p.spot;
+                    att[size_t(k)] = p.att;
                 }
                 light_tiles_prog_.set_array("lightpos", pos.data(), count);
                 light_tiles_prog_.set_array("lightcolor", color.data(), count);
+                light_tiles_prog_.set_array("lightdir", dir.data(), count);
+                light_tiles_prog_.set_array("lightspot", spot.data(), count);
+                light_tiles_prog_.set_array("lightatt", att.data(), count);
                 light_tiles_prog_.set("light_count", count);
                 q.begin();
                 draw_rect(float(x * ts), float(y * ts), float(std::min(w_, (x + 1) * ts)),

@@ -7,8 +7,6 @@
 // far plane would lose its clipped back faces: it is drawn as its scissored quad instead.
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -19,58 +17,46 @@
 
 namespace dsr {
 
-// An icosahedron subdivided twice (320 faces), its vertices on the unit sphere, then scaled so
-// that every face plane lies at least 1 from the centre: the mesh encloses the unit sphere.
+// The unit sphere's enclosing mesh (light_volume.h: every face plane on or outside the sphere),
+// drawn for every point light scaled by its radius.
 void DeferredShader::build_volume_mesh() {
-    const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    std::vector<glm::vec3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                                {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    std::vector<unsigned> f = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4,
-                               11, 10, 2, 10, 7, 6, 7, 1, 8, 3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8,
-                               3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
-    for (auto& p : v) p = glm::normalize(p);
-    for (int level = 0; level < 2; ++level) {
-        std::map<std::pair<unsigned, unsigned>, unsigned> mid;
-        auto midpoint = [&](unsigned a, unsigned b) {
-            auto key = std::minmax(a, b);
-            auto it = mid.find(key);
-            if (it != mid.end()) return it->second;
-            v.push_back(glm::normalize(v[a] + v[b]));
-            return mid[key] = unsigned(v.size() - 1);
-        };
-        std::vector<unsigned> g;
-        for (size_t i = 0; i < f.size(); i += 3) {
-            unsigned a = f[i], b = f[i + 1], c = f[i + 2];
-            unsigned ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
-            g.insert(g.end(), {a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca});
-        }
-        f = g;
-    }
-    float dmin = 1;
-    for (size_t i = 0; i < f.size(); i += 3) {
-        const glm::vec3 n = glm::normalize(glm::cross(v[f[i + 1]] - v[f[i]], v[f[i + 2]] - v[f[i]]));
-        dmin = std::min(dmin, std::abs(glm::dot(n, v[f[i]])));
-    }
-    const float scale = 1.0f / dmin * 1.0001f;  // a hair over, for the float rounding of the transform
-    volume_mesh_.clear();
-    for (auto& p : v)
-        for (int k = 0; k < 3; ++k) volume_mesh_.push_back(p[k] * scale);
-    volume_index_ = f;
-    volume_mesh_reach_ = scale;
+    LightVolume unit;
+    unit.kind = LightVolume::Kind::sphere;
+    unit.radius = 1;
+    unit_sphere_mesh_ = volume_mesh(unit);
+    volume_mesh_reach_ = 0;
+    for (const glm::vec3& v : unit_sphere_mesh_.vertices) volume_mesh_reach_ = std::max(volume_mesh_reach_, glm::length(v));
 }
 
 bool DeferredShader::mesh_past_far(const LightDraw& l) const {
-    return l.eye.z - l.light->radius * volume_mesh_reach_ <= -zrange_.y;
+    switch (l.eye.kind) {
+        case LightVolume::Kind::full_screen: return true;
+        case LightVolume::Kind::sphere: return l.eye.pos.z - l.eye.radius * volume_mesh_reach_ <= -zrange_.y;
+        case LightVolume::Kind::cone: {
+            const VolumeMesh m = volume_mesh(l.eye);
+            for (const glm::vec3& v : m.vertices)
+                if (v.z <= -zrange_.y) return true;
+            return false;
+        }
+    }
+    return true;
 }
 
-// The mesh in eye space: the light's centre and radius as the model-view, the camera's projection.
 void DeferredShader::draw_light_mesh(const LightDraw& l) {
-    const glm::mat4 mv = glm::scale(glm::translate(glm::mat4(1), l.eye), glm::vec3(l.light->radius));
     glMatrixMode(GL_MODELVIEW);
-    glLoadMatrixf(glm::value_ptr(mv));
+    VolumeMesh cone;
+    const VolumeMesh* m = &unit_sphere_mesh_;
+    if (l.eye.kind == LightVolume::Kind::sphere) {
+        const glm::mat4 mv = glm::scale(glm::translate(glm::mat4(1), l.eye.pos), glm::vec3(l.eye.radius));
+        glLoadMatrixf(glm::value_ptr(mv));
+    } else {
+        cone = volume_mesh(l.eye);  // already in eye space
+        m = &cone;
+        glLoadIdentity();
+    }
     glEnableClientState(GL_VERTEX_ARRAY);
-    glVertexPointer(3, GL_FLOAT, 0, volume_mesh_.data());
-    glDrawElements(GL_TRIANGLES, GLsizei(volume_index_.size()), GL_UNSIGNED_INT, volume_index_.data());
+    glVertexPointer(3, GL_FLOAT, 0, &m->vertices[0].x);
+    glDrawElements(GL_TRIANGLES, GLsizei(m->indices.size()), GL_UNSIGNED_INT, m->indices.data());
     glDisableClientState(GL_VERTEX_ARRAY);
 }
 
@@ -104,8 +90,7 @@ void DeferredShader::draw_lights_volume(const std::vector<LightDraw>& lights, Fr
     gl_state().apply(s);
     for (const LightDraw& l : lights) {
         if (mesh_past_far(l)) continue;
-        light_volume_prog_.set("lightpos", glm::vec4(l.eye, l.light->radius));
-        light_volume_prog_.set("lightcolor", l.light->color);
+        set_light_params(light_volume_prog_, l.params);
         q.begin();
         draw_light_mesh(l);
         q.end();

@@ -8,6 +8,8 @@
 
 #include "deferred/culling.h"
 #include "deferred/deferred_shader.h"
+#include "deferred/light_params.h"
+#include "deferred/light_volume.h"
 #include "deferred/reconstruct.h"
 #include "deferred/scissor.h"
 #include "gl/check.h"
@@ -88,8 +90,19 @@ void DeferredShader::set_light_uniforms(Program& prog) {
     prog.set("uv_scale", glm::vec2(gbuf().tex_scale_x() / float(w_), gbuf().tex_scale_y() / float(h_)));
 }
 
+// set_light_params: one light as lighting.glsl's five vec4s (light_params.h).
+void DeferredShader::set_light_params(Program& prog, const LightParams& lp) {
+    prog.set("lightpos", lp.pos);
+    prog.set("lightcolor", lp.color);
+    prog.set("lightdir", lp.dir);
+    prog.set("lightspot", lp.spot);
+    prog.set("lightatt", lp.att);
+}
+
 // Listing 17 lines 11-31: frustum culling, the empty-light skip and each light's scissor
-// rectangle (Listing 16), whatever geometry then draws the light.
+// rectangle (Listing 16), whatever geometry then draws the light. Culling and the rectangle come
+// from the light's volume (light_volume.h): a sphere as in the tutorial, a spot's cone, or a
+// directional light's full screen (never culled, never scissored).
 std::vector<DeferredShader::LightDraw> DeferredShader::visible_lights(const Scene& scene, bool scissors,
                                                                      FrameStats& stats) {
     const auto frustum = frustum_planes(proj_ * view_);
@@ -98,7 +111,8 @@ std::vector<DeferredShader::LightDraw> DeferredShader::visible_lights(const Scen
     std::vector<LightDraw> out;
     stats.lights_total = int(scene.lights.size());
     for (const Light& light : scene.lights) {
-        if (sphere_outside(frustum, light.pos, light.radius)) {
+        const LightVolume volume = light_volume(light);
+        if (volume_outside(frustum, volume)) {
             ++stats.lights_culled;
             continue;
         }
@@ -106,11 +120,11 @@ std::vector<DeferredShader::LightDraw> DeferredShader::visible_lights(const Scen
             ++stats.lights_culled;  // adds nothing
             continue;
         }
-        const glm::vec3 eye = glm::vec3(view_ * glm::vec4(light.pos, 1.0f));
-        ScissorRect r = light_scissor(eye, light.radius, proj_[0][0], proj_[1][1], near_plane, w_, h_);
+        const LightVolume eye = transformed(volume, view_);
+        ScissorRect r = volume_scissor(eye, proj_[0][0], proj_[1][1], near_plane, w_, h_);
         long long n = r.area();
         if (n <= 0) {
-            if (skip_empty) {  // the sphere reaches no visible pixel: Listing 17 line 31
+            if (skip_empty) {  // the volume reaches no visible pixel: Listing 17 line 31
                 ++stats.lights_culled;
                 continue;
             }
@@ -121,7 +135,7 @@ std::vector<DeferredShader::LightDraw> DeferredShader::visible_lights(const Scen
         if (full) r = ScissorRect{0, 0, w_, h_};
         stats.scissor_pixels += r.area();
         ++stats.lights_drawn;
-        out.push_back(LightDraw{&light, eye, r, full});
+        out.push_back(LightDraw{&light, light_params(light, view_), eye, r, full});
     }
     return out;
 }

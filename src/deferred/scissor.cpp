@@ -100,6 +100,18 @@ ScissorRect light_scissor(glm::vec3 light_eye, float radius, float p00, float p1
     return rect;
 }
 
+ScissorRect scissor_from_slopes(double xlo, double xhi, double ylo, double yhi, float p00, float p11,
+                                int width, int height) {
+    if (!(xlo <= xhi) || !(ylo <= yhi) || width <= 0 || height <= 0) return {};
+    ScissorRect rect;
+    SlopeRange sx, sy;
+    sx.lo = xlo, sx.hi = xhi, sy.lo = ylo, sy.hi = yhi;
+    to_pixels(sx, p00, width, rect.x0, rect.x1);
+    to_pixels(sy, p11, height, rect.y0, rect.y1);
+    if (rect.empty()) return {};
+    return rect;
+}
+
 ScissorRect light_scissor_listing16(glm::vec3 lightpos, float radius, float aspect, int sx,
                                     int sy) {
     // Listing 16, lines 002-093, variable names kept. to_int stands for the listing's (int)

@@ -24,6 +24,12 @@ struct ScissorRect {
 ScissorRect light_scissor(glm::vec3 light_eye, float radius, float p00, float p11,
                           float near_plane, int width, int height);
 
+// The pixel rectangle of a region whose eye-space points (all at z <= -near) have x / (-z) in
+// [xlo, xhi] and y / (-z) in [ylo, yhi]: the same outward rounding and clamping as light_scissor.
+// xlo > xhi (no point) gives an empty rectangle. light_volume.cpp's cone rectangle uses it.
+ScissorRect scissor_from_slopes(double xlo, double xhi, double ylo, double yhi, float p00, float p11,
+                                int width, int height);
+
 // Listing 16 as printed, kept only to measure its defects (docs/errata.md): float arithmetic,
 // fixed e1 = 1.2 and e2 = 1.2*aspect (a fixed field of view), no near plane, no guards on the
 // divisions by l.z and nx/ny, (int) truncation toward zero. The one change: a non-finite value

@@ -8,6 +8,7 @@
 
 #include "deferred/culling.h"
 #include "deferred/gpu_scene.h"
+#include "deferred/light_volume.h"
 #include "dsr_error.h"
 #include "gl/blit.h"
 #include "gl/check.h"
@@ -44,13 +45,13 @@ ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, const 
     }
 
     // Lights per pass: Listing 3 keeps every light of an object in one shader. The arrays
-    // (a vec4 and a vec3, each taking a vec4 slot) must fit the fragment uniform space, with
+    // (five vec4s a light, light_params.h) must fit the fragment uniform space, with
     // room left for the material uniforms; GL 2.0 promises only 64 components.
     batch_ = 1;
     if (opts.mode == ForwardMode::single) {
         GLint comps = 0;
         glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
-        batch_ = std::clamp((int(comps) - 64) / 8, 1, std::max(1, opts.max_lights_per_pass));
+        batch_ = std::clamp((int(comps) - 64) / 20, 1, std::max(1, opts.max_lights_per_pass));
     }
     for (int nm = 0; nm < 2; ++nm) {
         std::vector<std::string> defs = {"MAX_LIGHTS " + std::to_string(batch_)};
@@ -61,8 +62,8 @@ ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, const 
         prog_[nm].set("normaltex", 0);
         prog_[nm].set("colortex", 1);
         prog_[nm].set("speculartex", 2);
-        loc_lightpos_[nm] = glGetUniformLocation(prog_[nm].id(), "lightpos[0]");
-        loc_lightcolor_[nm] = glGetUniformLocation(prog_[nm].id(), "lightcolor[0]");
+        static const char* names[5] = {"lightpos[0]", "lightcolor[0]", "lightdir[0]", "lightspot[0]", "lightatt[0]"};
+        for (int k = 0; k < 5; ++k) loc_light_[nm][k] = glGetUniformLocation(prog_[nm].id(), names[k]);
     }
     gl_state().use_program(0);
     check_gl("forward: creating the renderer");
@@ -91,10 +92,13 @@ void ForwardRenderer::set_scene(const Scene& scene) {
     check_gl("forward: uploading the scene");
 }
 
-// Equation 2 makes a light's contribution exactly zero beyond S_radius, so skipping an object
-// whose bounding sphere the light's sphere does not reach changes no pixel.
+// Equation 2 (and the attenuation cut, and a spot's cone) makes a light's contribution exactly
+// zero outside its volume, so skipping an object whose bounding sphere the volume's bounding
+// sphere does not reach changes no pixel. A directional light reaches everything.
 bool ForwardRenderer::touches(size_t mesh, const Light& light) const {
-    return glm::length(bounds_[mesh].centre - light.pos) <= bounds_[mesh].radius + light.radius;
+    if (light.type == Light::Type::directional) return true;
+    const BoundingSphere b = bounding_sphere(light_volume(light));
+    return glm::length(bounds_[mesh].centre - b.centre) <= bounds_[mesh].radius + b.radius;
 }
 
 Program& ForwardRenderer::use_material(const Scene& scene, size_t mesh) {
@@ -118,18 +122,17 @@ Program& ForwardRenderer::use_material(const Scene& scene, size_t mesh) {
 void ForwardRenderer::set_lights(Program& prog, const std::vector<int>& lights, size_t first, size_t count,
                                  glm::vec3 ambient) {
     const int p = &prog == &prog_[1] ? 1 : 0;
-    std::vector<glm::vec4> pos(count);
-    std::vector<glm::vec3> col(count);
+    std::vector<glm::vec4> v[5];
+    for (auto& a : v) a.resize(count);
     for (size_t i = 0; i < count; ++i) {
-        pos[i] = eye_lights_[lights[first + i]];
-        col[i] = light_colors_[lights[first + i]];
+        const LightParams& lp = light_params_[lights[first + i]];
+        v[0][i] = lp.pos, v[1][i] = lp.color, v[2][i] = lp.dir, v[3][i] = lp.spot, v[4][i] = lp.att;
     }
     prog.set("nlights", int(count));
     prog.set("ambient", ambient);
-    if (count) {
-        glUniform4fv(loc_lightpos_[p], GLsizei(count), glm::value_ptr(pos[0]));
-        glUniform3fv(loc_lightcolor_[p], GLsizei(count), glm::value_ptr(col[0]));
-    }
+    if (count)
+        for (int k = 0; k < 5; ++k)
+            if (loc_light_[p][k] >= 0) glUniform4fv(loc_light_[p][k], GLsizei(count), glm::value_ptr(v[k][0]));
 }
 
 void ForwardRenderer::draw_mesh(size_t mesh, ForwardStats& st) {
@@ -146,18 +149,16 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
     view_ = cam.view();
     const glm::mat4 proj = cam.projection(float(w_) / float(h_));
 
-    // Lights in eye space (Listing 2 works in view space); lights outside the frustum dropped
-    // (Listing 17's test: conservative, so no visible pixel loses light).
+    // Lights in eye space (Listing 2 works in view space); lights whose volume is outside the
+    // frustum dropped (Listing 17's test: conservative, so no visible pixel loses light).
     const auto frustum = frustum_planes(proj * view_);
-    eye_lights_.assign(scene.lights.size(), glm::vec4(0));
-    light_colors_.assign(scene.lights.size(), glm::vec3(0));
+    light_params_.assign(scene.lights.size(), LightParams{});
     light_visible_.assign(scene.lights.size(), 0);
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const Light& l = scene.lights[i];
-        light_visible_[i] = !sphere_outside(frustum, l.pos, l.radius);
+        light_visible_[i] = !volume_outside(frustum, light_volume(l));
         if (!light_visible_[i]) ++st.lights_culled;
-        eye_lights_[i] = glm::vec4(glm::vec3(view_ * glm::vec4(l.pos, 1.0f)), l.radius);
-        light_colors_[i] = l.color;
+        light_params_[i] = light_params(l, view_);
     }
 
     if (target_) {

@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "deferred/light_params.h"
 #include "gl/caps.h"
 #include "gl/pbuffer.h"
 #include "gl/program.h"
@@ -86,13 +87,12 @@ private:
     ForwardOptions opts_;
     int batch_ = 1;
     Program prog_[2];  // [normal map?]
-    GLint loc_lightpos_[2] = {-1, -1}, loc_lightcolor_[2] = {-1, -1};
+    GLint loc_light_[2][5] = {{-1, -1, -1, -1, -1}, {-1, -1, -1, -1, -1}};  // [nm][LightParams field]
     std::unique_ptr<PBuffer> target_;  // RGBA32F accumulation, when opts_.float_target
     std::unique_ptr<GpuScene> gpu_;
     std::vector<Bound> bounds_;
     glm::mat4 view_{1};
-    std::vector<glm::vec4> eye_lights_;  // per frame: eye-space position, w = radius
-    std::vector<glm::vec3> light_colors_;
+    std::vector<LightParams> light_params_;  // per frame, eye space
     std::vector<char> light_visible_;   // per frame: not culled by the frustum
 };
 

@@ -20,11 +20,27 @@ struct Camera {
     glm::mat4 projection(float aspect) const;    // glm::perspective, OpenGL clip conventions
 };
 
-// A point light (the tutorial's only kind): colour is S_diff = S_spec (Eq. 3-4),
-// radius is S_radius of Equation 2.
+// A light: colour is S_diff = S_spec (Eq. 3-4). The tutorial has only point lights with
+// Equation 2's linear law; issue 12 adds spot and directional lights (Vasilovici §4.4) and
+// LearnOpenGL's attenuation law (scene/light_law.h has the laws, README the scene syntax).
+//   point        pos, radius
+//   spot         pos, dir, radius (range), angle_deg = half-angle as GL_SPOT_CUTOFF, exponent
+//   directional  dir only: lights everything, no attenuation
+// radius is S_radius of Equation 2 when `attenuation` is off; with it, the distance where
+// color_max / (kc + kl d + kq d^2) falls to `threshold` (attenuation_radius), beyond which the
+// light adds nothing.
+// The first three fields stay pos, color, radius so {pos, color, radius} still makes a point light.
 struct Light {
+    enum class Type { point, spot, directional };
     glm::vec3 pos{0}, color{1};
     float radius = 1.0f;
+    Type type = Type::point;
+    glm::vec3 dir{0, 0, -1};      // spot, directional: unit direction the light travels
+    float angle_deg = 45.0f;      // spot: cone half-angle in (0, 90]
+    float exponent = 0.0f;        // spot: GL_SPOT_EXPONENT, >= 0
+    bool attenuation = false;     // false: Equation 2's 1 - d / S_radius
+    float kc = 1.0f, kl = 0.0f, kq = 0.0f;  // attenuation law, each >= 0
+    float threshold = 5.0f / 256.0f;        // LearnOpenGL's 5/256
 };
 
 // Texture maps are indices into Scene::textures, -1 when absent.

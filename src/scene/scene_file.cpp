@@ -1,6 +1,7 @@
 // The scene-file parser (format: README.md "Scene files"). Every mistake is one dsr::Error
 // "FILE:LINE: expected <what>, got '<token>'" so a user can fix the file without guessing.
 // Directives that take keywords accept them in any order, each once.
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "dsr_error.h"
+#include "scene/light_law.h"
 #include "scene/obj_loader.h"
 #include "scene/scene.h"
 
@@ -81,6 +83,12 @@ public:
     float positive(const std::string& subject) {
         const float f = number(subject);
         if (!(f > 0)) expected_last(subject + " > 0");
+        return f;
+    }
+
+    float non_negative(const std::string& subject) {
+        const float f = number(subject);
+        if (!(f >= 0)) expected_last(subject + " >= 0");
         return f;
     }
 
@@ -381,19 +389,67 @@ private:
         line.expected_last("a material defined on an earlier line");
     }
 
+    // light point|spot|directional (README "Scene files"; scene.h Light, scene/light_law.h).
     void light(Line& line) {
-        const std::string& kind = line.word("light kind 'point'");
-        if (kind != "point") line.expected_last("light kind 'point'");
-        const std::vector<std::string> keys = {"pos", "color", "radius"};
-        std::set<std::string> seen;
+        const std::string& kind = line.word("light kind 'point', 'spot' or 'directional'");
         Light l;
+        std::vector<std::string> keys, required;
+        if (kind == "point") {
+            keys = {"pos", "color", "radius", "attenuation", "threshold"};
+            required = {"pos", "color"};
+        } else if (kind == "spot") {
+            l.type = Light::Type::spot;
+            keys = {"pos", "dir", "color", "radius", "attenuation", "threshold", "angle", "exponent"};
+            required = {"pos", "dir", "color", "angle"};
+        } else if (kind == "directional") {
+            l.type = Light::Type::directional;
+            keys = {"dir", "color"};
+            required = keys;
+        } else {
+            line.expected_last("light kind 'point', 'spot' or 'directional'");
+        }
+        std::set<std::string> seen;
         while (!line.done()) {
             const std::string k = line.key(keys, seen);
             if (k == "pos") l.pos = line.vec3("light pos");
             else if (k == "color") l.color = line.colour("light color");
-            else l.radius = line.positive("light radius");
+            else if (k == "radius") {
+                if (seen.count("attenuation")) line.expected_last("radius or attenuation, not both");
+                l.radius = line.positive("light radius");
+            } else if (k == "attenuation") {
+                if (seen.count("radius")) line.expected_last("radius or attenuation, not both");
+                l.attenuation = true;
+                l.kc = line.positive("attenuation KC");  // KC = 0 would be infinite at the light
+                l.kl = line.non_negative("attenuation KL");
+                l.kq = line.non_negative("attenuation KQ");
+                if (l.kl == 0 && l.kq == 0) line.expected_last("attenuation KL or KQ > 0 (else it never falls)");
+            } else if (k == "threshold") {
+                l.threshold = line.positive("attenuation threshold");
+            } else if (k == "dir") {
+                l.dir = line.vec3("light dir");
+                if (!(glm::length(l.dir) > 0)) line.expected_last("a non-zero light dir");
+                l.dir = glm::normalize(l.dir);
+            } else if (k == "angle") {
+                l.angle_deg = line.number("spot angle");
+                if (!(l.angle_deg > 0 && l.angle_deg <= 90)) line.expected_last("spot angle in (0, 90] degrees");
+            } else {
+                l.exponent = line.non_negative("spot exponent");
+            }
         }
-        line.require(keys, seen);
+        line.require(required, seen);
+        if (l.type != Light::Type::directional && !seen.count("radius") && !seen.count("attenuation"))
+            line.expected(kind == "spot" ? "radius or attenuation (the spot's range)" : "radius or attenuation",
+                          size_t(-1));
+        if (seen.count("threshold") && !seen.count("attenuation"))
+            line.fail("expected threshold only with attenuation KC KL KQ");
+        if (l.attenuation) {
+            const float i_max = std::max(l.color.r, std::max(l.color.g, l.color.b));
+            l.radius = float(attenuation_radius(l.kc, l.kl, l.kq, l.threshold, i_max));
+            if (i_max > 0 && !(l.radius > 0))
+                line.fail("expected attenuation under which the light reaches threshold " + fmt(l.threshold) +
+                          " somewhere (KC < largest colour / threshold), got KC " + fmt(l.kc));
+            if (!std::isfinite(l.radius)) line.fail("expected an attenuation radius below 3.4e38");
+        }
         scene_.lights.push_back(l);
     }
 

@@ -1,0 +1,25 @@
+#include "deferred/light_params.h"
+
+#include <cmath>
+
+#include "scene/light_law.h"
+
+namespace dsr {
+
+LightParams light_params(const Light& light, const glm::mat4& view) {
+    LightParams p;
+    p.pos = glm::vec4(glm::vec3(view * glm::vec4(light.pos, 1.0f)), light.radius);
+    const float type = light.type == Light::Type::point ? 0.0f : light.type == Light::Type::spot ? 1.0f : 2.0f;
+    p.color = glm::vec4(light.color, type);
+    if (light.type != Light::Type::point) {
+        const glm::vec3 d = glm::normalize(glm::mat3(view) * light.dir);
+        const float c = light.type == Light::Type::spot ? float(std::cos(glm::radians(double(light.angle_deg)))) : -1.0f;
+        p.dir = glm::vec4(d, c);
+    }
+    if (light.type == Light::Type::spot)
+        p.spot = glm::vec4(float(spot_inner_cos(light.angle_deg)), light.exponent, 0, 0);
+    if (light.attenuation) p.att = glm::vec4(light.kc, light.kl, light.kq, 1.0f);
+    return p;
+}
+
+}  // namespace dsr
