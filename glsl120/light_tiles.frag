@@ -54,9 +54,15 @@ void main()
         if (type > 0.5 && type < 1.5 && dot(d, lightdir[i].xyz) <= length(d) * lightdir[i].w)
             continue;
 #endif
-        // Each light's term clamped to [0, 1] as its own pass's 8-bit blend would be.
-        c += clamp(light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, normal, diffuse,
-                                      specular.rgb, shininess), 0.0, 1.0);
+        // Each light's term clamped to [0, 1] as its own pass's blend would be and, into the
+        // RGBA8 P-buffer 0, rounded to the 8-bit step that pass would have written: the sum then
+        // matches the quad geometry's image exactly instead of differing by up to N/2 LSB.
+        vec3 t = clamp(light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, normal,
+                                          diffuse, specular.rgb, shininess), 0.0, 1.0);
+#ifdef QUANTIZE_8BIT
+        t = floor(t * 255.0 + 0.5) / 255.0;
+#endif
+        c += t;
         any = true;
     }
     if (!any)

@@ -236,7 +236,8 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
             // light depth test are conservative), so the ideal count exceeds what was shaded only by
             // the pixels where exact surface points (the analytic trace's shapes, or depth decoded in
             // double) and the shader's float reconstruction fall on different sides of a sphere.
-            if (row["depth"] == "texture") {
+            // (tiles: one fragment per pixel and group of lights, not per light: fewer.)
+            if (row["depth"] == "texture" && row["light_geometry"] != "tiles") {
                 EXPECT_GE(frags, ideal - ideal / 100) << row.dump();
             }
             // Every fragment that passed entered the shader first; the floor is measured on every row.

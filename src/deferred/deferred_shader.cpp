@@ -61,6 +61,7 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     if (lg == LightGeometry::tiles) {
         auto tdefs = ldefs;
         tdefs.push_back("MAX_LIGHTS " + std::to_string(opts.tile_lights));
+        if (!opts.float_accum) tdefs.push_back("QUANTIZE_8BIT");  // P-buffer 0 is RGBA8
         light_tiles_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);
     }
     if (paths_.accum_depth) depth_copy_prog_ = Program(shader_dir, "post.vert", "depth_copy.frag", depth_defs);

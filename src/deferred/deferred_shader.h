@@ -226,10 +226,9 @@ private:
     Program light_volume_prog_;         // light.vert/.frag with VOLUME: drawn over the volume mesh
     Program light_tiles_prog_;          // light_tiles.frag: up to tile_lights lights per pass
     Program depth_copy_prog_;           // depth_copy.frag: the depth hand-off
-    std::vector<float> volume_mesh_;    // unit-sphere-enclosing polyhedron: x y z per vertex
-    std::vector<unsigned> volume_index_;
-    float volume_mesh_reach_ = 1;
-    int light_passes_drawn_ = 0;        // this frame's light-shader draws (FrameStats::light_passes)       // the farthest vertex from the centre (unit sphere)
+    VolumeMesh unit_sphere_mesh_;       // volume_mesh of the unit sphere at the origin
+    float volume_mesh_reach_ = 1;       // its farthest vertex from the centre
+    int light_passes_drawn_ = 0;        // this frame's light-shader draws (FrameStats::light_passes)
     Program blur_prog_[2];              // [select]
     Program aa_prog_[2];                // [factor only]
     std::unique_ptr<GpuScene> gpu_;

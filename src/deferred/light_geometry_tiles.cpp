@@ -29,7 +29,8 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     gl_state().apply(light_pass_state(light_tiles_prog_.id(), false));
     LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
     // lighting.glsl's five vec4s per light, one uniform array each (light_params.h).
-    std::vector<glm::vec4> pos(size_t(n)), color(size_t(n)), dir(size_t(n)), spot(size_t(n)), att(size_t(n));
+    const size_t slots = size_t(n);
+    std::vector<glm::vec4> pos(slots), color(slots), dir(slots), spot(slots), att(slots);
     int passes = 0;
     for (int y = 0; y < ty; ++y)
         for (int x = 0; x < tx; ++x) {
