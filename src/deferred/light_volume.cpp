@@ -78,8 +78,21 @@ double sector_support(glm::dvec3 n, glm::dvec3 w, double a) {
     return phi < 0.5 * kPi ? std::cos(phi) : 0.0;
 }
 
-// Margin so the float copy of a vertex never lands inside the true surface.
-constexpr double kOut = 1.0 + 1e-6;
+// Scales the convex mesh about `interior` until every face plane has moved out by at least
+// 1e-6 * (size + |interior|): well over float's relative rounding (6e-8) of the coordinates, so
+// the float copy still encloses the volume, boundary points included.
+void inflate(DMesh& m, glm::dvec3 interior, double size) {
+    const double margin = 1e-6 * (size + glm::length(interior));
+    double dmin = INFINITY;
+    for (size_t t = 0; t < m.idx.size(); t += 3) {
+        glm::dvec3 n;
+        double off;
+        face_plane(m, t, interior, n, off);
+        dmin = std::min(dmin, off);
+    }
+    const double k = 1.0 + margin / dmin;
+    for (glm::dvec3& p : m.v) p = interior + k * (p - interior);
+}
 
 DMesh sphere_mesh(glm::dvec3 c, double r, int segments) {
     DMesh m;
@@ -102,8 +115,9 @@ DMesh sphere_mesh(glm::dvec3 c, double r, int segments) {
         face_plane(m, t, glm::dvec3(0), n, off);
         dmin = std::min(dmin, off);
     }
-    const double s = r / dmin * kOut;
+    const double s = r / dmin;
     for (glm::dvec3& p : m.v) p = c + s * p;
+    inflate(m, c, r);
     return m;
 }
 
@@ -112,9 +126,9 @@ DMesh cone_mesh(glm::dvec3 apex, glm::dvec3 w, double range, double a, int segme
     glm::dvec3 u, v;
     frame(w, u, v);
     // The side fan's ring: its faces are tangent to the circular cone when the ring's polar angle
-    // a' has tan a' = tan a / cos(pi / n). Wide cones take a flat disc through the apex instead.
-    double edge = 0.5 * kPi;
-    if (a <= glm::radians(double(kConeFlatDeg))) edge = std::atan(std::tan(a) / std::cos(kPi / segments));
+    // a' has tan a' = tan a / cos(pi / n) (a' < 90 degrees for every a < 90; at 90 the fan is
+    // the flat disc under the hemisphere).
+    const double edge = a >= 0.5 * kPi ? 0.5 * kPi : std::atan(std::tan(a) / std::cos(kPi / segments));
     const int rings = std::max(1, int(std::ceil(edge / (2.0 * kPi / segments))));
     m.v.push_back(glm::dvec3(0));  // 0: apex
     for (int j = 0; j < rings; ++j) ring(m, u, v, w, edge * (1.0 - double(j) / rings), segments);
@@ -134,8 +148,9 @@ DMesh cone_mesh(glm::dvec3 apex, glm::dvec3 w, double range, double a, int segme
         face_plane(m, t, glm::dvec3(0), n, off);
         s = std::max(s, sector_support(n, w, a) / off);
     }
-    s *= range * kOut;
+    s *= range;
     for (glm::dvec3& p : m.v) p = apex + s * p;
+    inflate(m, apex + 0.5 * range * std::cos(0.5 * edge) * w, range);
     return m;
 }
 

@@ -76,11 +76,11 @@ struct VolumeMesh {
 // or the cone's axis; the sphere has segments / 2 stacks (at least 2), the cone's cap as many rings
 // as its angle needs. Every face plane lies on or outside the volume (the sphere's UV mesh and the
 // cone's cap are scaled out until each face clears the true surface; the cone's side faces are
-// tangent to the circular cone, and a cone wider than kConeFlatDeg is enclosed by its hemisphere
-// cap over a flat disc through the apex). full_screen: an empty mesh (draw a screen quad instead).
+// tangent to the circular cone; a 90-degree cone is a hemisphere over a flat disc), then the
+// whole mesh grown by a relative 1e-6 or so, so its float vertices enclose the volume's boundary
+// too. full_screen: an empty mesh (draw a screen quad instead).
 // Throws dsr::Error for segments < 3.
 constexpr int kVolumeSegments = 24;
-constexpr float kConeFlatDeg = 75.0f;
 VolumeMesh volume_mesh(const LightVolume& v, int segments = kVolumeSegments);
 
 // True when `p` lies strictly inside the volume, the set of points the light can add to: the

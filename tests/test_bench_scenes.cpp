@@ -1,0 +1,77 @@
+// The bench's generated light sets of issue 12 (src/analysis/bench_scenes.h), checked without GL:
+// in N-overlap every lit point lies inside at least 8 lights; in N-large every light's sphere
+// covers most of the screen; --lights items parse as documented.
+#include <cmath>
+#include <cstdio>
+
+#include <glm/glm.hpp>
+#include <gtest/gtest.h>
+
+#include "analysis/bench_scenes.h"
+#include "deferred/light_volume.h"
+#include "dsr_error.h"
+#include "platform/resources.h"
+
+namespace {
+
+using namespace dsr;
+
+TEST(BenchScenes, OverlapPutsEveryLitPointInsideAtLeastEightLights) {
+    const Scene base = load_scene(resource_dir("data") + "/default.scene");
+    const Scene s = with_overlapping_lights(base, 1024);
+    ASSERT_EQ(s.lights.size(), 1024u);
+    long long lit = 0, sum = 0;
+    int min_lit = 1 << 30;
+    // Points over the floor and up the walls' height, on a grid.
+    for (int i = 0; i < 60; ++i)
+        for (int k = 0; k < 60; ++k)
+            for (float y : {0.0f, 0.5f, 1.5f}) {
+                const glm::dvec3 p(-6 + 12 * (i + 0.5) / 60, y, -6 + 12 * (k + 0.5) / 60);
+                int n = 0;
+                for (const Light& l : s.lights) n += l.color != glm::vec3(0) && inside_volume(light_volume(l), p);
+                if (n == 0) continue;
+                ++lit, sum += n;
+                min_lit = std::min(min_lit, n);
+            }
+    std::printf("[ stats    ] 1024-overlap: %lld lit sample points, each in %d..., mean %.1f lights\n", lit, min_lit,
+                double(sum) / double(lit));
+    EXPECT_GT(lit, 5000);
+    EXPECT_GE(min_lit, 8);
+    EXPECT_GT(double(sum) / double(lit), 12.0);
+    EXPECT_THROW(with_overlapping_lights(base, 1020), Error);
+}
+
+TEST(BenchScenes, LargeLightsEachCoverMostOfTheScreen) {
+    const Scene s = large_lights_scene(32);
+    ASSERT_EQ(s.lights.size(), 32u);
+    EXPECT_EQ(s.meshes.size(), 9u);
+    const int w = 800, h = 600;
+    const glm::mat4 view = s.camera.view(), proj = s.camera.projection(float(w) / h);
+    double min_frac = 1, rmin = 1e9, rmax = 0;
+    for (const Light& l : s.lights) {
+        EXPECT_TRUE(l.attenuation);
+        rmin = std::min(rmin, double(l.radius)), rmax = std::max(rmax, double(l.radius));
+        const ScissorRect r = volume_scissor(transformed(light_volume(l), view), proj[0][0], proj[1][1],
+                                             s.camera.near_plane, w, h);
+        min_frac = std::min(min_frac, double(r.area()) / (w * h));
+    }
+    std::printf("[ stats    ] 32-large: radii %.2f..%.2f, smallest rectangle %.0f%% of the screen\n", rmin, rmax,
+                100 * min_frac);
+    EXPECT_GT(min_frac, 0.5);
+    EXPECT_GT(rmin, 3.0);
+}
+
+TEST(BenchScenes, LightSpecs) {
+    EXPECT_EQ(parse_light_spec("own")->count, -1);
+    EXPECT_EQ(parse_light_spec("256")->count, 256);
+    EXPECT_EQ(parse_light_spec("256")->set, LightSet::spread);
+    EXPECT_EQ(parse_light_spec("1024-overlap")->set, LightSet::overlap);
+    EXPECT_EQ(parse_light_spec("32-large")->set, LightSet::large);
+    EXPECT_EQ(parse_light_spec("32-large")->count, 32);
+    for (const char* bad : {"", "-overlap", "12-overlap", "x-large", "-5", "65537", "32-big", "own-large"})
+        EXPECT_FALSE(parse_light_spec(bad).has_value()) << bad;
+    EXPECT_EQ(bench_scene_name("default", *parse_light_spec("1024-overlap")), "default-overlap");
+    EXPECT_EQ(bench_scene_name("default", *parse_light_spec("32-large")), "large");
+}
+
+}  // namespace
