@@ -160,7 +160,7 @@ const Row* find_row(const std::vector<Row>& rows, const std::string& scene, int 
         if (r.scene != scene || r.lights != lights || r.renderer != renderer) continue;
         if (renderer == "deferred" && default_config &&
             !(r.depth == std::string("texture") && r.scissor && r.skips_off.empty() && r.gbuffer == std::string("rgba8") &&
-              r.light_geometry == std::string("quad")))
+              (!r.light_geometry || *r.light_geometry == "quad")))
             continue;
         return &r;
     }
@@ -255,7 +255,7 @@ const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& sc
     for (const Row& r : rows)
         if (r.scene == scene && r.lights == lights && r.renderer == "deferred" && r.depth == std::string("texture") &&
             r.scissor && r.skips_off.empty() && r.gbuffer == std::string("rgba8") &&
-            r.light_geometry == geometry)
+            r.light_geometry.value_or("quad") == geometry)
             return &r;
     return nullptr;
 }
