@@ -71,6 +71,9 @@ nlohmann::ordered_json to_json(const Summary& s);
 // What `dsr bench` prints on stdout: the header lines, the table, the goals and the notes.
 std::string text_report(const Summary& s);
 
+// The report's "Light geometries" section: what each geometry is, and one line per geometry row.
+std::string light_geometry_markdown(const std::vector<Row>& rows);
+
 // docs/benchmarks.md; `plot_name` is the plot's file name beside it, linked relatively.
 std::string markdown_report(const Summary& s, const std::string& plot_name);
 
