@@ -17,13 +17,18 @@
 
 namespace dsr {
 
+// Segments around the sphere's equator: fewer, larger triangles than volume_mesh's default (24),
+// since a software rasteriser pays per triangle and per partly covered block; the mesh encloses the
+// sphere either way (it is only a little larger).
+constexpr int kLightMeshSegments = 12;
+
 // The unit sphere's enclosing mesh (light_volume.h: every face plane on or outside the sphere),
 // drawn for every point light scaled by its radius.
 void DeferredShader::build_volume_mesh() {
     LightVolume unit;
     unit.kind = LightVolume::Kind::sphere;
     unit.radius = 1;
-    unit_sphere_mesh_ = volume_mesh(unit);
+    unit_sphere_mesh_ = volume_mesh(unit, kLightMeshSegments);
     volume_mesh_reach_ = 0;
     for (const glm::vec3& v : unit_sphere_mesh_.vertices) volume_mesh_reach_ = std::max(volume_mesh_reach_, glm::length(v));
 }
