@@ -1,7 +1,8 @@
 #version 120
 // Forward reference renderer, vertex stage (§2.4.1, Listings 3-4): the same view-space
 // varyings as the material pass (Listing 10), so the forward and deferred paths light the
-// same interpolated position and tangent frame. Meshes are in world space: modelview = view.
+// same interpolated position and tangent frame. Meshes are in object space: modelview =
+// view * model, composed in double on the CPU per object.
 varying vec2 texcoord;
 varying vec3 vpos;
 varying vec3 normal;

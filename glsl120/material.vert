@@ -1,6 +1,7 @@
 #version 120
-// Material pass vertex shader (Listing 10): everything to view space. Meshes are in world
-// space, so the modelview matrix is the view matrix. Tangent and binormal arrive as
+// Material pass vertex shader (Listing 10): everything to view space. Meshes are in object
+// space; the modelview matrix is view * model, composed in double on the CPU for each object
+// (camera-relative: far from the origin it holds small numbers). Tangent and binormal arrive as
 // texture coordinates 1 and 2, as in Listing 10's a2v.
 varying vec2 texcoord;
 varying vec3 vpos;

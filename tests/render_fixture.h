@@ -39,7 +39,7 @@ inline Scene lit_sphere_scene() {
     m.diffuse = {1, 1, 1};
     m.specular = {1, 1, 1};
     s.materials.push_back(m);
-    s.meshes.push_back(make_sphere(1.0f, {0, 0, 0}, 0));
+    add_sphere(s, 1.0f, {0, 0, 0}, 0);
     s.lights.push_back({{0, 0, 3}, {1, 1, 1}, 100.0f});
     return s;
 }

@@ -52,7 +52,7 @@ ImageDiff logged_masked(const std::string& name, const Image& a, const Image& b,
 std::vector<uint8_t> untessellated(const Scene& s, const AnalyticTrace& tr, std::vector<uint8_t> mask) {
     for (size_t p = 0; p < mask.size(); ++p) {
         const int m = tr.mesh[p];
-        if (m >= 0 && s.meshes[size_t(m)].shape && s.meshes[size_t(m)].shape->kind == ShapeDesc::Kind::sphere)
+        if (m >= 0 && s.objects[size_t(m)].shape && s.objects[size_t(m)].shape->kind == ShapeDesc::Kind::sphere)
             mask[p] = 0;
     }
     return mask;
@@ -92,7 +92,7 @@ Scene plane_from_above() {
     m.specular = glm::vec3(0.25f);
     m.shininess = 10;
     s.materials.push_back(m);
-    s.meshes.push_back(make_plane(4, {0, 0, 0}, 0));
+    add_plane(s, 4, {0, 0, 0}, 0);
     s.lights.push_back({{0, 1, 0}, {1, 1, 1}, 2.0f});
     return s;
 }
@@ -275,7 +275,7 @@ Scene mapped_plane(glm::vec3 diffuse, glm::vec3 specular, float shininess) {
     m.specular = specular;
     m.shininess = shininess;
     s.materials.push_back(m);
-    s.meshes.push_back(make_plane(8, {0, 0, 0}, 0));
+    add_plane(s, 8, {0, 0, 0}, 0);
     s.lights.push_back({{-0.8f, 1.2f, 0.2f}, {1, 0.9f, 0.8f}, 4.0f});
     s.lights.push_back({{1.0f, 0.6f, -1.2f}, {0.4f, 0.6f, 1}, 2.5f});
     return s;
@@ -351,19 +351,19 @@ TEST(Analytic, ExactShapesAndTheSphereTessellationBound) {
     const auto mask = interior_mask(exact, kSize, kSize);
     // Per mesh: how far the exact trace is from the triangle trace (interior pixels), in depth
     // (relative to the sphere's radius) and in shading.
-    for (size_t m = 0; m < s.meshes.size(); ++m) {
+    for (size_t m = 0; m < s.objects.size(); ++m) {
         std::vector<uint8_t> on(mask.size(), 0);
         double dz = 0;
         for (size_t p = 0; p < mask.size(); ++p) {
             on[p] = mask[p] && exact.mesh[p] == int(m) && tris.mesh[p] == int(m);
             if (on[p]) dz = std::max(dz, std::fabs(exact.eye_depth[p] - tris.eye_depth[p]));
         }
-        const bool sphere = s.meshes[m].shape->kind == ShapeDesc::Kind::sphere;
+        const bool sphere = s.objects[m].shape->kind == ShapeDesc::Kind::sphere;
         ImageDiff d = logged_masked("mesh " + std::to_string(m) + (sphere ? " (sphere)" : " (plane)") +
                                         ", exact vs triangle trace",
                                     exact.image, tris.image, on, 2 * kLsb);
         std::printf("[ bound    ] mesh %zu: max depth difference %.5f (radius %.2f)\n", m, dz,
-                    sphere ? s.meshes[m].shape->radius : 0.0f);
+                    sphere ? s.objects[m].shape->radius : 0.0f);
         if (!sphere) {
             EXPECT_LE(d.max_lsb(), 0.01);
             EXPECT_LE(dz, 1e-5);
@@ -389,7 +389,8 @@ TEST(Analytic, ExactShapesAndTheSphereTessellationBound) {
 TEST(Analytic, ExactSphereByHand) {
     Scene s = plane_from_above();
     s.meshes.clear();
-    s.meshes.push_back(make_sphere(1.0f, {0, 0, 0}, 0));
+    s.objects.clear();
+    add_sphere(s, 1.0f, {0, 0, 0}, 0);
     const int n = 65;
     AnalyticTrace t = analytic_trace(s, n, n);
     EXPECT_NEAR(t.eye_depth[32 * n + 32], 4.0, 1e-12);
@@ -399,7 +400,8 @@ TEST(Analytic, ExactSphereByHand) {
     EXPECT_NEAR(analytic_trace(s, n, n, tri).eye_depth[32 * n + 32], 4.0, 1e-6);
     // A box seen from above: its top face at y = 0.5.
     s.meshes.clear();
-    s.meshes.push_back(make_box({1, 1, 1}, {0, 0, 0}, 0));
+    s.objects.clear();
+    add_box(s, {1, 1, 1}, {0, 0, 0}, 0);
     EXPECT_NEAR(analytic_trace(s, n, n).eye_depth[32 * n + 32], 4.5, 1e-12);
     // From inside the box nothing is seen (back faces culled).
     s.camera.pos = {0, 0.2f, 0};
@@ -421,7 +423,7 @@ TEST(Analytic, RefusesMapsWithoutAClosedForm) {
     s.materials[0].specular_map = 0;
     EXPECT_THROW(analytic_trace(s, 8, 8, o), Error);  // specular maps: none
     s.materials[0].specular_map = -1;
-    s.meshes.push_back(make_sphere(0.5f, {0, 0.5f, 0}, 0));
+    add_sphere(s, 0.5f, {0, 0.5f, 0}, 0);
     EXPECT_THROW(analytic_trace(s, 8, 8, o), Error);  // a map on a sphere: no uv here
 }
 

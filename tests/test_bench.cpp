@@ -158,10 +158,13 @@ TEST(Bench, GeneratedLightsAreDeterministicAndTouchTheFloor) {
     Scene s = load_scene(resource_dir("data") + "/default.scene");
     Scene a = with_generated_lights(s, 256), b = with_generated_lights(s, 256);
     ASSERT_EQ(a.lights.size(), 256u);
-    ASSERT_EQ(a.meshes.size(), s.meshes.size());
+    ASSERT_EQ(a.objects.size(), s.objects.size());
     float lo_y = 1e9f, lo_x = 1e9f, hi_x = -1e9f;
-    for (const Mesh& m : s.meshes)
-        for (const Vertex& v : m.vertices) lo_y = std::min(lo_y, v.pos.y), lo_x = std::min(lo_x, v.pos.x), hi_x = std::max(hi_x, v.pos.x);
+    for (const Object& o : s.objects)
+        for (const Vertex& v : s.meshes[o.mesh].vertices) {
+            const glm::vec3 p(o.model * glm::dvec4(glm::dvec3(v.pos), 1.0));
+            lo_y = std::min(lo_y, p.y), lo_x = std::min(lo_x, p.x), hi_x = std::max(hi_x, p.x);
+        }
     int off = 0;
     for (size_t i = 0; i < a.lights.size(); ++i) {
         EXPECT_EQ(a.lights[i].pos, b.lights[i].pos);
@@ -600,7 +603,7 @@ Scene floor_with_one_light(glm::vec3 light) {
     Material m;
     m.name = "m";
     s.materials.push_back(m);
-    s.meshes.push_back(make_plane(8.0f, {0, 0, 0}, 0));
+    add_plane(s, 8.0f, {0, 0, 0}, 0);
     s.lights.push_back({light, {1, 1, 1}, 0.8f});
     return s;
 }

@@ -44,7 +44,7 @@ TEST(BenchScenes, OverlapPutsEveryLitPointInsideAtLeastEightLights) {
 TEST(BenchScenes, LargeLightsEachCoverMostOfTheScreen) {
     const Scene s = large_lights_scene(32);
     ASSERT_EQ(s.lights.size(), 32u);
-    EXPECT_EQ(s.meshes.size(), 9u);
+    EXPECT_EQ(s.objects.size(), 9u);
     const int w = 800, h = 600;
     const glm::mat4 view = s.camera.view(), proj = s.camera.projection(float(w) / h);
     double min_frac = 1, rmin = 1e9, rmax = 0;

@@ -33,8 +33,8 @@ TEST(Forward, SingleAndMultiPassAgree) {
     // Light-object culling by bounding spheres is the same in both; Listing 4 adds the
     // pre-pass and one ambient pass per object.
     EXPECT_EQ(single.stats.light_object_pairs, multi.stats.light_object_pairs);
-    EXPECT_EQ(multi.stats.passes, 1 + int(s.meshes.size()) + multi.stats.light_object_pairs);
-    EXPECT_LT(multi.stats.light_object_pairs, int(s.meshes.size() * s.lights.size()));  // culling did cull
+    EXPECT_EQ(multi.stats.passes, 1 + int(s.objects.size()) + multi.stats.light_object_pairs);
+    EXPECT_LT(multi.stats.light_object_pairs, int(s.objects.size() * s.lights.size()));  // culling did cull
 }
 
 // More lights than one pass holds: the rest go to additive GL_EQUAL passes over the same

@@ -36,7 +36,7 @@ Scene plane_scene(float spec) {
     m.specular = glm::vec3(spec);
     m.shininess = 10;
     s.materials.push_back(m);
-    s.meshes.push_back(make_plane(6, {0, 0, 0}, 0));
+    add_plane(s, 6, {0, 0, 0}, 0);
     return s;
 }
 
@@ -196,6 +196,29 @@ TEST(LightTypes, DeferredMatchesForwardOnTheLightsScene) {
     double sum = 0;
     for (size_t p = 0; p < def.image.rgba.size(); p += 4) sum += def.image.rgba[p];
     EXPECT_GT(sum / (n * n), 0.08);
+}
+
+}  // namespace
+}  // namespace dsr::test
+
+namespace dsr::test {
+namespace {
+
+// The general light_contribution shades the tutorial's point light exactly as the LIGHT_POINT_ONLY
+// variant does: a dark directional light in the scene switches the forward renderer to the
+// general shader and must change no pixel.
+TEST(LightTypes, GeneralShaderMatchesThePointOnlyVariant) {
+    Scene s = default_scene();
+    const int n = 96;
+    auto point_only = render_forward(s, n, n, forward_mode(ForwardMode::single));
+    Light dark;
+    dark.type = Light::Type::directional;
+    dark.dir = {0, -1, 0};
+    dark.color = glm::vec3(0);
+    s.lights.push_back(dark);
+    auto general = render_forward(s, n, n, forward_mode(ForwardMode::single));
+    const ImageDiff d = compare_logged("forward: general shader vs point-only variant", general.image, point_only.image, kLsb);
+    EXPECT_EQ(d.max_lsb(), 0.0);
 }
 
 }  // namespace

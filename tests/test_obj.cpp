@@ -541,25 +541,31 @@ TEST_F(ObjFiles, MeshDirectiveParsesOnceDrawsTwice) {
     const dsr::Scene s = dsr::load_scene(scene);
     ASSERT_EQ(s.models.size(), 1u) << "the same file is parsed once";
     ASSERT_EQ(s.instances.size(), 2u);
-    EXPECT_EQ(s.models[0].groups.size(), 2u);
-    ASSERT_EQ(s.meshes.size(), 4u) << "phase 1: each instance's groups baked to world space";
+    EXPECT_EQ(s.models[0].mesh_count, 2u);
+    ASSERT_EQ(s.meshes.size(), 2u) << "each group once, in object space, however many instances";
+    ASSERT_EQ(s.objects.size(), 4u) << "one object per group per instance";
     EXPECT_EQ(s.materials.size(), 3u) << "grey + the MTL's two, added once";
     EXPECT_EQ(s.materials[1].name, "t.obj:a");
     const dsr::MeshInstance& b = s.instances[1];
-    EXPECT_EQ(b.first_mesh, 2u);
-    EXPECT_EQ(b.mesh_count, 2u);
+    EXPECT_EQ(b.first_object, 2u);
+    EXPECT_EQ(b.object_count, 2u);
     EXPECT_EQ(b.material, 0);
-    for (size_t i = 2; i < 4; ++i) EXPECT_EQ(s.meshes[i].material, 0) << "material overrides the MTL";
-    EXPECT_NE(s.meshes[0].material, s.meshes[1].material);
+    for (size_t i = 2; i < 4; ++i) {
+        EXPECT_EQ(s.objects[i].material, 0) << "material overrides the MTL";
+        EXPECT_EQ(s.objects[i].mesh, s.objects[i - 2].mesh) << "both instances draw the same mesh";
+        EXPECT_EQ(s.objects[i].model, b.model_matrix());
+    }
+    EXPECT_NE(s.objects[0].material, s.objects[1].material);
+    EXPECT_EQ(s.objects[0].model, glm::dmat4(1.0));
     // rotate_y 90 takes +X to -Z; scale 2; at (10, 0, 0).
     const glm::dvec4 p = b.model_matrix() * glm::dvec4(1, 0, 0, 1);
     EXPECT_NEAR(p.x, 10, 1e-12);
     EXPECT_NEAR(p.z, -2, 1e-12);
     bool found = false;
-    for (const dsr::Vertex& v : s.meshes[2].vertices)
-        if (glm::length(v.pos - vec3(10, 0, -2)) < 1e-5f) found = true;
-    EXPECT_TRUE(found) << "object-space (1,0,0) drawn at (10,0,-2)";
-    for (size_t i = 2; i < 4; ++i)
+    for (const dsr::Vertex& v : s.meshes[s.objects[2].mesh].vertices)
+        if (glm::length(v.pos - vec3(1, 0, 0)) < 1e-6f) found = true;
+    EXPECT_TRUE(found) << "vertices stay in object space";
+    for (size_t i = 0; i < 2; ++i)
         for (const dsr::Vertex& v : s.meshes[i].vertices) {
             EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-5f);
             EXPECT_NEAR(glm::dot(v.tangent, v.normal), 0.0f, 1e-5f);
@@ -630,8 +636,7 @@ void render_asset(const std::string& folder, const std::string& scene_name, doub
     const double t0 = dsr::now_ms();
     const dsr::Scene scene = dsr::load_scene(std::string(DSR_SOURCE_DIR) + "/tests/data/" + scene_name);
     const double load_ms = dsr::now_ms() - t0;
-    size_t tris = 0;
-    for (const dsr::Mesh& m : scene.meshes) tris += m.indices.size() / 3;
+    const size_t tris = scene.triangle_count();
     const int size = 256;
     const dsr::test::RenderResult r = dsr::test::render_scene(scene, size, size, dsr::ShaderOptions{});
     const Coverage c = coverage(r.image, scene.background);
@@ -664,8 +669,7 @@ TEST(ObjAssets, WindmillMapsAreUsed) {
     EXPECT_EQ(with_normal, 2);
     EXPECT_EQ(with_diffuse, 2);
     EXPECT_EQ(with_spec, 1) << "map_Ns on the base";
-    size_t tris = 0;
-    for (const dsr::Mesh& m : s.meshes) tris += m.indices.size() / 3;
+    const size_t tris = s.triangle_count();
     EXPECT_EQ(tris, 66u + 2u * 1328u) << "quads triangulated";
 }
 
@@ -705,7 +709,7 @@ TEST(ObjLarge, MillionTriangles) {
     const double load_ms = dsr::now_ms() - t0;
     ASSERT_EQ(scene.models.size(), 1u);
     EXPECT_EQ(scene.models[0].triangles, size_t(2) * n * n);
-    EXPECT_EQ(scene.models[0].groups.at(0).vertices.size(), size_t(n + 1) * (n + 1)) << "every corner shared";
+    EXPECT_EQ(scene.meshes.at(scene.models[0].first_mesh).vertices.size(), size_t(n + 1) * (n + 1)) << "every corner shared";
     const dsr::test::RenderResult r = dsr::test::render_scene(scene, 512, 512, dsr::ShaderOptions{});
     const Coverage c = coverage(r.image, scene.background);
     struct rusage ru;

@@ -83,8 +83,8 @@ TEST(References, DefaultReferenceMatchesExactTraceOnConstantMaterials) {
     std::vector<uint8_t> boxes(interior.size(), 0), spheres(interior.size(), 0);
     for (size_t p = 0; p < interior.size(); ++p) {
         const int m = tr.mesh[p];
-        if (!interior[p] || m < 0 || textured[size_t(s.meshes[size_t(m)].material)]) continue;
-        (s.meshes[size_t(m)].shape->kind == ShapeDesc::Kind::sphere ? spheres : boxes)[p] = 1;
+        if (!interior[p] || m < 0 || textured[size_t(s.objects[size_t(m)].material)]) continue;
+        (s.objects[size_t(m)].shape->kind == ShapeDesc::Kind::sphere ? spheres : boxes)[p] = 1;
     }
     const ImageDiff b = compare_images_masked(ref, rounded, boxes, 2 * kLsb);
     const ImageDiff sp = compare_images_masked(ref, rounded, spheres, 2 * kLsb);

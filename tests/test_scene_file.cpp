@@ -200,6 +200,7 @@ TEST_F(SceneFileTest, CommentsOrderAndDefaults) {
     EXPECT_FLOAT_EQ(s.materials[0].tile, 2.5f);
     EXPECT_EQ(s.materials[0].normal_map, -1);
     ASSERT_EQ(s.meshes.size(), 1u);
+    ASSERT_EQ(s.objects.size(), 1u);
     ASSERT_EQ(s.lights.size(), 1u);
     EXPECT_FLOAT_EQ(s.lights[0].radius, 2);
     EXPECT_FALSE(s.post_bloom);
@@ -214,6 +215,11 @@ void expect_drawable(const dsr::Scene& s) {
         for (uint32_t i : m.indices) ASSERT_LT(i, m.vertices.size());
         ASSERT_GE(m.material, 0);
         ASSERT_LT(m.material, int(s.materials.size()));
+    }
+    for (const dsr::Object& o : s.objects) {
+        ASSERT_LT(o.mesh, s.meshes.size());
+        ASSERT_GE(o.material, 0);
+        ASSERT_LT(o.material, int(s.materials.size()));
     }
     ASSERT_EQ(s.textures.size(), s.texture_paths.size());
     for (const dsr::Material& mat : s.materials)

@@ -18,13 +18,19 @@ struct Case {
     vec3 centre;
 };
 
+// A shape's object-space mesh moved to `at` (what the object's translate(at) does on the GPU).
+dsr::Mesh placed(dsr::Mesh m, vec3 at) {
+    for (dsr::Vertex& v : m.vertices) v.pos += at;
+    return m;
+}
+
 std::vector<Case> cases() {
     return {
         // "centre" is a point inside: below the plane for the plane.
-        {"plane", dsr::make_plane(3.0f, vec3(1, -2, 0.5f), 0), vec3(1, -3, 0.5f)},
-        {"box", dsr::make_box(vec3(1, 2, 0.3f), vec3(-1, 0.5f, 2), 0), vec3(-1, 0.5f, 2)},
-        {"sphere", dsr::make_sphere(0.7f, vec3(2, 1, -3), 0), vec3(2, 1, -3)},
-        {"coarse sphere", dsr::make_sphere(2.0f, vec3(0), 0, 5, 3), vec3(0)},
+        {"plane", placed(dsr::make_plane(3.0f, 0), vec3(1, -2, 0.5f)), vec3(1, -3, 0.5f)},
+        {"box", placed(dsr::make_box(vec3(1, 2, 0.3f), 0), vec3(-1, 0.5f, 2)), vec3(-1, 0.5f, 2)},
+        {"sphere", placed(dsr::make_sphere(0.7f, 0), vec3(2, 1, -3)), vec3(2, 1, -3)},
+        {"coarse sphere", dsr::make_sphere(2.0f, 0, 5, 3), vec3(0)},
     };
 }
 
@@ -89,7 +95,7 @@ TEST(Shapes, TangentFollowsUAndBinormalFollowsV) {
 }
 
 TEST(Shapes, PlaneLayout) {
-    const dsr::Mesh m = dsr::make_plane(4.0f, vec3(1, 2, 3), 7);
+    const dsr::Mesh m = placed(dsr::make_plane(4.0f, 7), vec3(1, 2, 3));
     EXPECT_EQ(m.material, 7);
     ASSERT_EQ(m.vertices.size(), 4u);
     EXPECT_EQ(m.indices.size(), 6u);
@@ -106,7 +112,7 @@ TEST(Shapes, PlaneLayout) {
 
 TEST(Shapes, BoxLayout) {
     const vec3 size(2, 4, 6), at(1, 1, 1);
-    const dsr::Mesh m = dsr::make_box(size, at, 3);
+    const dsr::Mesh m = placed(dsr::make_box(size, 3), at);
     EXPECT_EQ(m.material, 3);
     ASSERT_EQ(m.vertices.size(), 24u);
     EXPECT_EQ(m.indices.size(), 36u);
@@ -135,7 +141,7 @@ TEST(Shapes, BoxLayout) {
 TEST(Shapes, SphereLayout) {
     const float r = 1.5f;
     const vec3 at(0, 1, 0);
-    const dsr::Mesh m = dsr::make_sphere(r, at, 2, 16, 8);
+    const dsr::Mesh m = placed(dsr::make_sphere(r, 2, 16, 8), at);
     EXPECT_EQ(m.vertices.size(), size_t(17 * 9));
     // Two triangles per quad, less one at each pole per slice.
     EXPECT_EQ(m.indices.size(), size_t(3 * (2 * 16 * 8 - 2 * 16)));
@@ -158,3 +164,24 @@ TEST(Shapes, SphereLayout) {
 }
 
 }  // namespace
+
+// add_* put the object-space mesh in the scene once, at `at` by its model matrix, with the
+// exact shape in world space.
+TEST(Shapes, AddPlacesAnObjectWithItsShape) {
+    dsr::Scene s;
+    const size_t o = dsr::add_box(s, vec3(1, 2, 3), vec3(4, 5, 6), 0);
+    ASSERT_EQ(o, 0u);
+    ASSERT_EQ(s.meshes.size(), 1u);
+    ASSERT_EQ(s.objects.size(), 1u);
+    const dsr::Object& obj = s.objects[0];
+    EXPECT_EQ(obj.mesh, 0u);
+    ASSERT_TRUE(obj.shape.has_value());
+    EXPECT_EQ(obj.shape->kind, dsr::ShapeDesc::Kind::box);
+    EXPECT_EQ(obj.shape->centre, vec3(4, 5, 6));
+    EXPECT_EQ(obj.model[3], glm::dvec4(4, 5, 6, 1));
+    vec3 lo(1e9f), hi(-1e9f);
+    for (const dsr::Vertex& v : s.meshes[0].vertices) lo = glm::min(lo, v.pos), hi = glm::max(hi, v.pos);
+    EXPECT_EQ(lo, vec3(-0.5f, -1, -1.5f)) << "object space: centred on the origin";
+    EXPECT_EQ(hi, vec3(0.5f, 1, 1.5f));
+    EXPECT_EQ(s.triangle_count(), 12u);
+}

@@ -58,34 +58,41 @@ struct TracedMesh {
 
 std::vector<TracedMesh> prepare(const Scene& scene, bool triangles) {
     std::vector<TracedMesh> out;
-    for (const Mesh& m : scene.meshes) {
+    for (const Object& o : scene.objects) {
+        const Mesh& m = scene.meshes.at(o.mesh);
         TracedMesh t;
-        if (m.shape) {  // kept with `triangles` too: a textured plane's uv comes from it
-            t.kind = m.shape->kind;
-            t.centre = dvec3(m.shape->centre);
-            t.half = dvec3(m.shape->size) * 0.5;
-            t.radius = m.shape->radius;
+        if (o.shape) {  // kept with `triangles` too: a textured plane's uv comes from it
+            t.kind = o.shape->kind;
+            t.centre = dvec3(o.shape->centre);
+            t.half = dvec3(o.shape->size) * 0.5;
+            t.radius = o.shape->radius;
             if (!triangles) {
                 t.exact = true;
                 out.push_back(std::move(t));
                 continue;
             }
         }
+        // The object's triangles in world space, in double (rigid with a uniform scale: normals
+        // turn with the rotation alone).
+        const double scale = glm::length(dvec3(o.model[0]));
+        const glm::dmat3 rot = glm::dmat3(o.model) / (scale > 0 ? scale : 1.0);
+        auto world = [&](const Vertex& v) { return dvec3(o.model * glm::dvec4(dvec3(v.pos), 1.0)); };
         for (size_t i = 0; i + 2 < m.indices.size(); i += 3) {
             const Vertex& a = m.vertices.at(m.indices[i]);
             const Vertex& b = m.vertices.at(m.indices[i + 1]);
             const Vertex& c = m.vertices.at(m.indices[i + 2]);
+            const dvec3 pa = world(a), pb = world(b), pc = world(c);
             Tri tri;
-            tri.p0 = dvec3(a.pos);
-            tri.e1 = dvec3(b.pos) - tri.p0;
-            tri.e2 = dvec3(c.pos) - tri.p0;
-            tri.n0 = dvec3(a.normal);
-            tri.n1 = dvec3(b.normal);
-            tri.n2 = dvec3(c.normal);
+            tri.p0 = pa;
+            tri.e1 = pb - tri.p0;
+            tri.e2 = pc - tri.p0;
+            tri.n0 = rot * dvec3(a.normal);
+            tri.n1 = rot * dvec3(b.normal);
+            tri.n2 = rot * dvec3(c.normal);
             if (t.tris.size() % kChunk == 0) t.chunks.emplace_back();
-            for (const Vertex* v : {&a, &b, &c}) {
-                t.chunks.back().add(dvec3(v->pos));
-                t.box.add(dvec3(v->pos));
+            for (const dvec3& p : {pa, pb, pc}) {
+                t.chunks.back().add(p);
+                t.box.add(p);
             }
             t.tris.push_back(tri);
         }
@@ -252,7 +259,7 @@ Image make_bump_normal_map(const BumpMap& b, int w, int h) {
 }
 
 double sphere_tessellation_gap(int slices, int stacks) {
-    const Mesh m = make_sphere(1.0f, glm::vec3(0), 0, slices, stacks);
+    const Mesh m = make_sphere(1.0f, 0, slices, stacks);
     double least = 1;
     for (size_t i = 0; i + 2 < m.indices.size(); i += 3) {
         const dvec3 p = closest_to_origin(dvec3(m.vertices[m.indices[i]].pos), dvec3(m.vertices[m.indices[i + 1]].pos),
@@ -264,9 +271,9 @@ double sphere_tessellation_gap(int slices, int stacks) {
 
 AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const AnalyticOptions& opts) {
     if (width <= 0 || height <= 0) throw Error("analytic reference: bad size");
-    for (const Mesh& m : scene.meshes)
-        if (m.material < 0 || size_t(m.material) >= scene.materials.size())
-            throw Error("analytic reference: a mesh has no material");
+    for (const Object& o : scene.objects)
+        if (o.material < 0 || size_t(o.material) >= scene.materials.size())
+            throw Error("analytic reference: an object has no material");
     // Texture maps: only those with a closed form here, only on planes.
     for (size_t mi = 0; mi < scene.materials.size(); ++mi) {
         const Material& m = scene.materials[mi];
@@ -280,8 +287,8 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
         for (int map : {m.diffuse_map, m.normal_map})
             if (map >= 0 && size_t(map) >= scene.textures.size()) throw Error(what + "names a missing texture");
         if (m.diffuse_map < 0 && m.normal_map < 0) continue;
-        for (const Mesh& mesh : scene.meshes)
-            if (mesh.material == int(mi) && !(mesh.shape && mesh.shape->kind == ShapeDesc::Kind::plane))
+        for (const Object& o : scene.objects)
+            if (o.material == int(mi) && !(o.shape && o.shape->kind == ShapeDesc::Kind::plane))
                 throw Error(what + "has a texture map on a mesh that is not a plane; the reference maps uv on planes only");
     }
 
@@ -340,7 +347,7 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
             out.eye_depth[size_t(j) * width + i] = hit.t;  // the ray's forward component is 1
 
             const TracedMesh& tm = meshes[hit.mesh];
-            const Material& mat = scene.materials[scene.meshes[hit.mesh].material];
+            const Material& mat = scene.materials[scene.objects[hit.mesh].material];
             const dvec3 p = eye + hit.t * d;
             dvec3 n;
             if (hit.tri) {

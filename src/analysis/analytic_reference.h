@@ -7,9 +7,10 @@
 // clamped to [0, 1]; the background colour where nothing is hit. No GL, and none of the
 // renderer's code: the camera, shapes, texture filtering and shading are written here again.
 //
-// Geometry. A mesh made by make_plane/make_box/make_sphere carries its ShapeDesc, and the trace
+// Geometry. An object added by add_plane/add_box/add_sphere carries its ShapeDesc, and the trace
 // intersects that shape (ray-plane, ray-box slabs, ray-sphere) with the shape's exact normal at
-// the hit. A mesh without one (hand-made, OBJ) is traced as its triangles, with the barycentric
+// the hit. An object without one (hand-made, OBJ) is traced as its mesh's triangles, moved to
+// world space by its model matrix in double, with the barycentric
 // mix of the vertex normals (Phong shading, §2.3). Planes and boxes are exactly their two
 // triangles per face, so only spheres differ from what the renderer draws: the 48x24 sphere's
 // flat facets lie inside the sphere by at most sphere_tessellation_gap() (0.43% of r for
@@ -69,7 +70,7 @@ struct AnalyticOptions {
 
 struct AnalyticTrace {
     Image image;             // RGBA, alpha 1, row 0 = bottom (like dsr::read_pixels)
-    std::vector<int> mesh;   // per pixel: index into Scene::meshes of the hit, -1 for background
+    std::vector<int> mesh;   // per pixel: index into Scene::objects of the hit, -1 for background
     std::vector<double> eye_depth;  // per pixel: -z of the hit in eye space (exact, double), 0 for background
     // Over the pixels that sampled a texture map: the largest footprint of a pixel in texels
     // (GL's scale factor rho, from the uv at the neighbouring pixel centres). Above 1 the
@@ -83,7 +84,7 @@ struct AnalyticTrace {
 AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const AnalyticOptions& opts = {});
 Image analytic_reference(const Scene& scene, int width, int height);
 
-// The largest distance between a sphere and the flat facets of make_sphere(r, c, m, slices,
+// The largest distance between a sphere and the flat facets of make_sphere(r, m, slices,
 // stacks), as a fraction of r: 1 - (the least distance from the centre to any facet) / r.
 double sphere_tessellation_gap(int slices = 48, int stacks = 24);
 

@@ -81,6 +81,7 @@ double FloorBench::fill_frame(const Scene& scene) {
     glLoadMatrixf(glm::value_ptr(scene.camera.projection(float(w_) / float(h_))));
     glMatrixMode(GL_MODELVIEW);
     glLoadMatrixf(glm::value_ptr(scene.camera.view()));
+    gpu_->set_view(scene.camera.view_d());
     RenderState s;  // one pass: the depth pre-pass's geometry state with colour on and a shader
     s.cull = true;
     s.cull_face = GL_BACK;

@@ -34,12 +34,13 @@ glm::vec3 hue(float h) {
 
 Scene with_generated_lights(const Scene& scene, int n) {
     if (n < 0) throw Error("bench scenes: negative light count");
-    if (scene.meshes.empty()) throw Error("bench scenes: the scene has no geometry to spread lights over");
+    if (scene.objects.empty()) throw Error("bench scenes: the scene has no geometry to spread lights over");
     glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
-    for (const Mesh& m : scene.meshes)
-        for (const Vertex& v : m.vertices) {
-            lo = glm::min(lo, v.pos);
-            hi = glm::max(hi, v.pos);
+    for (const Object& o : scene.objects)
+        for (const Vertex& v : scene.meshes.at(o.mesh).vertices) {
+            const glm::vec3 p(o.model * glm::dvec4(glm::dvec3(v.pos), 1.0));
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
         }
     Scene out = scene;
     out.lights.clear();
@@ -138,7 +139,7 @@ Scene large_lights_scene(int n) {
     m.shininess = 16;
     s.materials.push_back(m);
     for (int i = -1; i <= 1; ++i)
-        for (int j = -1; j <= 1; ++j) s.meshes.push_back(make_box(glm::vec3(1), glm::vec3(3.0f * i, -0.5f, 3.0f * j), 0));
+        for (int j = -1; j <= 1; ++j) add_box(s, glm::vec3(1), glm::vec3(3.0f * i, -0.5f, 3.0f * j), 0);
     for (int i = 0; i < n; ++i) {
         const uint32_t u = uint32_t(i) + 0x5bd1e995u;
         Light l;

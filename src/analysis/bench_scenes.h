@@ -39,7 +39,7 @@ std::string bench_scene_name(const std::string& base_name, const LightSpec& spec
 // n lights (a multiple of 8, else dsr::Error) in n / 8 clusters of 8 that share a centre and a
 // radius (placed as with_generated_lights places n / 8 lights, so clusters overlap about 2.5-fold
 // too), each of the 8 its own hue at 1/8 of the brightness: a pixel inside one light is inside its
-// 7 cluster mates, so every lit pixel lies in at least 8 lights (about 20 on average), the
+// 7 cluster mates, so every lit pixel lies in at least 8 lights (16.7 on average at sampled points), the
 // many-lights-per-pixel case that multi-light passes exist for. No light is switched off.
 Scene with_overlapping_lights(const Scene& scene, int n);
 
@@ -47,7 +47,7 @@ Scene with_overlapping_lights(const Scene& scene, int n);
 // spacing 3 about the origin (constant materials, so it has an analytic reference), the camera at
 // (0, 0, 5) looking down -z with a 45 degree fov, ambient 0.1, and n lights at hashed positions in
 // [-3, 3]^3 with colours in [0.5, 1]^3 and LearnOpenGL's attenuation (1, 0.7, 1.8) at threshold
-// 5/256, radius about 4.5-5.1: each sphere covers most of the screen.
+// 5/256, radii 4.1-5.1: each light's rectangle covers most of the screen (tests/test_bench_scenes.cpp).
 Scene large_lights_scene(int n);
 
 }  // namespace dsr

@@ -153,14 +153,15 @@ StressResult StressRunner::run(const StressCase& c) {
             }
     }
 
-    // Scissor rectangles exactly as the lighting stage computes them (view and projection as
-    // geometry_stage builds them, the light centre transformed in float).
+    // Scissor rectangles exactly as the lighting stage computes them (projection as
+    // geometry_stage builds it, the light centre transformed to eye space in double and rounded
+    // once, Camera::to_eye).
     const Camera& cam = c.scene.camera;
-    const glm::mat4 view = cam.view(), proj = cam.projection(float(w) / float(h));
+    const glm::mat4 proj = cam.projection(float(w) / float(h));
     const glm::dmat4 view_exact = glm::lookAt(glm::dvec3(cam.pos), glm::dvec3(cam.target), glm::dvec3(cam.up));
     for (size_t i = 0; i < c.scene.lights.size(); ++i) {
         const Light& light = c.scene.lights[i];
-        const glm::vec3 eye = glm::vec3(view * glm::vec4(light.pos, 1.0f));
+        const glm::vec3 eye = cam.to_eye(light.pos);
         ScissorRect rc;
         try {
             rc = light_scissor(eye, light.radius, proj[0][0], proj[1][1], cam.near_plane, w, h);
@@ -175,7 +176,7 @@ StressResult StressRunner::run(const StressCase& c) {
         r.scissor_points += k.points;
         if (k.outside && !r.scissor_points_outside) r.scissor_first_miss = "light " + std::to_string(i) + ": " + k.first_miss;
         r.scissor_points_outside += k.outside;
-        // The same sphere transformed in double: how far the float transform moves it.
+        // The same sphere not rounded to float: how far the rounding moves it.
         const glm::dvec3 exact = glm::dvec3(view_exact * glm::dvec4(glm::dvec3(light.pos), 1.0));
         const ScissorCheck e = check_scissor(exact, light.radius, proj[0][0], proj[1][1], cam.near_plane, w, h, rc, seed);
         r.scissor_exact_miss_px = std::max(r.scissor_exact_miss_px, e.max_outside_px);

@@ -192,8 +192,7 @@ int cmd_render(const std::vector<std::string>& argv) {
                {"lights", med(&StageTimes::lights)},     {"bloom", med(&StageTimes::bloom)},
                {"aa", med(&StageTimes::aa)},             {"final", med(&StageTimes::final)},
                {"depth_copy", med(&StageTimes::depth_copy)}, {"frame", med(&StageTimes::frame)}};
-    size_t triangles = 0;
-    for (const Mesh& m : scene.meshes) triangles += m.indices.size() / 3;
+    const size_t triangles = scene.triangle_count();
     struct rusage usage {};
     getrusage(RUSAGE_SELF, &usage);
     j["load_ms"] = load_ms;

@@ -49,7 +49,10 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     if (opts.listing2_literal) ldefs.push_back("LISTING2_LITERAL");
     if (opts.skip.light_depth_test) ldefs.push_back("LIGHT_DEPTH_TEST");
     if (opts.skip.light_sphere_test) ldefs.push_back("LIGHT_SPHERE_TEST");
+    light_any_prog_ = Program(shader_dir, "light.vert", "light.frag", ldefs);
+    ldefs.push_back("LIGHT_POINT_ONLY");
     light_prog_ = Program(shader_dir, "light.vert", "light.frag", ldefs);
+    ldefs.pop_back();  // the geometries' programs shade any light type
     // Light geometries (issue 12): each builds only the programs it draws with.
     const LightGeometry lg = paths_.light_geometry;
     if (lg == LightGeometry::volume || lg == LightGeometry::stencil) {

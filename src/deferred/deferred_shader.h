@@ -222,8 +222,13 @@ private:
     std::unique_ptr<PBuffer> position_buf_;
     std::string shader_dir_;
     glm::vec3 zrange_{0};
+    // The light pass (light.frag): light_prog_ for the tutorial's point lights with Equation 2
+    // (LIGHT_POINT_ONLY: no type or law selection, the tutorial's cost), light_any_prog_ for spot,
+    // directional and attenuated lights (lighting.glsl light_contribution).
     Program light_prog_;
-    Program light_volume_prog_;         // light.vert/.frag with VOLUME: drawn over the volume mesh
+    Program light_any_prog_;
+    static bool tutorial_light(const Light& l) { return l.type == Light::Type::point && !l.attenuation; }
+    Program light_volume_prog_;         // light.vert/.frag with VOLUME (any type): drawn over the volume mesh
     Program light_tiles_prog_;          // light_tiles.frag: up to tile_lights lights per pass
     Program depth_copy_prog_;           // depth_copy.frag: the depth hand-off
     VolumeMesh unit_sphere_mesh_;       // volume_mesh of the unit sphere at the origin

@@ -29,6 +29,8 @@ void DeferredShader::geometry_stage(const Scene& scene) {
     glLoadMatrixf(glm::value_ptr(proj_));
     glMatrixMode(GL_MODELVIEW);
     glLoadMatrixf(glm::value_ptr(view_));
+    // Each draw loads its object's modelview, view * model composed in double (camera-relative).
+    gpu_->set_view(cam.view_d());
     glColor4f(1, 1, 1, 1);
     // Listing 7 clears every target to the background colour with one glClear; here each
     // target gets its own "no surface" value (docs/errata.md): a zero normal (0.5 grey,

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "gl/check.h"
 
 namespace dsr {
@@ -36,27 +38,31 @@ static Image resample_wrapped(const Image& src, int w, int h) {
 static bool is_pow2(int v) { return v > 0 && (v & (v - 1)) == 0; }
 
 GpuScene::GpuScene(const Scene& scene, bool pow2_textures) {
-    // Group meshes by material so each material is one contiguous index range.
-    std::vector<int> order(scene.meshes.size());
-    for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return scene.meshes[a].material < scene.meshes[b].material; });
+    // Every mesh once, in object space (instances of one OBJ group share it).
     std::vector<Vertex> verts;
     std::vector<uint32_t> idx;
-    mesh_ranges_.resize(scene.meshes.size());
-    for (int m : order) {
+    std::vector<std::pair<size_t, GLsizei>> mesh_at(scene.meshes.size());  // first index, count
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const Mesh& mesh = scene.meshes[m];
-        uint32_t base = uint32_t(verts.size());
-        size_t first = idx.size();
+        const uint32_t base = uint32_t(verts.size());
+        mesh_at[m] = {idx.size(), GLsizei(mesh.indices.size())};
         verts.insert(verts.end(), mesh.vertices.begin(), mesh.vertices.end());
         for (uint32_t i : mesh.indices) idx.push_back(base + i);
-        mesh_ranges_[m] = {GLsizei(mesh.indices.size()), first, mesh.material};
-        if (!ranges_.empty() && ranges_.back().material == mesh.material)
-            ranges_.back().count += GLsizei(mesh.indices.size());
-        else
-            ranges_.push_back({GLsizei(mesh.indices.size()), first, mesh.material});
     }
-    indices_ = idx.size();
+    // One draw per object, ordered by material so a material's state is set once (Listing 9).
+    object_ranges_.resize(scene.objects.size());
+    models_.resize(scene.objects.size());
+    modelviews_.assign(scene.objects.size(), glm::mat4(1));
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        const Object& obj = scene.objects[o];
+        const auto [first, count] = mesh_at.at(obj.mesh);
+        object_ranges_[o] = {count, first, obj.material, o};
+        models_[o] = obj.model;
+        triangles_ += size_t(count) / 3;
+    }
+    ranges_ = object_ranges_;
+    std::stable_sort(ranges_.begin(), ranges_.end(),
+                     [](const DrawRange& a, const DrawRange& b) { return a.material < b.material; });
     glGenBuffers(1, &vbo_);
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     glBufferData(GL_ARRAY_BUFFER, verts.size() * sizeof(Vertex), verts.data(), GL_STATIC_DRAW);
@@ -138,12 +144,18 @@ void GpuScene::unbind() const {
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 }
 
+void GpuScene::set_view(const glm::dmat4& view) {
+    for (size_t o = 0; o < models_.size(); ++o) modelviews_[o] = camera_relative(view, models_[o]);
+}
+
 void GpuScene::draw(const DrawRange& r) const {
+    glMatrixMode(GL_MODELVIEW);
+    glLoadMatrixf(glm::value_ptr(modelviews_[r.object]));
     glDrawElements(GL_TRIANGLES, r.count, GL_UNSIGNED_INT, reinterpret_cast<void*>(r.first * sizeof(uint32_t)));
 }
 
 void GpuScene::draw_all() const {
-    if (indices_) glDrawElements(GL_TRIANGLES, GLsizei(indices_), GL_UNSIGNED_INT, nullptr);
+    for (const DrawRange& r : ranges_) draw(r);
 }
 
 }  // namespace dsr

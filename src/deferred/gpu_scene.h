@@ -1,5 +1,7 @@
-// The scene uploaded once: one vertex buffer, one index buffer, textures with mipmaps,
-// and draw ranges grouped by material (Listing 9 draws one range per material).
+// The scene uploaded once: one vertex buffer and one index buffer holding every mesh once, in
+// object space, textures with mipmaps, and the objects' draws ordered by material (Listing 9
+// draws the faces grouped by material: one draw call per material group of each object).
+// Each draw loads its own modelview, composed with the camera in double (set_view).
 #pragma once
 #include <vector>
 
@@ -24,6 +26,7 @@ struct DrawRange {
     GLsizei count = 0;        // indices
     size_t first = 0;         // first index
     int material = 0;
+    size_t object = 0;        // index into Scene::objects
 };
 
 // Inverse of decode_shininess in glsl120/lighting.glsl.
@@ -44,27 +47,36 @@ public:
     // texcoord 1 = tangent, texcoord 2 = binormal (Listing 10's a2v).
     void bind_all() const;
     void unbind() const;
+    // The camera for the draws that follow: every object's modelview = view * model in double,
+    // rounded to float once (camera_relative in scene/scene.h).
+    void set_view(const glm::dmat4& view);
+    // Loads r's object's modelview (GL_MODELVIEW) and draws its indices.
     void draw(const DrawRange& r) const;
+    // Every object, positions only is enough (the depth pre-pass, Listing 8).
     void draw_all() const;
 
+    // The objects' draws, ordered by material (stable: scene order within a material).
     const std::vector<DrawRange>& ranges() const { return ranges_; }
-    // One range per Scene::meshes entry (same index): per-object draws of the forward
-    // renderers (Listings 3-4 draw object by object; the deferred passes draw by material).
-    const DrawRange& mesh_range(size_t mesh) const { return mesh_ranges_.at(mesh); }
+    // The draw of Scene::objects[object]: per-object draws of the forward renderers
+    // (Listings 3-4 draw object by object; the deferred passes draw by material).
+    const DrawRange& object_range(size_t object) const { return object_ranges_.at(object); }
+    size_t object_count() const { return object_ranges_.size(); }
     const GpuMaterial& material(int i) const { return materials_[i]; }
-    size_t triangle_count() const { return indices_ / 3; }
+    size_t triangle_count() const { return triangles_; }  // drawn, over objects
     // A 1x1 tangent-space normal map pointing straight out (128,128,255): what a material
     // without a map reads when the shader variants are off.
     GLuint flat_normal() const { return flat_normal_.id(); }
 
 private:
     GLuint vbo_ = 0, ibo_ = 0;
-    size_t indices_ = 0;
+    size_t triangles_ = 0;
+    std::vector<glm::dmat4> models_;     // per object
+    std::vector<glm::mat4> modelviews_;  // per object, from set_view
     std::vector<Texture> textures_;
     Texture white_, flat_normal_;
     std::vector<GpuMaterial> materials_;
     std::vector<DrawRange> ranges_;
-    std::vector<DrawRange> mesh_ranges_;
+    std::vector<DrawRange> object_ranges_;
 };
 
 }  // namespace dsr

@@ -19,7 +19,9 @@ float window_depth(float z, glm::vec2 planes) { return (planes.x * z + planes.y)
 }  // namespace
 
 void DeferredShader::draw_light_quad(const LightDraw& l, LightQueries& q) {
-    RenderState s = light_pass_state(light_prog_.id(), !l.full);
+    // The tutorial's point lights take the variant without type and law selection (deferred_shader.h).
+    Program& prog = tutorial_light(*l.light) ? light_prog_ : light_any_prog_;
+    RenderState s = light_pass_state(prog.id(), !l.full);
     if (!l.full) glScissor(l.rect.x0, l.rect.y0, l.rect.x1 - l.rect.x0, l.rect.y1 - l.rect.y0);  // set_light_scissor
     if (paths_.depth_bounds && l.eye.kind != LightVolume::Kind::full_screen) {
         // The depth span of the volume's bounding sphere (a cone's lies inside its apex sphere's).
@@ -33,7 +35,7 @@ void DeferredShader::draw_light_quad(const LightDraw& l, LightQueries& q) {
         glDepthBoundsEXT(std::max(0.0f, window_depth(z_near, planes_)), std::min(1.0f, window_depth(z_far, planes_)));
     }
     gl_state().apply(s);
-    set_light_params(light_prog_, l.params);
+    set_light_params(prog, l.params);
     q.begin();
     draw_rect(0, 0, float(w_), float(h_), true);
     q.end();
@@ -41,6 +43,7 @@ void DeferredShader::draw_light_quad(const LightDraw& l, LightQueries& q) {
 }
 
 void DeferredShader::draw_lights_quad(const std::vector<LightDraw>& lights, FrameStats& stats) {
+    set_light_uniforms(light_any_prog_);
     set_light_uniforms(light_prog_);
     LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
     light_passes_drawn_ = 0;

@@ -29,6 +29,7 @@ StencilFace counting_face(GLenum zfail) {
 void DeferredShader::draw_lights_stencil(const std::vector<LightDraw>& lights, FrameStats& stats) {
     LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
     light_passes_drawn_ = 0;
+    set_light_uniforms(light_any_prog_);
     set_light_uniforms(light_prog_);
     for (const LightDraw& l : lights)
         if (mesh_past_far(l)) {

@@ -78,6 +78,7 @@ void DeferredShader::draw_lights_volume(const std::vector<LightDraw>& lights, Fr
     LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
     light_passes_drawn_ = 0;
     // The quads first: lights whose mesh the far plane would clip.
+    set_light_uniforms(light_any_prog_);
     set_light_uniforms(light_prog_);
     for (const LightDraw& l : lights)
         if (mesh_past_far(l)) {

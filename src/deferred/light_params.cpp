@@ -22,4 +22,10 @@ LightParams light_params(const Light& light, const glm::mat4& view) {
     return p;
 }
 
+LightParams light_params(const Light& light, const Camera& camera) {
+    LightParams p = light_params(light, camera.view());
+    p.pos = glm::vec4(camera.to_eye(light.pos), light.radius);
+    return p;
+}
+
 }  // namespace dsr

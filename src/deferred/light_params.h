@@ -18,5 +18,8 @@ struct LightParams {
 
 // `view`: the camera's view matrix (rotation + translation).
 LightParams light_params(const Light& light, const glm::mat4& view);
+// The same with the position moved to eye space in double (Camera::to_eye, rounded once), so a
+// light far from the origin keeps its position: what the renderers use.
+LightParams light_params(const Light& light, const Camera& camera);
 
 }  // namespace dsr

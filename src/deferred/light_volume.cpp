@@ -199,6 +199,12 @@ LightVolume transformed(const LightVolume& v, const glm::mat4& m) {
     return t;
 }
 
+LightVolume to_eye(const LightVolume& v, const Camera& camera) {
+    LightVolume t = transformed(v, camera.view());
+    t.pos = camera.to_eye(v.pos);
+    return t;
+}
+
 BoundingSphere bounding_sphere(const LightVolume& v) {
     if (v.kind == LightVolume::Kind::full_screen) return {v.pos, std::numeric_limits<float>::infinity()};
     if (v.kind == LightVolume::Kind::sphere) return {v.pos, v.radius};

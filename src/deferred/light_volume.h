@@ -36,6 +36,10 @@ LightVolume light_volume(const Light& light);
 // transformed by its rotation part; the matrix must be a rotation + translation.
 LightVolume transformed(const LightVolume& v, const glm::mat4& rigid);
 
+// The volume in the camera's eye space, its position moved in double and rounded once
+// (Camera::to_eye): what the renderers pass to volume_scissor.
+LightVolume to_eye(const LightVolume& v, const Camera& camera);
+
 struct BoundingSphere {
     glm::vec3 centre{0};
     float radius = 0;  // infinite for full_screen

@@ -123,7 +123,9 @@ std::vector<DeferredShader::LightDraw> DeferredShader::visible_lights(const Scen
             ++stats.lights_culled;  // adds nothing
             continue;
         }
-        const LightVolume eye = transformed(volume, view_);
+        // In double, rounded once (Camera::to_eye): far from the origin, view_ * pos in float would
+        // lose the light's position to the world coordinates' rounding (stress case coords).
+        const LightVolume eye = to_eye(volume, scene.camera);
         ScissorRect r = volume_scissor(eye, proj_[0][0], proj_[1][1], near_plane, w_, h_);
         long long n = r.area();
         if (n <= 0) {
@@ -138,7 +140,7 @@ std::vector<DeferredShader::LightDraw> DeferredShader::visible_lights(const Scen
         if (full) r = ScissorRect{0, 0, w_, h_};
         stats.scissor_pixels += r.area();
         ++stats.lights_drawn;
-        out.push_back(LightDraw{&light, light_params(light, view_), eye, r, full});
+        out.push_back(LightDraw{&light, light_params(light, scene.camera), eye, r, full});
     }
     return out;
 }

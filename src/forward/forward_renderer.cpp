@@ -29,7 +29,7 @@ ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, Forwar
 
 ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, const ForwardOptions& opts,
                                  const std::string& shader_dir)
-    : caps_(caps), w_(width), h_(height), opts_(opts) {
+    : caps_(caps), w_(width), h_(height), opts_(opts), shader_dir_(shader_dir) {
     if (!caps.glsl120) throw Error("forward: GLSL 1.20 is required and this GL offers " + caps.glsl_version);
     if (width <= 0 || height <= 0) throw Error("forward: bad size");
     if (opts.float_target) {
@@ -53,11 +53,22 @@ ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, const 
         glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
         batch_ = std::clamp((int(comps) - 64) / 20, 1, std::max(1, opts.max_lights_per_pass));
     }
+    build_programs(false);
+    check_gl("forward: creating the renderer");
+}
+
+ForwardRenderer::~ForwardRenderer() = default;
+
+// The tutorial's point lights take forward.frag with LIGHT_POINT_ONLY (lighting.glsl: no type or
+// law selection, the cost the forward rows always had); a scene with any other light the general
+// shader. Rebuilt only when a scene needs the other kind.
+void ForwardRenderer::build_programs(bool any_light) {
     for (int nm = 0; nm < 2; ++nm) {
         std::vector<std::string> defs = {"MAX_LIGHTS " + std::to_string(batch_)};
         if (nm) defs.push_back("NORMAL_MAP");
-        if (opts.listing2_literal) defs.push_back("LISTING2_LITERAL");
-        prog_[nm] = Program(shader_dir, "forward.vert", "forward.frag", defs);
+        if (opts_.listing2_literal) defs.push_back("LISTING2_LITERAL");
+        if (!any_light) defs.push_back("LIGHT_POINT_ONLY");
+        prog_[nm] = Program(shader_dir_, "forward.vert", "forward.frag", defs);
         prog_[nm].use();
         prog_[nm].set("normaltex", 0);
         prog_[nm].set("colortex", 1);
@@ -66,17 +77,25 @@ ForwardRenderer::ForwardRenderer(const Caps& caps, int width, int height, const 
         for (int k = 0; k < 5; ++k) loc_light_[nm][k] = glGetUniformLocation(prog_[nm].id(), names[k]);
     }
     gl_state().use_program(0);
-    check_gl("forward: creating the renderer");
+    any_light_ = any_light;
 }
 
-ForwardRenderer::~ForwardRenderer() = default;
+bool ForwardRenderer::needs_any_light(const Scene& scene) {
+    for (const Light& l : scene.lights)
+        if (l.type != Light::Type::point || l.attenuation) return true;
+    return false;
+}
 
 void ForwardRenderer::set_scene(const Scene& scene) {
+    if (needs_any_light(scene) != any_light_) build_programs(!any_light_);
     gpu_ = std::make_unique<GpuScene>(scene);
-    // Bounding sphere per mesh: centre of the bounding box, radius to the farthest vertex.
-    bounds_.clear();
-    for (const Mesh& m : scene.meshes) {
-        Bound b;
+    // Bounding sphere per object: the mesh's (centre of its bounding box, radius to the
+    // farthest vertex), moved to world space in double (transforms are rigid with a uniform
+    // scale: the radius scales by the length of the model's first column).
+    std::vector<Bound> local(scene.meshes.size());
+    for (size_t i = 0; i < scene.meshes.size(); ++i) {
+        const Mesh& m = scene.meshes[i];
+        Bound& b = local[i];
         if (!m.vertices.empty()) {
             glm::vec3 lo = m.vertices[0].pos, hi = lo;
             for (const Vertex& v : m.vertices) {
@@ -85,8 +104,16 @@ void ForwardRenderer::set_scene(const Scene& scene) {
             }
             b.centre = 0.5f * (lo + hi);
             for (const Vertex& v : m.vertices) b.radius = std::max(b.radius, glm::length(v.pos - b.centre));
-            b.radius *= 1.0001f;  // float rounding of the lengths: keep the sphere conservative
         }
+    }
+    bounds_.clear();
+    for (const Object& o : scene.objects) {
+        const Bound& l = local.at(o.mesh);
+        Bound b;
+        b.centre = glm::vec3(o.model * glm::dvec4(glm::dvec3(l.centre), 1.0));
+        b.radius = float(double(l.radius) * glm::length(glm::dvec3(o.model[0])));
+        // float rounding of the lengths and of the world centre: keep the sphere conservative
+        b.radius = b.radius * 1.0001f + 1e-7f * glm::length(b.centre);
         bounds_.push_back(b);
     }
     check_gl("forward: uploading the scene");
@@ -95,14 +122,14 @@ void ForwardRenderer::set_scene(const Scene& scene) {
 // Equation 2 (and the attenuation cut, and a spot's cone) makes a light's contribution exactly
 // zero outside its volume, so skipping an object whose bounding sphere the volume's bounding
 // sphere does not reach changes no pixel. A directional light reaches everything.
-bool ForwardRenderer::touches(size_t mesh, const Light& light) const {
+bool ForwardRenderer::touches(size_t object, const Light& light) const {
     if (light.type == Light::Type::directional) return true;
     const BoundingSphere b = bounding_sphere(light_volume(light));
-    return glm::length(bounds_[mesh].centre - b.centre) <= bounds_[mesh].radius + b.radius;
+    return glm::length(bounds_[object].centre - b.centre) <= bounds_[object].radius + b.radius;
 }
 
-Program& ForwardRenderer::use_material(const Scene& scene, size_t mesh) {
-    const int mi = gpu_->mesh_range(mesh).material;
+Program& ForwardRenderer::use_material(const Scene& scene, size_t object) {
+    const int mi = gpu_->object_range(object).material;
     const GpuMaterial& m = gpu_->material(mi);
     Program& prog = prog_[m.normal_map ? 1 : 0];
     prog.use();
@@ -135,14 +162,15 @@ void ForwardRenderer::set_lights(Program& prog, const std::vector<int>& lights, 
             if (loc_light_[p][k] >= 0) glUniform4fv(loc_light_[p][k], GLsizei(count), glm::value_ptr(v[k][0]));
 }
 
-void ForwardRenderer::draw_mesh(size_t mesh, ForwardStats& st) {
-    gpu_->draw(gpu_->mesh_range(mesh));
+void ForwardRenderer::draw_object(size_t object, ForwardStats& st) {
+    gpu_->draw(gpu_->object_range(object));
     ++st.passes;
 }
 
 ForwardStats ForwardRenderer::render(const Scene& scene) {
     if (!gpu_) throw Error("forward: render before set_scene");
-    if (scene.meshes.size() != bounds_.size()) throw Error("forward: render with a scene other than set_scene's");
+    if (scene.objects.size() != bounds_.size()) throw Error("forward: render with a scene other than set_scene's");
+    if (needs_any_light(scene) != any_light_) build_programs(!any_light_);  // not set_scene's lights
     ForwardStats st;
     const double t0 = now_ms();
     const Camera& cam = scene.camera;
@@ -158,7 +186,7 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
         const Light& l = scene.lights[i];
         light_visible_[i] = !volume_outside(frustum, light_volume(l));
         if (!light_visible_[i]) ++st.lights_culled;
-        light_params_[i] = light_params(l, view_);
+        light_params_[i] = light_params(l, cam);  // in double: see draw_lighting
     }
 
     if (target_) {
@@ -172,6 +200,7 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
     glLoadMatrixf(glm::value_ptr(proj));
     glMatrixMode(GL_MODELVIEW);
     glLoadMatrixf(glm::value_ptr(view_));
+    gpu_->set_view(cam.view_d());  // each draw loads view * model, composed in double
     glColor4f(1, 1, 1, 1);
     gl_state().apply(surface_state());  // before the clear: depth and colour writes on
     glClearColor(scene.background.r, scene.background.g, scene.background.b, 1.0f);
@@ -208,7 +237,7 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
 // same fragments (GL_EQUAL, the vertex stage is the same program's).
 void ForwardRenderer::draw_single(const Scene& scene, ForwardStats& st) {
     std::vector<int> lights;
-    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    for (size_t m = 0; m < scene.objects.size(); ++m) {
         lights.clear();
         for (size_t i = 0; i < scene.lights.size(); ++i)
             if (light_visible_[i] && touches(m, scene.lights[i]))
@@ -217,12 +246,12 @@ void ForwardRenderer::draw_single(const Scene& scene, ForwardStats& st) {
         Program& prog = use_material(scene, m);  // in render()'s surface state
         size_t first = std::min(lights.size(), size_t(batch_));
         set_lights(prog, lights, 0, first, scene.ambient);
-        draw_mesh(m, st);
+        draw_object(m, st);
         if (first < lights.size()) {
             gl_state().apply(add_state(prog.id()));
             for (size_t k = first; k < lights.size(); k += size_t(batch_)) {
                 set_lights(prog, lights, k, std::min(size_t(batch_), lights.size() - k), glm::vec3(0));
-                draw_mesh(m, st);
+                draw_object(m, st);
             }
             RenderState lay = surface_state();
             lay.program = prog.id();
@@ -247,10 +276,10 @@ void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
     ambient.blend = false;  // lays the surfaces down on the cleared buffer
     gl_state().apply(ambient);
     static const std::vector<int> none;
-    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    for (size_t m = 0; m < scene.objects.size(); ++m) {
         Program& prog = use_material(scene, m);
         set_lights(prog, none, 0, 0, scene.ambient);
-        draw_mesh(m, st);
+        draw_object(m, st);
     }
     check_gl_stage("forward: ambient pass");
 
@@ -259,11 +288,11 @@ void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         if (!light_visible_[i]) continue;
         one[0] = int(i);
-        for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        for (size_t m = 0; m < scene.objects.size(); ++m) {
             if (!touches(m, scene.lights[i])) continue;
             Program& prog = use_material(scene, m);
             set_lights(prog, one, 0, 1, glm::vec3(0));
-            draw_mesh(m, st);
+            draw_object(m, st);
             ++st.light_object_pairs;
         }
     }

@@ -67,7 +67,7 @@ public:
     int lights_per_pass() const { return batch_; }
 
 private:
-    struct Bound {  // world-space bounding sphere of one mesh, for light-object culling
+    struct Bound {  // world-space bounding sphere of one object, for light-object culling
         glm::vec3 centre{0};
         float radius = 0;
     };
@@ -75,17 +75,21 @@ private:
     static RenderState add_state(GLuint program);
     void draw_single(const Scene& scene, ForwardStats& st);
     void draw_multi(const Scene& scene, ForwardStats& st);
-    // Program for mesh `m`, bound, with its material's uniforms and textures set.
-    Program& use_material(const Scene& scene, size_t mesh);
+    // Program for object `object`, bound, with its material's uniforms and textures set.
+    Program& use_material(const Scene& scene, size_t object);
     void set_lights(Program& prog, const std::vector<int>& lights, size_t first, size_t count, glm::vec3 ambient);
-    void draw_mesh(size_t mesh, ForwardStats& st);
-    bool touches(size_t mesh, const Light& light) const;
+    void draw_object(size_t object, ForwardStats& st);
+    bool touches(size_t object, const Light& light) const;
+    void build_programs(bool any_light);         // prog_ and loc_light_, with or without LIGHT_POINT_ONLY
+    static bool needs_any_light(const Scene& scene);  // a light other than the tutorial's point light
     void copy_to_main();
 
     Caps caps_;
     int w_, h_;
     ForwardOptions opts_;
     int batch_ = 1;
+    std::string shader_dir_;
+    bool any_light_ = false;  // prog_ built for every light type (else LIGHT_POINT_ONLY)
     Program prog_[2];  // [normal map?]
     GLint loc_light_[2][5] = {{-1, -1, -1, -1, -1}, {-1, -1, -1, -1, -1}};  // [nm][LightParams field]
     std::unique_ptr<PBuffer> target_;  // RGBA32F accumulation, when opts_.float_target

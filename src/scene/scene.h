@@ -17,6 +17,8 @@ struct Camera {
     float fov_deg = 60.0f;  // vertical field of view
     float near_plane = 0.1f, far_plane = 100.0f;
     glm::mat4 view() const;                      // glm::lookAt
+    glm::dmat4 view_d() const;                   // the same in double (camera-relative composition)
+    glm::vec3 to_eye(glm::vec3 world) const;     // view_d() applied in double, rounded once
     glm::mat4 projection(float aspect) const;    // glm::perspective, OpenGL clip conventions
 };
 
@@ -61,8 +63,8 @@ struct Vertex {
     glm::vec3 tangent{1, 0, 0}, binormal{0, 1, 0};
 };
 
-// The exact shape a mesh was tessellated from (make_plane/make_box/make_sphere set it), so the
-// analytic reference can trace the shape itself rather than the renderer's triangles.
+// The exact shape an object was tessellated from, in world space (add_plane/add_box/add_sphere
+// set it on the Object), so the analytic reference can trace the shape itself.
 //   plane:  the XZ square of side size.x centred on centre, normal +Y (size = (s, 0, s))
 //   box:    axis-aligned, edge lengths size, centred on centre
 //   sphere: radius `radius` about centre (size = (2r, 2r, 2r))
@@ -73,36 +75,47 @@ struct ShapeDesc {
     float radius = 0;
 };
 
-// World-space triangles with one material; `shape` is absent for meshes that are only
-// triangles (hand-made, OBJ).
+// Object-space triangles with one material (a group of Listing 9): uploaded once however many
+// objects draw it.
 struct Mesh {
     std::vector<Vertex> vertices;
     std::vector<uint32_t> indices;
     int material = 0;
+};
+
+// One thing drawn: a mesh and its object-to-world transform, kept in double. Renderers never
+// multiply world-space points in float: they compose view * model in double on the CPU
+// (camera_relative below), so the GPU only sees eye-space numbers, small near the camera however
+// far from the origin the scene lies. Transforms are rigid with a uniform scale (normals need no
+// inverse transpose).
+// `shape`, in world space, is the exact shape the mesh was tessellated from (add_plane, add_box,
+// add_sphere set it) so the analytic reference can trace the shape itself rather than the
+// renderer's triangles; absent for meshes that are only triangles (hand-made, OBJ).
+struct Object {
+    size_t mesh = 0;  // index into Scene::meshes
+    glm::dmat4 model{1.0};
+    int material = 0;  // what it is drawn with: the mesh's, or a `mesh ... material` override
     std::optional<ShapeDesc> shape;
 };
 
-// An OBJ model as parsed, in object space: one Mesh per material group (Listing 9), whose
-// `material` indexes Scene::materials. Parsed once per resolved path however many `mesh` lines
-// name it (scene/obj_loader.h).
+// An OBJ model as parsed: its material groups are Scene::meshes[first_mesh, first_mesh +
+// mesh_count), in object space. Parsed once per resolved path however many `mesh` lines name it
+// (scene/obj_loader.h).
 struct MeshModel {
     std::string path;  // as resolved
-    std::vector<Mesh> groups;
+    size_t first_mesh = 0, mesh_count = 0;
     size_t triangles = 0;
 };
 
-// One `mesh` line: its model, transform and material override.
+// One `mesh` line: its model, transform and material override; it draws
+// Scene::objects[first_object, first_object + object_count), one per group.
 // model_matrix() = translate(at) * rotate_y(rotate_y_deg) * scale(scale), in double.
-// Phase 1 of issue 11: each instance is also baked to world space on the CPU into
-// Scene::meshes[first_mesh, first_mesh + mesh_count) (one per group), because every renderer
-// reads world-space Scene::meshes today. Phase 2 uploads each model once in object space and
-// draws every instance with its model matrix, composed camera-relative in double.
 struct MeshInstance {
     int model = -1;  // index into Scene::models
     double scale = 1, rotate_y_deg = 0;
     glm::dvec3 at{0};
     int material = -1;  // `material NAME`: every group drawn with it; -1: the MTL's
-    size_t first_mesh = 0, mesh_count = 0;
+    size_t first_object = 0, object_count = 0;
     int line = 0;  // in the scene file
     glm::dmat4 model_matrix() const;
 };
@@ -114,13 +127,22 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Image> textures;
     std::vector<std::string> texture_paths;  // parallel to textures, as resolved
-    std::vector<Mesh> meshes;
+    std::vector<Mesh> meshes;     // geometry, object space, each uploaded once
+    std::vector<Object> objects;  // what is drawn: a mesh with its transform
     std::vector<Light> lights;
     bool post_bloom = false, post_aa = false;  // `post bloom aa` directive
     std::vector<MeshModel> models;         // `mesh` lines' OBJ models, object space
     std::vector<MeshInstance> instances;   // one per `mesh` line
     std::vector<std::string> warnings;     // statements the loaders read and ignored
+
+    // Appends `mesh` and one object drawing it with `model`; returns the object's index.
+    size_t add(Mesh mesh, const glm::dmat4& model = glm::dmat4(1.0), std::optional<ShapeDesc> shape = {});
+    size_t triangle_count() const;  // over objects: an instanced mesh counts once per object
 };
+
+// view * model in double, rounded to float once: the modelview matrix a renderer loads for an
+// object (camera-relative, so far-from-origin scenes keep their precision).
+glm::mat4 camera_relative(const glm::dmat4& view, const glm::dmat4& model);
 
 // Parses a scene file (format in README.md). Throws dsr::Error whose message is
 // "FILE:LINE: expected ..., got ..." for any mistake; textures are loaded here.
@@ -130,9 +152,14 @@ Scene load_scene(const std::string& path);
 // warnings are only collected.
 Scene parse_scene(const std::string& path, const std::string& text);
 
-// Shapes of the scene format, in world space, with normals, uvs and tangent frames.
-Mesh make_plane(float size, glm::vec3 at, int material);       // XZ square, normal +Y, uv 0..1
-Mesh make_box(glm::vec3 size, glm::vec3 at, int material);     // axis-aligned, uv 0..1 per face
-Mesh make_sphere(float radius, glm::vec3 at, int material, int slices = 48, int stacks = 24);
+// Shapes of the scene format in object space, centred on the origin, with normals, uvs and
+// tangent frames.
+Mesh make_plane(float size, int material);       // XZ square, normal +Y, uv 0..1
+Mesh make_box(glm::vec3 size, int material);     // axis-aligned, uv 0..1 per face
+Mesh make_sphere(float radius, int material, int slices = 48, int stacks = 24);
+// The same added to a scene as an object at `at` (model = translate(at)) with its exact shape.
+size_t add_plane(Scene& scene, float size, glm::vec3 at, int material);
+size_t add_box(Scene& scene, glm::vec3 size, glm::vec3 at, int material);
+size_t add_sphere(Scene& scene, float radius, glm::vec3 at, int material, int slices = 48, int stacks = 24);
 
 }  // namespace dsr

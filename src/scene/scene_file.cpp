@@ -294,9 +294,9 @@ private:
             }
         }
         line.require(keys, seen);
-        if (kind == "plane") scene_.meshes.push_back(make_plane(size.x, at, material));
-        else if (kind == "box") scene_.meshes.push_back(make_box(size, at, material));
-        else scene_.meshes.push_back(make_sphere(size.x, at, material));
+        if (kind == "plane") add_plane(scene_, size.x, at, material);
+        else if (kind == "box") add_box(scene_, size, at, material);
+        else add_sphere(scene_, size.x, at, material);
     }
 
     // mesh FILE.obj [scale S] [at X Y Z] [rotate_y DEGREES] [material NAME]
@@ -347,38 +347,49 @@ private:
             MeshModel model;
             model.path = resolved;
             model.triangles = obj.triangles;
-            model.groups = std::move(obj.groups);
-            for (Mesh& g : model.groups) g.material += base;
+            model.first_mesh = scene_.meshes.size();
+            model.mesh_count = obj.groups.size();
+            for (Mesh& g : obj.groups) {
+                g.material += base;
+                scene_.meshes.push_back(std::move(g));
+            }
             for (std::string& w : obj.warnings) scene_.warnings.push_back(std::move(w));
             scene_.models.push_back(std::move(model));
             cached = model_index_.emplace(resolved, int(scene_.models.size() - 1)).first;
         }
         inst.model = cached->second;
-        // Phase 1: bake the instance to world space (renderers read Scene::meshes); phase 2
-        // draws the object-space model with model_matrix() instead.
+        // The model stays in object space, uploaded once; each instance is one object per group
+        // drawn with model_matrix() (composed with the view in double by the renderers).
         const glm::dmat4 m = inst.model_matrix();
-        const glm::dmat3 r = glm::dmat3(m) / inst.scale;  // rotation only: the scale is uniform
-        inst.first_mesh = scene_.meshes.size();
-        for (const Mesh& g : scene_.models[size_t(inst.model)].groups) {
-            Mesh w;
-            w.material = inst.material >= 0 ? inst.material : g.material;
-            w.indices = g.indices;
-            w.vertices.reserve(g.vertices.size());
-            for (const Vertex& v : g.vertices) {
-                Vertex o = v;
-                const glm::dvec3 pos = glm::dvec3(m * glm::dvec4(glm::dvec3(v.pos), 1.0));
-                o.pos = glm::vec3(pos);
-                if (!std::isfinite(o.pos.x) || !std::isfinite(o.pos.y) || !std::isfinite(o.pos.z))
-                    line.fail("expected scale and at that keep '" + file + "' within float range, got a vertex at " +
-                              fmt(float(pos.x)) + " " + fmt(float(pos.y)) + " " + fmt(float(pos.z)));
-                o.normal = glm::vec3(r * glm::dvec3(v.normal));
-                o.tangent = glm::vec3(r * glm::dvec3(v.tangent));
-                o.binormal = glm::vec3(r * glm::dvec3(v.binormal));
-                w.vertices.push_back(o);
+        const MeshModel& model = scene_.models[size_t(inst.model)];
+        // Every vertex must stay finite in world space (the analytic reference and the bounds
+        // the renderers cull with are world-space): checked on the model's bounding box corners.
+        for (size_t g = model.first_mesh; g < model.first_mesh + model.mesh_count; ++g) {
+            glm::vec3 lo(0), hi(0);
+            bool first = true;
+            for (const Vertex& v : scene_.meshes[g].vertices) {
+                lo = first ? v.pos : glm::min(lo, v.pos);
+                hi = first ? v.pos : glm::max(hi, v.pos);
+                first = false;
             }
-            scene_.meshes.push_back(std::move(w));
+            for (int c = 0; c < 8; ++c) {
+                const glm::dvec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+                const glm::dvec3 pos = glm::dvec3(m * glm::dvec4(corner, 1.0));
+                const glm::vec3 f(pos);
+                if (!std::isfinite(f.x) || !std::isfinite(f.y) || !std::isfinite(f.z))
+                    line.fail("expected scale and at that keep '" + file + "' within float range, got a vertex at " +
+                              fmt(f.x) + " " + fmt(f.y) + " " + fmt(f.z));
+            }
         }
-        inst.mesh_count = scene_.meshes.size() - inst.first_mesh;
+        inst.first_object = scene_.objects.size();
+        for (size_t g = model.first_mesh; g < model.first_mesh + model.mesh_count; ++g) {
+            Object o;
+            o.mesh = g;
+            o.model = m;
+            o.material = inst.material >= 0 ? inst.material : scene_.meshes[g].material;
+            scene_.objects.push_back(o);
+        }
+        inst.object_count = scene_.objects.size() - inst.first_object;
         scene_.instances.push_back(inst);
     }
 

@@ -1,4 +1,4 @@
-// The scene format's shapes, built in world space with the tangent frames the material pass
+// The scene format's shapes, built in object space (centred on the origin) with the tangent frames the material pass
 // needs (Listing 10): tangent = direction of +u, binormal = direction of +v, and
 // cross(tangent, binormal) = normal everywhere, so a tangent-space normal map reads the same
 // on every face. The plane's and box's frames come from compute_tangents (scene/tangents.h),
@@ -34,17 +34,16 @@ void add_quad(Mesh& m, glm::vec3 centre, glm::vec3 n, glm::vec3 t, glm::vec3 b, 
 
 }  // namespace
 
-Mesh make_plane(float size, glm::vec3 at, int material) {
+Mesh make_plane(float size, int material) {
     Mesh m;
     m.material = material;
     // u along +X, v along -Z: cross(+X, -Z) = +Y.
-    add_quad(m, at, {0, 1, 0}, {1, 0, 0}, {0, 0, -1}, size / 2, size / 2);
+    add_quad(m, glm::vec3(0), {0, 1, 0}, {1, 0, 0}, {0, 0, -1}, size / 2, size / 2);
     compute_tangents(m);
-    m.shape = ShapeDesc{ShapeDesc::Kind::plane, at, {size, 0, size}, 0};
     return m;
 }
 
-Mesh make_box(glm::vec3 size, glm::vec3 at, int material) {
+Mesh make_box(glm::vec3 size, int material) {
     Mesh m;
     m.material = material;
     const glm::vec3 h = size / 2.0f;
@@ -59,13 +58,12 @@ Mesh make_box(glm::vec3 size, glm::vec3 at, int material) {
         {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, h.z, h.x, h.y},    // +Z
         {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}, h.z, h.x, h.y},  // -Z
     };
-    for (const Face& f : faces) add_quad(m, at + f.half_n * f.n, f.n, f.t, f.b, f.half_t, f.half_b);
+    for (const Face& f : faces) add_quad(m, f.half_n * f.n, f.n, f.t, f.b, f.half_t, f.half_b);
     compute_tangents(m);
-    m.shape = ShapeDesc{ShapeDesc::Kind::box, at, size, 0};
     return m;
 }
 
-Mesh make_sphere(float radius, glm::vec3 at, int material, int slices, int stacks) {
+Mesh make_sphere(float radius, int material, int slices, int stacks) {
     if (slices < 3 || stacks < 2) throw Error("make_sphere: need slices >= 3 and stacks >= 2");
     Mesh m;
     m.material = material;
@@ -86,7 +84,7 @@ Mesh make_sphere(float radius, glm::vec3 at, int material, int slices, int stack
             vx.normal = glm::vec3(sin_t * cos_p, -cos_t, -sin_t * sin_p);
             if (j == 0) vx.normal = {0, -1, 0};
             if (j == stacks) vx.normal = {0, 1, 0};
-            vx.pos = at + radius * vx.normal;
+            vx.pos = radius * vx.normal;
             vx.uv = {u, v};
             // dP/du / |dP/du| is the azimuthal direction, which also stays defined at the poles.
             // The sphere keeps this exact frame of its parametrisation rather than
@@ -107,8 +105,46 @@ Mesh make_sphere(float radius, glm::vec3 at, int material, int slices, int stack
             if (j != stacks - 1) for (uint32_t k : {a, c, d}) m.indices.push_back(k);
         }
     }
-    m.shape = ShapeDesc{ShapeDesc::Kind::sphere, at, glm::vec3(2 * radius), radius};
     return m;
 }
+
+static glm::dmat4 translation(glm::vec3 at) {
+    glm::dmat4 t(1.0);
+    t[3] = glm::dvec4(glm::dvec3(at), 1.0);
+    return t;
+}
+
+size_t add_plane(Scene& scene, float size, glm::vec3 at, int material) {
+    return scene.add(make_plane(size, material), translation(at),
+                     ShapeDesc{ShapeDesc::Kind::plane, at, {size, 0, size}, 0});
+}
+
+size_t add_box(Scene& scene, glm::vec3 size, glm::vec3 at, int material) {
+    return scene.add(make_box(size, material), translation(at), ShapeDesc{ShapeDesc::Kind::box, at, size, 0});
+}
+
+size_t add_sphere(Scene& scene, float radius, glm::vec3 at, int material, int slices, int stacks) {
+    return scene.add(make_sphere(radius, material, slices, stacks), translation(at),
+                     ShapeDesc{ShapeDesc::Kind::sphere, at, glm::vec3(2 * radius), radius});
+}
+
+size_t Scene::add(Mesh mesh, const glm::dmat4& model, std::optional<ShapeDesc> shape) {
+    Object o;
+    o.mesh = meshes.size();
+    o.model = model;
+    o.material = mesh.material;
+    o.shape = shape;
+    meshes.push_back(std::move(mesh));
+    objects.push_back(o);
+    return objects.size() - 1;
+}
+
+size_t Scene::triangle_count() const {
+    size_t n = 0;
+    for (const Object& o : objects) n += meshes.at(o.mesh).indices.size() / 3;
+    return n;
+}
+
+glm::mat4 camera_relative(const glm::dmat4& view, const glm::dmat4& model) { return glm::mat4(view * model); }
 
 }  // namespace dsr

@@ -18,6 +18,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             for (uint32_t i : m.indices)
                 if (i >= m.vertices.size()) __builtin_trap();
         }
+        for (const dsr::Object& o : s.objects)
+            if (o.mesh >= s.meshes.size() || o.material < 0 || o.material >= int(s.materials.size())) __builtin_trap();
     } catch (const dsr::Error&) {
     }
     return 0;
