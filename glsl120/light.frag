@@ -20,12 +20,20 @@ uniform vec4 lightspot;          // (cos of the soft edge's inner angle, exponen
 uniform vec4 lightatt;           // (KC, KL, KQ, law): lighting.glsl
 uniform vec2 planes;             // §3.4.3: (-f/(f-n), -f*n/(f-n))
 uniform vec3 zrange;             // (near, far, log2(far/near)) for the linear and log encodings
+uniform vec2 uv_scale;           // VOLUME: G-buffer texture coordinates per window pixel
+uniform vec4 ray_map;            // VOLUME: view ray (x, y) = gl_FragCoord.xy * ray_map.xy + ray_map.zw, z = -1
 
 varying vec2 texcoord;
 varying vec3 vpos;
 
 void main()
 {
+#ifdef VOLUME
+    // The pixel centre's texture coordinates and view ray, as the quad's interpolation gives them
+    // (the same affine map of window coordinates, so both geometries reconstruct the same point).
+    vec2 texcoord = gl_FragCoord.xy * uv_scale;
+    vec3 vpos = vec3(gl_FragCoord.xy * ray_map.xy + ray_map.zw, -1.0);
+#endif
     vec3 pos;
     pos.z = surface_eye_z(depth_map, texcoord, planes, zrange);  // pos.z = -planes.y/(planes.x+depth)
 #ifdef LIGHT_DEPTH_TEST

@@ -239,7 +239,8 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
             // light depth test are conservative), so the ideal count exceeds what was shaded only by
             // the pixels where exact surface points (the analytic trace's shapes, or depth decoded in
             // double) and the shader's float reconstruction fall on different sides of a sphere.
-            if (row["depth"] == "texture") {
+            // (tiles: one fragment per pixel and group of lights, not per light: fewer.)
+            if (row["depth"] == "texture" && row["light_geometry"] != "tiles") {
                 EXPECT_GE(frags, ideal - ideal / 100) << row.dump();
             }
             // Every fragment that passed entered the shader first; the floor is measured on every row.
@@ -314,7 +315,8 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
     packed.depth = "packed", packed.encoding = "corrected";
     rows.insert(rows.begin(), packed);
     const std::vector<std::string> g = bench::goals(rows, "default", 3);
-    ASSERT_EQ(g.size(), 7u);
+    ASSERT_EQ(g.size(), 7u + 5u);  // + the light geometries' five, none measured here
+    for (size_t i = 7; i < g.size(); ++i) EXPECT_NE(g[i].find("not measured in this run"), std::string::npos) << g[i];
     EXPECT_EQ(g[0], "light_invocations <= 1.25 x ideal, default with 3 lights: 120 / 100 = 1.200 -> met");
     EXPECT_EQ(g[1], "  (information, not a goal: light_fragments / ideal = 100 / 100 = 1.000; it holds by "
                     "construction, since the light sphere test discards every fragment whose surface point lies "
@@ -334,13 +336,44 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
     rows.push_back(with(deferred_row("default", 256, 3.75, 100, 100), 100, 1.0));
     rows.erase(rows.begin() + 6);  // the 3.0 ms row: the 3.75 ms one is judged
     const std::vector<std::string> h = bench::goals(rows, "default", 3);
-    ASSERT_EQ(h.size(), 8u);
+    ASSERT_EQ(h.size(), 8u + 5u);
     EXPECT_EQ(h[4], "light_invocations <= 1.25 x ideal, default with 1024 lights: 126 / 100 = 1.260 -> NOT met");
     EXPECT_EQ(h[6], "floor_ratio <= 1.3, default with 1024 lights: 1.40 ms / 1.00 ms = 1.40 -> NOT met");
     EXPECT_EQ(h[7], "deferred >= 10x faster than the faster forward multi-pass at 256 lights, default: "
                     "forward-multi rgba8 30.00 ms / 3.75 ms = 8.0x -> NOT met");
-    EXPECT_EQ(bench::goals({}, "default", 3).back(),
+    const std::vector<std::string> none = bench::goals({}, "default", 3);
+    ASSERT_GE(none.size(), 6u);
+    EXPECT_EQ(none[none.size() - 6],  // before the light geometries' five
               "deferred >= 10x faster than the faster forward multi-pass at 256 lights: not measured in this run");
+}
+
+// Issue 12's goals on hand-made rows: stencil invocations against the ideal, tiles against quad on
+// 1024-overlap, the best deferred row against forward single-pass on 32-large, images against quad.
+TEST(Bench, GeometryGoalsJudgeTheirRows) {
+    auto geo = [](bench::Row r, const char* g, long long inv, double lsb_vs_quad) {
+        r.light_geometry = g;
+        r.light_invocations = inv;
+        ImageDiff d;
+        d.max_abs = lsb_vs_quad / 255.0;
+        r.err_quad = d;
+        return r;
+    };
+    std::vector<bench::Row> rows = {
+        geo(deferred_row("default", 3, 1.0, 100, 100), "quad", 300, 0),
+        geo(deferred_row("default", 3, 1.0, 100, 100), "stencil", 110, 1),    // 1.10 x ideal: met
+        geo(deferred_row("default", 1024, 9.0, 100, 100), "stencil", 200, 2),  // 2.00 x: NOT met; 2 LSB
+        geo(deferred_row("default-overlap", 1024, 9.0, 100, 100), "quad", 900, 0),
+        geo(deferred_row("default-overlap", 1024, 2.0, 100, 100), "tiles", 100, 0),  // 4.5x: met
+    };
+    rows[3].lights_label = rows[4].lights_label = "1024-overlap";
+    const std::vector<std::string> g = bench::geometry_goals(rows, "default", 3);
+    ASSERT_EQ(g.size(), 5u);
+    EXPECT_EQ(g[0], "stencil light_invocations <= 1.25 x ideal, default with 3 lights: 110 / 100 = 1.100 -> met");
+    EXPECT_EQ(g[1], "stencil light_invocations <= 1.25 x ideal, default with 1024 lights: 200 / 100 = 2.000 -> NOT met");
+    EXPECT_EQ(g[2], "tiles >= 3x faster than quad on 1024-overlap: 9.00 ms / 2.00 ms = 4.50x -> met");
+    EXPECT_NE(g[3].find("32-large: not measured"), std::string::npos) << g[3];
+    EXPECT_NE(g[4].find("largest 2 LSB"), std::string::npos) << g[4];
+    EXPECT_NE(g[4].find("-> NOT met"), std::string::npos) << g[4];
 }
 
 // Where the GL cannot count (no ARB_pipeline_statistics_query, no occlusion queries), the rows say
@@ -421,11 +454,12 @@ TEST(Bench, FastestRowIsTheFasterForm) {
 TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     const nlohmann::ordered_json f = bench::row_json(forward_row("default", 3, "forward-single", 2.0));
     const std::vector<std::string> keys = {
-        "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "scissor", "skips_off", "lights", "size",
-        "frames", "ms_median", "ms_min", "ms_max", "light_fragments", "ideal_fragments", "fragments_ratio",
-        "scissor_pixels", "lights_drawn", "passes", "max_lsb", "mean_lsb", "psnr_db", "max_lsb_analytic",
-        "mean_lsb_analytic", "psnr_db_analytic", "light_invocations", "invocations_ratio", "ideal_source",
-        "floor_fill_ms", "floor_light_ns", "floor_post_ms", "floor_ms", "floor_ratio"};
+        "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "light_geometry", "scissor", "skips_off",
+        "lights", "lights_label", "size", "frames", "ms_median", "ms_min", "ms_max", "light_fragments",
+        "ideal_fragments", "fragments_ratio", "scissor_pixels", "lights_drawn", "passes", "max_lsb", "mean_lsb",
+        "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic", "light_invocations",
+        "invocations_ratio", "ideal_source", "floor_fill_ms", "floor_light_ns", "floor_post_ms", "floor_ms",
+        "floor_ratio", "light_passes", "depth_copy_ms", "max_lsb_vs_quad"};
     std::vector<std::string> got;
     for (auto it = f.begin(); it != f.end(); ++it) got.push_back(it.key());
     EXPECT_EQ(got, keys);

@@ -26,9 +26,11 @@ json row_json(const Row& r) {
     j["depth"] = r.depth ? json(*r.depth) : json(nullptr);
     j["encoding"] = r.encoding ? json(*r.encoding) : json(nullptr);
     j["gbuffer"] = r.gbuffer ? json(*r.gbuffer) : json(nullptr);
+    j["light_geometry"] = r.light_geometry ? json(*r.light_geometry) : json(nullptr);
     j["scissor"] = r.scissor;
     j["skips_off"] = r.skips_off;
     j["lights"] = r.lights;
+    j["lights_label"] = r.lights_label;
     j["size"] = {r.w, r.h};
     j["frames"] = r.frames;
     j["ms_median"] = r.ms_median;
@@ -60,6 +62,9 @@ json row_json(const Row& r) {
     j["floor_post_ms"] = opt(r.floor_post_ms);
     j["floor_ms"] = opt(r.floor_ms);
     j["floor_ratio"] = opt(r.floor_ratio);
+    j["light_passes"] = opt(r.light_passes);
+    j["depth_copy_ms"] = opt(r.depth_copy_ms);
+    j["max_lsb_vs_quad"] = r.err_quad ? json(r.err_quad->max_lsb()) : json(nullptr);
     return j;
 }
 
@@ -154,7 +159,8 @@ const Row* find_row(const std::vector<Row>& rows, const std::string& scene, int 
     for (const Row& r : rows) {
         if (r.scene != scene || r.lights != lights || r.renderer != renderer) continue;
         if (renderer == "deferred" && default_config &&
-            !(r.depth == std::string("texture") && r.scissor && r.skips_off.empty() && r.gbuffer == std::string("rgba8")))
+            !(r.depth == std::string("texture") && r.scissor && r.skips_off.empty() && r.gbuffer == std::string("rgba8") &&
+              (!r.light_geometry || *r.light_geometry == "quad")))
             continue;
         return &r;
     }
@@ -239,6 +245,85 @@ std::vector<std::string> goals(const std::vector<Row>& rows, const std::string& 
     } else {
         out.push_back("deferred >= 10x faster than the faster forward multi-pass at 256 lights: not measured in this run");
     }
+    const std::vector<std::string> g = geometry_goals(rows, scene, own_lights);
+    out.insert(out.end(), g.begin(), g.end());
+    return out;
+}
+
+const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& scene, int lights,
+                             const std::string& geometry) {
+    for (const Row& r : rows)
+        if (r.scene == scene && r.lights == lights && r.renderer == "deferred" && r.depth == std::string("texture") &&
+            r.scissor && r.skips_off.empty() && r.gbuffer == std::string("rgba8") &&
+            r.light_geometry.value_or("quad") == geometry)
+            return &r;
+    return nullptr;
+}
+
+// Issue 12's goals for the light geometries.
+std::vector<std::string> geometry_goals(const std::vector<Row>& rows, const std::string& scene, int own_lights) {
+    std::vector<std::string> out;
+    for (int n : {own_lights, 1024}) {
+        const std::string where = scene + " with " + std::to_string(n) + " lights";
+        const Row* s = find_geometry_row(rows, scene, n, "stencil");
+        if (!s || !s->ideal_fragments || *s->ideal_fragments <= 0 || !s->light_invocations)
+            out.push_back("stencil light_invocations <= 1.25 x ideal, " + where + ": not measured in this run");
+        else
+            out.push_back("stencil light_invocations <= 1.25 x ideal, " + where + ": " +
+                          over(*s->light_invocations, *s->ideal_fragments) + " -> " +
+                          (double(*s->light_invocations) <= 1.25 * double(*s->ideal_fragments) ? "met" : "NOT met"));
+    }
+    // Scenes the light generators name by their --lights entry (bench_scenes.h).
+    const Row* tq = nullptr;
+    const Row* tt = nullptr;
+    for (const Row& r : rows)
+        if (r.scene.find("1024-overlap") != std::string::npos || r.lights_label == "1024-overlap") {
+            if (!tq) tq = find_geometry_row(rows, r.scene, r.lights, "quad");
+            if (!tt) tt = find_geometry_row(rows, r.scene, r.lights, "tiles");
+        }
+    if (tq && tt)
+        out.push_back("tiles >= 3x faster than quad on 1024-overlap: " + format_number("%.2f", tq->ms_median) +
+                      " ms / " + format_number("%.2f", tt->ms_median) + " ms = " +
+                      format_number("%.2f", tq->ms_median / tt->ms_median) + "x -> " +
+                      (tq->ms_median >= 3 * tt->ms_median ? "met" : "NOT met"));
+    else
+        out.push_back("tiles >= 3x faster than quad on 1024-overlap: not measured in this run");
+    const Row* best = nullptr;
+    const Row* fwd = nullptr;
+    for (const Row& r : rows)
+        if (r.lights_label == "32-large") {
+            if (r.renderer == "deferred" && r.skips_off.empty() && r.gbuffer == std::string("rgba8") &&
+                (!best || r.ms_median < best->ms_median))
+                best = &r;
+            if (r.renderer == "forward-single" && (!fwd || r.ms_median < fwd->ms_median)) fwd = &r;
+        }
+    if (best && fwd)
+        out.push_back("best deferred >= 1.5x faster than forward single-pass on 32-large: " + config_text(*fwd) + " " +
+                      format_number("%.2f", fwd->ms_median) + " ms / " + config_text(*best) + " " +
+                      format_number("%.2f", best->ms_median) + " ms = " +
+                      format_number("%.2f", fwd->ms_median / best->ms_median) + "x -> " +
+                      (fwd->ms_median >= 1.5 * best->ms_median ? "met" : "NOT met"));
+    else
+        out.push_back("best deferred >= 1.5x faster than forward single-pass on 32-large: not measured in this run");
+    // Every geometry's image against quad's, every scene variant of the run.
+    double worst = -1;
+    std::string worst_row;
+    int compared = 0;
+    for (const Row& r : rows)
+        if (r.renderer == "deferred" && r.err_quad && r.light_geometry &&
+            *r.light_geometry != "quad") {
+            ++compared;
+            if (r.err_quad->max_lsb() > worst) {
+                worst = r.err_quad->max_lsb();
+                worst_row = config_text(r) + ", " + r.scene + " at " + std::to_string(r.lights) + " lights";
+            }
+        }
+    if (compared == 0)
+        out.push_back("every light geometry within 1 LSB of quad's image: not measured in this run");
+    else
+        out.push_back("every light geometry within 1 LSB of quad's image: largest " +
+                      format_number("%.0f", worst) + " LSB (" + worst_row + ", " + std::to_string(compared) +
+                      " rows) -> " + (worst <= 1 ? "met" : "NOT met"));
     return out;
 }
 
@@ -282,6 +367,9 @@ json to_json(const Summary& s) {
     j["gl_version"] = s.gl_version;
     j["config"] = {{"quick", cfg.quick}, {"size", {cfg.w, cfg.h}}, {"frames", cfg.frames}, {"warmup", cfg.warmup},
                    {"lights", cfg.lights_text}, {"scenes", s.scenes}};
+    std::vector<std::string> geometries;
+    for (LightGeometry g : cfg.geometries) geometries.push_back(light_geometry_name(g));
+    j["config"]["light_geometries"] = geometries;
     j["seconds"] = s.seconds;
     j["goals"] = s.goals;
     j["notes"] = s.notes;
@@ -302,6 +390,43 @@ std::string text_report(const Summary& s) {
     for (auto& g : s.goals) o << "  " << g << "\n";
     for (auto& n : s.notes) o << "note: " << n << "\n";
     return o.str();
+}
+
+std::string light_geometry_markdown(const std::vector<Row>& rows) {
+    std::ostringstream md;
+    md << "## Light geometries\n\n"
+          "How each light reaches its pixels (`--light-geometry`, docs/light_geometry.md), each on the default "
+          "configuration (depth texture, scissor, every skip). *invocations*: fragments that entered the light "
+          "shader (ARB_pipeline_statistics_query; llvmpipe counts 16 per 4x4 block each triangle touches, before "
+          "its depth and stencil tests, so its counts favour the two-triangle quads); *ideal*: pixel-light pairs "
+          "whose surface point is inside the light's volume; *frags*: samples that passed (tiles: per pixel and "
+          "group of lights, not per light); *copy ms*: the depth hand-off.\n\n"
+          "- `quad`: the tutorial's scissored quad per light (§3.4.2): every pixel of the rectangle runs the shader.\n"
+          "- `volume`: the back faces of the light's volume mesh, depth test GL_GREATER against the scene depth "
+          "handed to P-buffer 0; front faces culled, so the camera may be inside.\n"
+          "- `stencil`: per light a two-sided stencil pass over the mesh (depth-fail counting), then the light "
+          "pass only where the stencil is non-zero: the surface points inside the volume.\n"
+          "- `tiles`: screen tiles; each tile's lights from their scissor rectangles, up to N per pass in one "
+          "shader, so the G-buffer is read and P-buffer 0 blended once per N lights.\n\n"
+          "| scene | lights | geometry | ms med | invocations | ideal | inv/ideal | frags | passes | copy ms | "
+          "max LSB vs quad |\n| --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+    auto ll = [](const std::optional<long long>& v) { return v ? std::to_string(*v) : std::string("-"); };
+    for (const Row& r : rows) {
+        if (r.renderer != "deferred" || !r.light_geometry || r.depth != std::string("texture") || !r.scissor ||
+            !r.skips_off.empty() || r.gbuffer != std::string("rgba8"))
+            continue;
+        md << "| " << r.scene << " | " << r.lights_label << " (" << r.lights << ") | " << *r.light_geometry << " | "
+           << format_number("%.2f", r.ms_median) << " | " << ll(r.light_invocations) << " | " << ll(r.ideal_fragments)
+           << " | "
+           << (r.light_invocations && r.ideal_fragments && *r.ideal_fragments > 0
+                   ? format_number("%.2f", double(*r.light_invocations) / double(*r.ideal_fragments))
+                   : std::string("-"))
+           << " | " << ll(r.light_fragments) << " | " << (r.light_passes ? std::to_string(*r.light_passes) : "-")
+           << " | " << (r.depth_copy_ms ? format_number("%.2f", *r.depth_copy_ms) : "-") << " | "
+           << (r.err_quad ? format_number("%.0f", r.err_quad->max_lsb()) : "-") << " |\n";
+    }
+    md << "\n";
+    return md.str();
 }
 
 std::string markdown_report(const Summary& s, const std::string& plot_name) {
@@ -349,6 +474,7 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
           "floor leaves out what a deferred frame does beyond these (the ambient pass, the copy to the main "
           "buffer, per-light set-up), so it is a lower bound, not a target any renderer is known to reach. The "
           "parts of each row are in the JSON (`floor_fill_ms`, `floor_light_ns`, `floor_post_ms`).\n\n"
+       << light_geometry_markdown(s.rows)
        << "## Table\n\n"
        << "- *configuration*: `deferred DEPTH[/ENCODING] sc|-` (scissor on or off), `half` for half-float "
           "G-buffer targets (RGBA8 otherwise, as the tutorial), and `no-SKIP` for a skip turned off (all "

@@ -42,6 +42,14 @@ const Row* fastest_row(const std::vector<Row>& rows, const std::string& scene, i
 // information about the one before (light_fragments / ideal, which the sphere test makes hold
 // by construction, is printed as such, never as "met").
 std::vector<std::string> goals(const std::vector<Row>& rows, const std::string& scene, int own_lights);
+// The light geometries' goals (issue 12), which goals() appends: stencil light_invocations <= 1.25 x
+// ideal at the own count and 1024; tiles >= 3x faster than quad on 1024-overlap; the best deferred
+// row >= 1.5x faster than forward single-pass on 32-large; every geometry's image within 1 LSB of
+// quad's. A goal whose rows are missing says "not measured in this run".
+std::vector<std::string> geometry_goals(const std::vector<Row>& rows, const std::string& scene, int own_lights);
+// The default configuration (depth texture, scissor, every skip, RGBA8) with this light geometry.
+const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& scene, int lights,
+                             const std::string& geometry);
 
 // Run time against error: one panel per scene, a series per renderer kind.
 Image plot_rows(const std::vector<Row>& rows, const std::vector<std::string>& scenes);
@@ -62,6 +70,9 @@ nlohmann::ordered_json to_json(const Summary& s);
 
 // What `dsr bench` prints on stdout: the header lines, the table, the goals and the notes.
 std::string text_report(const Summary& s);
+
+// The report's "Light geometries" section: what each geometry is, and one line per geometry row.
+std::string light_geometry_markdown(const std::vector<Row>& rows);
 
 // docs/benchmarks.md; `plot_name` is the plot's file name beside it, linked relatively.
 std::string markdown_report(const Summary& s, const std::string& plot_name);

@@ -33,6 +33,7 @@ struct Variant {
     std::string name;
     Scene scene;
     int sweep_index = 0;
+    std::string lights_label;
     std::optional<AnalyticTrace> trace;
     std::vector<uint8_t> interior;
     std::optional<long long> ideal;
@@ -43,7 +44,7 @@ struct RowRun {
     Row row;
     std::unique_ptr<DeferredShader> ds;
     std::unique_ptr<ForwardRenderer> fr;
-    std::vector<double> ms;
+    std::vector<double> ms, depth_copy_ms;
     FrameStats last;
     ForwardStats last_forward;
     Image image;
@@ -51,6 +52,7 @@ struct RowRun {
     double frame(const Scene& s, int w, int h) {
         if (ds) {
             last = ds->render(s, w, h);
+            depth_copy_ms.push_back(last.ms.depth_copy);
             return last.ms.frame;
         }
         last_forward = fr->render(s);
@@ -65,13 +67,16 @@ Row base_row(const Config& cfg, const Variant& v, const std::string& renderer) {
     r.lights = int(v.scene.lights.size());
     r.w = cfg.w, r.h = cfg.h;
     r.sweep_index = v.sweep_index;
+    r.lights_label = v.lights_label;
     return r;
 }
 
 std::unique_ptr<RowRun> deferred(const Config& cfg, const Caps& caps, const std::string& shaders, const Variant& v,
                                  DepthPath depth, DepthEncoding enc, bool scissor, const SkipOptions& skip,
-                                 const std::vector<std::string>& skips_off, bool gbuffer_half) {
+                                 const std::vector<std::string>& skips_off, bool gbuffer_half,
+                                 LightGeometry geometry) {
     ShaderOptions o;
+    o.light_geometry = geometry;
     o.depth = depth;
     o.encoding = enc;
     o.scissor = scissor;
@@ -85,6 +90,7 @@ std::unique_ptr<RowRun> deferred(const Config& cfg, const Caps& caps, const std:
     r.depth = depth == DepthPath::texture ? "texture" : "packed";
     if (depth == DepthPath::packed) r.encoding = encoding_name(enc);
     r.gbuffer = gbuffer_half ? "half" : "rgba8";
+    r.light_geometry = light_geometry_name(run->ds->paths().light_geometry);
     r.scissor = scissor;
     r.skips_off = skips_off;
     return run;
@@ -133,6 +139,7 @@ std::string config_text(const Row& r) {
     s += r.scissor ? " sc" : " -";
     if (r.gbuffer == std::string("half")) s += " half";
     for (auto& k : r.skips_off) s += " no-" + k;
+    if (r.light_geometry && *r.light_geometry != "quad") s += " " + *r.light_geometry;
     return s;
 }
 
@@ -180,6 +187,10 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
     Scene base = load_scene(path);
     v.scene = bench_scene(base, spec);
     v.sweep_index = sweep_index;
+    v.lights_label = light_count < 0 ? "own"
+                     : std::to_string(light_count) + (spec.set == LightSet::overlap ? "-overlap"
+                                                      : spec.set == LightSet::large ? "-large"
+                                                                                    : "");
     if (analytic_capable(v.scene)) {
         double t0 = now_ms();
         v.trace = analytic_trace(v.scene, cfg_.w, cfg_.h);
@@ -191,8 +202,9 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
     // Every renderer of the variant is built (shaders compiled) before any frame is timed.
     std::vector<std::unique_ptr<RowRun>> runs;
     auto add_deferred = [&](DepthPath d, DepthEncoding e, bool sc, const SkipOptions& skip,
-                            const std::vector<std::string>& skips_off, bool half) {
-        runs.push_back(deferred(cfg_, caps_, shaders_, v, d, e, sc, skip, skips_off, half));
+                            const std::vector<std::string>& skips_off, bool half,
+                            LightGeometry g = LightGeometry::quad) {
+        runs.push_back(deferred(cfg_, caps_, shaders_, v, d, e, sc, skip, skips_off, half, g));
     };
     // runs[0], float single-pass: the forward reference. The RGBA8 forms are the baseline a 2005
     // user would have run; the speed goal takes the faster of each kind.
@@ -216,6 +228,9 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
     }
     for (DepthEncoding e : {DepthEncoding::literal, DepthEncoding::linear, DepthEncoding::log})
         add_deferred(DepthPath::packed, e, true, all, {}, false);
+    // Each light geometry on the default configuration (issue 12); quad's is the row above.
+    for (LightGeometry g : cfg_.geometries)
+        if (g != LightGeometry::quad) add_deferred(DepthPath::texture, DepthEncoding::corrected, true, all, {}, false, g);
     // Higher-precision G-buffer targets where the GL has them.
     if (caps_.texture_float && caps_.half_float) {
         for (DepthPath d : {DepthPath::texture, DepthPath::packed})
@@ -292,6 +307,13 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
     }
 
     const Image& ref = runs[0]->image;
+    const Image* quad_image = nullptr;  // the default configuration's image: every geometry against it
+    for (auto& run : runs)
+        if (run->ds && run->row.depth == std::string("texture") && run->row.scissor && run->row.skips_off.empty() &&
+            run->row.gbuffer == std::string("rgba8") && run->row.light_geometry == std::string("quad")) {
+            quad_image = &run->image;
+            break;
+        }
     for (auto& run : runs) {
         Row& r = run->row;
         r.ms_median = median(run->ms);
@@ -302,6 +324,9 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
             r.light_invocations = run->last.light_invocations;
             r.scissor_pixels = run->last.scissor_pixels;
             r.lights_drawn = run->last.lights_drawn;
+            r.light_passes = run->last.light_passes;
+            r.depth_copy_ms = median(run->depth_copy_ms);
+            if (quad_image) r.err_quad = compare_images(run->image, *quad_image, 1.0 / 255.0);
             r.ideal_fragments = v.ideal;
             r.ideal_source = ideal_source;
             auto p = parts.find(layout_of(*run->ds));

@@ -13,6 +13,7 @@
 
 #include "analysis/bench_scenes.h"
 #include "analysis/image_metrics.h"
+#include "deferred/options.h"
 #include "gl/caps.h"
 #include "scene/scene.h"
 
@@ -26,6 +27,10 @@ struct Config {
     std::vector<int> lights;  // light counts of the sweep; -1: the scene's own lights
     std::vector<LightSet> light_sets;  // parallel to lights (bench_scenes.h); missing: spread
     std::string lights_text;  // --lights as given (or its default), e.g. "own,32,256"
+    // Light geometries with rows of their own (the default configuration with each); quad's rows
+    // are always there.
+    std::vector<LightGeometry> geometries = {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil,
+                                             LightGeometry::tiles};
 };
 
 // One measured configuration. Optional fields are JSON null where they do not apply.
@@ -33,9 +38,11 @@ struct Row {
     std::string scene, renderer;            // renderer: deferred | forward-single | forward-multi
     std::optional<std::string> accum;       // forward rows: "float" (RGBA32F target) | "rgba8" (the main buffer)
     std::optional<std::string> depth, encoding, gbuffer;  // gbuffer: rgba8 | half
+    std::optional<std::string> light_geometry;  // deferred rows, as run: quad | volume | stencil | tiles
     bool scissor = false;
     std::vector<std::string> skips_off;
     int lights = 0, w = 0, h = 0, frames = 0;
+    std::string lights_label;               // the --lights entry it came from: "own", "32", "1024-overlap", ...
     int sweep_index = 0;                    // place of its light count in --lights (plot marker size)
     double ms_median = 0, ms_min = 0, ms_max = 0;
     // light_fragments: samples that passed the light passes (occlusion queries); light_invocations:
@@ -48,6 +55,9 @@ struct Row {
     std::optional<double> floor_fill_ms, floor_light_ns, floor_post_ms, floor_ms, floor_ratio;
     ImageDiff err;                          // vs the forward reference
     std::optional<ImageDiff> err_analytic;  // vs the analytic reference, interior pixels
+    std::optional<ImageDiff> err_quad;      // deferred rows: vs the default quad row's image
+    std::optional<int> light_passes;        // deferred rows: light-shader draws per frame
+    std::optional<double> depth_copy_ms;    // deferred rows: the depth hand-off's median ms (0: not run)
 };
 
 // The row's configuration as the tables print it: "forward-multi", "deferred texture sc",

@@ -42,7 +42,7 @@ bool ends_with(const std::string& s, const std::string& e) {
 
 int cmd_bench(const std::vector<std::string>& argv) {
     Args args("bench", argv);
-    std::string scene_path, json_path, report_path, lights_arg;
+    std::string scene_path, json_path, report_path, lights_arg, geometry_arg;
     std::string backend = default_context_backend();  // --context, else $DSR_CONTEXT
     int w = 0, h = 0, frames = 0;
     bool quick = false;
@@ -54,6 +54,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
         else if (a == "--size") args.size_value(a, w, h);
         else if (a == "--frames") frames = args.int_value(a, 1, 1000);
         else if (a == "--lights") lights_arg = args.value(a);
+        else if (a == "--light-geometry") geometry_arg = args.value(a);
         else if (a == "--context") backend = args.value(a);
         else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
         else if (scene_path.empty()) scene_path = a;
@@ -81,6 +82,17 @@ int cmd_bench(const std::vector<std::string>& argv) {
             cfg.light_sets.push_back(spec->set);
         }
         if (cfg.lights.empty()) args.fail("--lights: expected at least one count, got ''");
+    }
+    if (!geometry_arg.empty()) {  // --light-geometry: which geometries get rows of their own
+        cfg.geometries.clear();
+        std::stringstream ss(geometry_arg);
+        std::string item;
+        while (std::getline(ss, item, ',')) {
+            if (item != "quad" && item != "volume" && item != "stencil" && item != "tiles")
+                args.fail("--light-geometry: expected a comma-separated list of quad, volume, stencil, tiles, got '" +
+                          geometry_arg + "'");
+            cfg.geometries.push_back(light_geometry_from_name(item));
+        }
     }
     if (!json_path.empty() && !ends_with(json_path, ".json"))
         args.fail("--json: expected a file ending .json, got '" + json_path + "'");

@@ -1,5 +1,6 @@
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 #include "app/args.h"
 #include "app/commands.h"
@@ -51,6 +52,19 @@ int cmd_info(const std::vector<std::string>& argv) {
         return 0;
     }
     std::fputs(describe(paths).c_str(), stdout);
+    // What `--light-geometry stencil` and `--depth-bounds on` would get here.
+    ShaderOptions stencil = defaults;
+    stencil.light_geometry = LightGeometry::stencil;
+    const Paths sp = choose_paths(caps, stencil);
+    std::printf("  --light-geometry stencil: %s\n",
+                sp.light_geometry == LightGeometry::stencil
+                    ? (std::string("stencil, ") + stencil_faces_name(sp.stencil_faces) +
+                       (sp.stencil_faces == Paths::StencilFaces::separate       ? " faces (glStencilOpSeparate)"
+                        : sp.stencil_faces == Paths::StencilFaces::two_side_ext ? " faces (EXT_stencil_two_side)"
+                                                                                : " faces (two passes, no two-sided stencil)"))
+                          .c_str()
+                    : sp.light_geometry_note.c_str());
+    std::printf("  --depth-bounds on: %s\n", caps.depth_bounds ? "EXT_depth_bounds_test" : "refused (no EXT_depth_bounds_test)");
     const TimingCheck& t = choose_timing(caps, ctx->width(), ctx->height());
     std::printf("  timing         %s (%s", timing_name(t.source), t.reason.c_str());
     if (t.query_ms >= 0) std::printf("; same passes: %.3f ms by timer query, %.3f ms by wall clock", t.query_ms, t.wall_ms);

@@ -10,6 +10,7 @@
 #include "dsr_clock.h"
 #include "app/args.h"
 #include "app/commands.h"
+#include "analysis/frame_ideal.h"
 #include "app/files.h"
 #include "app/render_flags.h"
 #include "deferred/deferred_shader.h"
@@ -123,10 +124,23 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["light_fragments"] = frags ? nlohmann::json(*frags) : nlohmann::json(nullptr);
     j["light_invocations"] = last.light_invocations ? nlohmann::json(*last.light_invocations) : nlohmann::json(nullptr);
     j["scissor_pixels"] = last.scissor_pixels;
+    j["light_geometry"] = light_geometry_name(paths.light_geometry);  // as run: stencil may fall back to volume
+    j["light_geometry_asked"] = light_geometry_name(opts.light_geometry);
+    if (!paths.light_geometry_note.empty()) j["light_geometry_note"] = paths.light_geometry_note;
+    if (paths.light_geometry == LightGeometry::stencil) j["stencil_faces"] = stencil_faces_name(paths.stencil_faces);
+    if (paths.light_geometry == LightGeometry::tiles) j["tiles"] = {{"size", opts.tile_size}, {"lights_per_pass", opts.tile_lights}};
+    j["depth_bounds"] = paths.depth_bounds;
+    j["light_passes"] = last.light_passes;
+    j["lights_as_quads"] = last.lights_as_quads;
+    if (!stats_path.empty()) {  // reads the G-buffer back: only when asked for
+        const FrameIdeal ideal = frame_ideal_fragments(ds, scene);
+        j["ideal_fragments"] = ideal.fragments ? nlohmann::json(*ideal.fragments) : nlohmann::json(nullptr);
+        j["ideal_source"] = ideal.source;
+    }
     j["ms"] = {{"geometry", med(&StageTimes::geometry)}, {"ambient", med(&StageTimes::ambient)},
                {"lights", med(&StageTimes::lights)},     {"bloom", med(&StageTimes::bloom)},
                {"aa", med(&StageTimes::aa)},             {"final", med(&StageTimes::final)},
-               {"frame", med(&StageTimes::frame)}};
+               {"depth_copy", med(&StageTimes::depth_copy)}, {"frame", med(&StageTimes::frame)}};
     const size_t triangles = scene.triangle_count();
     struct rusage usage {};
     getrusage(RUSAGE_SELF, &usage);

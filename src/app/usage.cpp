@@ -13,8 +13,9 @@ const char* kEglDeviceOption =
 
 const char* kCapsOption =
     "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-npot,\n"
-    "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats\n"
-    "                          (added to $DSR_CAPS)\n";
+    "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats,\n"
+    "                          no-stencil, no-packed-depth-stencil, no-stencil-separate,\n"
+    "                          no-stencil-two-side, no-depth-bounds (added to $DSR_CAPS)\n";
 // The option table's flags (deferred/option_table.h): `render` and `view` take them all, and the
 // viewer's `set NAME VALUE` takes each by its name without dashes.
 const char* kRendererOptions =
@@ -41,7 +42,15 @@ const char* kRendererOptions =
     "                          what the edge factor of Equation 7 measures (default normal)\n"
     "  --aa-kernel text|listing\n"
     "                          all 8 neighbours as the text says (default) or Listing 21's 4\n"
-    "  --aa-weight W           largest anti-alias offset in pixels, 0..8 (default 1)\n";
+    "  --aa-weight W           largest anti-alias offset in pixels, 0..8 (default 1)\n"
+    "  --light-geometry quad|volume|stencil|tiles\n"
+    "                          how each light reaches its pixels: scissored quad (default, the\n"
+    "                          tutorial's), volume mesh back faces, stencil-masked volume, or\n"
+    "                          screen tiles with several lights per pass\n"
+    "  --depth-bounds on|off   quad: EXT_depth_bounds_test on each light's depth span (default off;\n"
+    "                          refused where the GL lacks it, as llvmpipe does)\n"
+    "  --tile-size N           tiles: pixels per tile side, 8..512 (default 32)\n"
+    "  --tile-lights N         tiles: lights per pass, 1..32 (default 8)\n";
 const char* kStateOptions =
     "  --gl-state-cache on|off\n"
     "                          off: every pass sets all of its GL state, so a cache bug can be\n"
@@ -59,6 +68,7 @@ std::vector<CommandUsage> make_table() {
                   "[--bloom|--no-bloom] [--bloom-scale 2|4] [--bloom-taps N] [--bloom-strength S]",
                   "[--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]",
                   "[--aa-kernel text|listing] [--aa-weight W]",
+                  "[--light-geometry quad|volume|stencil|tiles] [--depth-bounds on|off] [--tile-size N] [--tile-lights N]",
                   "[--context NAME] [--egl-device N] [--gl-state-cache on|off] [--debug-gl]"},
                  "render SCENE (default data/default.scene) with the deferred shader into one image",
                  "  SCENE                   scene file (default data/default.scene)\n"
@@ -78,7 +88,7 @@ std::vector<CommandUsage> make_table() {
                      std::string(kContextOption)});
     t.push_back({"bench",
                  {"[SCENE] [--quick] [--json FILE.json] [--report FILE.md] [--size WxH] [--frames N]",
-                  "[--lights own,32,256,1024,1024-overlap,32-large] [--context NAME]"},
+                  "[--lights own,32,256,1024,1024-overlap,32-large] [--light-geometry LIST] [--context NAME]"},
                  "depth path x scissor x skips x encodings x lights vs forward: times, fragments, error",
                  "  SCENE                   scene to measure (default: data/default.scene and\n"
                  "                          tests/data/analytic.scene)\n"
@@ -91,7 +101,9 @@ std::vector<CommandUsage> make_table() {
                  "                          N-overlap: N lights (a multiple of 8) in clusters of 8, every\n"
                  "                          lit pixel inside at least 8; N-large: 9 boxes and N lights\n"
                  "                          covering most of the screen, as LearnOpenGL's demo\n"
-                 "                          (default own,32,256,1024,1024-overlap,32-large)\n" +
+                 "                          (default own,32,256,1024,1024-overlap,32-large)\n"
+                 "  --light-geometry LIST   light geometries to measure: quad, volume, stencil, tiles\n"
+                 "                          (default all four)\n" +
                      std::string(kContextOption)});
     t.push_back({"stress",
                  {"[--quick] [--json FILE] [--report FILE.md] [--plot FILE.png] [--only TEXT]",
@@ -107,8 +119,9 @@ std::vector<CommandUsage> make_table() {
                  {"[--caps LIST] [--context NAME] [--egl-device N]"},
                  "GL vendor/renderer/version, capabilities, paths chosen",
                  "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-npot,\n"
-                 "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats\n"
-                 "                          (added to $DSR_CAPS)\n" +
+                 "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats,\n"
+                 "                          no-stencil, no-packed-depth-stencil, no-stencil-separate,\n"
+                 "                          no-stencil-two-side, no-depth-bounds (added to $DSR_CAPS)\n" +
                      std::string(kContextOption) + kEglDeviceOption});
     t.push_back({"gen-textures",
                  {"DIR"},

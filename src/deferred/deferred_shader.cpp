@@ -52,6 +52,22 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     light_any_prog_ = Program(shader_dir, "light.vert", "light.frag", ldefs);
     ldefs.push_back("LIGHT_POINT_ONLY");
     light_prog_ = Program(shader_dir, "light.vert", "light.frag", ldefs);
+    ldefs.pop_back();  // the geometries' programs shade any light type
+    // Light geometries (issue 12): each builds only the programs it draws with.
+    const LightGeometry lg = paths_.light_geometry;
+    if (lg == LightGeometry::volume || lg == LightGeometry::stencil) {
+        auto vdefs = ldefs;
+        vdefs.push_back("VOLUME");
+        light_volume_prog_ = Program(shader_dir, "light.vert", "light.frag", vdefs);
+        build_volume_mesh();
+    }
+    if (lg == LightGeometry::tiles) {
+        auto tdefs = ldefs;
+        tdefs.push_back("MAX_LIGHTS " + std::to_string(opts.tile_lights));
+        if (!opts.float_accum) tdefs.push_back("QUANTIZE_8BIT");  // P-buffer 0 is RGBA8
+        light_tiles_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);
+    }
+    if (paths_.accum_depth) depth_copy_prog_ = Program(shader_dir, "post.vert", "depth_copy.frag", depth_defs);
     // Post programs are built only when their pass can run (the post stage costs nothing off).
     const PostOptions& p = opts.post;
     if (p.bloom) {
@@ -122,7 +138,14 @@ void DeferredShader::draw_rect(float x0, float y0, float x1, float y1, bool rays
     glBegin(GL_QUADS);
     for (int i = 0; i < 4; ++i) {
         glMultiTexCoord2f(GL_TEXTURE0, xs[i] * sx, ys[i] * sy);
-        if (rays) glMultiTexCoord3f(GL_TEXTURE1, corner_rays_[i].x, corner_rays_[i].y, corner_rays_[i].z);
+        if (rays) {
+            // The view ray is affine in window coordinates: bilinear in the screen's corner rays
+            // (exactly the corner's ray at a screen corner; a tile's corner otherwise).
+            const float u = xs[i] / float(w_), v = ys[i] / float(h_);
+            const glm::vec3 r = (1 - v) * ((1 - u) * corner_rays_[0] + u * corner_rays_[1]) +
+                                v * ((1 - u) * corner_rays_[3] + u * corner_rays_[2]);
+            glMultiTexCoord3f(GL_TEXTURE1, r.x, r.y, r.z);
+        }
         glVertex2f(xs[i], ys[i]);
     }
     glEnd();
@@ -148,6 +171,7 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     st.ms.bloom = ms[S_BLOOM];
     st.ms.aa = ms[S_AA];
     st.ms.final = ms[S_FINAL];
+    st.ms.depth_copy = ms[S_DEPTH_COPY];
     st.timing = timer_.source();
     check_gl("frame");  // per stage too with --debug-gl (check_gl_stage)
     return st;

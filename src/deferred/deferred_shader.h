@@ -19,6 +19,9 @@
 #include "deferred/options.h"
 #include "deferred/paths.h"
 #include "deferred/render_targets.h"
+#include "deferred/light_params.h"
+#include "deferred/light_volume.h"
+#include "deferred/scissor.h"
 #include "gl/caps.h"
 #include "gl/frame_timer.h"
 #include "gl/pbuffer.h"
@@ -37,6 +40,7 @@ struct GpuMaterial;
 // time of render() until the GPU finished.
 struct StageTimes {
     double geometry = 0, ambient = 0, lights = 0, bloom = 0, aa = 0, final = 0, frame = 0;
+    double depth_copy = 0;  // hand_off_depth: the G-buffer's depth onto P-buffer 0 (0 where not needed)
 };
 
 struct FrameStats {
@@ -54,6 +58,11 @@ struct FrameStats {
         return fragments_counted ? std::optional<long long>(light_fragments) : std::nullopt;
     }
     long long scissor_pixels = 0;   // sum of the rectangles the light quads were limited to
+    // Light geometry (issue 12): the passes drawn (one per light; tiles: one per tile and group
+    // of lights), the lights the volume and stencil geometries drew as quads because their mesh
+    // reaches past the far plane, where its back faces would be clipped away.
+    int light_passes = 0;
+    int lights_as_quads = 0;
     StageTimes ms;
     TimingSource timing = TimingSource::wall;
 };
@@ -109,6 +118,13 @@ public:
     void blur(int src, int dst, glm::vec2 dir, bool select);  // P-buffer roles (PRole)
     void draw_bloom();
     void draw_anti_alias(bool factor_only = false);
+    // The depth hand-off (depth_handoff.cpp): writes the G-buffer's depth into the depth buffer of
+    // the bound P-buffer 0 (texture path: copied; packed: decoded from the packed target) and
+    // clears its stencil, so passes drawn into P-buffer 0 can depth-test against the scene without
+    // sampling a texture attached to the framebuffer they draw into. After geometry_stage, with
+    // P-buffer 0 bound for rendering; needs paths().accum_depth (or the copy path's main buffer).
+    // The light geometries use it; so can a forward pass after the lights.
+    void hand_off_depth();
 
     // Read a buffer back (views and tests): a G-buffer target, its depth texture
     // (PBuffer::DEPTH, as grey), or P-buffer `fb`.
@@ -148,7 +164,7 @@ public:
 
 private:
     // Stage slots of the frame timer, in StageTimes order.
-    enum Slot { S_GEOMETRY, S_AMBIENT, S_LIGHTS, S_BLOOM, S_AA, S_FINAL, S_COUNT };
+    enum Slot { S_GEOMETRY, S_AMBIENT, S_LIGHTS, S_BLOOM, S_AA, S_FINAL, S_DEPTH_COPY, S_COUNT };
     // Each pass's fixed-function state (gl/state.h), declared in its stage's file.
     static RenderState depth_pass_state();
     static RenderState material_pass_state();
@@ -158,6 +174,32 @@ private:
     void draw_material(int target);
     void draw_ambient(const Scene& scene);
     void draw_lighting(const Scene& scene, bool scissors, FrameStats& stats);
+    // One visible light of the frame: its shader parameters, eye-space volume and scissor rectangle.
+    struct LightDraw {
+        const Light* light;
+        LightParams params;
+        LightVolume eye;   // light_volume.h, in eye space
+        ScissorRect rect;  // the whole viewport when `full`
+        bool full;
+    };
+    std::vector<LightDraw> visible_lights(const Scene& scene, bool scissors, FrameStats& stats);
+    void set_light_uniforms(Program& prog);
+    static void set_light_params(Program& prog, const LightParams& lp);
+    // One file per geometry (light_geometry_*.cpp).
+    void draw_lights_quad(const std::vector<LightDraw>& lights, FrameStats& stats);
+    void draw_lights_volume(const std::vector<LightDraw>& lights, FrameStats& stats);
+    void draw_lights_stencil(const std::vector<LightDraw>& lights, FrameStats& stats);
+    void draw_lights_tiles(const std::vector<LightDraw>& lights, FrameStats& stats);
+    // The light's quad over its scissor rectangle (Listing 16): quad geometry, and the volume
+    // geometries' lights whose mesh the far plane would clip.
+    void draw_light_quad(const LightDraw& l, class LightQueries& q);
+    // A light's volume mesh (light_volume.h volume_mesh), in eye space: spheres as the unit
+    // sphere's mesh scaled and moved by the model-view, cones as their own mesh.
+    void draw_light_mesh(const LightDraw& l);
+    // Lights the volume geometries draw as quads: directional (full screen, no mesh) and volumes
+    // whose mesh reaches past the far plane, where its back faces would be clipped away.
+    bool mesh_past_far(const LightDraw& l) const;
+    void build_volume_mesh();
     // Screen-aligned quad over [x0,x1]x[y0,y1] (window pixels), texcoord 0 = 0..1;
     // with rays, texcoord 1 = eye-space view ray of each corner (Listing 19).
     void draw_rect(float x0, float y0, float x1, float y1, bool rays);
@@ -186,6 +228,12 @@ private:
     Program light_prog_;
     Program light_any_prog_;
     static bool tutorial_light(const Light& l) { return l.type == Light::Type::point && !l.attenuation; }
+    Program light_volume_prog_;         // light.vert/.frag with VOLUME (any type): drawn over the volume mesh
+    Program light_tiles_prog_;          // light_tiles.frag: up to tile_lights lights per pass
+    Program depth_copy_prog_;           // depth_copy.frag: the depth hand-off
+    VolumeMesh unit_sphere_mesh_;       // volume_mesh of the unit sphere at the origin
+    float volume_mesh_reach_ = 1;       // its farthest vertex from the centre
+    int light_passes_drawn_ = 0;        // this frame's light-shader draws (FrameStats::light_passes)
     Program blur_prog_[2];              // [select]
     Program aa_prog_[2];                // [factor only]
     std::unique_ptr<GpuScene> gpu_;

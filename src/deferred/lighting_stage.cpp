@@ -1,6 +1,8 @@
 // Lighting stage (§3.4, Listings 14-20): image space, into P-buffer 0. A fixed-function
-// ambient pass (Eq. 6), then one additive screen-aligned quad per visible light, limited
-// to the light's scissor rectangle.
+// ambient pass (Eq. 6), then every visible light added by the light geometry the options
+// ask for (issue 12): the tutorial's scissored screen-aligned quad per light, the light's
+// volume mesh, the volume masked by a stencil pass, or screen tiles shading up to N lights
+// per pass. Each geometry has its own file, light_geometry_*.cpp.
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -24,10 +26,16 @@ void DeferredShader::draw_lights(const Scene& scene, bool scissors, FrameStats& 
     check_gl_stage("lighting stage: ambient pass");
     timer_.end();
 
-    timer_.begin(S_LIGHTS);
     const int units[4] = {0, 1, 2, 3};
     const int targets[4] = {G_NORMAL, G_DIFFUSE, G_SPECULAR, depth_target()};
     for (int i = 0; i < 4; ++i) mrt_bind_texture(targets[i], units[i]);  // mrt_bind_texture(ALL)
+    if (paths_.accum_depth) {
+        timer_.begin(S_DEPTH_COPY);
+        hand_off_depth();
+        check_gl_stage("lighting stage: depth hand-off");
+        timer_.end();
+    }
+    timer_.begin(S_LIGHTS);
     draw_lighting(scene, scissors, stats);
     for (int i = 3; i >= 0; --i) mrt_unbind_texture(targets[i], units[i]);
     check_gl_stage("lighting stage: light passes");
@@ -69,31 +77,41 @@ void DeferredShader::draw_ambient(const Scene& scene) {
     glColor4f(1, 1, 1, 1);
 }
 
-// Listing 17: cull against the view frustum, scissor, one quad per light. Culling and the
-// rectangle come from the light's volume (light_volume.h): a sphere as in the tutorial, a spot's
-// cone, or a directional light's full screen (never culled, never scissored).
-void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats& stats) {
+// The uniforms every light program shares (bind_light()).
+void DeferredShader::set_light_uniforms(Program& prog) {
+    gl_state().use_program(prog.id());
+    prog.set("normal_map", 0);
+    prog.set("diffuse_map", 1);
+    prog.set("specular_map", 2);
+    prog.set("depth_map", 3);
+    prog.set("planes", planes_);
+    prog.set("zrange", zrange_);
+    // VOLUME: texture coordinates from gl_FragCoord (the G-buffer may be padded to powers of two).
+    prog.set("uv_scale", glm::vec2(gbuf().tex_scale_x() / float(w_), gbuf().tex_scale_y() / float(h_)));
+    // The view ray through window point (x, y): the corner rays' bilinear map, which is affine.
+    const glm::vec3 lo = corner_rays_[0], hi = corner_rays_[2];
+    prog.set("ray_map", glm::vec4((hi.x - lo.x) / float(w_), (hi.y - lo.y) / float(h_), lo.x, lo.y));
+}
+
+// set_light_params: one light as lighting.glsl's five vec4s (light_params.h).
+void DeferredShader::set_light_params(Program& prog, const LightParams& lp) {
+    prog.set("lightpos", lp.pos);
+    prog.set("lightcolor", lp.color);
+    prog.set("lightdir", lp.dir);
+    prog.set("lightspot", lp.spot);
+    prog.set("lightatt", lp.att);
+}
+
+// Listing 17 lines 11-31: frustum culling, the empty-light skip and each light's scissor
+// rectangle (Listing 16), whatever geometry then draws the light. Culling and the rectangle come
+// from the light's volume (light_volume.h): a sphere as in the tutorial, a spot's cone, or a
+// directional light's full screen (never culled, never scissored).
+std::vector<DeferredShader::LightDraw> DeferredShader::visible_lights(const Scene& scene, bool scissors,
+                                                                     FrameStats& stats) {
     const auto frustum = frustum_planes(proj_ * view_);
-    const auto rays = corner_rays(proj_[0][0], proj_[1][1]);
-    for (int i = 0; i < 4; ++i) corner_rays_[i] = rays[i];
     const float near_plane = scene.camera.near_plane;
-
-    // bind_light(): the frame's uniforms on both light programs (deferred_shader.h: the
-    // tutorial's point lights take the variant without the type and law selection).
-    for (Program* prog : {&light_prog_, &light_any_prog_}) {
-        gl_state().apply(light_pass_state(prog->id(), false));
-        prog->set("normal_map", 0);
-        prog->set("diffuse_map", 1);
-        prog->set("specular_map", 2);
-        prog->set("depth_map", 3);
-        prog->set("planes", planes_);
-        prog->set("zrange", zrange_);
-    }
-
-    const bool count = paths_.count_fragments;
-    const bool invocations = caps_.pipeline_statistics;
-    stats.fragments_counted = count;
-    std::vector<GLuint> queries, inv_queries;
+    const bool skip_empty = opts_.skip.empty_lights;
+    std::vector<LightDraw> out;
     stats.lights_total = int(scene.lights.size());
     for (const Light& light : scene.lights) {
         const LightVolume volume = light_volume(light);
@@ -101,14 +119,14 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
             ++stats.lights_culled;
             continue;
         }
-        const bool skip_empty = opts_.skip.empty_lights;
         if (skip_empty && light.color.r <= 0 && light.color.g <= 0 && light.color.b <= 0) {
             ++stats.lights_culled;  // adds nothing
             continue;
         }
         // In double, rounded once (Camera::to_eye): far from the origin, view_ * pos in float would
         // lose the light's position to the world coordinates' rounding (stress case coords).
-        ScissorRect r = volume_scissor(to_eye(volume, scene.camera), proj_[0][0], proj_[1][1], near_plane, w_, h_);
+        const LightVolume eye = to_eye(volume, scene.camera);
+        ScissorRect r = volume_scissor(eye, proj_[0][0], proj_[1][1], near_plane, w_, h_);
         long long n = r.area();
         if (n <= 0) {
             if (skip_empty) {  // the volume reaches no visible pixel: Listing 17 line 31
@@ -119,50 +137,26 @@ void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats
             n = (long long)w_ * h_;
         }
         const bool full = !scissors || n == (long long)w_ * h_;
-        if (full) n = (long long)w_ * h_;
-        else glScissor(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);  // set_light_scissor (Listing 16)
-        Program& prog = tutorial_light(light) ? light_prog_ : light_any_prog_;
-        gl_state().apply(light_pass_state(prog.id(), !full));
-        stats.scissor_pixels += n;
+        if (full) r = ScissorRect{0, 0, w_, h_};
+        stats.scissor_pixels += r.area();
         ++stats.lights_drawn;
-        const LightParams lp = light_params(light, scene.camera);  // set_light_params
-        prog.set("lightpos", lp.pos);
-        prog.set("lightcolor", lp.color);
-        prog.set("lightdir", lp.dir);
-        prog.set("lightspot", lp.spot);
-        prog.set("lightatt", lp.att);
-        if (count) {
-            queries.push_back(0);
-            glGenQueries(1, &queries.back());
-            glBeginQuery(GL_SAMPLES_PASSED, queries.back());
-        }
-        if (invocations) {  // beside the occlusion query: every fragment that ran the shader
-            inv_queries.push_back(0);
-            glGenQueries(1, &inv_queries.back());
-            glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, inv_queries.back());
-        }
-        draw_rect(0, 0, float(w_), float(h_), true);
-        if (invocations) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
-        if (count) glEndQuery(GL_SAMPLES_PASSED);
+        out.push_back(LightDraw{&light, light_params(light, scene.camera), eye, r, full});
+    }
+    return out;
+}
+
+// Listing 17: cull against the view frustum, then the light geometry.
+void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats& stats) {
+    const auto rays = corner_rays(proj_[0][0], proj_[1][1]);
+    for (int i = 0; i < 4; ++i) corner_rays_[i] = rays[i];
+    const std::vector<LightDraw> lights = visible_lights(scene, scissors, stats);
+    switch (paths_.light_geometry) {
+        case LightGeometry::quad: draw_lights_quad(lights, stats); break;
+        case LightGeometry::volume: draw_lights_volume(lights, stats); break;
+        case LightGeometry::stencil: draw_lights_stencil(lights, stats); break;
+        case LightGeometry::tiles: draw_lights_tiles(lights, stats); break;
     }
     // unbind_light(): nothing to restore, the next pass states what it needs.
-    // Results are read after the loop so no light waits on the one before it.
-    for (GLuint q : queries) {
-        GLuint samples = 0;
-        glGetQueryObjectuiv(q, GL_QUERY_RESULT, &samples);
-        stats.light_fragments += samples;
-        glDeleteQueries(1, &q);
-    }
-    if (invocations) {
-        long long n = 0;
-        for (GLuint q : inv_queries) {
-            GLuint fragments = 0;  // one pass: at most w x h, fits 32 bits
-            glGetQueryObjectuiv(q, GL_QUERY_RESULT, &fragments);
-            n += fragments;
-            glDeleteQueries(1, &q);
-        }
-        stats.light_invocations = n;
-    }
 }
 
 }  // namespace dsr

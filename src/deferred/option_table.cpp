@@ -71,6 +71,13 @@ std::vector<RenderOption> make_table() {
         [](RenderOptions& r, const std::string& v) { r.shader.gbuffer_half = v == "half"; }));
     t.push_back(switch_option("scissor", &ShaderOptions::scissor));
     t.push_back(choice(
+        "light-geometry", {"quad", "volume", "stencil", "tiles"},
+        [](const RenderOptions& r) { return std::string(light_geometry_name(r.shader.light_geometry)); },
+        [](RenderOptions& r, const std::string& v) { r.shader.light_geometry = light_geometry_from_name(v); }));
+    t.push_back(switch_option("depth-bounds", &ShaderOptions::depth_bounds));
+    t.push_back(integer_option("tile-size", 8, 512, &ShaderOptions::tile_size));
+    t.push_back(integer_option("tile-lights", 1, 32, &ShaderOptions::tile_lights));
+    t.push_back(choice(
         "lighting", {"equations", "listing"},
         [](const RenderOptions& r) { return r.shader.listing2_literal ? "listing" : "equations"; },
         [](RenderOptions& r, const std::string& v) { r.shader.listing2_literal = v == "listing"; }));

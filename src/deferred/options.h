@@ -2,12 +2,21 @@
 // data, no GL: choose_paths (paths.h) turns it and the probed capabilities into the paths
 // that run.
 #pragma once
+#include <string>
+
 #include "deferred/depth_codec.h"
 
 namespace dsr {
 
 // automatic: the depth texture where ARB_depth_texture exists, else packed (choose_paths).
 enum class DepthPath { texture, packed, automatic };
+
+// How each light reaches its pixels (issue 12; docs/benchmarks.md has one section per geometry):
+//  quad     the tutorial's scissored screen-aligned quad per light (§3.4.2, Listing 16)
+//  volume   the back faces of the light's volume mesh, depth test GL_GREATER against the scene
+//  stencil  per light a two-sided stencil pass over the volume, then the light pass where it marks
+//  tiles    screen tiles; up to `tile_lights` lights per pass in one shader (§3.4.3's closing remark)
+enum class LightGeometry { quad, volume, stencil, tiles };
 
 enum class AaSource { normal, depth, both };
 enum class AaKernel { text, listing };
@@ -48,6 +57,14 @@ struct ShaderOptions {
     // targets (ARB_texture_float + ARB_half_float_pixel) where 8-bit normals are the largest
     // error of the deferred image.
     bool gbuffer_half = false;
+    LightGeometry light_geometry = LightGeometry::quad;
+    bool depth_bounds = false;      // EXT_depth_bounds_test on the quad passes (refused where missing)
+    int tile_size = 32;             // tiles: pixels per side
+    int tile_lights = 8;            // tiles: lights per pass (the shader's constant loop bound)
 };
+
+// "quad", "volume", "stencil", "tiles"; from_name throws dsr::Error listing them otherwise.
+const char* light_geometry_name(LightGeometry g);
+LightGeometry light_geometry_from_name(const std::string& name);
 
 }  // namespace dsr

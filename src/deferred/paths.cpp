@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "dsr_error.h"
+
 namespace dsr {
 
 Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
@@ -23,6 +25,27 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     p.render_target = p.fbo ? "fbo" : "copy";
     p.textures = p.pow2 ? "pow2" : "npot";
 
+    // Light geometry (issue 12). Stencil needs a stencil buffer where P-buffer 0 is drawn: with
+    // framebuffer objects a packed depth-stencil attachment, without them the main buffer's.
+    p.light_geometry = opts.light_geometry;
+    if (opts.light_geometry == LightGeometry::stencil) {
+        const char* missing = !caps.stencil ? "a stencil buffer"
+                              : caps.fbo && !caps.packed_depth_stencil ? "EXT_packed_depth_stencil"
+                                                                       : nullptr;
+        if (missing) {
+            p.light_geometry = LightGeometry::volume;
+            p.light_geometry_note = std::string("stencil falls back to volume: ") + missing + " is missing";
+        } else {
+            p.stencil_faces = caps.stencil_separate       ? Paths::StencilFaces::separate
+                              : caps.stencil_two_side_ext ? Paths::StencilFaces::two_side_ext
+                                                          : Paths::StencilFaces::one_sided;
+        }
+    }
+    p.depth_bounds = opts.depth_bounds && p.light_geometry == LightGeometry::quad;
+    p.accum_depth = p.light_geometry == LightGeometry::volume || p.light_geometry == LightGeometry::stencil ||
+                    p.depth_bounds;
+    p.accum_stencil = p.light_geometry == LightGeometry::stencil;
+
     if (!caps.glsl120)
         p.refused = "GLSL 1.20 is required and this GL offers " +
                     (caps.glsl_version.empty() ? std::string("none") : caps.glsl_version) + " (GL " + caps.version + ")";
@@ -32,6 +55,13 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
         p.refused = "float accumulation needs ARB_texture_float and EXT_framebuffer_object";
     else if (opts.gbuffer_half && !(caps.half_float && caps.texture_float))
         p.refused = "half-float G-buffer targets need ARB_texture_float and ARB_half_float_pixel";
+    else if (opts.depth_bounds && !caps.depth_bounds)
+        p.refused = "--depth-bounds on needs EXT_depth_bounds_test, which this GL lacks (llvmpipe has none)";
+    else if (opts.depth_bounds && opts.light_geometry != LightGeometry::quad)
+        p.refused = "--depth-bounds on applies to --light-geometry quad only";
+    else if (opts.light_geometry == LightGeometry::tiles &&
+             (opts.tile_size < 8 || opts.tile_size > 512 || opts.tile_lights < 1 || opts.tile_lights > 32))
+        p.refused = "tiles: tile size must be 8..512 and lights per pass 1..32";
     return p;
 }
 
@@ -47,8 +77,37 @@ std::string describe(const Paths& p) {
       << (p.fbo ? "fbo: render to texture (EXT_framebuffer_object)" : "copy: main buffer region + glCopyTexSubImage2D")
       << "\n  textures       "
       << (p.pow2 ? "pow2: targets padded, material maps rescaled to powers of two" : "npot: any size")
-      << "\n  light counting " << (p.count_fragments ? "occlusion queries" : "off (no occlusion queries)") << "\n";
+      << "\n  light counting " << (p.count_fragments ? "occlusion queries" : "off (no occlusion queries)")
+      << "\n  light geometry " << light_geometry_name(p.light_geometry);
+    if (p.light_geometry == LightGeometry::stencil) o << " (" << stencil_faces_name(p.stencil_faces) << " faces)";
+    if (!p.light_geometry_note.empty()) o << " (" << p.light_geometry_note << ")";
+    o << "\n";
     return o.str();
+}
+
+const char* stencil_faces_name(Paths::StencilFaces f) {
+    switch (f) {
+        case Paths::StencilFaces::separate: return "separate";
+        case Paths::StencilFaces::two_side_ext: return "two-side-ext";
+        case Paths::StencilFaces::one_sided: return "one-sided";
+    }
+    return "?";
+}
+
+const char* light_geometry_name(LightGeometry g) {
+    switch (g) {
+        case LightGeometry::quad: return "quad";
+        case LightGeometry::volume: return "volume";
+        case LightGeometry::stencil: return "stencil";
+        case LightGeometry::tiles: return "tiles";
+    }
+    return "?";
+}
+
+LightGeometry light_geometry_from_name(const std::string& n) {
+    for (LightGeometry g : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles})
+        if (n == light_geometry_name(g)) return g;
+    throw Error("light geometry '" + n + "': expected quad, volume, stencil or tiles");
 }
 
 }  // namespace dsr

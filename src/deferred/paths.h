@@ -21,6 +21,17 @@ struct Paths {
     std::string gbuffer;         // "mrt" | "per-target"
     std::string render_target;   // "fbo" | "copy"
     std::string textures;        // "npot" | "pow2"
+    // The light geometry as run (a missing capability turns stencil into volume) and why not the
+    // one asked for (empty when it is); stencil's way of setting the two faces apart.
+    LightGeometry light_geometry = LightGeometry::quad;
+    std::string light_geometry_note;
+    enum class StencilFaces { separate, two_side_ext, one_sided };  // GL 2.0 | EXT_stencil_two_side | two passes
+    StencilFaces stencil_faces = StencilFaces::separate;
+    // P-buffers 0 and 1 get a depth attachment the G-buffer's depth is handed to (the volume,
+    // stencil and depth-bounds passes test against it); with stencil, a packed depth-stencil one.
+    bool accum_depth = false;
+    bool accum_stencil = false;
+    bool depth_bounds = false;
     // Non-empty: this GL cannot run these options, and why, in one line.
     std::string refused;
 };
@@ -29,5 +40,6 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts);
 
 // One line per decision with its reason, for `dsr info`.
 std::string describe(const Paths& paths);
+const char* stencil_faces_name(Paths::StencilFaces f);  // "separate" | "two-side-ext" | "one-sided"
 
 }  // namespace dsr

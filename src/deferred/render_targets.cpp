@@ -49,6 +49,10 @@ void RenderTargets::allocate() {
         p.filter = GL_LINEAR;
         p.use_fbo = paths_.fbo;
         p.pow2 = paths_.pow2;
+        // The G-buffer's depth is handed to P-buffer 0 (hand_off_depth); 1 too, as the
+        // anti-alias pass swaps the two. Without framebuffer objects the main buffer's serves.
+        if (!bloom && paths_.accum_depth)
+            p.depth = paths_.accum_stencil ? DepthAttachment::depth_stencil : DepthAttachment::renderbuffer;
         p_[i] = std::make_unique<PBuffer>("P-buffer " + std::to_string(i), p);
     }
 }

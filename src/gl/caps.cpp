@@ -27,12 +27,15 @@ static std::string gl_string(GLenum e) {
 
 Caps probe_caps(const std::vector<std::string>& force_off) {
     static const char* known[] = {"no-mrt",   "no-depth-texture",   "no-fbo",           "no-npot",
-                                  "no-float", "no-glsl", "no-occlusion-query", "no-pipeline-stats"};
+                                  "no-float", "no-glsl", "no-occlusion-query", "no-pipeline-stats",
+                                  "no-stencil", "no-packed-depth-stencil", "no-stencil-separate",
+                                  "no-stencil-two-side", "no-depth-bounds"};
     for (const auto& f : force_off)
         if (std::none_of(std::begin(known), std::end(known), [&](const char* k) { return f == k; }))
             throw Error("unknown capability '" + f +
                         "' (expected no-mrt, no-depth-texture, no-fbo, no-npot, no-float, no-glsl, "
-                        "no-occlusion-query or no-pipeline-stats)");
+                        "no-occlusion-query, no-pipeline-stats, no-stencil, no-packed-depth-stencil, "
+                        "no-stencil-separate, no-stencil-two-side or no-depth-bounds)");
     auto off = [&](const char* k) { return std::find(force_off.begin(), force_off.end(), k) != force_off.end(); };
 
     Caps c;
@@ -66,6 +69,16 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
                              has_extension("GL_ARB_pipeline_statistics_query")) &&
                             !off("no-pipeline-stats");
     c.timer_query = has_extension("GL_ARB_timer_query") || has_extension("GL_EXT_timer_query");
+    GLint stencil_bits = 0;  // of the main frame buffer: create_context asks for 8 on every backend
+    glGetIntegerv(GL_STENCIL_BITS, &stencil_bits);
+    c.stencil = stencil_bits >= 8 && !off("no-stencil");
+    c.packed_depth_stencil = (at_least(c.gl_major, c.gl_minor, 3, 0) || has_extension("GL_EXT_packed_depth_stencil")) &&
+                             !off("no-packed-depth-stencil");
+    // no-stencil-two-side hides both ways of setting the two faces apart; no-stencil-separate only GL 2.0's.
+    c.stencil_separate = gl20 && !off("no-stencil-separate") && !off("no-stencil-two-side");
+    c.stencil_two_side_ext = has_extension("GL_EXT_stencil_two_side") && gl_entry.ActiveStencilFaceEXT &&
+                             !off("no-stencil-two-side");
+    c.depth_bounds = has_extension("GL_EXT_depth_bounds_test") && gl_entry.DepthBoundsEXT && !off("no-depth-bounds");
     c.forced_off = force_off;
     while (glGetError() != GL_NO_ERROR) {}
     return c;
@@ -89,7 +102,12 @@ std::string describe(const Caps& c) {
       << "  " << yn(c.half_float) << " half-float targets       (ARB_half_float_pixel)\n"
       << "  " << yn(c.occlusion_query) << " occlusion queries        (ARB_occlusion_query)\n"
       << "  " << yn(c.pipeline_statistics) << " pipeline statistics      (ARB_pipeline_statistics_query)\n"
-      << "  " << yn(c.timer_query) << " timer queries            (ARB_timer_query)\n";
+      << "  " << yn(c.timer_query) << " timer queries            (ARB_timer_query)\n"
+      << "  " << yn(c.stencil) << " stencil buffer           (8 bits in the main frame buffer)\n"
+      << "  " << yn(c.packed_depth_stencil) << " depth-stencil targets    (EXT_packed_depth_stencil)\n"
+      << "  " << yn(c.stencil_separate) << " two-sided stencil        (glStencilOpSeparate, OpenGL 2.0)\n"
+      << "  " << yn(c.stencil_two_side_ext) << " two-sided stencil        (EXT_stencil_two_side)\n"
+      << "  " << yn(c.depth_bounds) << " depth bounds test        (EXT_depth_bounds_test)\n";
     if (!c.forced_off.empty()) {
         o << "forced off:";
         for (auto& f : c.forced_off) o << " " << f;

@@ -20,12 +20,20 @@ struct Caps {
     bool occlusion_query = false;    // ARB_occlusion_query (core in 1.5): light_fragments
     bool pipeline_statistics = false;  // ARB_pipeline_statistics_query (core in 4.6): light_invocations
     bool timer_query = false;        // ARB_timer_query / EXT_timer_query
+    // Light geometries (issue 12): stencil light volumes and depth bounds.
+    bool stencil = false;            // an 8-bit stencil buffer in the main frame buffer (GL_STENCIL_BITS)
+    bool packed_depth_stencil = false;  // EXT_packed_depth_stencil (core in 3.0): depth-stencil FBO attachment
+    bool stencil_separate = false;   // glStencilOpSeparate (GL 2.0): both faces in one stencil pass
+    bool stencil_two_side_ext = false;  // EXT_stencil_two_side: the same before GL 2.0
+    bool depth_bounds = false;       // EXT_depth_bounds_test (NVIDIA; not llvmpipe)
     std::vector<std::string> forced_off;  // names hidden by --caps / DSR_CAPS
 };
 
 // Reads the current context. `force_off` lists capabilities to report missing
 // (no-mrt, no-depth-texture, no-fbo, no-npot, no-float, no-glsl, no-occlusion-query,
-// no-pipeline-stats); unknown names throw dsr::Error.
+// no-pipeline-stats, no-stencil, no-packed-depth-stencil, no-stencil-separate, no-stencil-two-side
+// (both two-sided mechanisms: GL 2.0's and EXT_stencil_two_side), no-depth-bounds); unknown names
+// throw dsr::Error.
 Caps probe_caps(const std::vector<std::string>& force_off = {});
 
 // One line per capability with the extension it comes from, for `dsr info`.

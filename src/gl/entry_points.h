@@ -79,10 +79,13 @@ typedef void(APIENTRYP DSR_PFNGLMULTITEXCOORD3FPROC)(GLenum target, GLfloat s, G
     X(PFNGLRENDERBUFFERSTORAGEEXTPROC, RenderbufferStorageEXT)
 
 // May be null after loading; whoever calls one checks it (and the matching Caps flag) first.
-// None is called yet: ARB_timer_query, for GPU stage times.
+// ARB_timer_query, for GPU stage times; EXT_stencil_two_side and EXT_depth_bounds_test for the
+// light geometries (Caps::stencil_two_side_ext, Caps::depth_bounds).
 #define DSR_GL_OPTIONAL_ENTRY_POINTS(X)                  \
     X(PFNGLQUERYCOUNTERPROC, QueryCounter)               \
-    X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)
+    X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v) \
+    X(PFNGLACTIVESTENCILFACEEXTPROC, ActiveStencilFaceEXT) \
+    X(PFNGLDEPTHBOUNDSEXTPROC, DepthBoundsEXT)
 
 namespace dsr {
 

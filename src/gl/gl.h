@@ -62,3 +62,5 @@
 #define glRenderbufferStorageEXT ::dsr::gl_entry.RenderbufferStorageEXT
 #define glQueryCounter ::dsr::gl_entry.QueryCounter
 #define glGetQueryObjectui64v ::dsr::gl_entry.GetQueryObjectui64v
+#define glActiveStencilFaceEXT ::dsr::gl_entry.ActiveStencilFaceEXT
+#define glDepthBoundsEXT ::dsr::gl_entry.DepthBoundsEXT

@@ -42,12 +42,16 @@ PBuffer::PBuffer(std::string name, const PBufferDesc& desc) : name_(std::move(na
                                   colors_[i].id(), 0);
     if (desc.depth == DepthAttachment::texture) {
         glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_TEXTURE_2D, depth_tex_.id(), 0);
-    } else if (desc.depth == DepthAttachment::renderbuffer) {
+    } else if (desc.depth == DepthAttachment::renderbuffer || desc.depth == DepthAttachment::depth_stencil) {
+        const bool ds = desc.depth == DepthAttachment::depth_stencil;
         glGenRenderbuffersEXT(1, &depth_rb_);
         glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, depth_rb_);
-        glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_DEPTH_COMPONENT24, tex_w_, tex_h_);
+        glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, ds ? GL_DEPTH24_STENCIL8_EXT : GL_DEPTH_COMPONENT24, tex_w_,
+                                 tex_h_);
         glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, 0);
         glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT, depth_rb_);
+        if (ds)
+            glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_STENCIL_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT, depth_rb_);
     }
     if (colors_.empty()) {
         glDrawBuffer(GL_NONE);

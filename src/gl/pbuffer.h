@@ -17,7 +17,9 @@
 
 namespace dsr {
 
-enum class DepthAttachment { none, texture, renderbuffer };
+// renderbuffer: 24-bit depth; depth_stencil: one EXT_packed_depth_stencil renderbuffer on both
+// the depth and the stencil attachment (the light geometries' P-buffer 0).
+enum class DepthAttachment { none, texture, renderbuffer, depth_stencil };
 
 struct PBufferDesc {
     int width = 0, height = 0;

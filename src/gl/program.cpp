@@ -120,5 +120,7 @@ void Program::set(const char* n, float v) { glUniform1f(location(n), v); }
 void Program::set(const char* n, glm::vec2 v) { glUniform2f(location(n), v.x, v.y); }
 void Program::set(const char* n, glm::vec3 v) { glUniform3f(location(n), v.x, v.y, v.z); }
 void Program::set(const char* n, glm::vec4 v) { glUniform4f(location(n), v.x, v.y, v.z, v.w); }
+void Program::set_array(const char* n, const glm::vec3* v, int count) { glUniform3fv(location(n), count, &v[0].x); }
+void Program::set_array(const char* n, const glm::vec4* v, int count) { glUniform4fv(location(n), count, &v[0].x); }
 
 }  // namespace dsr

@@ -40,6 +40,9 @@ public:
     void set(const char* name, glm::vec2 v);
     void set(const char* name, glm::vec3 v);
     void set(const char* name, glm::vec4 v);
+    // The first n elements of a uniform array (`uniform vec4 name[N]`).
+    void set_array(const char* name, const glm::vec3* v, int n);
+    void set_array(const char* name, const glm::vec4* v, int n);
 
 private:
     static long long built_;

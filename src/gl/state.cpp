@@ -1,5 +1,7 @@
 #include "gl/state.h"
 
+#include "gl/caps.h"
+
 #include <cstdlib>
 #include <cstring>
 
@@ -8,7 +10,8 @@ namespace dsr {
 bool RenderState::operator==(const RenderState& o) const {
     return blend == o.blend && blend_src == o.blend_src && blend_dst == o.blend_dst && depth_test == o.depth_test &&
            depth_func == o.depth_func && depth_write == o.depth_write && stencil_test == o.stencil_test &&
-           stencil_front == o.stencil_front && stencil_back == o.stencil_back && cull == o.cull &&
+           stencil_front == o.stencil_front && stencil_back == o.stencil_back &&
+           stencil_two_side_ext == o.stencil_two_side_ext && depth_bounds_test == o.depth_bounds_test && cull == o.cull &&
            cull_face == o.cull_face && scissor == o.scissor && color_write == o.color_write &&
            alpha_test == o.alpha_test && alpha_func == o.alpha_func && alpha_ref == o.alpha_ref &&
            texture_2d == o.texture_2d && tex_env == o.tex_env && program == o.program;
@@ -74,15 +77,36 @@ void GlState::apply(const RenderState& s) {
     const StencilFace* faces[2] = {&s.stencil_front, &s.stencil_back};
     const StencilFace* old[2] = {&c.stencil_front, &c.stencil_back};
     const GLenum face_enum[2] = {GL_FRONT, GL_BACK};
+    // NOTE: Mesa keeps EXT_stencil_two_side's back face apart from GL 2.0's, so switching between
+    // the two ways sets every face field again.
+    const bool ext_changed = all || s.stencil_two_side_ext != c.stencil_two_side_ext;
+    if (ext_changed && (s.stencil_two_side_ext || has_two_side_ext_)) {
+        enable(GL_STENCIL_TEST_TWO_SIDE_EXT, s.stencil_two_side_ext);
+        ++calls_;
+    }
     for (int f = 0; f < 2; ++f) {
         const StencilFace& n = *faces[f];
         const StencilFace& o = *old[f];
-        if (diff(n.func != o.func || n.ref != o.ref || n.mask != o.mask))
-            glStencilFuncSeparate(face_enum[f], n.func, n.ref, n.mask);
-        if (diff(n.fail != o.fail || n.zfail != o.zfail || n.zpass != o.zpass))
-            glStencilOpSeparate(face_enum[f], n.fail, n.zfail, n.zpass);
-        if (diff(n.write_mask != o.write_mask)) glStencilMaskSeparate(face_enum[f], n.write_mask);
+        const bool func = n.func != o.func || n.ref != o.ref || n.mask != o.mask || ext_changed;
+        const bool op = n.fail != o.fail || n.zfail != o.zfail || n.zpass != o.zpass || ext_changed;
+        const bool wmask = n.write_mask != o.write_mask || ext_changed;
+        if (s.stencil_two_side_ext) {
+            if (!(all || func || op || wmask)) continue;
+            glActiveStencilFaceEXT(face_enum[f]);
+            if (diff(func)) glStencilFunc(n.func, n.ref, n.mask);
+            if (diff(op)) glStencilOp(n.fail, n.zfail, n.zpass);
+            if (diff(wmask)) glStencilMask(n.write_mask);
+            glActiveStencilFaceEXT(GL_FRONT);  // Mesa's glGet and glStencilFunc follow the active face
+            continue;
+        }
+        if (diff(func)) glStencilFuncSeparate(face_enum[f], n.func, n.ref, n.mask);
+        if (diff(op)) glStencilOpSeparate(face_enum[f], n.fail, n.zfail, n.zpass);
+        if (diff(wmask)) glStencilMaskSeparate(face_enum[f], n.write_mask);
     }
+    if (s.stencil_two_side_ext) has_two_side_ext_ = true;
+    if (diff(s.depth_bounds_test != c.depth_bounds_test) && (s.depth_bounds_test || has_depth_bounds_))
+        enable(GL_DEPTH_BOUNDS_TEST_EXT, s.depth_bounds_test);
+    if (s.depth_bounds_test) has_depth_bounds_ = true;
     if (diff(s.cull != c.cull)) enable(GL_CULL_FACE, s.cull);
     if (diff(s.cull_face != c.cull_face)) glCullFace(s.cull_face);
     if (diff(s.scissor != c.scissor)) enable(GL_SCISSOR_TEST, s.scissor);
@@ -130,6 +154,9 @@ RenderState read_gl_state() {
         f->mask &= 0xffu;
         f->write_mask &= 0xffu;
     }
+    // Extension state only where the extension exists (glIsEnabled of an unknown enum is an error).
+    if (has_extension("GL_EXT_stencil_two_side")) s.stencil_two_side_ext = glIsEnabled(GL_STENCIL_TEST_TWO_SIDE_EXT);
+    if (has_extension("GL_EXT_depth_bounds_test")) s.depth_bounds_test = glIsEnabled(GL_DEPTH_BOUNDS_TEST_EXT);
     s.cull = glIsEnabled(GL_CULL_FACE);
     s.cull_face = GLenum(geti(GL_CULL_FACE_MODE));
     s.scissor = glIsEnabled(GL_SCISSOR_TEST);

@@ -35,6 +35,10 @@ struct RenderState {
     bool stencil_test = false;          // GL_STENCIL_TEST off
     StencilFace stencil_front;          // GL_ALWAYS 0 0xff, GL_KEEP x3, write mask 0xff
     StencilFace stencil_back;
+    // EXT_stencil_two_side's way to the two faces (GL_STENCIL_TEST_TWO_SIDE_EXT off): the faces
+    // are set through glActiveStencilFaceEXT instead of GL 2.0's glStencil*Separate.
+    bool stencil_two_side_ext = false;
+    bool depth_bounds_test = false;     // GL_DEPTH_BOUNDS_TEST_EXT off (the bounds are per draw: glDepthBoundsEXT)
     bool cull = false;                  // GL_CULL_FACE off
     GLenum cull_face = GL_BACK;         // glCullFace(GL_BACK)
     bool scissor = false;               // GL_SCISSOR_TEST off (the rectangle is per draw: glScissor)
@@ -80,6 +84,9 @@ private:
     bool valid_ = false;
     bool cache_ = true;
     long long calls_ = 0;
+    // An extension's enable is touched only once a pass has asked for it (a GL without the
+    // extension would raise GL_INVALID_ENUM on every forced apply).
+    bool has_two_side_ext_ = false, has_depth_bounds_ = false;
 };
 
 // The one GL state cache of this thread's current context.

@@ -1,0 +1,71 @@
+#version 120
+// Light geometry `tiles` (src/deferred/light_geometry_tiles.cpp): up to MAX_LIGHTS lights of any type
+// per pass (§3.4.3's "multiple lights per pass"). The G-buffer is read once, then Listing 20's
+// light loop runs over the group, with light.frag's per-light tests (LIGHT_DEPTH_TEST,
+// LIGHT_SPHERE_TEST) as `continue`; the sum is blended once. A pixel no light reaches is
+// discarded (nothing to add; light_fragments counts the rest).
+#include "depth_codec.glsl"
+#include "lighting.glsl"
+
+uniform sampler2D normal_map;    // unit 0
+uniform sampler2D diffuse_map;   // unit 1
+uniform sampler2D specular_map;  // unit 2
+uniform sampler2D depth_map;     // unit 3
+uniform vec4 lightpos[MAX_LIGHTS];    // lighting.glsl light_contribution's five vec4s per light
+uniform vec4 lightcolor[MAX_LIGHTS];
+uniform vec4 lightdir[MAX_LIGHTS];
+uniform vec4 lightspot[MAX_LIGHTS];
+uniform vec4 lightatt[MAX_LIGHTS];
+uniform int light_count;              // lights of this pass, <= MAX_LIGHTS
+uniform vec2 planes;
+uniform vec3 zrange;
+
+varying vec2 texcoord;
+varying vec3 vpos;
+
+void main()
+{
+    vec3 pos;
+    pos.z = surface_eye_z(depth_map, texcoord, planes, zrange);
+    pos.xy = vpos.xy / vpos.z * pos.z;
+    vec3 normal = texture2D(normal_map, texcoord).xyz - 0.5;
+    float len = length(normal);
+    if (len <= 0.1)
+        discard;  // background and degenerate normals: unlit
+    normal /= len;
+    vec3 diffuse = texture2D(diffuse_map, texcoord).rgb;
+    vec4 specular = texture2D(specular_map, texcoord);
+    float shininess = decode_shininess(specular.a);
+    vec3 c = vec3(0.0);
+    bool any = false;
+    for (int i = 0; i < MAX_LIGHTS; ++i) {
+        if (i >= light_count)
+            break;
+        vec4 lp = lightpos[i];
+        float type = lightcolor[i].w;
+#ifdef LIGHT_DEPTH_TEST
+        if (type < 1.5 && abs(pos.z - lp.z) > lp.w)
+            continue;
+#endif
+#ifdef LIGHT_SPHERE_TEST
+        vec3 d = pos - lp.xyz;
+        if (type < 1.5 && dot(d, d) >= lp.w * lp.w)
+            continue;
+        if (type > 0.5 && type < 1.5 && dot(d, lightdir[i].xyz) <= length(d) * lightdir[i].w)
+            continue;
+#endif
+        // Each light's term clamped to [0, 1] as its own pass's blend would be and, into the
+        // RGBA8 P-buffer 0, rounded to the 8-bit step that pass would have written: the sum then
+        // matches the quad geometry's image exactly instead of differing by up to N/2 LSB.
+        vec3 t = clamp(light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, normal,
+                                          diffuse, specular.rgb, shininess), 0.0, 1.0);
+#ifdef QUANTIZE_8BIT
+        t = floor(t * 255.0 + 0.5) / 255.0;
+#endif
+        c += t;
+        any = true;
+    }
+    if (!any)
+        discard;
+    gl_FragColor = vec4(c, 1.0);
+}

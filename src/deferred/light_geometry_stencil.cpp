@@ -1,0 +1,101 @@
+// Light geometry `stencil` (Vasilovici §4.2; ogldev's stencil light volumes): per light, a
+// stencil pass over the whole volume mesh, colour writes off, counting with the depth test
+// against the scene's depth (handed to P-buffer 0): a back face behind the surface adds one, a
+// front face behind it takes one away (GL_INCR_WRAP / GL_DECR_WRAP on depth fail). What stays
+// non-zero is exactly where the surface lies inside the volume, also with the camera inside it
+// (its clipped front faces would have passed the depth test anyway). Then the light pass over
+// the back faces, only where the stencil is non-zero, zeroing it for the next light.
+// The two faces in one pass with glStencilOpSeparate (GL 2.0) or EXT_stencil_two_side; with
+// neither, two one-sided passes (back faces, then front faces).
+#include <glm/gtc/type_ptr.hpp>
+
+#include "deferred/deferred_shader.h"
+#include "deferred/light_queries.h"
+#include "gl/state.h"
+
+namespace dsr {
+
+namespace {
+
+StencilFace counting_face(GLenum zfail) {
+    StencilFace f;
+    f.func = GL_ALWAYS;
+    f.zfail = zfail;
+    return f;
+}
+
+}  // namespace
+
+void DeferredShader::draw_lights_stencil(const std::vector<LightDraw>& lights, FrameStats& stats) {
+    LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
+    light_passes_drawn_ = 0;
+    set_light_uniforms(light_any_prog_);
+    set_light_uniforms(light_prog_);
+    for (const LightDraw& l : lights)
+        if (mesh_past_far(l)) {
+            draw_light_quad(l, q);
+            ++stats.lights_as_quads;
+        }
+    set_light_uniforms(light_volume_prog_);
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixf(glm::value_ptr(proj_));
+    glMatrixMode(GL_MODELVIEW);
+
+    // The stencil pass: no colour, no shader, depth tested (GL_LESS: a face on or behind the
+    // surface fails), nothing written but the stencil.
+    RenderState mark;
+    mark.color_write = false;
+    mark.depth_test = true;
+    mark.depth_func = GL_LESS;
+    mark.depth_write = false;
+    mark.stencil_test = true;
+    const Paths::StencilFaces faces = paths_.stencil_faces;
+    mark.stencil_two_side_ext = faces == Paths::StencilFaces::two_side_ext;
+    mark.stencil_front = counting_face(GL_DECR_WRAP);
+    mark.stencil_back = counting_face(GL_INCR_WRAP);
+    // One-sided: the same op on both faces, each pass culling the other face.
+    RenderState mark_back = mark, mark_front = mark;
+    mark_back.stencil_front = mark_back.stencil_back = counting_face(GL_INCR_WRAP);
+    mark_back.cull = true;
+    mark_back.cull_face = GL_FRONT;
+    mark_front.stencil_front = mark_front.stencil_back = counting_face(GL_DECR_WRAP);
+    mark_front.cull = true;
+    mark_front.cull_face = GL_BACK;
+
+    // The light pass: back faces (each pixel of the volume's outline once), where the stencil is
+    // non-zero; the pass zeroes what it passes, so every light starts from a clear stencil.
+    RenderState light = light_pass_state(light_volume_prog_.id(), false);
+    light.cull = true;
+    light.cull_face = GL_FRONT;
+    light.stencil_test = true;
+    StencilFace lit;
+    lit.func = GL_NOTEQUAL;
+    lit.ref = 0;
+    lit.zpass = GL_ZERO;
+    light.stencil_front = light.stencil_back = lit;
+    light.stencil_two_side_ext = mark.stencil_two_side_ext;
+
+    for (const LightDraw& l : lights) {
+        if (mesh_past_far(l)) continue;
+        if (faces == Paths::StencilFaces::one_sided) {
+            gl_state().apply(mark_back);
+            draw_light_mesh(l);
+            gl_state().apply(mark_front);
+            draw_light_mesh(l);
+        } else {
+            gl_state().apply(mark);
+            draw_light_mesh(l);
+        }
+        gl_state().apply(light);
+        set_light_params(light_volume_prog_, l.params);
+        q.begin();
+        draw_light_mesh(l);
+        q.end();
+        ++light_passes_drawn_;
+    }
+    set_ortho(w_, h_);
+    q.collect(stats);
+    stats.light_passes = light_passes_drawn_;
+}
+
+}  // namespace dsr

@@ -1,0 +1,63 @@
+// The counters around the light-shader draws (DESIGN "Counting"): an occlusion query
+// (light_fragments: samples that passed) and a pipeline-statistics query (light_invocations:
+// fragments that entered the light shader) per draw, read after the last draw so no light waits
+// on the one before it. Only the light shader's draws are counted, never a stencil pass.
+#pragma once
+#include <vector>
+
+#include "deferred/deferred_shader.h"
+#include "gl/gl.h"
+
+namespace dsr {
+
+class LightQueries {
+public:
+    LightQueries(bool samples, bool invocations) : samples_(samples), invocations_(invocations) {}
+    LightQueries(const LightQueries&) = delete;
+    LightQueries& operator=(const LightQueries&) = delete;
+    ~LightQueries() {
+        if (!q_.empty()) glDeleteQueries(GLsizei(q_.size()), q_.data());
+        if (!inv_.empty()) glDeleteQueries(GLsizei(inv_.size()), inv_.data());
+    }
+    // Around one draw of the light shader.
+    void begin() {
+        if (samples_) {
+            q_.push_back(0);
+            glGenQueries(1, &q_.back());
+            glBeginQuery(GL_SAMPLES_PASSED, q_.back());
+        }
+        if (invocations_) {
+            inv_.push_back(0);
+            glGenQueries(1, &inv_.back());
+            glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, inv_.back());
+        }
+    }
+    void end() {
+        if (invocations_) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+        if (samples_) glEndQuery(GL_SAMPLES_PASSED);
+    }
+    // Sums the results into stats (light_fragments; light_invocations where counted).
+    void collect(FrameStats& stats) {
+        stats.fragments_counted = samples_;
+        for (GLuint q : q_) {
+            GLuint n = 0;
+            glGetQueryObjectuiv(q, GL_QUERY_RESULT, &n);
+            stats.light_fragments += n;
+        }
+        if (invocations_) {
+            long long total = 0;
+            for (GLuint q : inv_) {
+                GLuint n = 0;  // one draw: at most w x h fragments, fits 32 bits
+                glGetQueryObjectuiv(q, GL_QUERY_RESULT, &n);
+                total += n;
+            }
+            stats.light_invocations = total;
+        }
+    }
+
+private:
+    bool samples_, invocations_;
+    std::vector<GLuint> q_, inv_;
+};
+
+}  // namespace dsr
