@@ -80,6 +80,19 @@ run)
     $dsr render --context egl --size 1920x1080 --frames 60 --stats "$out/render_post_1920x1080.json" \
         -o "$out/default_post_1920x1080.png"
     $dsr render --context egl --size 512x512 --no-bloom --no-aa -o "$out/default_512.png"
+    # Light geometries (issue 12) and the depth-bounds test on the default scene at 1080p, each
+    # image against quad's (the 1920x1080 render above).
+    for g in volume stencil tiles; do
+        $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --light-geometry $g --frames 60 \
+            --stats "$out/geometry_$g.json" -o "$out/geometry_$g.png"
+        echo "geometry $g vs quad: $($dsr compare "$out/default_1920x1080.png" "$out/geometry_$g.png" 2>&1 | tail -1)" \
+            | tee -a "$out/geometry_compare.txt"
+    done
+    if $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --depth-bounds on --frames 60 \
+        --stats "$out/depth_bounds.json" -o "$out/depth_bounds.png"; then
+        echo "depth-bounds on vs off: $($dsr compare "$out/default_1920x1080.png" "$out/depth_bounds.png" 2>&1 | tail -1)" \
+            | tee -a "$out/geometry_compare.txt"
+    fi
     for s in ${GPU_BENCH_SIZES:-1920x1080}; do
         $dsr bench $src/data/default.scene --context egl --size $s --frames ${GPU_BENCH_FRAMES:-50} \
             --lights ${GPU_BENCH_LIGHTS:-own,256,1024,4096} --json "$out/gpu_bench_$s.json" \
