@@ -6,8 +6,7 @@
 // The depth pre-pass of the multi-pass form (Listing 4) draws with this program too, and the
 // later passes may use the other variant (normal map or not): `invariant` makes gl_Position the
 // same bits in every program built from this code, so GL_EQUAL passes exactly the pre-pass's
-// fragments. (ftransform() alone promises invariance only with the fixed-function pipeline; on
-// an NVIDIA H200 the fixed-function pre-pass left up to 51 LSB of light out, docs/gpu.md.)
+// fragments (ftransform() alone promises invariance only with the fixed-function pipeline).
 invariant gl_Position;
 varying vec2 texcoord;
 varying vec3 vpos;
