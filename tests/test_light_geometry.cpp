@@ -91,7 +91,9 @@ TEST(LightGeometry, InvocationsFallFromQuadToStencil) {
     const bool per_block = iq % 16 == 0 && is % 16 == 0 && *vol.stats.light_invocations % 16 == 0;
     std::printf("[ counts   ] light_invocations: quad %lld, volume %lld, stencil %lld%s\n", iq,
                 *vol.stats.light_invocations, is, per_block ? " (4x4-block counter: not asserted)" : "");
-    if (!per_block) EXPECT_LT(is, iq);
+    if (!per_block) {
+        EXPECT_LT(is, iq);
+    }
 }
 
 TEST(LightGeometry, CameraInsideALightVolumeIsLit) {
@@ -155,7 +157,9 @@ TEST(LightGeometry, AllGeometriesMatchQuadWithSpotAndDirectionalLights) {
     for (LightGeometry g : {LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles}) {
         const RenderResult r = render_scene(s, kW, kH, with_geometry(g));
         expect_same(std::string("lights_") + light_geometry_name(g), r, quad);
-        if (g != LightGeometry::tiles) EXPECT_GT(r.stats.lights_as_quads, 0) << "the directional light: a full-screen quad";
+        if (g != LightGeometry::tiles) {
+            EXPECT_GT(r.stats.lights_as_quads, 0) << "the directional light: a full-screen quad";
+        }
     }
 }
 

@@ -11,18 +11,6 @@
 
 namespace dsr {
 
-std::vector<std::string> split_caps(const std::string& list) {
-    std::vector<std::string> out;
-    size_t a = 0;
-    while (a <= list.size()) {
-        size_t b = list.find(',', a);
-        if (b == std::string::npos) b = list.size();
-        if (b > a) out.push_back(list.substr(a, b - a));
-        a = b + 1;
-    }
-    return out;
-}
-
 int cmd_info(const std::vector<std::string>& argv) {
     Args args("info", argv);
     std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";

@@ -28,18 +28,7 @@ StencilFace counting_face(GLenum zfail) {
 
 void DeferredShader::draw_lights_stencil(const std::vector<LightDraw>& lights, FrameStats& stats) {
     LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
-    light_passes_drawn_ = 0;
-    set_light_uniforms(light_any_prog_);
-    set_light_uniforms(light_prog_);
-    for (const LightDraw& l : lights)
-        if (mesh_past_far(l)) {
-            draw_light_quad(l, q);
-            ++stats.lights_as_quads;
-        }
-    set_light_uniforms(light_volume_prog_);
-    glMatrixMode(GL_PROJECTION);
-    glLoadMatrixf(glm::value_ptr(proj_));
-    glMatrixMode(GL_MODELVIEW);
+    begin_light_meshes(lights, q, stats);  // light_geometry_volume.cpp
 
     // The stencil pass: no colour, no shader, depth tested (GL_LESS: a face on or behind the
     // surface fails), nothing written but the stencil.

@@ -74,10 +74,10 @@ void load_projection(const glm::mat4& p) {
 }
 }  // namespace
 
-void DeferredShader::draw_lights_volume(const std::vector<LightDraw>& lights, FrameStats& stats) {
-    LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
+// What volume and stencil share: the quads first (lights whose mesh the far plane would clip),
+// then the volume program's uniforms and the perspective projection for the meshes.
+void DeferredShader::begin_light_meshes(const std::vector<LightDraw>& lights, LightQueries& q, FrameStats& stats) {
     light_passes_drawn_ = 0;
-    // The quads first: lights whose mesh the far plane would clip.
     set_light_uniforms(light_any_prog_);
     set_light_uniforms(light_prog_);
     for (const LightDraw& l : lights)
@@ -87,6 +87,11 @@ void DeferredShader::draw_lights_volume(const std::vector<LightDraw>& lights, Fr
         }
     set_light_uniforms(light_volume_prog_);
     load_projection(proj_);
+}
+
+void DeferredShader::draw_lights_volume(const std::vector<LightDraw>& lights, FrameStats& stats) {
+    LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
+    begin_light_meshes(lights, q, stats);
     RenderState s = light_pass_state(light_volume_prog_.id(), false);
     s.cull = true;
     s.cull_face = GL_FRONT;  // back faces only: the camera may be inside

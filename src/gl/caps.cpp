@@ -116,4 +116,16 @@ std::string describe(const Caps& c) {
     return o.str();
 }
 
+std::vector<std::string> split_caps(const std::string& list) {
+    std::vector<std::string> out;
+    size_t a = 0;
+    while (a <= list.size()) {
+        size_t b = list.find(',', a);
+        if (b == std::string::npos) b = list.size();
+        if (b > a) out.push_back(list.substr(a, b - a));
+        a = b + 1;
+    }
+    return out;
+}
+
 }  // namespace dsr

@@ -35,6 +35,8 @@ struct Caps {
 // (both two-sided mechanisms: GL 2.0's and EXT_stencil_two_side), no-depth-bounds); unknown names
 // throw dsr::Error.
 Caps probe_caps(const std::vector<std::string>& force_off = {});
+// "no-mrt,,no-fbo" -> {"no-mrt", "no-fbo"}: the --caps / $DSR_CAPS list, empty items dropped.
+std::vector<std::string> split_caps(const std::string& list);
 
 // One line per capability with the extension it comes from, for `dsr info`.
 std::string describe(const Caps& caps);

@@ -32,18 +32,6 @@ namespace dsr {
 
 namespace {
 
-std::vector<std::string> split_list(const std::string& list) {
-    std::vector<std::string> out;
-    size_t a = 0;
-    while (a <= list.size()) {
-        size_t b = list.find(',', a);
-        if (b == std::string::npos) b = list.size();
-        if (b > a) out.push_back(list.substr(a, b - a));
-        a = b + 1;
-    }
-    return out;
-}
-
 class Viewer {
 public:
     explicit Viewer(const ViewerConfig& cfg);
@@ -95,7 +83,7 @@ Viewer::Viewer(const ViewerConfig& cfg) : cfg_(cfg) {
     load_gl_entry_points(*ctx_);
     gl_state().reset();
     const char* env_caps = std::getenv("DSR_CAPS");
-    st_.caps = probe_caps(split_list(std::string(env_caps ? env_caps : "") + "," + cfg.caps_list));
+    st_.caps = probe_caps(split_caps(std::string(env_caps ? env_caps : "") + "," + cfg.caps_list));
     st_.renderer = st_.caps.renderer + ", GL " + st_.caps.version;
 
     glfwSetWindowUserPointer(ctx_->window(), this);
