@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <random>
 
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "analysis/analytic_reference.h"
 #include "analysis/sphere_samples.h"
@@ -158,7 +157,7 @@ StressResult StressRunner::run(const StressCase& c) {
     // once, Camera::to_eye).
     const Camera& cam = c.scene.camera;
     const glm::mat4 proj = cam.projection(float(w) / float(h));
-    const glm::dmat4 view_exact = glm::lookAt(glm::dvec3(cam.pos), glm::dvec3(cam.target), glm::dvec3(cam.up));
+    const glm::dmat4 view_exact = cam.view_d();
     for (size_t i = 0; i < c.scene.lights.size(); ++i) {
         const Light& light = c.scene.lights[i];
         const glm::vec3 eye = cam.to_eye(light.pos);

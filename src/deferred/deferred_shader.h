@@ -190,6 +190,8 @@ private:
     void draw_lights_volume(const std::vector<LightDraw>& lights, FrameStats& stats);
     void draw_lights_stencil(const std::vector<LightDraw>& lights, FrameStats& stats);
     void begin_light_meshes(const std::vector<LightDraw>& lights, class LightQueries& q, FrameStats& stats);
+    void draw_light_mesh_pass(const LightDraw& l, class LightQueries& q);
+    void end_light_meshes(class LightQueries& q, FrameStats& stats);
     void draw_lights_tiles(const std::vector<LightDraw>& lights, FrameStats& stats);
     // The light's quad over its scissor rectangle (Listing 16): quad geometry, and the volume
     // geometries' lights whose mesh the far plane would clip.

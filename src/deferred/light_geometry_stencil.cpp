@@ -76,15 +76,9 @@ void DeferredShader::draw_lights_stencil(const std::vector<LightDraw>& lights, F
             draw_light_mesh(l);
         }
         gl_state().apply(light);
-        set_light_params(light_volume_prog_, l.params);
-        q.begin();
-        draw_light_mesh(l);
-        q.end();
-        ++light_passes_drawn_;
+        draw_light_mesh_pass(l, q);  // light_geometry_volume.cpp
     }
-    set_ortho(w_, h_);
-    q.collect(stats);
-    stats.light_passes = light_passes_drawn_;
+    end_light_meshes(q, stats);
 }
 
 }  // namespace dsr

@@ -101,12 +101,22 @@ void DeferredShader::draw_lights_volume(const std::vector<LightDraw>& lights, Fr
     gl_state().apply(s);
     for (const LightDraw& l : lights) {
         if (mesh_past_far(l)) continue;
-        set_light_params(light_volume_prog_, l.params);
-        q.begin();
-        draw_light_mesh(l);
-        q.end();
-        ++light_passes_drawn_;
+        draw_light_mesh_pass(l, q);
     }
+    end_light_meshes(q, stats);
+}
+
+// One light's shaded pass over its mesh, counted; volume and stencil share it.
+void DeferredShader::draw_light_mesh_pass(const LightDraw& l, LightQueries& q) {
+    set_light_params(light_volume_prog_, l.params);
+    q.begin();
+    draw_light_mesh(l);
+    q.end();
+    ++light_passes_drawn_;
+}
+
+// After the meshes: back to the image-space camera, and the counts into the stats.
+void DeferredShader::end_light_meshes(LightQueries& q, FrameStats& stats) {
     set_ortho(w_, h_);
     q.collect(stats);
     stats.light_passes = light_passes_drawn_;
