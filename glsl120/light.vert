@@ -4,8 +4,12 @@
 // linearly across the quad: exact, since the ray is affine in window coordinates.
 // VOLUME: the light's volume mesh instead (light geometries volume and stencil); the fragment
 // shader takes its texture coordinates and view ray from gl_FragCoord.
+// ID_VECS (light_tiles.frag): texture coordinates 2.. carry the quad's light slots, two a float.
 varying vec2 texcoord;
 varying vec3 vpos;
+#ifdef ID_VECS
+varying vec4 ids[ID_VECS];
+#endif
 
 void main()
 {
@@ -16,5 +20,17 @@ void main()
 #else
     texcoord = gl_MultiTexCoord0.xy;
     vpos = gl_MultiTexCoord1.xyz;
+#endif
+#ifdef ID_VECS
+    ids[0] = gl_MultiTexCoord2;
+#if ID_VECS > 1
+    ids[1] = gl_MultiTexCoord3;
+#endif
+#if ID_VECS > 2
+    ids[2] = gl_MultiTexCoord4;
+#endif
+#if ID_VECS > 3
+    ids[3] = gl_MultiTexCoord5;
+#endif
 #endif
 }

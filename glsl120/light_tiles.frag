@@ -1,9 +1,11 @@
 #version 120
 // Light geometry `tiles` (src/deferred/light_geometry_tiles.cpp): up to MAX_LIGHTS lights of any type
-// per pass (§3.4.3's "multiple lights per pass"). The G-buffer is read once, then Listing 20's
-// light loop runs over the group, with light.frag's per-light tests (LIGHT_DEPTH_TEST,
-// LIGHT_SPHERE_TEST) as `continue`; the sum is blended once. A pixel no light reaches is
-// discarded (nothing to add; light_fragments counts the rest).
+// per pass (§3.4.3's "multiple lights per pass"). The uniform arrays hold a batch of BATCH lights;
+// the quad's vertices carry which of them shade this tile (`ids`: two slot indices a float, hi*256 +
+// lo, 255 for none). The G-buffer is read once, then Listing 20's light loop runs over the tile's
+// lights, with light.frag's per-light tests (LIGHT_DEPTH_TEST, LIGHT_SPHERE_TEST) as `continue`; the
+// sum is blended once. A pixel no light reaches is discarded (nothing to add; light_fragments
+// counts the rest).
 #include "depth_codec.glsl"
 #include "lighting.glsl"
 
@@ -11,17 +13,17 @@ uniform sampler2D normal_map;    // unit 0
 uniform sampler2D diffuse_map;   // unit 1
 uniform sampler2D specular_map;  // unit 2
 uniform sampler2D depth_map;     // unit 3
-uniform vec4 lightpos[MAX_LIGHTS];    // lighting.glsl light_contribution's five vec4s per light
-uniform vec4 lightcolor[MAX_LIGHTS];
-uniform vec4 lightdir[MAX_LIGHTS];
-uniform vec4 lightspot[MAX_LIGHTS];
-uniform vec4 lightatt[MAX_LIGHTS];
-uniform int light_count;              // lights of this pass, <= MAX_LIGHTS
+uniform vec4 lightpos[BATCH];    // lighting.glsl light_contribution's five vec4s per light
+uniform vec4 lightcolor[BATCH];
+uniform vec4 lightdir[BATCH];
+uniform vec4 lightspot[BATCH];
+uniform vec4 lightatt[BATCH];
 uniform vec2 planes;
 uniform vec3 zrange;
 
 varying vec2 texcoord;
 varying vec3 vpos;
+varying vec4 ids[ID_VECS];
 
 void main()
 {
@@ -38,11 +40,21 @@ void main()
     float shininess = decode_shininess(specular.a);
     vec3 c = vec3(0.0);
     bool any = false;
-    for (int i = 0; i < MAX_LIGHTS; ++i) {
-        if (i >= light_count)
-            break;
+    for (int k = 0; k < MAX_LIGHTS; ++k) {
+        // Slot k: the high or low half of float k/2 (interpolated, so rounded back to an integer).
+        float pair = floor(ids[k / 8][(k / 2) - 4 * (k / 8)] + 0.5);
+        float hi = floor(pair / 256.0);
+        float slot = (k - 2 * (k / 2)) == 0 ? hi : pair - 256.0 * hi;
+        if (slot > 254.5)
+            break;  // the quad's slots are filled from the first: no more lights
+        int i = int(slot);
         vec4 lp = lightpos[i];
         float type = lightcolor[i].w;
+#ifdef LIGHT_POINT_ONLY
+        // Every light of the frame is a tutorial point light (Equation 2): light.frag's tests
+        // without the type checks, and lighting.glsl's point-only light_contribution.
+        type = 0.0;
+#endif
 #ifdef LIGHT_DEPTH_TEST
         if (type < 1.5 && abs(pos.z - lp.z) > lp.w)
             continue;
@@ -51,8 +63,10 @@ void main()
         vec3 d = pos - lp.xyz;
         if (type < 1.5 && dot(d, d) >= lp.w * lp.w)
             continue;
+#ifndef LIGHT_POINT_ONLY
         if (type > 0.5 && type < 1.5 && dot(d, lightdir[i].xyz) <= length(d) * lightdir[i].w)
             continue;
+#endif
 #endif
         // Each light's term clamped to [0, 1] as its own pass's blend would be and, into the
         // RGBA8 P-buffer 0, rounded to the 8-bit step that pass would have written: the sum then

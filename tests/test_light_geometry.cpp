@@ -4,6 +4,7 @@
 // with every geometry. Images are small (128x128) to keep `make test` short.
 #include <gtest/gtest.h>
 
+#include "analysis/bench_scenes.h"
 #include "deferred/paths.h"
 #include "render_fixture.h"
 
@@ -183,6 +184,22 @@ TEST(LightGeometry, TilesOfOneLightPerPassMatchQuad) {
     o.tile_lights = 8;
     const RenderResult eight = render_scene(s, kW, kH, o);
     EXPECT_LT(eight.stats.light_passes, one.stats.light_passes);
+}
+
+}  // namespace dsr::test
+
+namespace dsr::test {
+
+// 512 overlapping lights: more than one batch of the tiles plan's uniform arrays (at most 128
+// lights), so quads of one tile come from several batches; still quad's image, in far fewer draws.
+TEST(LightGeometry, TilesOverSeveralBatchesMatchQuad) {
+    const Scene s = with_overlapping_lights(default_scene(), 512);
+    const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
+    const RenderResult tiles = render_scene(s, kW, kH, with_geometry(LightGeometry::tiles));
+    expect_same("tiles_512", tiles, quad);
+    ASSERT_GT(tiles.stats.lights_drawn, 128);  // more than one batch
+    EXPECT_GT(tiles.stats.tile_light_pairs, 0);
+    EXPECT_LT(tiles.stats.light_passes, quad.stats.light_passes / 4);
 }
 
 }  // namespace dsr::test

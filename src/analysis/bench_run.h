@@ -27,6 +27,8 @@ struct Config {
     std::vector<int> lights;  // light counts of the sweep; -1: the scene's own lights
     std::vector<LightSet> light_sets;  // parallel to lights (bench_scenes.h); missing: spread
     std::string lights_text;  // --lights as given (or its default), e.g. "own,32,256"
+    int tile_size = ShaderOptions{}.tile_size;      // the tiles rows' --tile-size and --tile-lights
+    int tile_lights = ShaderOptions{}.tile_lights;
     // Light geometries with rows of their own (the default configuration with each); quad's rows
     // are always there.
     std::vector<LightGeometry> geometries = {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil,

@@ -44,7 +44,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
     Args args("bench", argv);
     std::string scene_path, json_path, report_path, lights_arg, geometry_arg;
     std::string backend = default_context_backend();  // --context, else $DSR_CONTEXT
-    int w = 0, h = 0, frames = 0;
+    int w = 0, h = 0, frames = 0, tile_size = 0, tile_lights = 0;
     bool quick = false;
     while (!args.done()) {
         std::string a = args.next();
@@ -55,6 +55,8 @@ int cmd_bench(const std::vector<std::string>& argv) {
         else if (a == "--frames") frames = args.int_value(a, 1, 1000);
         else if (a == "--lights") lights_arg = args.value(a);
         else if (a == "--light-geometry") geometry_arg = args.value(a);
+        else if (a == "--tile-size") tile_size = args.int_value(a, 8, 512);
+        else if (a == "--tile-lights") tile_lights = args.int_value(a, 1, 32);
         else if (a == "--context") backend = args.value(a);
         else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
         else if (scene_path.empty()) scene_path = a;
@@ -65,6 +67,8 @@ int cmd_bench(const std::vector<std::string>& argv) {
     if (quick) cfg.w = cfg.h = 128, cfg.frames = 3, cfg.warmup = 1;
     if (w) cfg.w = w, cfg.h = h;
     if (frames) cfg.frames = frames;
+    if (tile_size) cfg.tile_size = tile_size;
+    if (tile_lights) cfg.tile_lights = tile_lights;
     // --lights: comma-separated counts; "own" is the scene's own lights; N-overlap and N-large the
     // generated scenes of bench_scenes.h.
     cfg.lights_text = !lights_arg.empty() ? lights_arg

@@ -88,7 +88,8 @@ std::vector<CommandUsage> make_table() {
                      std::string(kContextOption)});
     t.push_back({"bench",
                  {"[SCENE] [--quick] [--json FILE.json] [--report FILE.md] [--size WxH] [--frames N]",
-                  "[--lights own,32,256,1024,1024-overlap,32-large] [--light-geometry LIST] [--context NAME]"},
+                  "[--lights own,32,256,1024,1024-overlap,32-large] [--light-geometry LIST]\n"
+                 "                 [--tile-size N] [--tile-lights N] [--context NAME]"},
                  "depth path x scissor x skips x encodings x lights vs forward: times, fragments, error",
                  "  SCENE                   scene to measure (default: data/default.scene and\n"
                  "                          tests/data/analytic.scene)\n"
@@ -103,7 +104,9 @@ std::vector<CommandUsage> make_table() {
                  "                          covering most of the screen, as LearnOpenGL's demo\n"
                  "                          (default own,32,256,1024,1024-overlap,32-large)\n"
                  "  --light-geometry LIST   light geometries to measure: quad, volume, stencil, tiles\n"
-                 "                          (default all four)\n" +
+                 "                          (default all four)\n"
+                 "  --tile-size N           the tiles rows' tile side in pixels, 8..512 (default 32)\n"
+                 "  --tile-lights N         the tiles rows' lights per pass, 1..32 (default 8)\n" +
                      std::string(kContextOption)});
     t.push_back({"stress",
                  {"[--quick] [--json FILE] [--report FILE.md] [--plot FILE.png] [--only TEXT]",

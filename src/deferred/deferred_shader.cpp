@@ -3,6 +3,10 @@
 
 #include <algorithm>
 
+#include "deferred/tile_plan.h"
+
+#include <algorithm>
+
 #include "deferred/gpu_scene.h"
 #include "dsr_error.h"
 #include "gl/check.h"
@@ -64,7 +68,17 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     if (lg == LightGeometry::tiles) {
         auto tdefs = ldefs;
         tdefs.push_back("MAX_LIGHTS " + std::to_string(opts.tile_lights));
+        tdefs.push_back("ID_VECS " + std::to_string(tile_id_vecs(opts.tile_lights)));
+        // The batch the uniform arrays hold: five vec4s a light within the fragment stage's
+        // uniform budget (GL 2.0 guarantees 64 vec4s; llvmpipe and NVIDIA give 1024), a few vec4s
+        // kept for the other uniforms, and below tile_plan's empty-slot index 255.
+        GLint comps = 0;
+        glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
+        tile_batch_ = std::clamp((comps / 4 - 8) / 5, 1, 128);
+        tdefs.push_back("BATCH " + std::to_string(tile_batch_));
         if (!opts.float_accum) tdefs.push_back("QUANTIZE_8BIT");  // P-buffer 0 is RGBA8
+        light_tiles_any_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);
+        tdefs.push_back("LIGHT_POINT_ONLY");  // frames of tutorial point lights only, as quad's light_prog_
         light_tiles_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);
     }
     if (paths_.accum_depth) depth_copy_prog_ = Program(shader_dir, "post.vert", "depth_copy.frag", depth_defs);
@@ -131,6 +145,12 @@ void DeferredShader::set_ortho(int w, int h) {
     glLoadIdentity();
 }
 
+glm::vec3 DeferredShader::view_ray_at(float x, float y) const {
+    const float u = x / float(w_), v = y / float(h_);
+    return (1 - v) * ((1 - u) * corner_rays_[0] + u * corner_rays_[1]) +
+           v * ((1 - u) * corner_rays_[3] + u * corner_rays_[2]);
+}
+
 void DeferredShader::draw_rect(float x0, float y0, float x1, float y1, bool rays) {
     const float xs[4] = {x0, x1, x1, x0}, ys[4] = {y0, y0, y1, y1};
     // The G-buffer's content may be padded to powers of two: scale into its extent.
@@ -141,9 +161,7 @@ void DeferredShader::draw_rect(float x0, float y0, float x1, float y1, bool rays
         if (rays) {
             // The view ray is affine in window coordinates: bilinear in the screen's corner rays
             // (exactly the corner's ray at a screen corner; a tile's corner otherwise).
-            const float u = xs[i] / float(w_), v = ys[i] / float(h_);
-            const glm::vec3 r = (1 - v) * ((1 - u) * corner_rays_[0] + u * corner_rays_[1]) +
-                                v * ((1 - u) * corner_rays_[3] + u * corner_rays_[2]);
+            const glm::vec3 r = view_ray_at(xs[i], ys[i]);
             glMultiTexCoord3f(GL_TEXTURE1, r.x, r.y, r.z);
         }
         glVertex2f(xs[i], ys[i]);

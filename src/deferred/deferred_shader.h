@@ -63,6 +63,7 @@ struct FrameStats {
     // reaches past the far plane, where its back faces would be clipped away.
     int light_passes = 0;
     int lights_as_quads = 0;
+    long long tile_light_pairs = 0;  // tiles: (tile, light) pairs its plan shaded (tile_plan.h)
     StageTimes ms;
     TimingSource timing = TimingSource::wall;
 };
@@ -206,6 +207,8 @@ private:
     // Screen-aligned quad over [x0,x1]x[y0,y1] (window pixels), texcoord 0 = 0..1;
     // with rays, texcoord 1 = eye-space view ray of each corner (Listing 19).
     void draw_rect(float x0, float y0, float x1, float y1, bool rays);
+    // The eye-space view ray (x, y, -1) at window position (x, y): bilinear in the corner rays.
+    glm::vec3 view_ray_at(float x, float y) const;
     void set_ortho(int w, int h);
     // Shader defines of the depth path and packed encoding (glsl120/depth_codec.glsl).
     std::vector<std::string> depth_defines() const;
@@ -232,7 +235,9 @@ private:
     Program light_any_prog_;
     static bool tutorial_light(const Light& l) { return l.type == Light::Type::point && !l.attenuation; }
     Program light_volume_prog_;         // light.vert/.frag with VOLUME (any type): drawn over the volume mesh
-    Program light_tiles_prog_;          // light_tiles.frag: up to tile_lights lights per pass
+    Program light_tiles_prog_;          // light_tiles.frag: up to tile_lights lights per pass (LIGHT_POINT_ONLY)
+    Program light_tiles_any_prog_;      // the same for frames with spot, directional or attenuated lights
+    int tile_batch_ = 0;                // lights light_tiles.frag holds in its uniform arrays
     Program depth_copy_prog_;           // depth_copy.frag: the depth hand-off
     VolumeMesh unit_sphere_mesh_;       // volume_mesh of the unit sphere at the origin
     float volume_mesh_reach_ = 1;       // its farthest vertex from the centre

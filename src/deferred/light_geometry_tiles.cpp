@@ -1,65 +1,114 @@
 // Light geometry `tiles` (§3.4.3: the light pass "can be used to create more complex shaders which
-// could process multiple lights per pass"): the screen is cut into tile_size x tile_size tiles,
-// each tile lists the lights whose scissor rectangle (Listing 16) overlaps it, and one quad per
-// tile and group of up to tile_lights lights runs light_tiles.frag, which reads the tile's
-// G-buffer once and loops over the group (uniform arrays, a constant loop bound). The group's
-// light is summed in the shader and blended once, so each pixel's G-buffer is read and its
-// accumulation blended once per group instead of once per light.
+// could process multiple lights per pass"): the screen is cut into tile_size x tile_size tiles, each
+// tile lists the lights whose scissor rectangle (Listing 16) overlaps it, and light_tiles.frag reads
+// a tile's G-buffer once and loops over up to tile_lights of them, summing their light and blending
+// once. The plan (tile_plan.h, pure) batches the work: a batch of lights sits in the shader's
+// uniform arrays, and one draw per batch and layer covers every tile with lights in that layer,
+// each quad's vertices carrying its lights' indices (two per float, in texture coordinates 2..5).
 // The tile's depth range is not used: on GL 2.x it needs a reduction pass read back to the CPU
 // (a stall) or another pass per tile; the in-shader depth and sphere tests reject instead.
 #include <algorithm>
 
 #include "deferred/deferred_shader.h"
 #include "deferred/light_queries.h"
+#include "deferred/tile_plan.h"
 #include "gl/state.h"
 
 namespace dsr {
 
+namespace {
+
+constexpr float kNoLight = 255.0f;  // an empty slot; batch indices stay below it
+
+// One vertex of a tile quad: window position, G-buffer texcoord, view ray, packed light slots.
+struct TileVertex {
+    float pos[2];
+    float uv[2];
+    float ray[3];
+    float ids[16];  // 4 vec4s for up to 32 lights; pairs: ids[j] = slot[2j] * 256 + slot[2j+1]
+};
+
+}  // namespace
+
 void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, FrameStats& stats) {
-    const int ts = opts_.tile_size, n = opts_.tile_lights;
-    const int tx = (w_ + ts - 1) / ts, ty = (h_ + ts - 1) / ts;
-    // Bin: each light into the tiles its rectangle overlaps.
-    std::vector<std::vector<int>> bins(size_t(tx) * ty);
-    for (int i = 0; i < int(lights.size()); ++i) {
-        const ScissorRect& r = lights[i].rect;
-        for (int y = r.y0 / ts; y <= (r.y1 - 1) / ts && y < ty; ++y)
-            for (int x = r.x0 / ts; x <= (r.x1 - 1) / ts && x < tx; ++x) bins[size_t(y) * tx + x].push_back(i);
-    }
-    set_light_uniforms(light_tiles_prog_);
-    gl_state().apply(light_pass_state(light_tiles_prog_.id(), false));
+    std::vector<ScissorRect> rects(lights.size());
+    for (size_t i = 0; i < lights.size(); ++i) rects[i] = lights[i].rect;
+    const TilePlan plan = plan_tiles(rects, w_, h_, opts_.tile_size, opts_.tile_lights, tile_batch_);
+
+    // The tutorial's cheaper point-light shader where every light of the frame allows it (as quad
+    // picks per light): the general one evaluates every type's terms for every light.
+    const bool point_only = std::all_of(lights.begin(), lights.end(), [](const LightDraw& l) { return tutorial_light(*l.light); });
+    Program& prog = point_only ? light_tiles_prog_ : light_tiles_any_prog_;
+    set_light_uniforms(prog);
+    gl_state().apply(light_pass_state(prog.id(), false));
     LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
-    // lighting.glsl's five vec4s per light, one uniform array each (light_params.h).
-    const size_t slots = size_t(n);
-    std::vector<glm::vec4> pos(slots), color(slots), dir(slots), spot(slots), att(slots);
-    int passes = 0;
-    for (int y = 0; y < ty; ++y)
-        for (int x = 0; x < tx; ++x) {
-            const std::vector<int>& bin = bins[size_t(y) * tx + x];
-            for (size_t g = 0; g < bin.size(); g += size_t(n)) {
-                const int count = int(std::min(bin.size() - g, size_t(n)));
-                for (int k = 0; k < count; ++k) {
-                    const LightParams& p = lights[size_t(bin[g + k])].params;
-                    pos[size_t(k)] = p.pos;
-                    color[size_t(k)] = p.color;
-                    dir[size_t(k)] = p.dir;
-                    spot[size_t(k)] = p.spot;
-                    att[size_t(k)] = p.att;
-                }
-                light_tiles_prog_.set_array("lightpos", pos.data(), count);
-                light_tiles_prog_.set_array("lightcolor", color.data(), count);
-                light_tiles_prog_.set_array("lightdir", dir.data(), count);
-                light_tiles_prog_.set_array("lightspot", spot.data(), count);
-                light_tiles_prog_.set_array("lightatt", att.data(), count);
-                light_tiles_prog_.set("light_count", count);
-                q.begin();
-                draw_rect(float(x * ts), float(y * ts), float(std::min(w_, (x + 1) * ts)),
-                          float(std::min(h_, (y + 1) * ts)), true);
-                q.end();
-                ++passes;
+    const int id_vecs = tile_id_vecs(opts_.tile_lights);
+    // The G-buffer's content may be padded to powers of two: scale into its extent (as draw_rect).
+    const float sx = gbuf().tex_scale_x() / float(w_), sy = gbuf().tex_scale_y() / float(h_);
+
+    std::vector<TileVertex> verts;
+    glEnableClientState(GL_VERTEX_ARRAY);  // the pointers are set per draw below
+    const int units = 2 + id_vecs;
+    for (int u = 0; u < units; ++u) {
+        glClientActiveTexture(GLenum(GL_TEXTURE0 + u));
+        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    }
+    std::vector<glm::vec4> pos, color, dir, spot, att;
+    int uploaded = -1;
+    for (const TileDraw& d : plan.draws) {
+        if (d.batch != uploaded) {  // lighting.glsl's five vec4s per light, one uniform array each
+            const std::vector<int>& batch = plan.batches[size_t(d.batch)];
+            pos.clear(), color.clear(), dir.clear(), spot.clear(), att.clear();
+            for (int l : batch) {
+                const LightParams& p = lights[size_t(l)].params;
+                pos.push_back(p.pos), color.push_back(p.color), dir.push_back(p.dir);
+                spot.push_back(p.spot), att.push_back(p.att);
+            }
+            const int count = int(batch.size());
+            prog.set_array("lightpos", pos.data(), count);
+            prog.set_array("lightcolor", color.data(), count);
+            prog.set_array("lightdir", dir.data(), count);
+            prog.set_array("lightspot", spot.data(), count);
+            prog.set_array("lightatt", att.data(), count);
+            uploaded = d.batch;
+        }
+        verts.clear();
+        for (const TileQuad& t : d.quads) {
+            TileVertex v{};
+            auto slot = [&](size_t k) { return k < t.slots.size() ? float(t.slots[k]) : kNoLight; };
+            for (size_t j = 0; j < 16; ++j) v.ids[j] = slot(2 * j) * 256.0f + slot(2 * j + 1);
+            const float xs[4] = {float(t.x0), float(t.x1), float(t.x1), float(t.x0)};
+            const float ys[4] = {float(t.y0), float(t.y0), float(t.y1), float(t.y1)};
+            for (int c = 0; c < 4; ++c) {
+                const glm::vec3 r = view_ray_at(xs[c], ys[c]);
+                v.pos[0] = xs[c], v.pos[1] = ys[c];
+                v.uv[0] = xs[c] * sx, v.uv[1] = ys[c] * sy;
+                v.ray[0] = r.x, v.ray[1] = r.y, v.ray[2] = r.z;
+                verts.push_back(v);
             }
         }
+        const TileVertex* base = verts.data();
+        glVertexPointer(2, GL_FLOAT, sizeof(TileVertex), base->pos);
+        glClientActiveTexture(GL_TEXTURE0);
+        glTexCoordPointer(2, GL_FLOAT, sizeof(TileVertex), base->uv);
+        glClientActiveTexture(GL_TEXTURE1);
+        glTexCoordPointer(3, GL_FLOAT, sizeof(TileVertex), base->ray);
+        for (int k = 0; k < id_vecs; ++k) {
+            glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
+            glTexCoordPointer(4, GL_FLOAT, sizeof(TileVertex), base->ids + 4 * k);
+        }
+        q.begin();
+        glDrawArrays(GL_QUADS, 0, GLsizei(verts.size()));
+        q.end();
+    }
+    for (int u = units - 1; u >= 0; --u) {
+        glClientActiveTexture(GLenum(GL_TEXTURE0 + u));
+        glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    }
+    glDisableClientState(GL_VERTEX_ARRAY);
     q.collect(stats);
-    stats.light_passes = passes;
+    stats.light_passes = int(plan.draws.size());
+    stats.tile_light_pairs = plan.tile_light_pairs;
 }
 
 }  // namespace dsr

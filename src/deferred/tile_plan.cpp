@@ -1,0 +1,77 @@
+#include "deferred/tile_plan.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace dsr {
+
+unsigned morton2(unsigned x, unsigned y) {
+    auto spread = [](unsigned v) {
+        v &= 0xffffu;
+        v = (v | (v << 8)) & 0x00ff00ffu;
+        v = (v | (v << 4)) & 0x0f0f0f0fu;
+        v = (v | (v << 2)) & 0x33333333u;
+        v = (v | (v << 1)) & 0x55555555u;
+        return v;
+    };
+    return spread(x) | (spread(y) << 1);
+}
+
+TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
+                    int lights_per_pass, int batch_size) {
+    TilePlan plan;
+    if (width <= 0 || height <= 0 || tile_size <= 0 || lights_per_pass <= 0 || batch_size <= 0) return plan;
+    const int ts = tile_size, n = lights_per_pass;
+    const int tx = (width + ts - 1) / ts, ty = (height + ts - 1) / ts;
+    // Clip to the screen; drop what is left empty.
+    std::vector<ScissorRect> clipped(rects.size());
+    std::vector<int> order;
+    for (size_t i = 0; i < rects.size(); ++i) {
+        ScissorRect r = rects[i];
+        r.x0 = std::max(r.x0, 0), r.y0 = std::max(r.y0, 0);
+        r.x1 = std::min(r.x1, width), r.y1 = std::min(r.y1, height);
+        clipped[i] = r;
+        if (!r.empty()) order.push_back(int(i));
+    }
+    std::vector<unsigned> key(rects.size(), 0);
+    for (int i : order) {
+        const ScissorRect& r = clipped[size_t(i)];
+        key[size_t(i)] = morton2(unsigned((r.x0 + r.x1) / 2 / ts), unsigned((r.y0 + r.y1) / 2 / ts));
+    }
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[size_t(a)] < key[size_t(b)]; });
+    for (size_t s = 0; s < order.size(); s += size_t(batch_size))
+        plan.batches.emplace_back(order.begin() + long(s), order.begin() + long(std::min(order.size(), s + size_t(batch_size))));
+
+    std::vector<std::vector<int>> bins(size_t(tx) * ty);
+    for (int b = 0; b < int(plan.batches.size()); ++b) {
+        for (auto& bin : bins) bin.clear();
+        size_t most = 0;
+        const std::vector<int>& batch = plan.batches[size_t(b)];
+        for (int slot = 0; slot < int(batch.size()); ++slot) {
+            const ScissorRect& r = clipped[size_t(batch[size_t(slot)])];
+            for (int y = r.y0 / ts; y <= (r.y1 - 1) / ts; ++y)
+                for (int x = r.x0 / ts; x <= (r.x1 - 1) / ts; ++x) {
+                    std::vector<int>& bin = bins[size_t(y) * tx + x];
+                    bin.push_back(slot);
+                    most = std::max(most, bin.size());
+                }
+        }
+        for (size_t first = 0; first < most; first += size_t(n)) {
+            TileDraw d;
+            d.batch = b;
+            for (int y = 0; y < ty; ++y)
+                for (int x = 0; x < tx; ++x) {
+                    const std::vector<int>& bin = bins[size_t(y) * tx + x];
+                    if (bin.size() <= first) continue;
+                    TileQuad q{x * ts, y * ts, std::min(width, (x + 1) * ts), std::min(height, (y + 1) * ts), {}};
+                    q.slots.assign(bin.begin() + long(first), bin.begin() + long(std::min(bin.size(), first + size_t(n))));
+                    plan.tile_light_pairs += long(q.slots.size());
+                    d.quads.push_back(std::move(q));
+                }
+            plan.draws.push_back(std::move(d));
+        }
+    }
+    return plan;
+}
+
+}  // namespace dsr

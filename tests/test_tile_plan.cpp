@@ -1,0 +1,114 @@
+// The tiles geometry's plan (deferred/tile_plan.h) against brute force: every (tile, light) pair
+// whose rectangle overlaps the tile is shaded exactly once, no draw holds more than the pass's
+// lights per tile, every draw's lights come from its own batch.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+#include <set>
+
+#include "deferred/tile_plan.h"
+
+using namespace dsr;
+
+namespace {
+
+void check_plan(const std::vector<ScissorRect>& rects, int w, int h, int ts, int n, int b) {
+    const TilePlan plan = plan_tiles(rects, w, h, ts, n, b);
+    // Batches: each non-empty (on screen) light exactly once, at most b lights each.
+    std::multiset<int> in_batches;
+    for (const auto& batch : plan.batches) {
+        EXPECT_LE(int(batch.size()), b);
+        EXPECT_FALSE(batch.empty());
+        in_batches.insert(batch.begin(), batch.end());
+    }
+    std::map<std::pair<int, int>, std::multiset<int>> shaded;  // tile -> lights
+    long long pairs = 0;
+    for (const TileDraw& d : plan.draws) {
+        ASSERT_LT(d.batch, int(plan.batches.size()));
+        const auto& batch = plan.batches[size_t(d.batch)];
+        std::set<std::pair<int, int>> tiles_of_draw;
+        for (const TileQuad& q : d.quads) {
+            EXPECT_LE(int(q.slots.size()), n);
+            EXPECT_FALSE(q.slots.empty());
+            EXPECT_EQ(q.x0 % ts, 0);
+            EXPECT_EQ(q.y0 % ts, 0);
+            EXPECT_EQ(q.x1, std::min(w, q.x0 + ts));
+            EXPECT_EQ(q.y1, std::min(h, q.y0 + ts));
+            EXPECT_TRUE(tiles_of_draw.insert({q.x0 / ts, q.y0 / ts}).second) << "a tile twice in one draw";
+            for (int s : q.slots) {
+                ASSERT_GE(s, 0);
+                ASSERT_LT(s, int(batch.size()));
+                shaded[{q.x0 / ts, q.y0 / ts}].insert(batch[size_t(s)]);
+                ++pairs;
+            }
+        }
+    }
+    EXPECT_EQ(pairs, plan.tile_light_pairs);
+    std::multiset<int> on_screen;
+    for (int y = 0; y * ts < h; ++y)
+        for (int x = 0; x * ts < w; ++x) {
+            std::multiset<int> want;
+            for (int i = 0; i < int(rects.size()); ++i) {
+                const ScissorRect& r = rects[size_t(i)];
+                const int x0 = std::max(r.x0, x * ts), x1 = std::min({r.x1, (x + 1) * ts, w});
+                const int y0 = std::max(r.y0, y * ts), y1 = std::min({r.y1, (y + 1) * ts, h});
+                if (x1 > x0 && y1 > y0) {
+                    want.insert(i);
+                    on_screen.insert(i);
+                }
+            }
+            EXPECT_EQ(shaded[std::make_pair(x, y)], want) << "tile " << x << "," << y;
+        }
+    EXPECT_EQ(std::set<int>(in_batches.begin(), in_batches.end()), std::set<int>(on_screen.begin(), on_screen.end()));
+    EXPECT_EQ(in_batches.size(), std::set<int>(in_batches.begin(), in_batches.end()).size());
+}
+
+}  // namespace
+
+TEST(TilePlan, EveryOverlapShadedOnceAgainstBruteForce) {
+    std::mt19937 rng(12);
+    std::uniform_int_distribution<int> pos(-40, 300), size(0, 160);
+    for (int trial = 0; trial < 40; ++trial) {
+        const int w = 97 + trial * 7, h = 61 + trial * 5;
+        std::vector<ScissorRect> rects(size_t(1 + trial * 9));
+        for (ScissorRect& r : rects) {
+            r.x0 = pos(rng), r.y0 = pos(rng);
+            r.x1 = r.x0 + size(rng), r.y1 = r.y0 + size(rng);
+        }
+        const int ts = 8 << (trial % 3), n = 1 + trial % 9, b = 1 + (trial * 13) % 70;
+        SCOPED_TRACE(testing::Message() << "trial " << trial << " " << w << "x" << h << " ts " << ts << " n " << n << " b " << b);
+        check_plan(rects, w, h, ts, n, b);
+    }
+}
+
+TEST(TilePlan, OneDrawPerLayerNotPerTile) {
+    // 64 lights over the whole 256x256 screen, 8 per pass, one batch: 8 draws of 64 tiles each.
+    std::vector<ScissorRect> rects(64, ScissorRect{0, 0, 256, 256});
+    const TilePlan plan = plan_tiles(rects, 256, 256, 32, 8, 128);
+    ASSERT_EQ(plan.batches.size(), 1u);
+    ASSERT_EQ(plan.draws.size(), 8u);
+    for (const TileDraw& d : plan.draws) {
+        EXPECT_EQ(d.quads.size(), 64u);
+        for (const TileQuad& q : d.quads) EXPECT_EQ(q.slots.size(), 8u);
+    }
+    EXPECT_EQ(plan.tile_light_pairs, 64 * 64);
+}
+
+TEST(TilePlan, MortonOrderKeepsNeighboursTogether) {
+    EXPECT_EQ(morton2(0, 0), 0u);
+    EXPECT_EQ(morton2(1, 0), 1u);
+    EXPECT_EQ(morton2(0, 1), 2u);
+    EXPECT_EQ(morton2(3, 3), 15u);
+    EXPECT_EQ(morton2(0xffff, 0xffff), 0xffffffffu);
+    // Two clusters of small lights far apart, batch size = cluster size: each batch one cluster.
+    std::vector<ScissorRect> rects;
+    for (int i = 0; i < 16; ++i) {
+        const int off = (i % 2) ? 400 : 0;  // interleaved in the input
+        rects.push_back(ScissorRect{off + i, off + i, off + i + 8, off + i + 8});
+    }
+    const TilePlan plan = plan_tiles(rects, 512, 512, 32, 8, 8);
+    ASSERT_EQ(plan.batches.size(), 2u);
+    for (const auto& batch : plan.batches)
+        for (int l : batch) EXPECT_EQ(l % 2, batch[0] % 2);
+}
