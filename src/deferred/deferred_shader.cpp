@@ -63,6 +63,17 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
         auto vdefs = ldefs;
         vdefs.push_back("VOLUME");
         light_volume_prog_ = Program(shader_dir, "light.vert", "light.frag", vdefs);
+        if (lg == LightGeometry::stencil) {
+            // Behind the stencil test the in-shader rejections are redundant (the stencil marks
+            // surfaces inside the volume) and harmful: a shader that may discard, in a pass that
+            // writes the stencil (zeroing it for the next light), makes the GPU test the stencil
+            // after the shader instead of before it (the H200 ran the shader for 2.40x the ideal
+            // count with them). Without them a pixel just outside the sphere adds att = 0.
+            std::vector<std::string> sdefs;
+            for (const std::string& d : vdefs)
+                if (d != "LIGHT_DEPTH_TEST" && d != "LIGHT_SPHERE_TEST") sdefs.push_back(d);
+            light_stencil_prog_ = Program(shader_dir, "light.vert", "light.frag", sdefs);
+        }
         build_volume_mesh();
     }
     if (lg == LightGeometry::tiles) {

@@ -191,7 +191,7 @@ private:
     void draw_lights_volume(const std::vector<LightDraw>& lights, FrameStats& stats);
     void draw_lights_stencil(const std::vector<LightDraw>& lights, FrameStats& stats);
     void begin_light_meshes(const std::vector<LightDraw>& lights, class LightQueries& q, FrameStats& stats);
-    void draw_light_mesh_pass(const LightDraw& l, class LightQueries& q);
+    void draw_light_mesh_pass(const LightDraw& l, class LightQueries& q, Program& prog);
     void end_light_meshes(class LightQueries& q, FrameStats& stats);
     void draw_lights_tiles(const std::vector<LightDraw>& lights, FrameStats& stats);
     // The light's quad over its scissor rectangle (Listing 16): quad geometry, and the volume
@@ -235,6 +235,7 @@ private:
     Program light_any_prog_;
     static bool tutorial_light(const Light& l) { return l.type == Light::Type::point && !l.attenuation; }
     Program light_volume_prog_;         // light.vert/.frag with VOLUME (any type): drawn over the volume mesh
+    Program light_stencil_prog_;        // the same without the in-shader light tests: stencil's light pass
     Program light_tiles_prog_;          // light_tiles.frag: up to tile_lights lights per pass (LIGHT_POINT_ONLY)
     Program light_tiles_any_prog_;      // the same for frames with spot, directional or attenuated lights
     int tile_batch_ = 0;                // lights light_tiles.frag holds in its uniform arrays

@@ -4,7 +4,8 @@
 // front face behind it takes one away (GL_INCR_WRAP / GL_DECR_WRAP on depth fail). What stays
 // non-zero is exactly where the surface lies inside the volume, also with the camera inside it
 // (its clipped front faces would have passed the depth test anyway). Then the light pass over
-// the back faces, only where the stencil is non-zero, zeroing it for the next light.
+// the back faces, only where the stencil is non-zero, zeroing it for the next light; its shader
+// has no discard (light_stencil_prog_), so the GPU can test the stencil before running it.
 // The two faces in one pass with glStencilOpSeparate (GL 2.0) or EXT_stencil_two_side; with
 // neither, two one-sided passes (back faces, then front faces).
 #include <glm/gtc/type_ptr.hpp>
@@ -53,7 +54,7 @@ void DeferredShader::draw_lights_stencil(const std::vector<LightDraw>& lights, F
 
     // The light pass: back faces (each pixel of the volume's outline once), where the stencil is
     // non-zero; the pass zeroes what it passes, so every light starts from a clear stencil.
-    RenderState light = light_pass_state(light_volume_prog_.id(), false);
+    RenderState light = light_pass_state(light_stencil_prog_.id(), false);
     light.cull = true;
     light.cull_face = GL_FRONT;
     light.stencil_test = true;
@@ -76,7 +77,7 @@ void DeferredShader::draw_lights_stencil(const std::vector<LightDraw>& lights, F
             draw_light_mesh(l);
         }
         gl_state().apply(light);
-        draw_light_mesh_pass(l, q);  // light_geometry_volume.cpp
+        draw_light_mesh_pass(l, q, light_stencil_prog_);  // light_geometry_volume.cpp
     }
     end_light_meshes(q, stats);
 }

@@ -86,6 +86,7 @@ void DeferredShader::begin_light_meshes(const std::vector<LightDraw>& lights, Li
             ++stats.lights_as_quads;
         }
     set_light_uniforms(light_volume_prog_);
+    if (light_stencil_prog_.id()) set_light_uniforms(light_stencil_prog_);
     load_projection(proj_);
 }
 
@@ -101,14 +102,14 @@ void DeferredShader::draw_lights_volume(const std::vector<LightDraw>& lights, Fr
     gl_state().apply(s);
     for (const LightDraw& l : lights) {
         if (mesh_past_far(l)) continue;
-        draw_light_mesh_pass(l, q);
+        draw_light_mesh_pass(l, q, light_volume_prog_);
     }
     end_light_meshes(q, stats);
 }
 
 // One light's shaded pass over its mesh, counted; volume and stencil share it.
-void DeferredShader::draw_light_mesh_pass(const LightDraw& l, LightQueries& q) {
-    set_light_params(light_volume_prog_, l.params);
+void DeferredShader::draw_light_mesh_pass(const LightDraw& l, LightQueries& q, Program& prog) {
+    set_light_params(prog, l.params);
     q.begin();
     draw_light_mesh(l);
     q.end();
