@@ -36,6 +36,7 @@ json row_json(const Row& r) {
     j["ms_median"] = r.ms_median;
     j["ms_min"] = r.ms_min;
     j["ms_max"] = r.ms_max;
+    j["cpu_ms_median"] = r.cpu_ms;
     const bool deferred = r.renderer == "deferred";
     j["light_fragments"] = deferred && r.light_fragments ? json(*r.light_fragments) : json(nullptr);
     j["ideal_fragments"] = deferred && r.ideal_fragments ? json(*r.ideal_fragments) : json(nullptr);
@@ -82,6 +83,7 @@ std::vector<std::string> table_cells(const Row& r) {
                                   std::to_string(r.frames),
                                   format_number("%.2f", r.ms_median),
                                   format_number("%.2f", r.ms_min) + "-" + format_number("%.2f", r.ms_max),
+                                  format_number("%.2f", r.cpu_ms),
                                   deferred ? ll(r.light_fragments) : "-",
                                   deferred ? ll(r.ideal_fragments) : "-",
                                   ratio,
@@ -105,7 +107,7 @@ std::vector<std::string> table_cells(const Row& r) {
 }
 
 const std::vector<std::string>& table_header() {
-    static const std::vector<std::string> h = {"scene", "lights", "configuration", "frames", "ms med", "ms min-max",
+    static const std::vector<std::string> h = {"scene", "lights", "configuration", "frames", "ms med", "ms min-max", "cpu ms",
                                                "light frags", "ideal", "ratio", "max LSB", "mean LSB", "PSNR dB",
                                                "an. max", "an. mean", "an. PSNR", "invocations", "inv/ideal",
                                                "floor ms", "floor ratio"};

@@ -44,7 +44,7 @@ struct RowRun {
     Row row;
     std::unique_ptr<DeferredShader> ds;
     std::unique_ptr<ForwardRenderer> fr;
-    std::vector<double> ms, depth_copy_ms;
+    std::vector<double> ms, depth_copy_ms, cpu_ms;
     FrameStats last;
     ForwardStats last_forward;
     Image image;
@@ -53,9 +53,11 @@ struct RowRun {
         if (ds) {
             last = ds->render(s, w, h);
             depth_copy_ms.push_back(last.ms.depth_copy);
+            cpu_ms.push_back(last.ms.cpu);
             return last.ms.frame;
         }
         last_forward = fr->render(s);
+        cpu_ms.push_back(last_forward.ms_cpu);
         return last_forward.ms_frame;
     }
 };
@@ -320,6 +322,7 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
         r.ms_median = median(run->ms);
         r.ms_min = *std::min_element(run->ms.begin(), run->ms.end());
         r.ms_max = *std::max_element(run->ms.begin(), run->ms.end());
+        r.cpu_ms = median(run->cpu_ms);
         if (run->ds) {
             r.light_fragments = run->last.counted_light_fragments();
             r.light_invocations = run->last.light_invocations;

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "deferred/tile_plan.h"
+#include "dsr_clock.h"
 
 #include <algorithm>
 
@@ -183,6 +184,7 @@ void DeferredShader::draw_rect(float x0, float y0, float x1, float y1, bool rays
 FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     if (!gpu_) throw Error("DeferredShader::render before set_scene");
     FrameStats st;
+    const double cpu0 = thread_cpu_ms();
     timer_.begin_frame(S_COUNT);
     timer_.begin(S_GEOMETRY);
     geometry_stage(scene);
@@ -193,6 +195,7 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     final_stage(out_w, out_h);
     timer_.end();
     std::vector<double> ms;
+    st.ms.cpu = thread_cpu_ms() - cpu0;
     st.ms.frame = timer_.end_frame(ms);
     st.ms.geometry = ms[S_GEOMETRY];
     st.ms.ambient = ms[S_AMBIENT];

@@ -41,6 +41,10 @@ struct GpuMaterial;
 struct StageTimes {
     double geometry = 0, ambient = 0, lights = 0, bloom = 0, aa = 0, final = 0, frame = 0;
     double depth_copy = 0;  // hand_off_depth: the G-buffer's depth onto P-buffer 0 (0 where not needed)
+    // CPU time of the rendering thread from the start of render() to its end-of-frame wait: the
+    // submission cost (draw calls, state, uniforms). With glFinish-timed stages (llvmpipe) the
+    // waits in between are in it as far as they spin; with timer queries (a GPU) they are not there.
+    double cpu = 0;
 };
 
 struct FrameStats {

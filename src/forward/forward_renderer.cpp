@@ -172,7 +172,7 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
     if (scene.objects.size() != bounds_.size()) throw Error("forward: render with a scene other than set_scene's");
     if (needs_any_light(scene) != any_light_) build_programs(!any_light_);  // not set_scene's lights
     ForwardStats st;
-    const double t0 = now_ms();
+    const double t0 = now_ms(), cpu0 = thread_cpu_ms();
     const Camera& cam = scene.camera;
     view_ = cam.view();
     const glm::mat4 proj = cam.projection(float(w_) / float(h_));
@@ -225,6 +225,7 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
         target_->unbind_render();
         copy_to_main();
     }
+    st.ms_cpu = thread_cpu_ms() - cpu0;
     glFinish();
     st.ms_frame = now_ms() - t0;
     check_gl("forward: frame");

@@ -44,6 +44,7 @@ struct ForwardOptions {
 
 struct ForwardStats {
     double ms_frame = 0;         // wall time of render(), glFinish included
+    double ms_cpu = 0;           // the thread's CPU time up to the final glFinish (dsr_clock.h)
     int passes = 0;              // geometry submissions (draw calls), the depth pre-pass included
     int light_object_pairs = 0;  // (light, object) pairs shaded: §3's O(objects x lights)
     int lights_culled = 0;       // lights outside the view frustum (Listing 17's test)
