@@ -229,6 +229,9 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
         EXPECT_TRUE(row["scissor"].is_boolean());
         EXPECT_LE(row["ms_min"].get<double>(), row["ms_median"].get<double>());
         EXPECT_LE(row["ms_median"].get<double>(), row["ms_max"].get<double>());
+        // One thread's CPU time: positive, and no more than the frame's wall time.
+        EXPECT_GT(row["cpu_ms_median"].get<double>(), 0.0);
+        EXPECT_LE(row["cpu_ms_median"].get<double>(), row["ms_max"].get<double>() + 0.5);
         const std::string kind = row["renderer"];
         if (kind == "deferred") {
             ++deferred;
@@ -455,7 +458,7 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     const nlohmann::ordered_json f = bench::row_json(forward_row("default", 3, "forward-single", 2.0));
     const std::vector<std::string> keys = {
         "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "light_geometry", "scissor", "skips_off",
-        "lights", "lights_label", "size", "frames", "ms_median", "ms_min", "ms_max", "light_fragments",
+        "lights", "lights_label", "size", "frames", "ms_median", "ms_min", "ms_max", "cpu_ms_median", "light_fragments",
         "ideal_fragments", "fragments_ratio", "scissor_pixels", "lights_drawn", "passes", "max_lsb", "mean_lsb",
         "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic", "light_invocations",
         "invocations_ratio", "ideal_source", "floor_fill_ms", "floor_light_ns", "floor_post_ms", "floor_ms",
