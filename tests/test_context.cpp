@@ -255,3 +255,30 @@ TEST(Context, EglDeviceOutOfRangeIsOneClearLine) {
     EXPECT_NE(r.output.find("--egl-device 15"), std::string::npos) << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
 }
+
+// --render-target pbuffer (issue 15): every P-buffer and the G-buffer an EGL pbuffer surface of its
+// own, copied to its textures; the fbo image within 2 LSB, on both depth paths and with a light
+// geometry that needs P-buffer 0's depth and stencil. OSMesa has no pbuffer surfaces: refused.
+TEST(Context, PbufferRenderTargetMatchesFbo) {
+    const std::string d = temp_dir();
+    RunResult info = run("info --context egl");
+    if (info.status != 0) GTEST_SKIP() << "no EGL desktop OpenGL context here: " << info.output;
+    for (const char* extra : {"--depth texture", "--depth packed --bloom --aa", "--light-geometry stencil"}) {
+        SCOPED_TRACE(extra);
+        const std::string common = std::string("render --context egl --size 96x80 ") + extra;
+        RunResult f = run(common + " --render-target fbo -o " + d + "/fbo.png");
+        ASSERT_EQ(f.status, 0) << f.output;
+        RunResult p = run(common + " --render-target pbuffer -o " + d + "/pb.png --stats " + d + "/pb.json");
+        ASSERT_EQ(p.status, 0) << p.output;
+        std::ifstream in(d + "/pb.json");
+        const std::string stats((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        EXPECT_NE(stats.find("\"render_target\": \"pbuffer\""), std::string::npos) << stats.substr(0, 400);
+        ImageDiff diff = compare_images(load_image(d + "/pb.png"), load_image(d + "/fbo.png"), 2.0 / 255.0);
+        EXPECT_LE(diff.max_lsb(), 2.001);
+        EXPECT_EQ(diff.failing, 0);
+    }
+    RunResult refused = run("render --context osmesa --size 32x32 --render-target pbuffer -o " + d + "/no.png");
+    EXPECT_NE(refused.status, 0);
+    EXPECT_NE(refused.output.find("--context egl"), std::string::npos) << refused.output;
+    EXPECT_FALSE(exists(d + "/no.png"));
+}

@@ -102,3 +102,29 @@ TEST(Paths, DescribeNamesEveryDecision) {
 
 }  // namespace
 }  // namespace dsr
+
+TEST(Paths, RenderTargetAskedForIsKeptOrRefused) {
+    Caps c = caps_for(0);  // every capability
+    ShaderOptions o;
+    Paths p = choose_paths(c, o);
+    EXPECT_EQ(p.render_target, "fbo");
+    o.render_target = RenderTarget::copy;  // asked for, though framebuffer objects exist
+    p = choose_paths(c, o);
+    EXPECT_EQ(p.render_target, "copy");
+    EXPECT_FALSE(p.fbo);
+    EXPECT_FALSE(p.mrt);  // one colour buffer: one pass per target
+    o.render_target = RenderTarget::pbuffer;
+    p = choose_paths(c, o);
+    EXPECT_NE(p.refused.find("--context egl"), std::string::npos) << p.refused;  // no surfaces
+    c.pbuffer_surfaces = true;
+    p = choose_paths(c, o);
+    EXPECT_TRUE(p.refused.empty()) << p.refused;
+    EXPECT_EQ(p.render_target, "pbuffer");
+    EXPECT_TRUE(p.pbuffer);
+    EXPECT_FALSE(p.fbo);
+    o.render_target = RenderTarget::fbo;
+    c.fbo = false;
+    EXPECT_NE(choose_paths(c, o).refused.find("EXT_framebuffer_object"), std::string::npos);
+    o.render_target = RenderTarget::automatic;
+    EXPECT_EQ(choose_paths(c, o).render_target, "copy");
+}

@@ -43,6 +43,10 @@ const char* kRendererOptions =
     "  --aa-kernel text|listing\n"
     "                          all 8 neighbours as the text says (default) or Listing 21's 4\n"
     "  --aa-weight W           largest anti-alias offset in pixels, 0..8 (default 1)\n"
+    "  --render-target auto|fbo|copy|pbuffer\n"
+    "                          where the G-buffer and P-buffers are drawn: framebuffer objects,\n"
+    "                          the main buffer copied to textures, or EGL pbuffer surfaces copied\n"
+    "                          to textures (needs --context egl); auto: fbo, else copy\n"
     "  --light-geometry quad|volume|stencil|tiles\n"
     "                          how each light reaches its pixels: scissored quad (default, the\n"
     "                          tutorial's), volume mesh back faces, stencil-masked volume, or\n"
@@ -68,7 +72,8 @@ std::vector<CommandUsage> make_table() {
                   "[--bloom|--no-bloom] [--bloom-scale 2|4] [--bloom-taps N] [--bloom-strength S]",
                   "[--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]",
                   "[--aa-kernel text|listing] [--aa-weight W]",
-                  "[--light-geometry quad|volume|stencil|tiles] [--depth-bounds on|off] [--tile-size N] [--tile-lights N]",
+                  "[--light-geometry quad|volume|stencil|tiles] [--depth-bounds on|off] [--tile-size N] [--tile-lights N]\n"
+                  "                  [--render-target auto|fbo|copy|pbuffer]",
                   "[--context NAME] [--egl-device N] [--gl-state-cache on|off] [--debug-gl]"},
                  "render SCENE (default data/default.scene) with the deferred shader into one image",
                  "  SCENE                   scene file (default data/default.scene)\n"

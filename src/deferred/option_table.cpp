@@ -75,6 +75,16 @@ std::vector<RenderOption> make_table() {
         [](const RenderOptions& r) { return std::string(light_geometry_name(r.shader.light_geometry)); },
         [](RenderOptions& r, const std::string& v) { r.shader.light_geometry = light_geometry_from_name(v); }));
     t.push_back(switch_option("depth-bounds", &ShaderOptions::depth_bounds));
+    t.push_back(choice(
+        "render-target", {"auto", "fbo", "copy", "pbuffer"},
+        [](const RenderOptions& r) {
+            static const char* names[] = {"auto", "fbo", "copy", "pbuffer"};
+            return std::string(names[int(r.shader.render_target)]);
+        },
+        [](RenderOptions& r, const std::string& v) {
+            r.shader.render_target = v == "fbo" ? RenderTarget::fbo : v == "copy" ? RenderTarget::copy
+                                     : v == "pbuffer" ? RenderTarget::pbuffer : RenderTarget::automatic;
+        }));
     t.push_back(integer_option("tile-size", 8, 512, &ShaderOptions::tile_size));
     t.push_back(integer_option("tile-lights", 1, 32, &ShaderOptions::tile_lights));
     t.push_back(choice(

@@ -18,6 +18,10 @@ enum class DepthPath { texture, packed, automatic };
 //  tiles    screen tiles; up to `tile_lights` lights per pass in one shader (§3.4.3's closing remark)
 enum class LightGeometry { quad, volume, stencil, tiles };
 
+// Where the G-buffer and P-buffers are rendered (§3.2's pPBuffer): automatic picks fbo where
+// EXT_framebuffer_object exists, else copy; pbuffer needs a context with pbuffer surfaces (EGL).
+enum class RenderTarget { automatic, fbo, copy, pbuffer };
+
 enum class AaSource { normal, depth, both };
 enum class AaKernel { text, listing };
 
@@ -61,6 +65,7 @@ struct ShaderOptions {
     bool depth_bounds = false;      // EXT_depth_bounds_test on the quad passes (refused where missing)
     int tile_size = 32;             // tiles: pixels per side
     int tile_lights = 8;            // tiles: lights per pass (the shader's constant loop bound)
+    RenderTarget render_target = RenderTarget::automatic;
 };
 
 // "quad", "volume", "stencil", "tiles"; from_name throws dsr::Error listing them otherwise.

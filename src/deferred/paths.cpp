@@ -16,13 +16,15 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     p.gbuffer_targets = p.depth_path == DepthPath::packed ? 4 : 3;
     // MRT needs render-to-texture too: without framebuffer objects the main buffer has one
     // colour buffer (§3.2, one pass per target).
-    p.mrt = caps.fbo && caps.draw_buffers && caps.max_draw_buffers >= p.gbuffer_targets;
-    p.fbo = caps.fbo;
+    // --render-target: fbo where asked or automatic and present; copy or pbuffer otherwise.
+    p.fbo = caps.fbo && (opts.render_target == RenderTarget::automatic || opts.render_target == RenderTarget::fbo);
+    p.pbuffer = opts.render_target == RenderTarget::pbuffer && caps.pbuffer_surfaces;
+    p.mrt = p.fbo && caps.draw_buffers && caps.max_draw_buffers >= p.gbuffer_targets;
     p.pow2 = !caps.npot;
     p.count_fragments = caps.occlusion_query;
     p.depth = p.depth_path == DepthPath::texture ? "texture" : "packed";
     p.gbuffer = p.mrt ? "mrt" : "per-target";
-    p.render_target = p.fbo ? "fbo" : "copy";
+    p.render_target = p.fbo ? "fbo" : p.pbuffer ? "pbuffer" : "copy";
     p.textures = p.pow2 ? "pow2" : "npot";
 
     // Light geometry (issue 12). Stencil needs a stencil buffer where P-buffer 0 is drawn: with
@@ -30,7 +32,7 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     p.light_geometry = opts.light_geometry;
     if (opts.light_geometry == LightGeometry::stencil) {
         const char* missing = !caps.stencil ? "a stencil buffer"
-                              : caps.fbo && !caps.packed_depth_stencil ? "EXT_packed_depth_stencil"
+                              : p.fbo && !caps.packed_depth_stencil ? "EXT_packed_depth_stencil"
                                                                        : nullptr;
         if (missing) {
             p.light_geometry = LightGeometry::volume;
@@ -51,12 +53,16 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
                     (caps.glsl_version.empty() ? std::string("none") : caps.glsl_version) + " (GL " + caps.version + ")";
     else if (p.depth_path == DepthPath::texture && !caps.depth_texture)
         p.refused = "--depth texture needs ARB_depth_texture, which is missing (use --depth packed)";
-    else if (opts.float_accum && !(caps.texture_float && caps.fbo))
+    else if (opts.float_accum && !(caps.texture_float && p.fbo))
         p.refused = "float accumulation needs ARB_texture_float and EXT_framebuffer_object";
     else if (opts.gbuffer_half && !(caps.half_float && caps.texture_float))
         p.refused = "half-float G-buffer targets need ARB_texture_float and ARB_half_float_pixel";
     else if (opts.depth_bounds && !caps.depth_bounds)
         p.refused = "--depth-bounds on needs EXT_depth_bounds_test, which this GL lacks (llvmpipe has none)";
+    else if (opts.render_target == RenderTarget::fbo && !caps.fbo)
+        p.refused = "--render-target fbo needs EXT_framebuffer_object, which this GL lacks";
+    else if (opts.render_target == RenderTarget::pbuffer && !caps.pbuffer_surfaces)
+        p.refused = "--render-target pbuffer needs pbuffer surfaces: run with --context egl (OSMesa has none)";
     else if (opts.depth_bounds && opts.light_geometry != LightGeometry::quad)
         p.refused = "--depth-bounds on applies to --light-geometry quad only";
     else if (opts.light_geometry == LightGeometry::tiles &&
@@ -74,7 +80,9 @@ std::string describe(const Paths& p) {
       << (p.mrt ? "mrt: one material pass into all " + std::to_string(p.gbuffer_targets) + " targets (ARB_draw_buffers)"
                 : "per-target: one material pass per G-buffer target (§3.2)")
       << "\n  render target  "
-      << (p.fbo ? "fbo: render to texture (EXT_framebuffer_object)" : "copy: main buffer region + glCopyTexSubImage2D")
+      << (p.fbo       ? "fbo: render to texture (EXT_framebuffer_object)"
+          : p.pbuffer ? "pbuffer: one EGL pbuffer surface per buffer + glCopyTexSubImage2D"
+                      : "copy: main buffer region + glCopyTexSubImage2D")
       << "\n  textures       "
       << (p.pow2 ? "pow2: targets padded, material maps rescaled to powers of two" : "npot: any size")
       << "\n  light counting " << (p.count_fragments ? "occlusion queries" : "off (no occlusion queries)")

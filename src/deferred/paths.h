@@ -13,13 +13,14 @@ struct Paths {
     DepthPath depth_path = DepthPath::texture;  // never automatic
     bool mrt = true;             // one material pass into every G-buffer target (ARB_draw_buffers)
     bool fbo = true;             // render to texture (EXT_framebuffer_object); else copy
+    bool pbuffer = false;        // copy from pbuffer surfaces of their own (--render-target pbuffer)
     bool pow2 = false;           // targets padded, material maps rescaled to powers of two
     bool count_fragments = true; // occlusion queries around the light passes
     int gbuffer_targets = 3;     // normal, diffuse, specular (+ packed depth)
     // The same decisions by name (info, --stats, the tests).
     std::string depth;           // "texture" | "packed"
     std::string gbuffer;         // "mrt" | "per-target"
-    std::string render_target;   // "fbo" | "copy"
+    std::string render_target;   // "fbo" | "copy" | "pbuffer"
     std::string textures;        // "npot" | "pow2"
     // The light geometry as run (a missing capability turns stencil into volume) and why not the
     // one asked for (empty when it is); stencil's way of setting the two faces apart.

@@ -30,6 +30,7 @@ void RenderTargets::allocate() {
     g.width = w_;
     g.height = h_;
     g.use_fbo = paths_.fbo;
+    g.use_pbuffer = paths_.pbuffer;
     g.pow2 = paths_.pow2;
     // EXT_framebuffer_object wants one format for every colour attachment, so the half-float
     // option makes all targets half; the packed depth keeps its byte codes (exact in half).
@@ -48,6 +49,7 @@ void RenderTargets::allocate() {
         p.color_formats = {opts_.float_accum && !bloom ? GLenum(GL_RGBA32F_ARB) : GLenum(GL_RGBA8)};
         p.filter = GL_LINEAR;
         p.use_fbo = paths_.fbo;
+        p.use_pbuffer = paths_.pbuffer;
         p.pow2 = paths_.pow2;
         // The G-buffer's depth is handed to P-buffer 0 (hand_off_depth); 1 too, as the
         // anti-alias pass swaps the two. Without framebuffer objects the main buffer's serves.

@@ -1,5 +1,7 @@
 #include "gl/caps.h"
 
+#include "gl/surfaces.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -79,6 +81,7 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
     c.stencil_two_side_ext = has_extension("GL_EXT_stencil_two_side") && gl_entry.ActiveStencilFaceEXT &&
                              !off("no-stencil-two-side");
     c.depth_bounds = has_extension("GL_EXT_depth_bounds_test") && gl_entry.DepthBoundsEXT && !off("no-depth-bounds");
+    c.pbuffer_surfaces = offscreen_surfaces() != nullptr;
     c.forced_off = force_off;
     while (glGetError() != GL_NO_ERROR) {}
     return c;
@@ -107,7 +110,8 @@ std::string describe(const Caps& c) {
       << "  " << yn(c.packed_depth_stencil) << " depth-stencil targets    (EXT_packed_depth_stencil)\n"
       << "  " << yn(c.stencil_separate) << " two-sided stencil        (glStencilOpSeparate, OpenGL 2.0)\n"
       << "  " << yn(c.stencil_two_side_ext) << " two-sided stencil        (EXT_stencil_two_side)\n"
-      << "  " << yn(c.depth_bounds) << " depth bounds test        (EXT_depth_bounds_test)\n";
+      << "  " << yn(c.depth_bounds) << " depth bounds test        (EXT_depth_bounds_test)\n"
+      << "  " << yn(c.pbuffer_surfaces) << " pbuffer surfaces         (EGL pbuffers for --render-target pbuffer)\n";
     if (!c.forced_off.empty()) {
         o << "forced off:";
         for (auto& f : c.forced_off) o << " " << f;

@@ -26,6 +26,7 @@ struct Caps {
     bool stencil_separate = false;   // glStencilOpSeparate (GL 2.0): both faces in one stencil pass
     bool stencil_two_side_ext = false;  // EXT_stencil_two_side: the same before GL 2.0
     bool depth_bounds = false;       // EXT_depth_bounds_test (NVIDIA; not llvmpipe)
+    bool pbuffer_surfaces = false;   // the context offers pbuffer surfaces (gl/surfaces.h: EGL)
     std::vector<std::string> forced_off;  // names hidden by --caps / DSR_CAPS
 };
 

@@ -1,5 +1,7 @@
 #include "gl/pbuffer.h"
 
+#include "gl/surfaces.h"
+
 #include "dsr_error.h"
 #include "gl/check.h"
 #include "gl/state.h"
@@ -30,6 +32,13 @@ PBuffer::PBuffer(std::string name, const PBufferDesc& desc) : name_(std::move(na
         glBindTexture(GL_TEXTURE_2D, 0);
     }
     check_gl(("creating the textures of " + name_).c_str());
+    if (!desc.use_fbo && desc.use_pbuffer) {
+        // pbuffer mode: a surface of its own, at the content's size (no padding needed there).
+        OffscreenSurfaces* s = offscreen_surfaces();
+        if (!s) throw Error("P-buffer " + name_ + ": this context has no pbuffer surfaces (--render-target pbuffer needs --context egl)");
+        surface_ = s->create_surface(desc.width, desc.height);
+        return;
+    }
     if (!desc.use_fbo) {
         // Copy mode: the main frame buffer is the render target; its depth buffer serves as
         // the depth attachment (a depth texture is filled by copying from it).
@@ -68,17 +77,24 @@ PBuffer::PBuffer(std::string name, const PBufferDesc& desc) : name_(std::move(na
 PBuffer::~PBuffer() {
     if (depth_rb_) glDeleteRenderbuffersEXT(1, &depth_rb_);
     if (fbo_) glDeleteFramebuffersEXT(1, &fbo_);
+    if (surface_) {
+        if (rendering_) offscreen_surfaces()->make_surface_current(nullptr);
+        offscreen_surfaces()->destroy_surface(surface_);
+    }
 }
 
 void PBuffer::bind_render(bool keep_contents) {
     if (textures_bound_ > 0)
         throw Error("P-buffer " + name_ + ": bind_render while it is bound as a texture (§3.2 forbids both at once)");
     if (desc_.use_fbo) glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fbo_);
+    if (surface_) offscreen_surfaces()->make_surface_current(surface_);
     glViewport(0, 0, desc_.width, desc_.height);
     rendering_ = true;
     if (!desc_.use_fbo) {
         copy_target_ = colors_.empty() ? -1 : 0;
-        if (keep_contents && copy_target_ >= 0) {
+        // A pbuffer surface still holds target 0's image when target 0 was the last one drawn.
+        const bool still_there = surface_ && drawn_ && last_target_ == 0;
+        if (keep_contents && copy_target_ >= 0 && !still_there) {
             // The main buffer holds another buffer's image: draw ours back (fixed function,
             // 1:1 texels) before the pass blends onto it.
             const RenderState pass = gl_state().current();  // the pass's, put back after
@@ -130,10 +146,14 @@ void PBuffer::copy_to_textures(bool depth) {
 }
 
 void PBuffer::unbind_render() {
-    if (desc_.use_fbo)
+    if (desc_.use_fbo) {
         glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
-    else if (rendering_)
+    } else if (rendering_) {
         copy_to_textures(true);
+        drawn_ = true;
+        last_target_ = copy_target_;
+        if (surface_) offscreen_surfaces()->make_surface_current(nullptr);
+    }
     rendering_ = false;
     copy_target_ = -1;
 }

@@ -6,6 +6,11 @@
 //          renders into the lower-left region of the main frame buffer, and the region is
 //          copied into the textures with glCopyTexSubImage2D when the target changes or the
 //          buffer is unbound. The buffer must fit in the main frame buffer.
+//  * pbuffer: the copy implementation on a surface of its own (gl/surfaces.h: an EGL pbuffer made
+//          current with the one context), the 2005 pbuffer without render-to-texture. Its colour,
+//          depth and stencil persist between binds, so a pass that blends onto the buffer needs no
+//          draw-back; a multi-target buffer (the G-buffer) draws its targets one pass at a time into
+//          its one surface (one depth buffer, which the depth pre-pass filled, serves every target).
 // Without non-power-of-two textures the textures are padded to powers of two; the content is
 // the lower-left width x height, and tex_scale() gives its extent in texture coordinates.
 #pragma once
@@ -27,6 +32,7 @@ struct PBufferDesc {
     DepthAttachment depth = DepthAttachment::none;
     GLenum filter = GL_NEAREST;          // G-buffer reads are 1:1 (§3): nearest
     bool use_fbo = true;                 // false: the copy implementation
+    bool use_pbuffer = false;            // with use_fbo false: copy from a surface of its own
     bool pow2 = false;                   // pad textures to powers of two
 };
 
@@ -73,6 +79,9 @@ private:
     int tex_w_ = 0, tex_h_ = 0;
     int copy_target_ = -1;  // copy mode: the colour target the main buffer currently holds
     GLuint fbo_ = 0, depth_rb_ = 0;
+    void* surface_ = nullptr;  // pbuffer implementation: its offscreen surface
+    bool drawn_ = false;
+    int last_target_ = -1;     // pbuffer: the target the surface held when last unbound       // pbuffer: the surface holds an image of ours (keep_contents needs no draw-back)
     std::vector<Texture> colors_;
     Texture depth_tex_;
     bool rendering_ = false;

@@ -10,6 +10,7 @@
 
 #include "dsr_error.h"
 #include "gl/state.h"
+#include "gl/surfaces.h"
 #include "platform/context.h"
 
 namespace dsr {
@@ -75,7 +76,9 @@ EGLDisplay open_display(int device, std::string& platform) {
     return eglGetDisplay(EGL_DEFAULT_DISPLAY);
 }
 
-class EGLGLContext : public GLContext {
+// The main buffer and every P-buffer of `--render-target pbuffer` (gl/surfaces.h) are pbuffer
+// surfaces of one config, made current with the one context.
+class EGLGLContext : public GLContext, public OffscreenSurfaces {
 public:
     EGLGLContext(int w, int h, int device) : w_(w), h_(h) {
         dpy_ = open_display(device, platform_);
@@ -88,7 +91,7 @@ public:
         const EGLint config_attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
                                          EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
                                          EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8, EGL_NONE};
-        EGLConfig config = nullptr;
+        EGLConfig& config = config_;
         EGLint n = 0;
         if (!eglChooseConfig(dpy_, config_attribs, &config, 1, &n) || n < 1)
             fail("no RGBA8 pbuffer config with 24-bit depth and 8-bit stencil for desktop OpenGL");
@@ -106,8 +109,18 @@ public:
         make_current();
         const char* vendor = eglQueryString(dpy_, EGL_VENDOR);
         vendor_ = vendor ? vendor : "";
+        // Render-to-texture pbuffers (eglBindTexImage): configs that offer them for desktop GL.
+        const EGLint rtt_attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+                                      EGL_BIND_TO_TEXTURE_RGBA, EGL_TRUE, EGL_NONE};
+        EGLint rtt = 0;
+        if (!eglChooseConfig(dpy_, rtt_attribs, nullptr, 0, &rtt)) rtt = 0;
+        bind_tex_note_ = std::to_string(rtt) + " pbuffer config(s) with EGL_BIND_TO_TEXTURE_RGBA for desktop GL; "
+                         "not used: P-buffers reach their textures by glCopyTexSubImage2D (Mesa accepted "
+                         "eglBindTexImage with the texture left empty, docs/gpu.md)";
+        set_offscreen_surfaces(this);
     }
     ~EGLGLContext() override {
+        if (offscreen_surfaces() == this) set_offscreen_surfaces(nullptr);
         eglMakeCurrent(dpy_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (ctx_ != EGL_NO_CONTEXT) eglDestroyContext(dpy_, ctx_);
         if (surface_ != EGL_NO_SURFACE) eglDestroySurface(dpy_, surface_);
@@ -127,8 +140,25 @@ public:
         gl_state().reset();  // the cache described the other context
     }
 
+    void* create_surface(int width, int height) override {
+        const EGLint attribs[] = {EGL_WIDTH, width, EGL_HEIGHT, height, EGL_NONE};
+        EGLSurface s = eglCreatePbufferSurface(dpy_, config_, attribs);
+        if (s == EGL_NO_SURFACE)
+            fail("cannot create a " + std::to_string(width) + "x" + std::to_string(height) + " pbuffer for a P-buffer");
+        return s;
+    }
+    void destroy_surface(void* surface) override { eglDestroySurface(dpy_, static_cast<EGLSurface>(surface)); }
+    void make_surface_current(void* surface) override {
+        // The same context: every object and all state stay, so GlState's cache stays true.
+        EGLSurface s = surface ? static_cast<EGLSurface>(surface) : surface_;
+        if (!eglMakeCurrent(dpy_, s, s, ctx_)) fail("cannot make a pbuffer surface current");
+    }
+    std::string bind_tex_image_note() const override { return bind_tex_note_; }
+
 private:
     int w_, h_;
+    EGLConfig config_ = nullptr;
+    std::string bind_tex_note_;
     EGLDisplay dpy_ = EGL_NO_DISPLAY;
     EGLSurface surface_ = EGL_NO_SURFACE;
     EGLContext ctx_ = EGL_NO_CONTEXT;
