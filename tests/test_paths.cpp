@@ -101,8 +101,6 @@ TEST(Paths, DescribeNamesEveryDecision) {
 }
 
 }  // namespace
-}  // namespace dsr
-
 TEST(Paths, RenderTargetAskedForIsKeptOrRefused) {
     Caps c = caps_for(0);  // every capability
     ShaderOptions o;
@@ -128,3 +126,5 @@ TEST(Paths, RenderTargetAskedForIsKeptOrRefused) {
     o.render_target = RenderTarget::automatic;
     EXPECT_EQ(choose_paths(c, o).render_target, "copy");
 }
+
+}  // namespace dsr
