@@ -88,6 +88,23 @@ run)
         echo "geometry $g vs quad: $($dsr compare "$out/default_1920x1080.png" "$out/geometry_$g.png" 2>&1 | tail -1)" \
             | tee -a "$out/geometry_compare.txt"
     done
+    # tiles at one light per pass and the general (any light type) shader is what quad's light_any
+    # program computes: where it differs from quad the blending differs, not the shading.
+    $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --light-geometry tiles --tile-lights 1 \
+        --frames 20 --stats "$out/geometry_tiles1.json" -o "$out/geometry_tiles1.png"
+    echo "geometry tiles (1 light a pass) vs quad: $($dsr compare "$out/default_1920x1080.png" "$out/geometry_tiles1.png" 2>&1 | tail -1)" \
+        | tee -a "$out/geometry_compare.txt"
+    # The tutorial's P-buffers as EGL pbuffer surfaces, and the copy path, against fbo (issue 15).
+    for rt in pbuffer copy; do
+        for extra in "--no-bloom --no-aa" ""; do
+            tag=$rt${extra:+_nopost}
+            $dsr render --context egl --size 1920x1080 $extra --render-target $rt --frames 30 \
+                --stats "$out/target_$tag.json" -o "$out/target_$tag.png"
+            ref="$out/default_post_1920x1080.png"; [ -n "$extra" ] && ref="$out/default_1920x1080.png"
+            echo "render-target $tag vs fbo: $($dsr compare "$ref" "$out/target_$tag.png" 2>&1 | tail -1)" \
+                | tee -a "$out/geometry_compare.txt"
+        done
+    done
     if $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --depth-bounds on --frames 60 \
         --stats "$out/depth_bounds.json" -o "$out/depth_bounds.png"; then
         echo "depth-bounds on vs off: $($dsr compare "$out/default_1920x1080.png" "$out/depth_bounds.png" 2>&1 | tail -1)" \
