@@ -98,6 +98,10 @@ public:
     DeferredShader(const Caps& caps, int width, int height, const ShaderOptions& opts,
                    const std::string& shader_dir);
     ~DeferredShader();
+    // Counting (light_fragments, light_invocations): two queries around every light draw. On by
+    // default; the bench turns it off for its timed frames (on a GPU at 1024 lights the queries
+    // were most of the CPU's frame) and counts in one more frame after them.
+    void set_counting(bool on) { counting_ = on; }
     // Reallocates the G-buffer and P-buffers at the new size; no shader is recompiled.
     void resize(int width, int height);
 
@@ -246,7 +250,8 @@ private:
     Program depth_copy_prog_;           // depth_copy.frag: the depth hand-off
     VolumeMesh unit_sphere_mesh_;       // volume_mesh of the unit sphere at the origin
     float volume_mesh_reach_ = 1;       // its farthest vertex from the centre
-    int light_passes_drawn_ = 0;        // this frame's light-shader draws (FrameStats::light_passes)
+    int light_passes_drawn_ = 0;
+    bool counting_ = true;              // set_counting        // this frame's light-shader draws (FrameStats::light_passes)
     Program blur_prog_[2];              // [select]
     Program aa_prog_[2];                // [factor only]
     std::unique_ptr<GpuScene> gpu_;

@@ -45,7 +45,7 @@ void DeferredShader::draw_light_quad(const LightDraw& l, LightQueries& q) {
 void DeferredShader::draw_lights_quad(const std::vector<LightDraw>& lights, FrameStats& stats) {
     set_light_uniforms(light_any_prog_);
     set_light_uniforms(light_prog_);
-    LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
+    LightQueries q(counting_ && paths_.count_fragments, counting_ && caps_.pipeline_statistics);
     light_passes_drawn_ = 0;
     for (const LightDraw& l : lights) draw_light_quad(l, q);
     q.collect(stats);

@@ -28,7 +28,7 @@ StencilFace counting_face(GLenum zfail) {
 }  // namespace
 
 void DeferredShader::draw_lights_stencil(const std::vector<LightDraw>& lights, FrameStats& stats) {
-    LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
+    LightQueries q(counting_ && paths_.count_fragments, counting_ && caps_.pipeline_statistics);
     begin_light_meshes(lights, q, stats);  // light_geometry_volume.cpp
 
     // The stencil pass: no colour, no shader, depth tested (GL_LESS: a face on or behind the

@@ -41,7 +41,7 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     Program& prog = point_only ? light_tiles_prog_ : light_tiles_any_prog_;
     set_light_uniforms(prog);
     gl_state().apply(light_pass_state(prog.id(), false));
-    LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
+    LightQueries q(counting_ && paths_.count_fragments, counting_ && caps_.pipeline_statistics);
     const int id_vecs = tile_id_vecs(opts_.tile_lights);
     // The G-buffer's content may be padded to powers of two: scale into its extent (as draw_rect).
     const float sx = gbuf().tex_scale_x() / float(w_), sy = gbuf().tex_scale_y() / float(h_);

@@ -91,7 +91,7 @@ void DeferredShader::begin_light_meshes(const std::vector<LightDraw>& lights, Li
 }
 
 void DeferredShader::draw_lights_volume(const std::vector<LightDraw>& lights, FrameStats& stats) {
-    LightQueries q(paths_.count_fragments, caps_.pipeline_statistics);
+    LightQueries q(counting_ && paths_.count_fragments, counting_ && caps_.pipeline_statistics);
     begin_light_meshes(lights, q, stats);
     RenderState s = light_pass_state(light_volume_prog_.id(), false);
     s.cull = true;
