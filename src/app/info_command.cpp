@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "deferred/paths.h"
 #include "gl/caps.h"
+#include "gl/surfaces.h"
 #include "gl/frame_timer.h"
 #include "platform/context.h"
 
@@ -53,6 +54,9 @@ int cmd_info(const std::vector<std::string>& argv) {
                           .c_str()
                     : sp.light_geometry_note.c_str());
     std::printf("  --depth-bounds on: %s\n", caps.depth_bounds ? "EXT_depth_bounds_test" : "refused (no EXT_depth_bounds_test)");
+    std::printf("  --render-target pbuffer: %s\n",
+                offscreen_surfaces() ? ("EGL pbuffer surfaces; " + offscreen_surfaces()->bind_tex_image_note()).c_str()
+                                     : "refused (this context has no pbuffer surfaces: --context egl)");
     const TimingCheck& t = choose_timing(caps, ctx->width(), ctx->height());
     std::printf("  timing         %s (%s", timing_name(t.source), t.reason.c_str());
     if (t.query_ms >= 0) std::printf("; same passes: %.3f ms by timer query, %.3f ms by wall clock", t.query_ms, t.wall_ms);
