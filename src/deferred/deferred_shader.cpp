@@ -88,7 +88,9 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
         glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
         tile_batch_ = std::clamp((comps / 4 - 8) / 5, 1, 128);
         tdefs.push_back("BATCH " + std::to_string(tile_batch_));
-        if (!opts.float_accum) tdefs.push_back("QUANTIZE_8BIT");  // P-buffer 0 is RGBA8
+        // P-buffer 0 is RGBA8: several lights summed in one pass are each rounded as their own
+        // pass would be. One light a pass needs no emulation: the blend rounds it as quad's does.
+        if (!opts.float_accum && opts.tile_lights > 1) tdefs.push_back("QUANTIZE_8BIT");
         light_tiles_any_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);
         tdefs.push_back("LIGHT_POINT_ONLY");  // frames of tutorial point lights only, as quad's light_prog_
         light_tiles_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);
