@@ -4,6 +4,8 @@
 // (`make stress` does). The accuracy cases also check what docs/accuracy.md reports.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -305,4 +307,19 @@ TEST(StressCli, JsonReportAndPlot) {
     const auto flag = dsr::test::run("stress --fast");
     EXPECT_NE(flag.status, 0);
     EXPECT_NE(flag.output.find("unknown option '--fast'"), std::string::npos) << flag.output;
+}
+
+// `dsr stress --light-geometry`: the cases through the geometries that test against the handed-off
+// depth (at far/near 1e6 and 1e6 from the origin) pass the same invariants; a bad name is one clear
+// line. (`dsr stress --light-geometry tiles` passes the whole sweep too; not run here, for time.)
+TEST(StressCli, DepthTestedLightGeometriesPassTheExtremeCases) {
+    for (const char* g : {"volume", "stencil"}) {
+        const auto r = dsr::test::run(std::string("stress --only 1e6 --light-geometry ") + g);
+        EXPECT_EQ(r.status, 0) << g << ": " << r.output;
+        EXPECT_NE(r.output.find(" 0 failed"), std::string::npos) << r.output;
+    }
+    const auto bad = dsr::test::run("stress --only ratio/1e2/log --light-geometry cones");
+    EXPECT_NE(bad.status, 0);
+    EXPECT_NE(bad.output.find("--light-geometry"), std::string::npos) << bad.output;
+    EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << bad.output;
 }

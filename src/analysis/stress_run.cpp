@@ -112,9 +112,9 @@ StressResult StressRunner::run(const StressCase& c) {
     ShaderOptions opts = c.opts;
     opts.float_accum = true;  // P-buffers 0 and 1 in RGBA32F: NaN and Inf survive to be counted
     char key[160];
-    std::snprintf(key, sizeof key, "%dx%d %d %d skip%d%d%d%d scissor%d", w, h, int(opts.depth), int(opts.encoding),
-                  opts.skip.material_variants, opts.skip.empty_lights, opts.skip.light_depth_test,
-                  opts.skip.light_sphere_test, opts.scissor);
+    std::snprintf(key, sizeof key, "%dx%d %d %d skip%d%d%d%d scissor%d geometry%d", w, h, int(opts.depth),
+                  int(opts.encoding), opts.skip.material_variants, opts.skip.empty_lights, opts.skip.light_depth_test,
+                  opts.skip.light_sphere_test, opts.scissor, int(opts.light_geometry));
 
     Image final_img, p0, pos;
     bool rendered = false;

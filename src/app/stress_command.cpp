@@ -38,7 +38,7 @@ std::string read_report(const std::string& path) {
 int cmd_stress(const std::vector<std::string>& argv) {
     Args args("stress", argv);
     bool quick = false;
-    std::string json_path, report_path, plot_path, only;
+    std::string json_path, report_path, plot_path, only, geometry;
     std::string backend = default_context_backend();  // --context, else $DSR_CONTEXT
     while (!args.done()) {
         std::string a = args.next();
@@ -48,8 +48,9 @@ int cmd_stress(const std::vector<std::string>& argv) {
         else if (a == "--plot") plot_path = args.value(a);
         else if (a == "--only") only = args.value(a);
         else if (a == "--context") backend = args.value(a);
+        else if (a == "--light-geometry") geometry = args.value(a);
         else args.fail("unknown option '" + a + "' (expected --quick, --json FILE, --report FILE.md, --plot FILE.png, "
-                       "--only TEXT, --context NAME)");
+                       "--only TEXT, --light-geometry NAME, --context NAME)");
     }
     if (!report_path.empty()) read_report(report_path);  // a wrong file fails before the sweep
     std::vector<StressCase> cases = stress_cases(quick);
@@ -59,6 +60,17 @@ int cmd_stress(const std::vector<std::string>& argv) {
             if (c.name.find(only) != std::string::npos) kept.push_back(std::move(c));
         cases = std::move(kept);
         if (cases.empty()) args.fail("--only: no case name contains '" + only + "'");
+    }
+    // --light-geometry: every case through that geometry instead of the tutorial's quad, so its
+    // depth hand-off, meshes and stencil meet the same far/near ratios and coordinates.
+    if (!geometry.empty()) {
+        LightGeometry g = LightGeometry::quad;
+        try {
+            g = light_geometry_from_name(geometry);
+        } catch (const Error& e) {
+            args.fail(std::string("--light-geometry: ") + e.what());
+        }
+        for (StressCase& c : cases) c.opts.light_geometry = g;
     }
     int mw = 1, mh = 1;
     for (const StressCase& c : cases) mw = std::max(mw, c.width), mh = std::max(mh, c.height);
@@ -86,7 +98,8 @@ int cmd_stress(const std::vector<std::string>& argv) {
 
     if (!json_path.empty()) {
         const std::string command =
-            std::string("dsr stress") + (quick ? " --quick" : "") + (only.empty() ? "" : " --only " + only);
+            std::string("dsr stress") + (quick ? " --quick" : "") + (only.empty() ? "" : " --only " + only) +
+            (geometry.empty() ? "" : " --light-geometry " + geometry);
         write_file_atomic(json_path, stress_json(results, command, runner.renderer(), seconds).dump(2) + "\n");
     }
     if (!report_path.empty())

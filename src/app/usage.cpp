@@ -115,13 +115,14 @@ std::vector<CommandUsage> make_table() {
                      std::string(kContextOption)});
     t.push_back({"stress",
                  {"[--quick] [--json FILE] [--report FILE.md] [--plot FILE.png] [--only TEXT]",
-                  "[--context NAME]"},
+                  "[--light-geometry quad|volume|stencil|tiles] [--context NAME]"},
                  "numerical stress sweep; exit 1 if an invariant fails",
                  "  --quick                 the quick subset (what `make test` runs)\n"
                  "  --json FILE             every case's fields (docs/stress.json)\n"
                  "  --report FILE.md        rewrite the file's generated block (docs/accuracy.md)\n"
                  "  --plot FILE.png         relative z error against far/near\n"
-                 "  --only TEXT             only the cases whose name contains TEXT\n" +
+                 "  --only TEXT             only the cases whose name contains TEXT\n"
+                 "  --light-geometry NAME   every case through that light geometry (default quad)\n" +
                      std::string(kContextOption)});
     t.push_back({"info",
                  {"[--caps LIST] [--context NAME] [--egl-device N]"},
