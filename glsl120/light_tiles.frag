@@ -23,7 +23,11 @@ uniform vec3 zrange;
 
 varying vec2 texcoord;
 varying vec3 vpos;
-varying vec4 ids[ID_VECS];
+#ifdef ID_VECS
+varying vec4 ids[ID_VECS];  // --tile-plan lists: this quad's light slots
+#else
+uniform int light_count;    // --tile-plan groups: the draw's group, slots 0 .. light_count-1
+#endif
 
 void main()
 {
@@ -41,6 +45,7 @@ void main()
     vec3 c = vec3(0.0);
     bool any = false;
     for (int k = 0; k < MAX_LIGHTS; ++k) {
+#ifdef ID_VECS
         // Slot k: the high or low half of float k/2 (interpolated, so rounded back to an integer).
         float pair = floor(ids[k / 8][(k / 2) - 4 * (k / 8)] + 0.5);
         float hi = floor(pair / 256.0);
@@ -48,6 +53,11 @@ void main()
         if (slot > 254.5)
             break;  // the quad's slots are filled from the first: no more lights
         int i = int(slot);
+#else
+        if (k >= light_count)
+            break;
+        int i = k;  // the loop counter: the same light data in every pixel of the draw
+#endif
         vec4 lp = lightpos[i];
         float type = lightcolor[i].w;
 #ifdef LIGHT_POINT_ONLY

@@ -200,6 +200,12 @@ TEST(LightGeometry, TilesOverSeveralBatchesMatchQuad) {
     ASSERT_GT(tiles.stats.lights_drawn, 128);  // more than one batch
     EXPECT_GT(tiles.stats.tile_light_pairs, 0);
     EXPECT_LT(tiles.stats.light_passes, quad.stats.light_passes / 4);
+    // The groups plan: one draw per 8 lights, each over the union of its lights' tiles.
+    ShaderOptions g = with_geometry(LightGeometry::tiles);
+    g.tile_plan = TileGrouping::groups;
+    const RenderResult groups = render_scene(s, kW, kH, g);
+    expect_same("tiles_groups_512", groups, quad);
+    EXPECT_EQ(groups.stats.light_passes, (groups.stats.lights_drawn + 7) / 8);
 }
 
 }  // namespace dsr::test

@@ -112,3 +112,45 @@ TEST(TilePlan, MortonOrderKeepsNeighboursTogether) {
     for (const auto& batch : plan.batches)
         for (int l : batch) EXPECT_EQ(l % 2, batch[0] % 2);
 }
+
+// The groups plan: every light in exactly one group of at most N; each group one draw whose quads
+// are exactly the tiles its lights overlap, each carrying the whole group.
+TEST(TilePlan, GroupsCoverTheUnionOfTheirLightsTiles) {
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<int> pos(-30, 200), size(0, 120);
+    for (int trial = 0; trial < 20; ++trial) {
+        const int w = 150 + trial, h = 110 + 2 * trial, ts = 8 << (trial % 3), n = 1 + trial % 8;
+        std::vector<ScissorRect> rects(size_t(3 + 7 * trial));
+        for (ScissorRect& r : rects) {
+            r.x0 = pos(rng), r.y0 = pos(rng);
+            r.x1 = r.x0 + size(rng), r.y1 = r.y0 + size(rng);
+        }
+        const TilePlan plan = plan_tile_groups(rects, w, h, ts, n);
+        ASSERT_EQ(plan.draws.size(), plan.batches.size());
+        std::set<int> seen;
+        for (size_t g = 0; g < plan.batches.size(); ++g) {
+            const auto& group = plan.batches[g];
+            EXPECT_LE(int(group.size()), n);
+            for (int l : group) EXPECT_TRUE(seen.insert(l).second) << "light " << l << " in two groups";
+            std::set<std::pair<int, int>> want, got;
+            for (int l : group) {
+                const ScissorRect& r = rects[size_t(l)];
+                for (int y = 0; y * ts < h; ++y)
+                    for (int x = 0; x * ts < w; ++x)
+                        if (std::max(r.x0, x * ts) < std::min({r.x1, (x + 1) * ts, w}) &&
+                            std::max(r.y0, y * ts) < std::min({r.y1, (y + 1) * ts, h}))
+                            want.insert({x, y});
+            }
+            for (const TileQuad& q : plan.draws[g].quads) {
+                got.insert({q.x0 / ts, q.y0 / ts});
+                EXPECT_EQ(q.slots.size(), group.size());
+            }
+            EXPECT_EQ(got, want) << "trial " << trial << " group " << g;
+        }
+        for (int i = 0; i < int(rects.size()); ++i) {
+            const ScissorRect& r = rects[size_t(i)];
+            const bool on_screen = std::max(r.x0, 0) < std::min(r.x1, w) && std::max(r.y0, 0) < std::min(r.y1, h);
+            EXPECT_EQ(seen.count(i) == 1, on_screen) << "light " << i;
+        }
+    }
+}

@@ -29,6 +29,7 @@ struct Config {
     std::string lights_text;  // --lights as given (or its default), e.g. "own,32,256"
     int tile_size = ShaderOptions{}.tile_size;      // the tiles rows' --tile-size and --tile-lights
     int tile_lights = ShaderOptions{}.tile_lights;
+    TileGrouping tile_plan = ShaderOptions{}.tile_plan;
     // Light geometries with rows of their own (the default configuration with each); quad's rows
     // are always there.
     std::vector<LightGeometry> geometries = {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil,

@@ -42,7 +42,7 @@ bool ends_with(const std::string& s, const std::string& e) {
 
 int cmd_bench(const std::vector<std::string>& argv) {
     Args args("bench", argv);
-    std::string scene_path, json_path, report_path, lights_arg, geometry_arg;
+    std::string scene_path, json_path, report_path, lights_arg, geometry_arg, tile_plan;
     std::string backend = default_context_backend();  // --context, else $DSR_CONTEXT
     int w = 0, h = 0, frames = 0, tile_size = 0, tile_lights = 0;
     bool quick = false;
@@ -57,6 +57,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
         else if (a == "--light-geometry") geometry_arg = args.value(a);
         else if (a == "--tile-size") tile_size = args.int_value(a, 8, 512);
         else if (a == "--tile-lights") tile_lights = args.int_value(a, 1, 32);
+        else if (a == "--tile-plan") tile_plan = args.value(a);
         else if (a == "--context") backend = args.value(a);
         else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
         else if (scene_path.empty()) scene_path = a;
@@ -69,6 +70,10 @@ int cmd_bench(const std::vector<std::string>& argv) {
     if (frames) cfg.frames = frames;
     if (tile_size) cfg.tile_size = tile_size;
     if (tile_lights) cfg.tile_lights = tile_lights;
+    if (!tile_plan.empty()) {
+        if (tile_plan != "lists" && tile_plan != "groups") args.fail("--tile-plan: expected lists or groups, got '" + tile_plan + "'");
+        cfg.tile_plan = tile_plan == "groups" ? TileGrouping::groups : TileGrouping::lists;
+    }
     // --lights: comma-separated counts; "own" is the scene's own lights; N-overlap and N-large the
     // generated scenes of bench_scenes.h.
     cfg.lights_text = !lights_arg.empty() ? lights_arg

@@ -43,6 +43,9 @@ const char* kRendererOptions =
     "  --aa-kernel text|listing\n"
     "                          all 8 neighbours as the text says (default) or Listing 21's 4\n"
     "  --aa-weight W           largest anti-alias offset in pixels, 0..8 (default 1)\n"
+    "  --tile-plan lists|groups\n"
+    "                          tiles: each tile its exact light list (default), or lights in\n"
+    "                          screen-order groups drawn over the union of their tiles\n"
     "  --render-target auto|fbo|copy|pbuffer\n"
     "                          where the G-buffer and P-buffers are drawn: framebuffer objects,\n"
     "                          the main buffer copied to textures, or EGL pbuffer surfaces copied\n"
@@ -73,7 +76,7 @@ std::vector<CommandUsage> make_table() {
                   "[--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]",
                   "[--aa-kernel text|listing] [--aa-weight W]",
                   "[--light-geometry quad|volume|stencil|tiles] [--depth-bounds on|off] [--tile-size N] [--tile-lights N]\n"
-                  "                  [--render-target auto|fbo|copy|pbuffer]",
+                  "                  [--tile-plan lists|groups] [--render-target auto|fbo|copy|pbuffer]",
                   "[--context NAME] [--egl-device N] [--gl-state-cache on|off] [--debug-gl]"},
                  "render SCENE (default data/default.scene) with the deferred shader into one image",
                  "  SCENE                   scene file (default data/default.scene)\n"
@@ -94,7 +97,7 @@ std::vector<CommandUsage> make_table() {
     t.push_back({"bench",
                  {"[SCENE] [--quick] [--json FILE.json] [--report FILE.md] [--size WxH] [--frames N]",
                   "[--lights own,32,256,1024,1024-overlap,32-large] [--light-geometry LIST]\n"
-                 "                 [--tile-size N] [--tile-lights N] [--context NAME]"},
+                 "                 [--tile-size N] [--tile-lights N] [--tile-plan lists|groups] [--context NAME]"},
                  "depth path x scissor x skips x encodings x lights vs forward: times, fragments, error",
                  "  SCENE                   scene to measure (default: data/default.scene and\n"
                  "                          tests/data/analytic.scene)\n"
@@ -111,7 +114,8 @@ std::vector<CommandUsage> make_table() {
                  "  --light-geometry LIST   light geometries to measure: quad, volume, stencil, tiles\n"
                  "                          (default all four)\n"
                  "  --tile-size N           the tiles rows' tile side in pixels, 8..512 (default 32)\n"
-                 "  --tile-lights N         the tiles rows' lights per pass, 1..32 (default 8)\n" +
+                 "  --tile-lights N         the tiles rows' lights per pass, 1..32 (default 8)\n"
+                 "  --tile-plan lists|groups  the tiles rows' plan (default lists)\n" +
                      std::string(kContextOption)});
     t.push_back({"stress",
                  {"[--quick] [--json FILE] [--report FILE.md] [--plot FILE.png] [--only TEXT]",

@@ -80,13 +80,14 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     if (lg == LightGeometry::tiles) {
         auto tdefs = ldefs;
         tdefs.push_back("MAX_LIGHTS " + std::to_string(opts.tile_lights));
-        tdefs.push_back("ID_VECS " + std::to_string(tile_id_vecs(opts.tile_lights)));
+        if (opts.tile_plan == TileGrouping::lists)  // groups: the light count is a uniform instead
+            tdefs.push_back("ID_VECS " + std::to_string(tile_id_vecs(opts.tile_lights)));
         // The batch the uniform arrays hold: five vec4s a light within the fragment stage's
         // uniform budget (GL 2.0 guarantees 64 vec4s; llvmpipe and NVIDIA give 1024), a few vec4s
         // kept for the other uniforms, and below tile_plan's empty-slot index 255.
         GLint comps = 0;
         glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
-        tile_batch_ = std::clamp((comps / 4 - 8) / 5, 1, 128);
+        tile_batch_ = opts.tile_plan == TileGrouping::groups ? opts.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
         tdefs.push_back("BATCH " + std::to_string(tile_batch_));
         // P-buffer 0 is RGBA8: several lights summed in one pass are each rounded as their own
         // pass would be. One light a pass needs no emulation: the blend rounds it as quad's does.

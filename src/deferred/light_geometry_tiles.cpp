@@ -33,7 +33,9 @@ struct TileVertex {
 void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, FrameStats& stats) {
     std::vector<ScissorRect> rects(lights.size());
     for (size_t i = 0; i < lights.size(); ++i) rects[i] = lights[i].rect;
-    const TilePlan plan = plan_tiles(rects, w_, h_, opts_.tile_size, opts_.tile_lights, tile_batch_);
+    const bool groups = opts_.tile_plan == TileGrouping::groups;
+    const TilePlan plan = groups ? plan_tile_groups(rects, w_, h_, opts_.tile_size, opts_.tile_lights)
+                                 : plan_tiles(rects, w_, h_, opts_.tile_size, opts_.tile_lights, tile_batch_);
 
     // The tutorial's cheaper point-light shader where every light of the frame allows it (as quad
     // picks per light): the general one evaluates every type's terms for every light.
@@ -42,7 +44,7 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     set_light_uniforms(prog);
     gl_state().apply(light_pass_state(prog.id(), false));
     LightQueries q(counting_ && paths_.count_fragments, counting_ && caps_.pipeline_statistics);
-    const int id_vecs = tile_id_vecs(opts_.tile_lights);
+    const int id_vecs = groups ? 0 : tile_id_vecs(opts_.tile_lights);
     // The G-buffer's content may be padded to powers of two: scale into its extent (as draw_rect).
     const float sx = gbuf().tex_scale_x() / float(w_), sy = gbuf().tex_scale_y() / float(h_);
 
@@ -70,6 +72,7 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
             prog.set_array("lightdir", dir.data(), count);
             prog.set_array("lightspot", spot.data(), count);
             prog.set_array("lightatt", att.data(), count);
+            if (groups) prog.set("light_count", count);
             uploaded = d.batch;
         }
         verts.clear();

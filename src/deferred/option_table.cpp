@@ -88,6 +88,10 @@ std::vector<RenderOption> make_table() {
     t.push_back(integer_option("tile-size", 8, 512, &ShaderOptions::tile_size));
     t.push_back(integer_option("tile-lights", 1, 32, &ShaderOptions::tile_lights));
     t.push_back(choice(
+        "tile-plan", {"lists", "groups"},
+        [](const RenderOptions& r) { return std::string(r.shader.tile_plan == TileGrouping::groups ? "groups" : "lists"); },
+        [](RenderOptions& r, const std::string& v) { r.shader.tile_plan = v == "groups" ? TileGrouping::groups : TileGrouping::lists; }));
+    t.push_back(choice(
         "lighting", {"equations", "listing"},
         [](const RenderOptions& r) { return r.shader.listing2_literal ? "listing" : "equations"; },
         [](RenderOptions& r, const std::string& v) { r.shader.listing2_literal = v == "listing"; }));

@@ -22,6 +22,10 @@ enum class LightGeometry { quad, volume, stencil, tiles };
 // EXT_framebuffer_object exists, else copy; pbuffer needs a context with pbuffer surfaces (EGL).
 enum class RenderTarget { automatic, fbo, copy, pbuffer };
 
+// The tiles geometry's plan (tile_plan.h): exact per-tile light lists, or groups of lights drawn
+// over the union of their tiles.
+enum class TileGrouping { lists, groups };
+
 enum class AaSource { normal, depth, both };
 enum class AaKernel { text, listing };
 
@@ -66,6 +70,7 @@ struct ShaderOptions {
     int tile_size = 32;             // tiles: pixels per side
     int tile_lights = 8;            // tiles: lights per pass (the shader's constant loop bound)
     RenderTarget render_target = RenderTarget::automatic;
+    TileGrouping tile_plan = TileGrouping::lists;
 };
 
 // "quad", "volume", "stencil", "tiles"; from_name throws dsr::Error listing them otherwise.

@@ -17,14 +17,13 @@ unsigned morton2(unsigned x, unsigned y) {
     return spread(x) | (spread(y) << 1);
 }
 
-TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
-                    int lights_per_pass, int batch_size) {
-    TilePlan plan;
-    if (width <= 0 || height <= 0 || tile_size <= 0 || lights_per_pass <= 0 || batch_size <= 0) return plan;
-    const int ts = tile_size, n = lights_per_pass;
-    const int tx = (width + ts - 1) / ts, ty = (height + ts - 1) / ts;
-    // Clip to the screen; drop what is left empty.
-    std::vector<ScissorRect> clipped(rects.size());
+namespace {
+
+// The rectangles clipped to the screen, and the non-empty ones' indices in Morton order of their
+// centre's tile (stable: equal codes keep the input order).
+std::vector<int> morton_order(const std::vector<ScissorRect>& rects, int width, int height, int ts,
+                              std::vector<ScissorRect>& clipped) {
+    clipped.assign(rects.size(), ScissorRect{});
     std::vector<int> order;
     for (size_t i = 0; i < rects.size(); ++i) {
         ScissorRect r = rects[i];
@@ -39,6 +38,52 @@ TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height
         key[size_t(i)] = morton2(unsigned((r.x0 + r.x1) / 2 / ts), unsigned((r.y0 + r.y1) / 2 / ts));
     }
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[size_t(a)] < key[size_t(b)]; });
+    return order;
+}
+
+}  // namespace
+
+TilePlan plan_tile_groups(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
+                          int lights_per_pass) {
+    TilePlan plan;
+    if (width <= 0 || height <= 0 || tile_size <= 0 || lights_per_pass <= 0) return plan;
+    const int ts = tile_size, n = lights_per_pass;
+    const int tx = (width + ts - 1) / ts, ty = (height + ts - 1) / ts;
+    std::vector<ScissorRect> clipped;
+    const std::vector<int> order = morton_order(rects, width, height, ts, clipped);
+    std::vector<char> covered(size_t(tx) * ty);
+    for (size_t s = 0; s < order.size(); s += size_t(n)) {
+        plan.batches.emplace_back(order.begin() + long(s), order.begin() + long(std::min(order.size(), s + size_t(n))));
+        const std::vector<int>& group = plan.batches.back();
+        std::fill(covered.begin(), covered.end(), 0);
+        for (int l : group) {
+            const ScissorRect& r = clipped[size_t(l)];
+            for (int y = r.y0 / ts; y <= (r.y1 - 1) / ts; ++y)
+                for (int x = r.x0 / ts; x <= (r.x1 - 1) / ts; ++x) covered[size_t(y) * tx + x] = 1;
+        }
+        TileDraw d;
+        d.batch = int(plan.batches.size()) - 1;
+        std::vector<int> all(group.size());
+        std::iota(all.begin(), all.end(), 0);
+        for (int y = 0; y < ty; ++y)
+            for (int x = 0; x < tx; ++x)
+                if (covered[size_t(y) * tx + x]) {
+                    d.quads.push_back(TileQuad{x * ts, y * ts, std::min(width, (x + 1) * ts), std::min(height, (y + 1) * ts), all});
+                    plan.tile_light_pairs += long(all.size());
+                }
+        plan.draws.push_back(std::move(d));
+    }
+    return plan;
+}
+
+TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
+                    int lights_per_pass, int batch_size) {
+    TilePlan plan;
+    if (width <= 0 || height <= 0 || tile_size <= 0 || lights_per_pass <= 0 || batch_size <= 0) return plan;
+    const int ts = tile_size, n = lights_per_pass;
+    const int tx = (width + ts - 1) / ts, ty = (height + ts - 1) / ts;
+    std::vector<ScissorRect> clipped;
+    const std::vector<int> order = morton_order(rects, width, height, ts, clipped);
     for (size_t s = 0; s < order.size(); s += size_t(batch_size))
         plan.batches.emplace_back(order.begin() + long(s), order.begin() + long(std::min(order.size(), s + size_t(batch_size))));
 

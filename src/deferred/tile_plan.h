@@ -31,6 +31,13 @@ struct TilePlan {
     long long tile_light_pairs = 0;         // (tile, light) pairs shaded: what the rectangles allow
 };
 
+// How the tiles geometry groups its work (`--tile-plan`, TileGrouping in options.h):
+//  lists   each tile shades exactly the lights whose rectangle overlaps it: batches in uniform
+//          arrays, per-quad light slots, one draw per batch and layer (above); the shader indexes
+//          the arrays with the slot it reads, a dynamic index.
+//  groups  lights in Morton order cut into groups of lights_per_pass; one draw per group over every
+//          tile any of its lights overlaps, each tile shading the whole group: the shader's loop
+//          indexes the arrays with its counter, so the light data is uniform across the draw.
 // rects: each light's scissor rectangle (empty ones are left out); the screen width x height cut
 // into tile_size tiles. batch_size >= 1, lights_per_pass >= 1.
 TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
@@ -38,6 +45,11 @@ TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height
 
 // vec4s of packed light slots a tile vertex carries (two slots per float): texture coordinates 2..
 inline int tile_id_vecs(int lights_per_pass) { return (lights_per_pass + 7) / 8; }
+
+// The groups plan: batches are the groups (at most lights_per_pass each), one draw per group whose
+// quads cover every tile one of its lights overlaps, each quad's slots the whole group.
+TilePlan plan_tile_groups(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
+                          int lights_per_pass);
 
 // Morton (Z-order) code of tile (x, y), x and y < 2^16: interleaved bits.
 unsigned morton2(unsigned x, unsigned y);
