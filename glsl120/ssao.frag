@@ -13,6 +13,7 @@ uniform vec3 kernel[SAMPLES];     // tangent space, z along the normal, |k| <= 1
 uniform vec3 rotations[16];       // unit vectors in the tangent plane, row-major 4x4
 uniform vec2 proj;                // the projection's (P[0][0], P[1][1]): eye to NDC
 uniform vec2 gtex_scale;          // the G-buffer's content extent in texture coordinates
+uniform vec2 gsize;               // the G-buffer's content size in pixels
 uniform float radius;             // hemisphere radius, eye units
 uniform float strength;
 uniform float bias;               // eye units: depth differences below it do not occlude (no acne)
@@ -42,10 +43,17 @@ void main()
         vec3 s = p + tbn * kernel[i] * radius;
         vec2 uv = vec2(proj.x * s.x, proj.y * s.y) / -s.z * 0.5 + 0.5;  // the sample's screen point
         if (s.z >= 0.0 || uv.x < 0.0 || uv.y < 0.0 || uv.x > 1.0 || uv.y > 1.0) continue;
-        float scene_z = eye_position(uv * gtex_scale, vec3(s.xy / -s.z, -1.0)).z;
-        // Range check: a surface far in front of p (another object) does not darken it.
-        float range = smoothstep(0.0, 1.0, radius / abs(p.z - scene_z));
-        occluded += (scene_z >= s.z + bias ? 1.0 : 0.0) * range;
+        // The surface point q at the centre of the G-buffer pixel the sample falls in, along that
+        // pixel's own view ray: at grazing angles a pixel spans a long stretch of depth, and the
+        // sample's depth against its pixel's centre would make a flat floor occlude itself.
+        uv = (floor(uv * gsize) + 0.5) / gsize;
+        vec2 ndc = uv * 2.0 - 1.0;
+        vec3 q = eye_position(uv * gtex_scale, vec3(ndc.x / proj.x, ndc.y / proj.y, -1.0));
+        // Crytek's test (Vasilovici §5): the sample lies behind the surface seen there, and q
+        // rises above p's tangent plane (points of p's own plane never occlude it). Range check:
+        // a surface far in front of p (another object) does not darken it.
+        float range = smoothstep(0.0, 1.0, radius / abs(p.z - q.z));
+        occluded += (q.z >= s.z + bias && dot(q - p, n) > bias ? 1.0 : 0.0) * range;
     }
     float ao = clamp(1.0 - strength * occluded / float(SAMPLES), 0.0, 1.0);
     gl_FragColor = vec4(vec3(ao), 1.0);

@@ -183,6 +183,7 @@ private:
     // buffer, fixed function (ssao_stage.cpp).
     void modulate_ambient_by_ssao();
     void build_ssao_programs();
+    void set_ssao_ortho();
     void draw_lighting(const Scene& scene, bool scissors, FrameStats& stats);
     // One visible light of the frame: its shader parameters, eye-space volume and scissor rectangle.
     struct LightDraw {

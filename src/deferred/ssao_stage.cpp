@@ -55,6 +55,15 @@ void DeferredShader::build_ssao_programs() {
     ssao_blur_prog_ = Program(shader_dir_, "post.vert", "ssao_blur.frag", defs);
 }
 
+// The frame's ortho camera (set_ortho), moved by half a frame pixel at half scale: an AO pixel's
+// centre (frame x = 2i + 1) then takes the texture coordinates and view ray of G-buffer pixel
+// 2i's centre, the texel its nearest fetch reads; unshifted it would pair that texel's depth with
+// the ray of a pixel corner, and at grazing angles the floor would occlude itself.
+void DeferredShader::set_ssao_ortho() {
+    set_ortho(w_, h_);
+    if (opts_.ssao.scale == 2) glTranslatef(0.5f, 0.5f, 0.0f);
+}
+
 void DeferredShader::draw_ssao() {
     // The view rays the light passes' quads carry (Listing 19), for this frame's camera.
     const auto rays = corner_rays(proj_[0][0], proj_[1][1]);
@@ -62,11 +71,10 @@ void DeferredShader::draw_ssao() {
     const SsaoOptions& o = opts_.ssao;
     const glm::vec2 gscale(gbuf().tex_scale_x(), gbuf().tex_scale_y());
 
-    // Occlusion: the quad is laid out in frame pixels; the viewport is the AO buffer's, so at
-    // half scale each AO pixel takes the G-buffer coordinates and view ray of its centre.
+    // Occlusion: the quad is laid out in frame pixels; the viewport is the AO buffer's.
     PBuffer& raw = targets_->ssao(SSAO_RAW);
     raw.bind_render();
-    set_ortho(w_, h_);
+    set_ssao_ortho();
     gl_state().apply(ssao_pass_state(ssao_prog_.id()));
     ssao_prog_.set("normal_map", 0);
     ssao_prog_.set("depth_map", 1);
@@ -74,6 +82,7 @@ void DeferredShader::draw_ssao() {
     ssao_prog_.set("zrange", zrange_);
     ssao_prog_.set("proj", glm::vec2(proj_[0][0], proj_[1][1]));
     ssao_prog_.set("gtex_scale", gscale);
+    ssao_prog_.set("gsize", glm::vec2(float(w_), float(h_)));
     ssao_prog_.set("radius", o.radius);
     ssao_prog_.set("strength", o.strength);
     ssao_prog_.set("bias", kBiasOfRadius * o.radius);
@@ -90,7 +99,7 @@ void DeferredShader::draw_ssao() {
     // Depth-aware blur, raw -> blurred, the G-buffer's depth still on unit 1.
     PBuffer& blurred = targets_->ssao(SSAO_BLURRED);
     blurred.bind_render();
-    set_ortho(w_, h_);
+    set_ssao_ortho();
     gl_state().apply(ssao_pass_state(ssao_blur_prog_.id()));
     ssao_blur_prog_.set("ao_map", 0);
     ssao_blur_prog_.set("depth_map", 1);
