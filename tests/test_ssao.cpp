@@ -101,17 +101,27 @@ Darkening darkening(const Image& off, const Image& on, glm::ivec2 p, int r) {
     return d;
 }
 
+// The case's depth path, SSAO off; with_ssao: on at the case's scale and `strength`.
+ShaderOptions on_path(const Case& c) {
+    ShaderOptions o;
+    o.depth = c.depth;
+    return o;
+}
+ShaderOptions with_ssao(const Case& c, float strength) {
+    ShaderOptions o = on_path(c);
+    o.ssao.on = true;
+    o.ssao.scale = c.scale;
+    o.ssao.strength = strength;
+    return o;
+}
+
 class Ssao : public ::testing::TestWithParam<Case> {};
 }  // namespace
 
 TEST_P(Ssao, DarkensCreasesNotTheOpenFloorAndNeverBrightens) {
     const Case& c = GetParam();
     const Scene s = box_on_floor();
-    ShaderOptions off;
-    off.depth = c.depth;
-    ShaderOptions on = off;
-    on.ssao.on = true;
-    on.ssao.scale = c.scale;
+    const ShaderOptions off = on_path(c), on = with_ssao(c, 1.0f);
     const RenderResult a = render_scene(s, kN, kN, off, c.caps);
     const RenderResult b = render_scene(s, kN, kN, on, c.caps);
     ASSERT_EQ(b.paths.depth_path, c.depth);
@@ -143,16 +153,11 @@ TEST_P(Ssao, DarkensCreasesNotTheOpenFloorAndNeverBrightens) {
 TEST_P(Ssao, OffOrStrengthZeroIsExactlyTheImageWithout) {
     const Case& c = GetParam();
     const Scene s = box_on_floor();
-    ShaderOptions plain;
-    plain.depth = c.depth;
+    const ShaderOptions plain = on_path(c), zero = with_ssao(c, 0.0f);
     ShaderOptions off = plain;
     off.ssao.radius = 3;
     off.ssao.samples = 64;
     off.ssao.scale = 2;
-    ShaderOptions zero = plain;
-    zero.ssao.on = true;
-    zero.ssao.strength = 0;
-    zero.ssao.scale = c.scale;
     const RenderResult a = render_scene(s, kN, kN, plain, c.caps);
     const RenderResult b = render_scene(s, kN, kN, off, c.caps);
     const RenderResult z = render_scene(s, kN, kN, zero, c.caps);

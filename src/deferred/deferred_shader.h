@@ -184,6 +184,7 @@ private:
     void modulate_ambient_by_ssao();
     void build_ssao_programs();
     void set_ssao_ortho();
+    void begin_ssao_pass(PBuffer& target, Program& prog);
     void draw_lighting(const Scene& scene, bool scissors, FrameStats& stats);
     // One visible light of the frame: its shader parameters, eye-space volume and scissor rectangle.
     struct LightDraw {

@@ -64,6 +64,17 @@ void DeferredShader::set_ssao_ortho() {
     if (opts_.ssao.scale == 2) glTranslatef(0.5f, 0.5f, 0.0f);
 }
 
+// Both SSAO passes: `target` bound, the camera above, `prog` with its state, and the uniforms of
+// ssao_position.glsl (the G-buffer's depth on unit 1).
+void DeferredShader::begin_ssao_pass(PBuffer& target, Program& prog) {
+    target.bind_render();
+    set_ssao_ortho();
+    gl_state().apply(ssao_pass_state(prog.id()));
+    prog.set("depth_map", 1);
+    prog.set("planes", planes_);
+    prog.set("zrange", zrange_);
+}
+
 void DeferredShader::draw_ssao() {
     // The view rays the light passes' quads carry (Listing 19), for this frame's camera.
     const auto rays = corner_rays(proj_[0][0], proj_[1][1]);
@@ -73,13 +84,8 @@ void DeferredShader::draw_ssao() {
 
     // Occlusion: the quad is laid out in frame pixels; the viewport is the AO buffer's.
     PBuffer& raw = targets_->ssao(SSAO_RAW);
-    raw.bind_render();
-    set_ssao_ortho();
-    gl_state().apply(ssao_pass_state(ssao_prog_.id()));
+    begin_ssao_pass(raw, ssao_prog_);
     ssao_prog_.set("normal_map", 0);
-    ssao_prog_.set("depth_map", 1);
-    ssao_prog_.set("planes", planes_);
-    ssao_prog_.set("zrange", zrange_);
     ssao_prog_.set("proj", glm::vec2(proj_[0][0], proj_[1][1]));
     ssao_prog_.set("gtex_scale", gscale);
     ssao_prog_.set("gsize", glm::vec2(float(w_), float(h_)));
@@ -98,13 +104,8 @@ void DeferredShader::draw_ssao() {
 
     // Depth-aware blur, raw -> blurred, the G-buffer's depth still on unit 1.
     PBuffer& blurred = targets_->ssao(SSAO_BLURRED);
-    blurred.bind_render();
-    set_ssao_ortho();
-    gl_state().apply(ssao_pass_state(ssao_blur_prog_.id()));
+    begin_ssao_pass(blurred, ssao_blur_prog_);
     ssao_blur_prog_.set("ao_map", 0);
-    ssao_blur_prog_.set("depth_map", 1);
-    ssao_blur_prog_.set("planes", planes_);
-    ssao_blur_prog_.set("zrange", zrange_);
     ssao_blur_prog_.set("texel", glm::vec2(1.0f / float(raw.texture_width()), 1.0f / float(raw.texture_height())));
     ssao_blur_prog_.set("uv_clamp", uv_clamp(raw));
     ssao_blur_prog_.set("to_ao", glm::vec2(raw.tex_scale_x(), raw.tex_scale_y()) / gscale);
