@@ -218,7 +218,8 @@ TEST(Cli, FiguresWritesEveryFile) {
     for (const char* f : {"fig4a_normal", "fig4b_diffuse", "fig4c_specular", "fig4d_depth", "fig6_final",
                           "fig8_blur_factor", "fig8_blur_factor_closeup", "fig9_closeup_without_aa",
                           "fig9_closeup_with_aa", "fig10a_horizontal_blur", "fig10b_vertical_blur",
-                          "fig10c_composed_blur", "fig11_without_bloom", "fig11_with_bloom"})
+                          "fig10c_composed_blur", "fig11_without_bloom", "fig11_with_bloom",
+                          "ssao_without", "ssao_with", "ssao_buffer"})
         EXPECT_TRUE(exists(d + "/" + f + ".png")) << f;
     // Beside Figure 6, the windmill from ../shared/assets when present (issue 11).
     const bool windmill = exists(std::string(DSR_SOURCE_DIR) + "/../shared/assets/windmill/windmill.obj");

@@ -105,6 +105,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
         Image f = view(ds, View::final);
         save("fig9_closeup_without_aa.png", closeup(f, cx, cy, cs, 4));
         save("fig11_without_bloom.png", f);
+        save("ssao_without.png", f);
     });
     ShaderOptions bloom = plain;
     bloom.post.bloom = true;
@@ -120,6 +121,15 @@ int cmd_figures(const std::vector<std::string>& argv) {
         save("fig10b_vertical_blur.png", ds.read_pbuffer(3));
         ds.blur(2, 3, {0, 1}, false);
         save("fig10c_composed_blur.png", ds.read_pbuffer(3));
+    });
+    // SSAO (issue 13, Vasilovici §5): the default options, the image with and without and the
+    // blurred AO buffer the ambient pass (Listing 15, Eq. 6) is multiplied by; without it the
+    // image is fig11_without_bloom, saved again as ssao_without beside them.
+    ShaderOptions ssao = plain;
+    ssao.ssao.on = true;
+    frame(ssao, [&](DeferredShader& ds) {
+        save("ssao_with.png", view(ds, View::final));
+        save("ssao_buffer.png", view(ds, View::ssao));
     });
     // Beside Figure 6, a real model (issue 11): the windmill from ../shared/assets (OBJ+MTL,
     // map_Kd, tangent-space map_Bump normal maps, a map_Ns specular map), with the scene its

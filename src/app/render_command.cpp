@@ -148,7 +148,8 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["ms"] = {{"geometry", med(&StageTimes::geometry)}, {"ambient", med(&StageTimes::ambient)},
                {"lights", med(&StageTimes::lights)},     {"bloom", med(&StageTimes::bloom)},
                {"aa", med(&StageTimes::aa)},             {"final", med(&StageTimes::final)},
-               {"depth_copy", med(&StageTimes::depth_copy)}, {"cpu", med(&StageTimes::cpu)}, {"frame", med(&StageTimes::frame)}};
+               {"depth_copy", med(&StageTimes::depth_copy)}, {"ssao", med(&StageTimes::ssao)},
+               {"cpu", med(&StageTimes::cpu)}, {"frame", med(&StageTimes::frame)}};
     const size_t triangles = scene.triangle_count();
     struct rusage usage {};
     getrusage(RUSAGE_SELF, &usage);

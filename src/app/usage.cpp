@@ -29,7 +29,7 @@ const char* kRendererOptions =
     "                          Listing 2 as the equations say (default) or as printed\n"
     "  --no-skip LIST          skips to turn off: variants, empty-lights, light-depth-test,\n"
     "                          light-sphere-test (all on by default)\n"
-    "  --view NAME             final, normal, diffuse, specular, depth, blur-factor or bloom\n"
+    "  --view NAME             final, normal, diffuse, specular, depth, blur-factor, bloom or ssao\n"
     "  --bloom, --no-bloom     bloom on or off (default: the scene's post line)\n"
     "  --bloom-scale 2|4       bloom buffers at 1/2 or 1/4 of the frame (default 2)\n"
     "  --bloom-taps N          blur taps, odd, 3..15 (default 7)\n"
@@ -57,7 +57,12 @@ const char* kRendererOptions =
     "  --depth-bounds on|off   quad: EXT_depth_bounds_test on each light's depth span (default off;\n"
     "                          refused where the GL lacks it, as llvmpipe does)\n"
     "  --tile-size N           tiles: pixels per tile side, 8..512 (default 32)\n"
-    "  --tile-lights N         tiles: lights per pass, 1..32 (default 8)\n";
+    "  --tile-lights N         tiles: lights per pass, 1..32 (default 8)\n"
+    "  --ssao, --no-ssao       screen-space ambient occlusion scaling the ambient pass (default off)\n"
+    "  --ssao-scale 1|2        AO buffer at full or half resolution (default 1)\n"
+    "  --ssao-radius R         hemisphere radius in eye-space units, 0.01..100 (default 0.5)\n"
+    "  --ssao-strength S       ao = 1 - S x occluded fraction, 0..4 (default 1)\n"
+    "  --ssao-samples N        hemisphere samples per pixel, 4..64 (default 16)\n";
 const char* kStateOptions =
     "  --gl-state-cache on|off\n"
     "                          off: every pass sets all of its GL state, so a cache bug can be\n"
@@ -71,12 +76,13 @@ std::vector<CommandUsage> make_table() {
                   "[--depth-encoding corrected|literal|linear|log] [--no-skip variants,empty-lights,light-depth-test,light-sphere-test]",
                   "[--scissor on|off] [--lighting equations|listing] [--gbuffer rgba8|half]",
                   "[--frames N] [--stats FILE.json] [--caps no-mrt,no-depth-texture,...]",
-                  "[--out-size WxH] [--view final|normal|diffuse|specular|depth|blur-factor|bloom]",
+                  "[--out-size WxH] [--view final|normal|diffuse|specular|depth|blur-factor|bloom|ssao]",
                   "[--bloom|--no-bloom] [--bloom-scale 2|4] [--bloom-taps N] [--bloom-strength S]",
                   "[--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]",
                   "[--aa-kernel text|listing] [--aa-weight W]",
-                  "[--light-geometry quad|volume|stencil|tiles] [--depth-bounds on|off] [--tile-size N] [--tile-lights N]\n"
-                  "                  [--tile-plan lists|groups] [--render-target auto|fbo|copy|pbuffer]",
+                  "[--light-geometry quad|volume|stencil|tiles] [--depth-bounds on|off] [--tile-size N] [--tile-lights N]",
+                  "[--tile-plan lists|groups] [--render-target auto|fbo|copy|pbuffer]",
+                  "[--ssao|--no-ssao] [--ssao-scale 1|2] [--ssao-radius R] [--ssao-strength S] [--ssao-samples N]",
                   "[--context NAME] [--egl-device N] [--gl-state-cache on|off] [--debug-gl]"},
                  "render SCENE (default data/default.scene) with the deferred shader into one image",
                  "  SCENE                   scene file (default data/default.scene)\n"

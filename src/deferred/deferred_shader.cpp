@@ -96,6 +96,7 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
         tdefs.push_back("LIGHT_POINT_ONLY");  // frames of tutorial point lights only, as quad's light_prog_
         light_tiles_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);
     }
+    if (opts.ssao.on) build_ssao_programs();
     if (paths_.accum_depth) depth_copy_prog_ = Program(shader_dir, "post.vert", "depth_copy.frag", depth_defs);
     // Post programs are built only when their pass can run (the post stage costs nothing off).
     const PostOptions& p = opts.post;
@@ -207,6 +208,7 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     st.ms.aa = ms[S_AA];
     st.ms.final = ms[S_FINAL];
     st.ms.depth_copy = ms[S_DEPTH_COPY];
+    st.ms.ssao = ms[S_SSAO];
     st.timing = timer_.source();
     check_gl("frame");  // per stage too with --debug-gl (check_gl_stage)
     return st;

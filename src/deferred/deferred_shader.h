@@ -2,6 +2,7 @@
 // stages that fill and consume them. One .cpp per stage:
 //   geometry_stage.cpp  §3.3  depth pre-pass (L8) + material pass (L9-13)
 //   lighting_stage.cpp  §3.4  ambient pass (L15) + one scissored quad per light (L16-20)
+//   ssao_stage.cpp      issue 13 / Vasilovici §5: ambient occlusion for the ambient pass
 //   post_stage.cpp      §3.5  bloom (L22) then anti-alias (L21, Eq. 7) on the P-buffers
 //   final_stage.cpp     §3.6  P-buffer 0 to the main frame buffer, fixed function
 #pragma once
@@ -40,6 +41,7 @@ struct GpuMaterial;
 // time of render() until the GPU finished.
 struct StageTimes {
     double geometry = 0, ambient = 0, lights = 0, bloom = 0, aa = 0, final = 0, frame = 0;
+    double ssao = 0;        // the SSAO pass and its blur (0 with --ssao off)
     double depth_copy = 0;  // hand_off_depth: the G-buffer's depth onto P-buffer 0 (0 where not needed)
     // CPU time of the rendering thread from the start of render() to its end-of-frame wait: the
     // submission cost (draw calls, state, uniforms). With glFinish-timed stages (llvmpipe) the
@@ -73,8 +75,9 @@ struct FrameStats {
 };
 
 // What `--view` shows (the same names in every interface): the final image, a G-buffer
-// target (Figure 4), the anti-alias blur factor (Figure 8) or the bloom blur (Figure 10c).
-enum class View { final, normal, diffuse, specular, depth, blur_factor, bloom };
+// target (Figure 4), the anti-alias blur factor (Figure 8), the bloom blur (Figure 10c) or the
+// blurred ambient-occlusion buffer (issue 13).
+enum class View { final, normal, diffuse, specular, depth, blur_factor, bloom, ssao };
 // "final", "normal", …, "blur-factor", "bloom"; throws dsr::Error listing the names otherwise.
 View view_from_name(const std::string& name);
 const char* view_name(View v);
@@ -134,6 +137,9 @@ public:
     // P-buffer 0 bound for rendering; needs paths().accum_depth (or the copy path's main buffer).
     // The light geometries use it; so can a forward pass after the lights.
     void hand_off_depth();
+    // SSAO (ssao_stage.cpp, issue 13): occlusion from the G-buffer into the AO buffer, then the
+    // depth-aware blur into the blurred AO buffer (render_targets.h). After geometry_stage.
+    void draw_ssao();
 
     // Read a buffer back (views and tests): a G-buffer target, its depth texture
     // (PBuffer::DEPTH, as grey), or P-buffer `fb`.
@@ -173,7 +179,7 @@ public:
 
 private:
     // Stage slots of the frame timer, in StageTimes order.
-    enum Slot { S_GEOMETRY, S_AMBIENT, S_LIGHTS, S_BLOOM, S_AA, S_FINAL, S_DEPTH_COPY, S_COUNT };
+    enum Slot { S_GEOMETRY, S_AMBIENT, S_LIGHTS, S_BLOOM, S_AA, S_FINAL, S_DEPTH_COPY, S_SSAO, S_COUNT };
     // Each pass's fixed-function state (gl/state.h), declared in its stage's file.
     static RenderState depth_pass_state();
     static RenderState material_pass_state();
@@ -182,6 +188,12 @@ private:
     void draw_depth();
     void draw_material(int target);
     void draw_ambient(const Scene& scene);
+    // With SSAO on: P-buffer 0 (the ambient pass's image, bound) multiplied by the blurred AO
+    // buffer, fixed function (ssao_stage.cpp).
+    void modulate_ambient_by_ssao();
+    void build_ssao_programs();
+    void set_ssao_ortho();
+    void begin_ssao_pass(PBuffer& target, Program& prog);
     void draw_lighting(const Scene& scene, bool scissors, FrameStats& stats);
     // One visible light of the frame: its shader parameters, eye-space volume and scissor rectangle.
     struct LightDraw {
@@ -248,6 +260,8 @@ private:
     Program light_tiles_any_prog_;      // the same for frames with spot, directional or attenuated lights
     int tile_batch_ = 0;                // lights light_tiles.frag holds in its uniform arrays
     Program depth_copy_prog_;           // depth_copy.frag: the depth hand-off
+    Program ssao_prog_;                 // ssao.frag (with --ssao)
+    Program ssao_blur_prog_;            // ssao_blur.frag (with --ssao)
     VolumeMesh unit_sphere_mesh_;       // volume_mesh of the unit sphere at the origin
     float volume_mesh_reach_ = 1;       // its farthest vertex from the centre
     int light_passes_drawn_ = 0;

@@ -19,10 +19,16 @@ namespace dsr {
 
 // Listing 14.
 void DeferredShader::draw_lights(const Scene& scene, bool scissors, FrameStats& stats) {
+    if (opts_.ssao.on) {  // issue 13: the AO buffer the ambient pass multiplies by (ssao_stage.cpp)
+        timer_.begin(S_SSAO);
+        draw_ssao();
+        timer_.end();
+    }
     timer_.begin(S_AMBIENT);
     fb_bind_render(P_ACCUM);
     set_ortho(w_, h_);
     draw_ambient(scene);
+    if (opts_.ssao.on) modulate_ambient_by_ssao();
     check_gl_stage("lighting stage: ambient pass");
     timer_.end();
 

@@ -38,10 +38,14 @@ RenderOption choice(std::string name, std::vector<std::string> values, std::func
     return RenderOption{std::move(name), OptionKind::choice, std::move(values), 0, 0, true, std::move(get), std::move(put)};
 }
 
-RenderOption number(std::string name, float lo, float hi, float PostOptions::*field) {
+// A float field of one ShaderOptions group (post, ssao): --NAME X in [lo, hi].
+template <class Group>
+RenderOption number(std::string name, float lo, float hi, Group ShaderOptions::*group, float Group::*field) {
     return RenderOption{std::move(name), OptionKind::number, {}, lo, hi, true,
-                        [field](const RenderOptions& r) { return format_number(r.shader.post.*field); },
-                        [field](RenderOptions& r, const std::string& v) { r.shader.post.*field = std::strtof(v.c_str(), nullptr); }};
+                        [group, field](const RenderOptions& r) { return format_number(r.shader.*group.*field); },
+                        [group, field](RenderOptions& r, const std::string& v) {
+                            r.shader.*group.*field = std::strtof(v.c_str(), nullptr);
+                        }};
 }
 
 // The skips of --no-skip, by name, and the SkipOptions field each turns off.
@@ -127,7 +131,7 @@ std::vector<RenderOption> make_table() {
         "bloom-taps", {"3", "5", "7", "9", "11", "13", "15"},
         [](const RenderOptions& r) { return std::to_string(r.shader.post.bloom_taps); },
         [](RenderOptions& r, const std::string& v) { r.shader.post.bloom_taps = std::atoi(v.c_str()); }));
-    t.push_back(number("bloom-strength", 0.0f, 16.0f, &PostOptions::bloom_strength));
+    t.push_back(number("bloom-strength", 0.0f, 16.0f, &ShaderOptions::post, &PostOptions::bloom_strength));
     t.push_back(choice(
         "bloom-mode", {"color", "listing"}, [](const RenderOptions& r) { return r.shader.post.bloom_listing ? "listing" : "color"; },
         [](RenderOptions& r, const std::string& v) { r.shader.post.bloom_listing = v == "listing"; }));
@@ -149,7 +153,19 @@ std::vector<RenderOption> make_table() {
         [](RenderOptions& r, const std::string& v) {
             r.shader.post.aa_kernel = v == "listing" ? AaKernel::listing : AaKernel::text;
         }));
-    t.push_back(number("aa-weight", 0.0f, 8.0f, &PostOptions::aa_weight));
+    t.push_back(number("aa-weight", 0.0f, 8.0f, &ShaderOptions::post, &PostOptions::aa_weight));
+    // SSAO (issue 13): --ssao / --no-ssao, then its four parameters (ranges: usage.cpp).
+    t.push_back(RenderOption{"ssao", OptionKind::toggle, {"on", "off"}, 0, 0, true,
+                             [](const RenderOptions& r) { return on_off(r.shader.ssao.on); },
+                             [](RenderOptions& r, const std::string& v) { r.shader.ssao.on = v == "on"; }});
+    t.push_back(choice(
+        "ssao-scale", {"1", "2"}, [](const RenderOptions& r) { return std::to_string(r.shader.ssao.scale); },
+        [](RenderOptions& r, const std::string& v) { r.shader.ssao.scale = std::atoi(v.c_str()); }));
+    t.push_back(number("ssao-radius", 0.01f, 100.0f, &ShaderOptions::ssao, &SsaoOptions::radius));
+    t.push_back(number("ssao-strength", 0.0f, 4.0f, &ShaderOptions::ssao, &SsaoOptions::strength));
+    t.push_back(RenderOption{"ssao-samples", OptionKind::integer, {}, 4, 64, true,
+                             [](const RenderOptions& r) { return std::to_string(r.shader.ssao.samples); },
+                             [](RenderOptions& r, const std::string& v) { r.shader.ssao.samples = std::atoi(v.c_str()); }});
     return t;
 }
 
@@ -172,6 +188,7 @@ ShaderOptions RenderOptions::resolved(const Scene& scene) const {
     s.post.bloom = bloom < 0 ? scene.post_bloom : bloom == 1;
     s.post.aa = aa < 0 ? scene.post_aa : aa == 1;
     if (view == View::bloom) s.post.bloom = true;  // the view shows the bloom blur
+    if (view == View::ssao) s.ssao.on = true;      // the view shows the AO buffer
     return s;
 }
 

@@ -53,6 +53,17 @@ struct SkipOptions {
                                     // rejected after one depth fetch, before the G-buffer reads
 };
 
+// Screen-space ambient occlusion (issue 13, Vasilovici §5): its own pass from the G-buffer's
+// depth and normals, then a depth-aware blur; it scales the ambient pass (Listing 15, Eq. 6)
+// only. Off by default: the ambient pass is then exactly the tutorial's.
+struct SsaoOptions {
+    bool on = false;
+    int scale = 1;          // the AO buffer at 1/1 or 1/2 of the frame
+    float radius = 0.5f;    // hemisphere radius, eye-space units
+    float strength = 1.0f;  // ao = 1 - strength * occluded fraction, clamped to [0, 1]
+    int samples = 16;       // kernel size (ssao_kernel.h), 4..64
+};
+
 struct ShaderOptions {
     DepthPath depth = DepthPath::texture;
     DepthEncoding encoding = DepthEncoding::corrected;  // what the packed target holds
@@ -71,6 +82,7 @@ struct ShaderOptions {
     int tile_lights = 8;            // tiles: lights per pass (the shader's constant loop bound)
     RenderTarget render_target = RenderTarget::automatic;
     TileGrouping tile_plan = TileGrouping::lists;
+    SsaoOptions ssao;
 };
 
 // "quad", "volume", "stencil", "tiles"; from_name throws dsr::Error listing them otherwise.

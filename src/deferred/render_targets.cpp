@@ -25,6 +25,7 @@ void RenderTargets::allocate() {
     // The old buffers go first, so peak memory is one set.
     g_.reset();
     for (auto& p : p_) p.reset();
+    for (auto& a : ao_) a.reset();
     // Figure 3: normal, diffuse, specular+shininess, and packed depth only when that path runs.
     PBufferDesc g;
     g.width = w_;
@@ -57,6 +58,26 @@ void RenderTargets::allocate() {
             p.depth = paths_.accum_stencil ? DepthAttachment::depth_stencil : DepthAttachment::renderbuffer;
         p_[i] = std::make_unique<PBuffer>("P-buffer " + std::to_string(i), p);
     }
+    // SSAO: occlusion, then its blur, at 1/scale; bilinear, so the ambient pass can scale the
+    // half-size one up. The same render-target path as the P-buffers (fbo or copy).
+    if (opts_.ssao.on) {
+        const int s = opts_.ssao.scale;
+        for (int i = 0; i < 2; ++i) {
+            PBufferDesc a;
+            a.width = std::max(1, w_ / s);
+            a.height = std::max(1, h_ / s);
+            a.color_formats = {GL_RGBA8};
+            a.filter = GL_LINEAR;
+            a.use_fbo = paths_.fbo;
+            a.pow2 = paths_.pow2;
+            ao_[i] = std::make_unique<PBuffer>(i == SSAO_RAW ? "SSAO buffer" : "SSAO blurred buffer", a);
+        }
+    }
+}
+
+PBuffer& RenderTargets::ssao(int which) {
+    if (!ao_[which]) throw Error("the SSAO buffers exist only with --ssao on");
+    return *ao_[which];
 }
 
 }  // namespace dsr

@@ -21,6 +21,9 @@ enum PRole {
     P_BLOOM_V = 3,  // P-buffer 3: bloom's vertical blur, added back to 0
 };
 
+// The ambient-occlusion buffers (issue 13), only with --ssao: at 1/ssao.scale of the frame.
+enum SsaoBuffer { SSAO_RAW = 0, SSAO_BLURRED = 1 };
+
 class RenderTargets {
 public:
     // Needs a current context; the formats follow `paths` and `opts` (half-float G-buffer,
@@ -34,6 +37,8 @@ public:
     PBuffer& pbuffer(int role) { return *p_[role]; }
     const PBuffer& pbuffer(int role) const { return *p_[role]; }
     // After the anti-alias pass: P-buffer 1 holds the result and becomes P-buffer 0.
+    // The SSAO buffers; throws when --ssao is off (they are not allocated then).
+    PBuffer& ssao(int which);
     void swap_accumulation() { std::swap(p_[P_ACCUM], p_[P_AA]); }
     int width() const { return w_; }
     int height() const { return h_; }
@@ -45,6 +50,7 @@ private:
     int w_, h_;
     std::unique_ptr<PBuffer> g_;
     std::unique_ptr<PBuffer> p_[4];
+    std::unique_ptr<PBuffer> ao_[2];  // SsaoBuffer
 };
 
 }  // namespace dsr

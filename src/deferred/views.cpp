@@ -13,7 +13,7 @@ namespace dsr {
 
 const std::vector<std::string>& view_names() {
     static const std::vector<std::string> names = {"final", "normal", "diffuse", "specular",
-                                                   "depth", "blur-factor", "bloom"};
+                                                   "depth", "blur-factor", "bloom", "ssao"};
     return names;
 }
 
@@ -70,6 +70,12 @@ void DeferredShader::draw_view(View view, int out_w, int out_h) {
             draw_texture_to_main(pbuf(P_BLOOM_V).texture(0), out_w, out_h,
                                  {pbuf(P_BLOOM_V).tex_scale_x(), pbuf(P_BLOOM_V).tex_scale_y()});
             return;
+        case View::ssao: {  // the blurred AO buffer the ambient pass multiplies by (issue 13)
+            if (!opts_.ssao.on) throw Error("the ssao view needs --ssao");
+            const PBuffer& ao = targets_->ssao(SSAO_BLURRED);
+            draw_texture_to_main(ao.texture(0), out_w, out_h, {ao.tex_scale_x(), ao.tex_scale_y()});
+            return;
+        }
     }
     check_gl("view");
 }

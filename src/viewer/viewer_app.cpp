@@ -139,7 +139,9 @@ bool Viewer::apply_option(const RenderOption& o, const std::string& value) {
         st_.option_error = o.name + ": " + err;
         return false;
     }
-    const bool bloom_view_change = (before.view == View::bloom) != (st_.options.view == View::bloom);
+    // The bloom and ssao views need their pass built (RenderOptions::resolved).
+    const bool bloom_view_change = (before.view == View::bloom) != (st_.options.view == View::bloom) ||
+                                   (before.view == View::ssao) != (st_.options.view == View::ssao);
     if (!o.rebuild && !bloom_view_change) return true;
     try {
         rebuild();

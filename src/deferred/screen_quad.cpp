@@ -1,0 +1,54 @@
+// Screen quads over a P-buffer's content (screen_quad.h).
+#include "deferred/screen_quad.h"
+
+#include <algorithm>
+
+namespace dsr {
+
+// [0,w]x[0,h] in the current ortho camera, texture coordinates 0..(sx,sy): the source's
+// content extent (less than 1 when padded to powers of two).
+void draw_quad(float w, float h, float sx, float sy) {
+    glBegin(GL_QUADS);
+    glTexCoord2f(0, 0); glVertex2f(0, 0);
+    glTexCoord2f(sx, 0); glVertex2f(w, 0);
+    glTexCoord2f(sx, sy); glVertex2f(w, h);
+    glTexCoord2f(0, sy); glVertex2f(0, h);
+    glEnd();
+}
+
+// [0,w]x[0,h] sampling buffer b's content bilinearly (fixed function) as CLAMP_TO_EDGE does
+// on an unpadded texture. A padded (power-of-two) texture has no edge where the content ends:
+// pixels whose sample point lies past the last texel centre would blend in a quarter texel of
+// padding. Those pixels get a strip of their own whose coordinate is held at the last texel
+// centre, so they read the edge texel alone, as the unpadded path does.
+void draw_quad_clamped(float w, float h, const PBuffer& b) {
+    const float tw = float(b.texture_width()), th = float(b.texture_height());
+    const float cw = float(b.width()), ch = float(b.height());
+    const float sx = cw / tw, sy = ch / th;
+    if (tw == cw && th == ch) return draw_quad(w, h, sx, sy);
+    // Screen splits where u reaches the last texel centre; none along an axis that is unpadded.
+    const float xs[3] = {0, tw > cw ? w * (cw - 0.5f) / cw : w, w};
+    const float ys[3] = {0, th > ch ? h * (ch - 0.5f) / ch : h, h};
+    auto u = [&](float x) { return std::min(x / w * sx, (cw - 0.5f) / tw); };
+    auto v = [&](float y) { return std::min(y / h * sy, (ch - 0.5f) / th); };
+    glBegin(GL_QUADS);
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) {
+            const float x0 = xs[i], x1 = xs[i + 1], y0 = ys[j], y1 = ys[j + 1];
+            if (x1 <= x0 || y1 <= y0) continue;
+            glTexCoord2f(u(x0), v(y0)); glVertex2f(x0, y0);
+            glTexCoord2f(u(x1), v(y0)); glVertex2f(x1, y0);
+            glTexCoord2f(u(x1), v(y1)); glVertex2f(x1, y1);
+            glTexCoord2f(u(x0), v(y1)); glVertex2f(x0, y1);
+        }
+    glEnd();
+}
+
+// Texel centres of a buffer's content in texture coordinates: what CLAMP_TO_EDGE gives on
+// an unpadded texture, so padded (power-of-two) buffers sample the same.
+glm::vec4 uv_clamp(const PBuffer& b) {
+    float tw = float(b.texture_width()), th = float(b.texture_height());
+    return {0.5f / tw, 0.5f / th, (b.width() - 0.5f) / tw, (b.height() - 0.5f) / th};
+}
+
+}  // namespace dsr
