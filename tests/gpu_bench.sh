@@ -110,6 +110,18 @@ run)
         echo "depth-bounds on vs off: $($dsr compare "$out/default_1920x1080.png" "$out/depth_bounds.png" 2>&1 | tail -1)" \
             | tee -a "$out/geometry_compare.txt"
     fi
+    # SSAO's cost on the GPU (issue 13), full and half resolution.
+    for sc in 1 2; do
+        $dsr render --context egl --size 1920x1080 --ssao --ssao-scale $sc --frames 30 \
+            --stats "$out/ssao_scale$sc.json" -o "$out/ssao_scale$sc.png"
+    done
+    # The tiles geometry's other plan (groups), against quad in the same run.
+    if [ -n "${GPU_BENCH_GROUPS:-1}" ]; then
+        $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-50} \
+            --lights ${GPU_BENCH_GROUP_LIGHTS:-own,1024,4096,1024-overlap,32-large} --light-geometry quad,tiles \
+            --tile-plan groups --json "$out/gpu_bench_groups_1920x1080.json" \
+            --report "$out/gpu_bench_groups_1920x1080.md" > "$out/gpu_bench_groups_1920x1080.txt"
+    fi
     for s in ${GPU_BENCH_SIZES:-1920x1080}; do
         $dsr bench $src/data/default.scene --context egl --size $s --frames ${GPU_BENCH_FRAMES:-50} \
             --lights ${GPU_BENCH_LIGHTS:-own,256,1024,4096} --json "$out/gpu_bench_$s.json" \
