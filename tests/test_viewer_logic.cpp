@@ -70,7 +70,7 @@ TEST(ViewerScript, BadLineIsOneErrorNamingFileAndLine) {
         {"frames -1\n", "s.txt:1: frames: expected an integer in [1, 1000000], got '-1'"},
         {"frames 2x\n", "s.txt:1: frames: expected an integer"},
         {"set scissor maybe\n", "s.txt:1: set scissor: expected on|off, got 'maybe'"},
-        {"set view albedo\n", "s.txt:1: set view: expected final|normal|diffuse|specular|depth|blur-factor|bloom, got 'albedo'"},
+        {"set view albedo\n", "s.txt:1: set view: expected final|normal|diffuse|specular|depth|blur-factor|bloom|ssao, got 'albedo'"},
         {"set bloom-strength 99\n", "s.txt:1: set bloom-strength: expected a number in [0.000000, 16.000000], got '99'"},
         {"set no-skip fast\n", "s.txt:1: set no-skip: expected variants, empty-lights, light-depth-test, light-sphere-test"},
         {"set frobnicate 1\n", "s.txt:1: set: expected an option name (depth, depth-encoding,"},
@@ -107,7 +107,12 @@ TEST(OptionTable, EveryValueRoundTripsAndRenderDefaultsHold) {
     EXPECT_EQ(find_render_option("view")->get(defaults), "final");
     for (const RenderOption& o : render_options()) {
         std::vector<std::string> values = o.values;
-        if (o.kind == OptionKind::number) values = {"0", "0.5", "2"};
+        if (o.kind == OptionKind::number) {  // three values inside the entry's range
+            values.clear();
+            for (const char* v : {"0", "0.5", "2"})
+                if (std::atof(v) >= o.lo && std::atof(v) <= o.hi) values.push_back(v);
+            EXPECT_GE(values.size(), 2u) << o.name;
+        }
         if (o.kind == OptionKind::subset) values = {"none", o.values[0], o.values[1] + "," + o.values[2]};
         for (const std::string& v : values) {
             RenderOptions r;
