@@ -26,6 +26,7 @@ json row_json(const Row& r) {
     j["depth"] = r.depth ? json(*r.depth) : json(nullptr);
     j["encoding"] = r.encoding ? json(*r.encoding) : json(nullptr);
     j["gbuffer"] = r.gbuffer ? json(*r.gbuffer) : json(nullptr);
+    j["gbuffer_bytes_per_pixel"] = r.gbuffer_bytes_per_pixel;  // 0: forward rows have no G-buffer
     j["light_geometry"] = r.light_geometry ? json(*r.light_geometry) : json(nullptr);
     j["scissor"] = r.scissor;
     j["skips_off"] = r.skips_off;
@@ -79,6 +80,7 @@ std::vector<std::string> table_cells(const Row& r) {
     std::vector<std::string> c = {r.scene,
                                   std::to_string(r.lights),
                                   config_text(r),
+                                  std::to_string(r.gbuffer_bytes_per_pixel),
                                   std::to_string(r.frames),
                                   format_number("%.2f", r.ms_median),
                                   format_number("%.2f", r.ms_min) + "-" + format_number("%.2f", r.ms_max),
@@ -105,7 +107,7 @@ std::vector<std::string> table_cells(const Row& r) {
 }
 
 const std::vector<std::string>& table_header() {
-    static const std::vector<std::string> h = {"scene", "lights", "configuration", "frames", "ms med", "ms min-max",
+    static const std::vector<std::string> h = {"scene", "lights", "configuration", "G-buf B/px", "frames", "ms med", "ms min-max",
                                                "light frags", "ideal", "ratio", "max LSB", "mean LSB", "PSNR dB",
                                                "an. max", "an. mean", "an. PSNR", "invocations", "inv/ideal",
                                                "floor ms", "floor ratio"};
