@@ -128,6 +128,25 @@ TEST_P(Stress, Invariants) {
     if (c.path == "texture" && c.far_near == 1e6) {  // far-plane cancellation
         EXPECT_GT(r.z.max, 1e-2);
     }
+    // Issue 16, the stored positions, against the exact trace (docs/accuracy.md). fp32: float's
+    // rounding of the interpolated eye position, measured <= 3.1e-7 up to 1e6. fp16: half's
+    // 11-bit significand (measured 9.6e-4: llvmpipe's conversion truncates, the CPU twin rounds,
+    // 4.8e-4) while eye z stays under 65504; past it (far 1e5 at 1e6, 1e6 at 1e7) material.frag
+    // clamps and the error is loose: 0.33 measured at 1e6. Bounded both ways, so a path that
+    // stopped storing half (or stopped clamping) fails.
+    if (c.path == "position32" && c.far_near <= 1e6) {
+        EXPECT_LE(r.z.max, 1e-6);
+        EXPECT_LE(r.max_lsb, 2.5);
+    }
+    if (c.path == "position16") {
+        if (c.far_near <= 1e5) {
+            EXPECT_LE(r.z.max, 2e-3);
+            EXPECT_GT(r.z.max, 1e-4) << "coarser than float: the target must be half";
+        } else if (c.far_near <= 1e6) {
+            EXPECT_GT(r.z.max, 0.1) << "eye z past 65504 is clamped: a loose bound, stated";
+            EXPECT_LE(r.z.max, 0.5);
+        }
+    }
     if (c.path != "literal" && c.far_near <= 1e4) {
         EXPECT_LE(r.max_lsb, 2.5);
     }
