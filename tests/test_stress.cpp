@@ -98,7 +98,10 @@ TEST_P(Stress, Invariants) {
             if (b.name == base_name) base = &b;
         ASSERT_NE(base, nullptr) << base_name;
         const StressResult b = runner_->run(*base);
-        EXPECT_LE(r.max_lsb, b.max_lsb + 0.25) << "at the origin: " << b.max_lsb;
+        // position16 measured 2.17 LSB at the origin and 2.42 at 1e6 (texture: 2.45 and 2.42): half's
+        // rounding moves the sphere's facet pixels by a quarter LSB either way, so 0.3 there.
+        const double slack = c.path == "position16" ? 0.3 : 0.25;
+        EXPECT_LE(r.max_lsb, b.max_lsb + slack) << "at the origin: " << b.max_lsb;
         EXPECT_LE(r.mean_lsb, b.mean_lsb + 0.02) << "at the origin: " << b.mean_lsb;
         EXPECT_LE(r.z.mean, 1.5 * b.z.mean + 1e-7) << "at the origin: " << b.z.mean;
     }
@@ -304,7 +307,7 @@ TEST(StressCli, JsonReportAndPlot) {
     ASSERT_EQ(r.status, 0) << r.output;
     std::ifstream jf(json);
     const nlohmann::json j = nlohmann::json::parse(jf);
-    ASSERT_EQ(j["cases"].size(), 5u);  // one far/near, five depth paths
+    ASSERT_EQ(j["cases"].size(), 7u);  // one far/near, seven depth paths (five + position16, position32)
     for (const auto& row : j["cases"])
         for (const char* key : {"case", "nan_pixels", "gl_errors", "scissor_contains_sphere", "max_rel_z_error", "max_lsb"})
             EXPECT_TRUE(row.contains(key)) << key;

@@ -80,7 +80,6 @@ std::vector<std::string> table_cells(const Row& r) {
     std::vector<std::string> c = {r.scene,
                                   std::to_string(r.lights),
                                   config_text(r),
-                                  std::to_string(r.gbuffer_bytes_per_pixel),
                                   std::to_string(r.frames),
                                   format_number("%.2f", r.ms_median),
                                   format_number("%.2f", r.ms_min) + "-" + format_number("%.2f", r.ms_max),
@@ -103,14 +102,15 @@ std::vector<std::string> table_cells(const Row& r) {
                     : "-");
     c.push_back(r.floor_ms ? format_number("%.2f", *r.floor_ms) : "-");
     c.push_back(r.floor_ratio ? format_number("%.2f", *r.floor_ratio) : "-");
+    c.push_back(r.renderer == "deferred" ? std::to_string(r.gbuffer_bytes_per_pixel) : "-");  // no G-buffer: forward
     return c;
 }
 
 const std::vector<std::string>& table_header() {
-    static const std::vector<std::string> h = {"scene", "lights", "configuration", "G-buf B/px", "frames", "ms med", "ms min-max",
+    static const std::vector<std::string> h = {"scene", "lights", "configuration", "frames", "ms med", "ms min-max",
                                                "light frags", "ideal", "ratio", "max LSB", "mean LSB", "PSNR dB",
                                                "an. max", "an. mean", "an. PSNR", "invocations", "inv/ideal",
-                                               "floor ms", "floor ratio"};
+                                               "floor ms", "floor ratio", "G-buf B/px"};
     return h;
 }
 
