@@ -4,12 +4,12 @@
 // colour sampled at offsets scaled by that factor (no edge: no offset, no blur).
 // Variants: SOURCE_NORMAL, SOURCE_DEPTH (both may be set), LISTING_KERNEL (Listing 21's
 // table, which repeats (-1,1) and lacks (-1,-1), and sums 4 neighbours for the factor),
-// FACTOR_ONLY (writes the factor as grey: Figure 8), PACKED_DEPTH / ENC_*.
+// FACTOR_ONLY (writes the factor as grey: Figure 8), PACKED_DEPTH / ENC_*, POSITION_TARGET.
 #include "depth_codec.glsl"
 
 uniform sampler2D normal_map;  // unit 0: G-buffer normal target
 uniform sampler2D color_map;   // unit 1: P-buffer 0
-uniform sampler2D depth_map;   // unit 2: depth texture or packed depth target
+uniform sampler2D depth_map;   // unit 2: depth texture, packed depth or position target
 uniform vec2 pixel_size;
 uniform float weight;
 uniform vec2 planes;

@@ -1,5 +1,9 @@
 // Depth <-> RGB8 colour, for GPUs without depth textures (§3.3.2). CPU twins and their
 // round-trip tests: src/deferred/depth_codec.{h,cpp}, tests/test_depth_codec.cpp.
+// Every pass that needs the surface's eye z or eye position calls surface_eye_z /
+// surface_eye_pos below, so one define picks the source for all of them: the depth texture
+// (none), the packed target (PACKED_DEPTH + ENC_*), or the position paths' float target
+// (POSITION_TARGET: --depth position16|position32, eye-space xyz written by the material pass).
 
 // Listing 11 exactly as written: bytes as k/256. An 8-bit target stores round(c*255)
 // and returns byte/255, so this does not survive the target (docs/errata.md).
@@ -75,15 +79,31 @@ float packed_eye_z(vec3 c, vec2 planes, vec3 zrange)
 #endif
 }
 
-// Eye-space z of the surface at uv: from the depth texture (§3.4.3) or the packed target.
+// Eye-space z of the surface at uv: from the depth texture (§3.4.3), the packed target, or the
+// stored position.
 float surface_eye_z(sampler2D depth_map, vec2 uv, vec2 planes, vec3 zrange)
 {
-#ifdef PACKED_DEPTH
+#if defined(POSITION_TARGET)
+    return texture2D(depth_map, uv).z;
+#elif defined(PACKED_DEPTH)
     return packed_eye_z(texture2D(depth_map, uv).rgb, planes, zrange);
 #else
     // Listing 20's pos.z = -planes.y/(planes.x+depth). The denominator is at most its far-plane
     // value planes.y/far: past far/near ~1e7 planes.x rounds to -1 in float, and depth 1.0
     // would divide by zero.
     return -planes.y / min(planes.x + texture2D(depth_map, uv).r, planes.y / zrange.y);
+#endif
+}
+
+// Eye-space position of the surface at uv. From depth: z as surface_eye_z, x and y along the
+// pixel's eye-space view ray (Listing 20: pos.xy = vpos.xy / vpos.z * pos.z; rays as Listing 19's
+// clean form, z = -1). POSITION_TARGET: the position the material pass stored, no reconstruction.
+vec3 surface_eye_pos(sampler2D depth_map, vec2 uv, vec3 ray, vec2 planes, vec3 zrange)
+{
+#ifdef POSITION_TARGET
+    return texture2D(depth_map, uv).xyz;
+#else
+    float z = surface_eye_z(depth_map, uv, planes, zrange);
+    return vec3(ray.xy / ray.z * z, z);
 #endif
 }

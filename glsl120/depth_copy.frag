@@ -2,22 +2,23 @@
 // The depth hand-off (src/deferred/depth_handoff.cpp): the G-buffer's window depth written as
 // gl_FragDepth into P-buffer 0's depth buffer. Depth texture: the value itself. Packed: the
 // corrected and literal encodings hold the window depth (Listing 11), decoded directly; linear and
-// log hold eye z, mapped back to window depth through `planes` (§3.4.3).
+// log hold eye z, as the position paths' target does (POSITION_TARGET); mapped back to window
+// depth through `planes` (§3.4.3).
 #include "depth_codec.glsl"
 
-uniform sampler2D depth_map;  // unit 3: depth texture or packed target
+uniform sampler2D depth_map;  // unit 3: depth texture, packed target or position target
 uniform vec2 planes;
 uniform vec3 zrange;
 varying vec2 texcoord;
 
 void main()
 {
-#if !defined(PACKED_DEPTH)
+#if !defined(PACKED_DEPTH) && !defined(POSITION_TARGET)
     gl_FragDepth = texture2D(depth_map, texcoord).r;
 #elif defined(ENC_LITERAL)
     gl_FragDepth = clamp(unpack_depth_literal(texture2D(depth_map, texcoord).rgb), 0.0, 1.0);
-#elif defined(ENC_LINEAR) || defined(ENC_LOG)
-    float z = packed_eye_z(texture2D(depth_map, texcoord).rgb, planes, zrange);
+#elif defined(ENC_LINEAR) || defined(ENC_LOG) || defined(POSITION_TARGET)
+    float z = surface_eye_z(depth_map, texcoord, planes, zrange);
     gl_FragDepth = clamp((planes.x * z + planes.y) / -z, 0.0, 1.0);
 #else
     gl_FragDepth = unpack_depth(texture2D(depth_map, texcoord).rgb);

@@ -2,7 +2,7 @@
 // Lighting pass for one light (Listing 20), of any type (lighting.glsl light_contribution:
 // point, spot, directional; Equation 2 or the attenuation law). Variants: LIGHT_POINT_ONLY (the
 // tutorial's point lights only, lighting.glsl), PACKED_DEPTH (depth from the
-// RGB8 target, Listing 18 / ENC_* encodings), LISTING2_LITERAL, LIGHT_DEPTH_TEST (reject
+// RGB8 target, Listing 18 / ENC_* encodings), POSITION_TARGET (the stored eye-space position), LISTING2_LITERAL, LIGHT_DEPTH_TEST (reject
 // surfaces in front of or behind the light's sphere before shading), LIGHT_SPHERE_TEST (reject
 // surface points outside the sphere), OUTPUT_POSITION (write the
 // reconstructed eye-space position instead of light: accuracy measurements).
@@ -34,8 +34,8 @@ void main()
     vec2 texcoord = gl_FragCoord.xy * uv_scale;
     vec3 vpos = vec3(gl_FragCoord.xy * ray_map.xy + ray_map.zw, -1.0);
 #endif
-    vec3 pos;
-    pos.z = surface_eye_z(depth_map, texcoord, planes, zrange);  // pos.z = -planes.y/(planes.x+depth)
+    // pos.z = -planes.y/(planes.x+depth), pos.xy along the view ray; or the stored position.
+    vec3 pos = surface_eye_pos(depth_map, texcoord, vpos, planes, zrange);
 #ifdef LIGHT_DEPTH_TEST
     // Beyond the tutorial: a surface outside the sphere's depth span [z-r, z+r] (background
     // included: it sits at the far plane) cannot be lit; reject it before any other work.
@@ -47,7 +47,6 @@ void main()
 #endif
         discard;
 #endif
-    pos.xy = vpos.xy / vpos.z * pos.z;
 #ifdef LIGHT_SPHERE_TEST
     // A point outside the sphere gets att = 0 (Equation 2): nothing to add, so no G-buffer reads.
     // A spot adds nothing on or outside its cone either (GL_SPOT_CUTOFF).

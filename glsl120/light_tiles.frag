@@ -31,9 +31,7 @@ uniform int light_count;    // --tile-plan groups: the draw's group, slots 0 .. 
 
 void main()
 {
-    vec3 pos;
-    pos.z = surface_eye_z(depth_map, texcoord, planes, zrange);
-    pos.xy = vpos.xy / vpos.z * pos.z;
+    vec3 pos = surface_eye_pos(depth_map, texcoord, vpos, planes, zrange);
     vec3 normal = texture2D(normal_map, texcoord).xyz - 0.5;
     float len = length(normal);
     if (len <= 0.1)

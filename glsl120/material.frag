@@ -3,10 +3,11 @@
 //   target 0: normal  (n*0.5+0.5)
 //   target 1: diffuse (map x colour), alpha 1 marks a covered pixel
 //   target 2: specular (map x colour), alpha = log2(shininess)/11
-//   target 3: depth packed into RGB8 (PACKED_DEPTH only; ENC_* picks the encoding)
+//   target 3: depth packed into RGB8 (PACKED_DEPTH only; ENC_* picks the encoding), or the
+//             eye-space position xyz, alpha 1 (POSITION_TARGET: an RGBA16F or RGBA32F target)
 // Variants: NORMAL_MAP (tangent-space normal map; without it no tangent-space work),
 // NO_SPECULAR (material without specular: no specular map read), PACKED_DEPTH, ENC_LITERAL,
-// ENC_LINEAR, ENC_LOG, TARGET_n (no MRT: write only target n to gl_FragData[0], §3.2).
+// ENC_LINEAR, ENC_LOG, POSITION_TARGET (POSITION16: into half floats), TARGET_n (no MRT: write only target n to gl_FragData[0], §3.2).
 #include "depth_codec.glsl"
 
 uniform sampler2D normaltex;    // unit 0
@@ -45,8 +46,14 @@ void main()
 #else
     vec4 t2 = vec4(texture2D(speculartex, txcoord).rgb * specular, shininess_code);
 #endif
-#ifdef PACKED_DEPTH
+#if defined(PACKED_DEPTH)
     vec4 t3 = vec4(packed_encode(vpos.z, planes, zrange), 1.0);  // Listings 11, 13
+#elif defined(POSITION_TARGET) && defined(POSITION16)
+    // Half floats end at 65504: a coordinate past it would be stored as infinity. Clamped, it
+    // stays finite and its error is measured (docs/accuracy.md: fp16 past 6.5e4 eye units).
+    vec4 t3 = vec4(clamp(vpos, -65504.0, 65504.0), 1.0);
+#elif defined(POSITION_TARGET)
+    vec4 t3 = vec4(vpos, 1.0);  // the eye-space position the light pass would rebuild
 #endif
 #if defined(TARGET_0)
     gl_FragData[0] = t0;
@@ -60,7 +67,7 @@ void main()
     gl_FragData[0] = t0;
     gl_FragData[1] = t1;
     gl_FragData[2] = t2;
-#ifdef PACKED_DEPTH
+#if defined(PACKED_DEPTH) || defined(POSITION_TARGET)
     gl_FragData[3] = t3;
 #endif
 #endif

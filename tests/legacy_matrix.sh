@@ -52,6 +52,28 @@ for SIZE in "${sizes[@]}"; do
       "$max" "$mean" "$(awk -v o="$over" -v p="$pixels" 'BEGIN { printf "%.3f", 100 * o / p }')" "$frame" >> "$out"
   done
   echo '```' >> "$out"
+  # Issue 16: the stored-position paths on the same matrix's old GLs. Where float targets or
+  # render to texture are missing they are refused in one line (recorded, not a failure); with
+  # EXT_framebuffer_object alone (no-arb-fbo) every G-buffer target becomes float.
+  {
+    echo
+    echo "Stored position (--depth position16|position32) at $SIZE, against the same all-capabilities image:"
+    echo
+    echo '```'
+    printf "%-30s %-11s %6s %8s %10s %8s %9s\n" "forced off" depth "B/px" "max LSB" "mean LSB" "> 2 LSB" "frame ms"
+  } >> "$out"
+  for d in position16 position32; do
+    for off in "" no-arb-fbo no-mrt no-npot no-float no-fbo; do
+      if ! msg=$("$D" render --size "$SIZE" --frames 20 --depth "$d" --caps "$off" -o "$tmp/m.png" --stats "$tmp/m.json" 2>&1 >/dev/null); then
+        printf "%-30s %-11s refused: %s\n" "${off:-(none)}" "$d" "$msg" >> "$out"
+        continue
+      fi
+      read -r _ max _ mean _ over _ pixels _ _ < <("$D" compare "$tmp/m.png" "$tmp/full.png")
+      printf "%-30s %-11s %6s %8.1f %10.4f %7.3f%% %9.2f\n" "${off:-(none)}" "$d" "$(field gbuffer_bytes_per_pixel "$tmp/m.json")" \
+        "$max" "$mean" "$(awk -v o="$over" -v p="$pixels" 'BEGIN { printf "%.3f", 100 * o / p }')" "$(field frame "$tmp/m.json")" >> "$out"
+    done
+  done
+  echo '```' >> "$out"
 done
 cat "$out"
 if [[ -n $report ]]; then

@@ -235,7 +235,8 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
         const std::string kind = row["renderer"];
         if (kind == "deferred") {
             ++deferred;
-            EXPECT_TRUE(row["depth"] == "texture" || row["depth"] == "packed");
+            EXPECT_TRUE(row["depth"] == "texture" || row["depth"] == "packed" || row["depth"] == "position16" ||
+                        row["depth"] == "position32");
             const long long frags = row["light_fragments"], ideal = row["ideal_fragments"];
             EXPECT_GT(ideal, 0);
             // With the depth texture nothing inside a sphere is rejected (scissor rectangles and the
@@ -392,6 +393,8 @@ TEST(Bench, MissingCountsAreNullNotZero) {
     EXPECT_TRUE(j["invocations_ratio"].is_null());
     EXPECT_TRUE(j["floor_ms"].is_null());
     EXPECT_EQ(j["ideal_fragments"], 100);
+    r.gbuffer_bytes_per_pixel = 24;  // issue 16: on every row, from the formats allocated
+    EXPECT_EQ(bench::row_json(r)["gbuffer_bytes_per_pixel"], 24);
     const std::vector<std::string> c = bench::table_cells(r);
     EXPECT_EQ(c[6], "-");
     EXPECT_EQ(c[15], "-");
@@ -457,7 +460,7 @@ TEST(Bench, FastestRowIsTheFasterForm) {
 TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     const nlohmann::ordered_json f = bench::row_json(forward_row("default", 3, "forward-single", 2.0));
     const std::vector<std::string> keys = {
-        "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "light_geometry", "scissor", "skips_off",
+        "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "gbuffer_bytes_per_pixel", "light_geometry", "scissor", "skips_off",
         "lights", "lights_label", "size", "frames", "ms_median", "ms_min", "ms_max", "cpu_ms_median", "light_fragments",
         "ideal_fragments", "fragments_ratio", "scissor_pixels", "lights_drawn", "passes", "max_lsb", "mean_lsb",
         "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic", "light_invocations",
@@ -512,6 +515,8 @@ TEST(Bench, TablesHaveOneCellPerColumn) {
     const std::vector<std::string> f = bench::table_cells(rows[0]);
     EXPECT_EQ(f[6], "-");
     EXPECT_EQ(f[11], "inf");
+    EXPECT_EQ(bench::table_header().back(), "G-buf B/px");  // issue 16: the G-buffer's bytes per pixel
+    EXPECT_EQ(f.back(), "-");                                // forward rows have none
 
     const std::string text = bench::text_table(rows);
     std::vector<std::string> lines;

@@ -162,7 +162,7 @@ TEST(Cli, BadFlagsAreOneClearError) {
     } cases[] = {
         {"render --size 12", "--size: expected WIDTHxHEIGHT"},
         {"render --size 0x5", "--size: expected WIDTHxHEIGHT"},
-        {"render --depth fast", "--depth: expected auto|texture|packed, got 'fast'"},
+        {"render --depth fast", "--depth: expected auto|texture|packed|position16|position32, got 'fast'"},
         {"render --scissor maybe", "--scissor: expected on|off"},
         {"render --frames -2", "--frames: expected an integer"},
         {"render --bogus", "unknown option '--bogus'"},

@@ -100,6 +100,85 @@ TEST(Paths, DescribeNamesEveryDecision) {
         EXPECT_NE(d.find(s), std::string::npos) << s << " missing from:\n" << d;
 }
 
+
+// Issue 16: the position paths. `auto` never picks them; with ARB_framebuffer_object the other
+// targets stay RGBA8, with EXT_framebuffer_object alone every target takes the float format.
+TEST(Paths, AutoNeverPicksAPositionPath) {
+    for (int mask = 0; mask < 16; ++mask) {
+        ShaderOptions o;
+        o.depth = DepthPath::automatic;
+        EXPECT_FALSE(is_position_path(choose_paths(caps_for(mask), o).depth_path)) << mask;
+    }
+}
+
+TEST(Paths, PositionPathsFormatsAndBytesPerPixel) {
+    Caps arb = caps_for(0);
+    arb.fbo_mixed_formats = true;
+    Caps ext = caps_for(0);  // EXT_framebuffer_object only: one format per framebuffer
+    ShaderOptions o;
+    const std::pair<DepthPath, int> expect_arb[] = {{DepthPath::texture, 16}, {DepthPath::packed, 20},
+                                                    {DepthPath::position16, 24}, {DepthPath::position32, 32}};
+    for (auto [d, bytes] : expect_arb) {
+        o.depth = d;
+        const Paths p = choose_paths(arb, o);
+        SCOPED_TRACE(depth_path_name(d));
+        EXPECT_TRUE(p.refused.empty()) << p.refused;
+        EXPECT_EQ(p.gbuffer_bytes_per_pixel, bytes);
+        EXPECT_EQ(p.gbuffer_depth_texture, d == DepthPath::texture);
+        EXPECT_EQ(int(p.gbuffer_formats.size()), p.gbuffer_targets);
+    }
+    o.depth = DepthPath::position16;
+    Paths p = choose_paths(arb, o);
+    EXPECT_EQ(p.depth, "position16");
+    EXPECT_EQ(p.gbuffer_targets, 4);
+    EXPECT_EQ(p.gbuffer_formats[0], TargetFormat::rgba8);
+    EXPECT_EQ(p.gbuffer_formats[3], TargetFormat::rgba16f);
+    EXPECT_TRUE(p.gbuffer_formats_note.empty());
+    p = choose_paths(ext, o);
+    EXPECT_EQ(p.gbuffer_formats, std::vector<TargetFormat>(4, TargetFormat::rgba16f));
+    EXPECT_EQ(p.gbuffer_bytes_per_pixel, 4 * 8 + 4);
+    EXPECT_NE(p.gbuffer_formats_note.find("one format"), std::string::npos);
+    o.depth = DepthPath::position32;
+    p = choose_paths(ext, o);
+    EXPECT_EQ(p.gbuffer_formats, std::vector<TargetFormat>(4, TargetFormat::rgba32f));
+    EXPECT_EQ(p.gbuffer_bytes_per_pixel, 4 * 16 + 4);
+    // The depth paths keep RGBA8 on EXT alone: nothing to unify.
+    o.depth = DepthPath::packed;
+    EXPECT_EQ(choose_paths(ext, o).gbuffer_bytes_per_pixel, 20);
+    EXPECT_NE(describe(choose_paths(arb, ShaderOptions{})).find("16 per pixel"), std::string::npos);
+}
+
+TEST(Paths, PositionPathsNeedFloatTargetsAndRenderToTexture) {
+    Caps c = caps_for(0);
+    c.texture_float = c.half_float = false;
+    c.forced_off = {"no-float"};
+    ShaderOptions o;
+    for (DepthPath d : {DepthPath::position16, DepthPath::position32}) {
+        o.depth = d;
+        const std::string r = choose_paths(c, o).refused;
+        SCOPED_TRACE(depth_path_name(d));
+        EXPECT_NE(r.find("needs a float G-buffer target"), std::string::npos) << r;
+        EXPECT_NE(r.find("forced off: no-float"), std::string::npos) << r;
+        EXPECT_EQ(r.find('\n'), std::string::npos) << "one line";
+        EXPECT_NE(choose_paths(caps_for(4), o).refused.find("EXT_framebuffer_object"), std::string::npos);
+        EXPECT_TRUE(choose_paths(caps_for(1 | 2 | 8), o).refused.empty());  // no MRT: one pass per target
+    }
+    // Half floats missing alone: position32 runs, position16 is refused.
+    c = caps_for(0);
+    c.half_float = false;
+    o.depth = DepthPath::position32;
+    EXPECT_TRUE(choose_paths(c, o).refused.empty());
+    o.depth = DepthPath::position16;
+    EXPECT_NE(choose_paths(c, o).refused.find("ARB_half_float_pixel"), std::string::npos);
+}
+
+TEST(Paths, DepthPathNamesRoundTrip) {
+    for (DepthPath d : {DepthPath::texture, DepthPath::packed, DepthPath::position16, DepthPath::position32,
+                        DepthPath::automatic})
+        EXPECT_EQ(depth_path_from_name(depth_path_name(d)), d);
+    EXPECT_THROW(depth_path_from_name("position"), std::exception);
+}
+
 }  // namespace
 TEST(Paths, RenderTargetAskedForIsKeptOrRefused) {
     Caps c = caps_for(0);  // every capability

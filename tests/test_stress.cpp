@@ -100,7 +100,10 @@ TEST_P(Stress, Invariants) {
             if (b.name == base_name) base = &b;
         ASSERT_NE(base, nullptr) << base_name;
         const StressResult b = runner_->run(*base);
-        EXPECT_LE(r.max_lsb, b.max_lsb + 0.25) << "at the origin: " << b.max_lsb;
+        // position16 measured 2.17 LSB at the origin and 2.42 at 1e6 (texture: 2.45 and 2.42): half's
+        // rounding moves the sphere's facet pixels by a quarter LSB either way, so 0.3 there.
+        const double slack = c.path == "position16" ? 0.3 : 0.25;
+        EXPECT_LE(r.max_lsb, b.max_lsb + slack) << "at the origin: " << b.max_lsb;
         EXPECT_LE(r.mean_lsb, b.mean_lsb + 0.02) << "at the origin: " << b.mean_lsb;
         EXPECT_LE(r.z.mean, 1.5 * b.z.mean + 1e-7) << "at the origin: " << b.z.mean;
     }
@@ -129,6 +132,25 @@ TEST_P(Stress, Invariants) {
     }
     if (c.path == "texture" && c.far_near == 1e6) {  // far-plane cancellation
         EXPECT_GT(r.z.max, 1e-2);
+    }
+    // Issue 16, the stored positions, against the exact trace (docs/accuracy.md). fp32: float's
+    // rounding of the interpolated eye position, measured <= 3.1e-7 up to 1e6. fp16: half's
+    // 11-bit significand (measured 9.6e-4: llvmpipe's conversion truncates, the CPU twin rounds,
+    // 4.8e-4) while eye z stays under 65504; past it (far 1e5 at 1e6, 1e6 at 1e7) material.frag
+    // clamps and the error is loose: 0.33 measured at 1e6. Bounded both ways, so a path that
+    // stopped storing half (or stopped clamping) fails.
+    if (c.path == "position32" && c.far_near <= 1e6) {
+        EXPECT_LE(r.z.max, 1e-6);
+        EXPECT_LE(r.max_lsb, 2.5);
+    }
+    if (c.path == "position16") {
+        if (c.far_near <= 1e5) {
+            EXPECT_LE(r.z.max, 2e-3);
+            EXPECT_GT(r.z.max, 1e-4) << "coarser than float: the target must be half";
+        } else if (c.far_near <= 1e6) {
+            EXPECT_GT(r.z.max, 0.1) << "eye z past 65504 is clamped: a loose bound, stated";
+            EXPECT_LE(r.z.max, 0.5);
+        }
     }
     if (c.path != "literal" && c.far_near <= 1e4) {
         EXPECT_LE(r.max_lsb, 2.5);
@@ -287,7 +309,7 @@ TEST(StressCli, JsonReportAndPlot) {
     ASSERT_EQ(r.status, 0) << r.output;
     std::ifstream jf(json);
     const nlohmann::json j = nlohmann::json::parse(jf);
-    ASSERT_EQ(j["cases"].size(), 5u);  // one far/near, five depth paths
+    ASSERT_EQ(j["cases"].size(), 7u);  // one far/near, seven depth paths (five + position16, position32)
     for (const auto& row : j["cases"])
         for (const char* key : {"case", "nan_pixels", "gl_errors", "scissor_contains_sphere", "max_rel_z_error", "max_lsb"})
             EXPECT_TRUE(row.contains(key)) << key;

@@ -190,7 +190,7 @@ TEST_F(Viewer, BadScriptLineIsOneErrorAndWritesNothing) {
     EXPECT_FALSE(file_exists(out("x.png")));
     RunResult flag = view("--size 64x64 --depth fast", "quit\n");
     EXPECT_EQ(flag.status, 1);
-    EXPECT_EQ(flag.output, "dsr view: --depth: expected auto|texture|packed, got 'fast'\n");
+    EXPECT_EQ(flag.output, "dsr view: --depth: expected auto|texture|packed|position16|position32, got 'fast'\n");
 }
 
 // The viewer links the system libGL through GLFW and never libOSMesa (DESIGN: never both in one

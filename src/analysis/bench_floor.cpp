@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "deferred/gpu_scene.h"
+#include "deferred/render_targets.h"
 #include "dsr_clock.h"
 #include "dsr_error.h"
 #include "gl/check.h"
@@ -51,7 +52,7 @@ FloorBench::FloorBench(const Caps& caps, int w, int h, const GbufferLayout& layo
     if (!caps.fbo) throw Error("bench floor: needs EXT_framebuffer_object");
     PBufferDesc g;
     g.width = w, g.height = h;
-    g.color_formats.assign(size_t(layout.targets), layout.half ? GLenum(GL_RGBA16F_ARB) : GLenum(GL_RGBA8));
+    for (TargetFormat f : layout.formats) g.color_formats.push_back(gl_format(f));
     g.depth = layout.depth_texture ? DepthAttachment::texture : DepthAttachment::renderbuffer;
     gbuf_ = std::make_unique<PBuffer>("floor G-buffer", g);
     PBufferDesc a;
@@ -60,7 +61,7 @@ FloorBench::FloorBench(const Caps& caps, int w, int h, const GbufferLayout& layo
     a.filter = GL_LINEAR;
     accum_ = std::make_unique<PBuffer>("floor P-buffer 0", a);
     fill_ = std::make_unique<Program>(shader_dir, "floor_fill.vert", "floor_fill.frag",
-                                      std::vector<std::string>{"TARGETS " + std::to_string(layout.targets)});
+                                      std::vector<std::string>{"TARGETS " + std::to_string(layout.formats.size())});
     light_ = std::make_unique<Program>(shader_dir, "post.vert", "floor_light.frag");
     light_->use();
     for (int u = 0; u < 4; ++u) light_->set(("t" + std::to_string(u)).c_str(), u);

@@ -17,6 +17,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "deferred/options.h"
 #include "gl/caps.h"
@@ -32,11 +33,12 @@ namespace dsr::bench {
 
 // The G-buffer a deferred row fills: its colour targets, their format and its depth attachment.
 struct GbufferLayout {
-    int targets = 3;            // 3, or 4 with the packed depth target
-    bool half = false;          // RGBA16F instead of RGBA8
-    bool depth_texture = true;  // a depth texture (the depth-texture path) or a renderbuffer (packed)
+    // One format per colour target (Paths::gbuffer_formats): 3, or 4 with the packed depth or
+    // position target.
+    std::vector<TargetFormat> formats = {TargetFormat::rgba8, TargetFormat::rgba8, TargetFormat::rgba8};
+    bool depth_texture = true;  // a depth texture (the depth-texture path) or a renderbuffer (the others)
     bool operator<(const GbufferLayout& o) const {
-        return std::tie(targets, half, depth_texture) < std::tie(o.targets, o.half, o.depth_texture);
+        return std::tie(formats, depth_texture) < std::tie(o.formats, o.depth_texture);
     }
 };
 

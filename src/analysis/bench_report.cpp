@@ -26,6 +26,7 @@ json row_json(const Row& r) {
     j["depth"] = r.depth ? json(*r.depth) : json(nullptr);
     j["encoding"] = r.encoding ? json(*r.encoding) : json(nullptr);
     j["gbuffer"] = r.gbuffer ? json(*r.gbuffer) : json(nullptr);
+    j["gbuffer_bytes_per_pixel"] = r.gbuffer_bytes_per_pixel;  // 0: forward rows have no G-buffer
     j["light_geometry"] = r.light_geometry ? json(*r.light_geometry) : json(nullptr);
     j["scissor"] = r.scissor;
     j["skips_off"] = r.skips_off;
@@ -103,6 +104,7 @@ std::vector<std::string> table_cells(const Row& r) {
     c.push_back(r.floor_ms ? format_number("%.2f", *r.floor_ms) : "-");
     c.push_back(r.floor_ratio ? format_number("%.2f", *r.floor_ratio) : "-");
     c.push_back(format_number("%.2f", r.cpu_ms));
+    c.push_back(r.renderer == "deferred" ? std::to_string(r.gbuffer_bytes_per_pixel) : "-");  // no G-buffer: forward
     return c;
 }
 
@@ -110,7 +112,7 @@ const std::vector<std::string>& table_header() {
     static const std::vector<std::string> h = {"scene", "lights", "configuration", "frames", "ms med", "ms min-max",
                                                "light frags", "ideal", "ratio", "max LSB", "mean LSB", "PSNR dB",
                                                "an. max", "an. mean", "an. PSNR", "invocations", "inv/ideal",
-                                               "floor ms", "floor ratio", "cpu ms"};
+                                               "floor ms", "floor ratio", "cpu ms", "G-buf B/px"};
     return h;
 }
 

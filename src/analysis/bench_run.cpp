@@ -90,7 +90,8 @@ std::unique_ptr<RowRun> deferred(const Config& cfg, const Caps& caps, const std:
     run->ds = std::make_unique<DeferredShader>(caps, cfg.w, cfg.h, o, shaders);
     run->ds->set_scene(v.scene);
     Row& r = run->row = base_row(cfg, v, "deferred");
-    r.depth = depth == DepthPath::texture ? "texture" : "packed";
+    r.depth = depth_path_name(depth);
+    r.gbuffer_bytes_per_pixel = run->ds->paths().gbuffer_bytes_per_pixel;
     if (depth == DepthPath::packed) r.encoding = encoding_name(enc);
     r.gbuffer = gbuffer_half ? "half" : "rgba8";
     r.light_geometry = light_geometry_name(run->ds->paths().light_geometry);
@@ -117,9 +118,8 @@ std::unique_ptr<RowRun> forward(const Config& cfg, const Caps& caps, const std::
 
 GbufferLayout layout_of(const DeferredShader& ds) {
     GbufferLayout l;
-    l.depth_texture = ds.options().depth == DepthPath::texture;
-    l.targets = ds.paths().gbuffer_targets;
-    l.half = ds.options().gbuffer_half;
+    l.depth_texture = ds.paths().gbuffer_depth_texture;
+    l.formats = ds.paths().gbuffer_formats;
     return l;
 }
 
@@ -234,6 +234,14 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
     // Each light geometry on the default configuration (issue 12); quad's is the row above.
     for (LightGeometry g : cfg_.geometries)
         if (g != LightGeometry::quad) add_deferred(DepthPath::texture, DepthEncoding::corrected, true, all, {}, false, g);
+    // The peers' G-buffer (issue 16): eye-space position stored in a float target, where the GL has one.
+    for (DepthPath d : {DepthPath::position16, DepthPath::position32}) {
+        ShaderOptions probe;
+        probe.depth = d;
+        const std::string refused = choose_paths(caps_, probe).refused;
+        if (refused.empty()) add_deferred(d, DepthEncoding::corrected, true, all, {}, false);
+        else if (index == 0) notes_.push_back(std::string(depth_path_name(d)) + " rows left out: " + refused);
+    }
     // Higher-precision G-buffer targets where the GL has them.
     if (caps_.texture_float && caps_.half_float) {
         for (DepthPath d : {DepthPath::texture, DepthPath::packed})

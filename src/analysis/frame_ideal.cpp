@@ -20,7 +20,7 @@ FrameIdeal frame_ideal_fragments(DeferredShader& ds, const Scene& scene) {
     for (const glm::dvec4& l : eye_lights(scene)) lights.emplace_back(l);
     try {
         r.fragments = ideal_fragments(ds.reconstructed_positions(), lights);
-        r.source = "packed";
+        r.source = depth_path_name(ds.options().depth);  // "packed", "position16", "position32"
     } catch (const Error& e) {  // the read-back needs float targets; the count is then unknown
         r.source = e.what();
     }

@@ -155,13 +155,14 @@ StressCase make_case(const std::string& category, const std::string& variant, co
 }  // namespace
 
 const std::vector<std::string>& stress_paths() {
-    static const std::vector<std::string> p = {"texture", "literal", "corrected", "linear", "log"};
+    static const std::vector<std::string> p = {"texture", "literal", "corrected", "linear", "log", "position16",
+                                               "position32"};
     return p;
 }
 
 void set_depth_path(ShaderOptions& opts, const std::string& path) {
-    if (path == "texture") {
-        opts.depth = DepthPath::texture;
+    if (path == "texture" || path == "position16" || path == "position32") {
+        opts.depth = depth_path_from_name(path);
         return;
     }
     opts.depth = DepthPath::packed;
@@ -281,6 +282,11 @@ std::vector<StressCase> stress_cases(bool quick) {
             if (quick && o != 0 && o != 1e6) continue;
             out.push_back(make_case("coords", o == 0 ? "0" : sci(o), p, room(1, float(o) * glm::vec3(1, 0.25f, -1))));
         }
+        if (p == special.front())  // the position paths at the origin and 1e6 from it (issue 16)
+            for (const char* pos : {"position16", "position32"})
+                for (double o : {0.0, 1e6})
+                    out.push_back(make_case("coords", o == 0 ? "0" : sci(o), pos,
+                                            room(1, float(o) * glm::vec3(1, 0.25f, -1))));
         StressCase z = make_case("zero-normal", "", p, zero_normal_scene());
         z.no_reference_meshes = {3};
         z.opts.skip.light_depth_test = false;  // background pixels reach the normal test

@@ -21,8 +21,9 @@
 //                             tests and scissor off, so every background pixel (zero normal in
 //                             the G-buffer) also runs through Listing 20's len > 0.1 branch
 //
-// <path> is texture (24-bit depth texture) or one of the packed target's encodings: literal,
-// corrected, linear, log.
+// <path> is texture (24-bit depth texture), one of the packed target's encodings: literal,
+// corrected, linear, log, or a stored position: position16 (RGBA16F), position32 (RGBA32F)
+// (ratio cases, and coords/0 and coords/1e6).
 #pragma once
 #include <string>
 #include <vector>
@@ -46,7 +47,7 @@ struct StressCase {
     bool limit = false;     // beyond the required range: its invariants are reported, not required
 };
 
-// Depth paths in table order: texture, literal, corrected, linear, log.
+// Depth paths in table order: texture, literal, corrected, linear, log, position16, position32.
 const std::vector<std::string>& stress_paths();
 // Sets opts.depth / opts.encoding for a name of stress_paths(); throws dsr::Error otherwise.
 void set_depth_path(ShaderOptions& opts, const std::string& path);

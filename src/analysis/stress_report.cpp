@@ -154,13 +154,15 @@ nlohmann::ordered_json stress_case_json(const StressResult& r) {
     return j;
 }
 
-// Relative z error against far/near: the window-depth paths and the eye-depth paths in separate
-// panels (three series each, what a panel's legend holds), max above, mean below.
+// Relative z error against far/near: the window-depth paths, the eye-depth paths and the stored
+// positions in separate panels (three series each, what a panel's legend holds; the depth
+// texture in each as the baseline), max above, mean below.
 Image stress_accuracy_plot(const std::vector<StressResult>& results) {
     const Grid g = ratio_grid(results);
     const std::map<std::string, glm::vec3> colour = {{"texture", {0.1f, 0.1f, 0.1f}}, {"literal", {0.85f, 0.2f, 0.1f}},
                                                      {"corrected", {0.95f, 0.6f, 0.0f}}, {"linear", {0.2f, 0.45f, 0.9f}},
-                                                     {"log", {0.1f, 0.65f, 0.3f}}};
+                                                     {"log", {0.1f, 0.65f, 0.3f}}, {"position16", {0.6f, 0.2f, 0.8f}},
+                                                     {"position32", {0.0f, 0.6f, 0.7f}}};
     auto panel = [&](const std::string& title, const std::string& what, std::vector<std::string> paths, bool max) {
         PlotPanel p;
         p.title = title;
@@ -170,19 +172,24 @@ Image stress_accuracy_plot(const std::vector<StressResult>& results) {
             auto it = g.find(name);
             if (it == g.end()) continue;
             PlotSeries s;
-            s.label = name == "texture" ? "24-BIT DEPTH TEXTURE" : "PACKED " + name;
+            s.label = name == "texture"                 ? std::string("24-BIT DEPTH TEXTURE")
+                      : name.rfind("position", 0) == 0 ? "STORED " + name
+                                                       : "PACKED " + name;
             s.color = colour.at(name);
             for (auto& [ratio, r] : it->second) s.points.push_back({ratio, max ? r->z.max : r->z.mean, 4});
             p.series.push_back(s);
         }
         return p;
     };
-    const std::vector<std::string> window = {"texture", "literal", "corrected"}, eye = {"linear", "log", "texture"};
+    const std::vector<std::string> window = {"texture", "literal", "corrected"}, eye = {"linear", "log", "texture"},
+                                   stored = {"position16", "position32", "texture"};
     const int pw = 460, ph = 400;
     const Image top = scatter_plot({panel("WINDOW DEPTH: MAX", "MAX REL Z ERROR", window, true),
-                                    panel("EYE DEPTH: MAX", "MAX REL Z ERROR", eye, true)}, pw, ph);
+                                    panel("EYE DEPTH: MAX", "MAX REL Z ERROR", eye, true),
+                                    panel("STORED POSITION: MAX", "MAX REL Z ERROR", stored, true)}, pw, ph);
     const Image bottom = scatter_plot({panel("WINDOW DEPTH: MEAN", "MEAN REL Z ERROR", window, false),
-                                       panel("EYE DEPTH: MEAN", "MEAN REL Z ERROR", eye, false)}, pw, ph);
+                                       panel("EYE DEPTH: MEAN", "MEAN REL Z ERROR", eye, false),
+                                       panel("STORED POSITION: MEAN", "MEAN REL Z ERROR", stored, false)}, pw, ph);
     Image img;
     img.width = top.width;
     img.height = top.height + bottom.height;
@@ -213,7 +220,7 @@ std::string stress_summary(const std::vector<StressResult>& results) {
     if (measured)
         o << "- Goal, relative eye-z error <= 2e-06 at every far/near up to 1e6 on the best encoding: log measures "
           << log_list << " in the renderer: " << (met ? "met" : "**NOT met**") << ".\n";
-    for (const char* path : {"log", "texture", "corrected"})
+    for (const char* path : {"log", "texture", "corrected", "position16", "position32"})
         for (double r : {1e6, 1e7})
             if (const StressResult* c = at(path, r))
                 o << "- " << path << " at " << ratio_label(r) << ": max " << err(c->z.max) << " in the renderer, "

@@ -1,6 +1,9 @@
 #include "analysis/z_accuracy.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include <glm/gtc/packing.hpp>
 
 #include "deferred/depth_codec.h"
 #include "deferred/reconstruct.h"
@@ -33,6 +36,10 @@ ZError reconstructed_z_error(const Image& positions, const AnalyticTrace& trace,
 }
 
 float modelled_eye_z(DepthPath path, DepthEncoding enc, double z, float n, float f) {
+    // Position paths: z itself, rounded once to the target's float (fp16: clamped to its largest
+    // finite value, 65504, as material.frag clamps).
+    if (path == DepthPath::position32) return float(z);
+    if (path == DepthPath::position16) return glm::unpackHalf1x16(glm::packHalf1x16(std::clamp(float(z), -65504.0f, 65504.0f)));
     if (path == DepthPath::packed) return decode_eye_z(enc, store_unorm8(encode_eye_z(enc, float(z), n, f)), n, f);
     // The depth buffer holds round(d * (2^24 - 1)) of the exact window depth d; sampling the
     // depth texture returns k / (2^24 - 1). The decode is the shader's, in float.

@@ -29,7 +29,8 @@ ZError reconstructed_z_error(const Image& positions, const AnalyticTrace& trace,
 // What the depth path's CPU twin gives back for an exact eye z < 0 with near n and far f:
 //   texture: the window depth quantised to 24 bits (k/(2^24-1), the value the depth texture
 //            returns), then Listing 20's -planes.y/(planes.x + depth) in float;
-//   packed:  decode_eye_z(store_unorm8(encode_eye_z(z))), the float twin of the shaders.
+//   packed:  decode_eye_z(store_unorm8(encode_eye_z(z))), the float twin of the shaders;
+//   position16 / position32: z rounded to half (clamped to +-65504) / to float.
 float modelled_eye_z(DepthPath path, DepthEncoding enc, double z, float n, float f);
 
 // modelled_eye_z's relative error over the same pixels as reconstructed_z_error.

@@ -114,7 +114,10 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["paths"] = {{"depth", paths.depth}, {"gbuffer", paths.gbuffer}, {"render_target", paths.render_target},
                   {"textures", paths.textures}};
     j["caps_forced_off"] = caps.forced_off;
-    j["depth_encoding"] = paths.depth_path == DepthPath::packed ? encoding_name(opts.encoding) : "depth-texture";
+    j["depth_encoding"] = paths.depth_path == DepthPath::packed    ? encoding_name(opts.encoding)
+                          : paths.depth_path == DepthPath::texture ? "depth-texture"
+                                                                   : paths.depth.c_str();  // position16 | position32
+    j["gbuffer_bytes_per_pixel"] = paths.gbuffer_bytes_per_pixel;
     j["lighting"] = opts.listing2_literal ? "listing" : "equations";
     j["skips"] = {{"variants", skip.material_variants}, {"empty_lights", skip.empty_lights},
                   {"light_depth_test", skip.light_depth_test}, {"light_sphere_test", skip.light_sphere_test}};

@@ -12,15 +12,17 @@ const char* kEglDeviceOption =
     "  --egl-device N          with --context egl: the EGL device (default: $DSR_EGL_DEVICE, else 0)\n";
 
 const char* kCapsOption =
-    "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-npot,\n"
-    "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats,\n"
+    "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-arb-fbo,\n"
+    "                          no-npot, no-float, no-glsl, no-occlusion-query, no-pipeline-stats,\n"
     "                          no-stencil, no-packed-depth-stencil, no-stencil-separate,\n"
     "                          no-stencil-two-side, no-depth-bounds (added to $DSR_CAPS)\n";
 // The option table's flags (deferred/option_table.h): `render` and `view` take them all, and the
 // viewer's `set NAME VALUE` takes each by its name without dashes.
 const char* kRendererOptions =
-    "  --depth auto|texture|packed\n"
+    "  --depth auto|texture|packed|position16|position32\n"
     "                          depth path; auto: the depth texture where the GL has ARB_depth_texture\n"
+    "                          (never a position path); position16/32: eye-space position stored in\n"
+    "                          an RGBA16F/RGBA32F target instead of rebuilt from depth\n"
     "  --depth-encoding corrected|literal|linear|log\n"
     "                          what the packed depth target holds (default corrected)\n"
     "  --gbuffer rgba8|half    G-buffer target precision (default rgba8, as the tutorial)\n"
@@ -72,7 +74,7 @@ const char* kStateOptions =
 std::vector<CommandUsage> make_table() {
     std::vector<CommandUsage> t;
     t.push_back({"render",
-                 {"[SCENE] [-o OUT] [--size WxH] [--depth auto|texture|packed]",
+                 {"[SCENE] [-o OUT] [--size WxH] [--depth auto|texture|packed|position16|position32]",
                   "[--depth-encoding corrected|literal|linear|log] [--no-skip variants,empty-lights,light-depth-test,light-sphere-test]",
                   "[--scissor on|off] [--lighting equations|listing] [--gbuffer rgba8|half]",
                   "[--frames N] [--stats FILE.json] [--caps no-mrt,no-depth-texture,...]",
@@ -137,11 +139,7 @@ std::vector<CommandUsage> make_table() {
     t.push_back({"info",
                  {"[--caps LIST] [--context NAME] [--egl-device N]"},
                  "GL vendor/renderer/version, capabilities, paths chosen",
-                 "  --caps LIST             capabilities to hide: no-mrt, no-depth-texture, no-fbo, no-npot,\n"
-                 "                          no-float, no-glsl, no-occlusion-query, no-pipeline-stats,\n"
-                 "                          no-stencil, no-packed-depth-stencil, no-stencil-separate,\n"
-                 "                          no-stencil-two-side, no-depth-bounds (added to $DSR_CAPS)\n" +
-                     std::string(kContextOption) + kEglDeviceOption});
+                 std::string(kCapsOption) + kContextOption + kEglDeviceOption});
     t.push_back({"gen-textures",
                  {"DIR"},
                  "write the default scene's procedural textures",

@@ -132,6 +132,8 @@ void DeferredShader::resize(int width, int height) {
 DeferredShader::~DeferredShader() = default;
 
 std::vector<std::string> DeferredShader::depth_defines() const {
+    if (opts_.depth == DepthPath::position16) return {"POSITION_TARGET", "POSITION16"};
+    if (opts_.depth == DepthPath::position32) return {"POSITION_TARGET"};
     if (opts_.depth != DepthPath::packed) return {};
     std::vector<std::string> d = {"PACKED_DEPTH"};
     if (opts_.encoding == DepthEncoding::literal) d.push_back("ENC_LITERAL");
@@ -221,7 +223,8 @@ Image DeferredShader::read_gbuffer(int target) {
 }
 
 std::vector<uint32_t> DeferredShader::read_gbuffer_depth_codes() {
-    if (opts_.depth != DepthPath::texture) throw Error("read_gbuffer_depth_codes: the packed path has no depth texture");
+    if (opts_.depth != DepthPath::texture) throw Error(std::string("read_gbuffer_depth_codes: the ") + depth_path_name(opts_.depth) +
+                                                  " path has no depth texture");
     return read_depth_codes(gbuf().texture(PBuffer::DEPTH), w_, h_, gbuf().texture_width(), gbuf().texture_height());
 }
 

@@ -121,7 +121,8 @@ public:
     // (fixed function, bilinear when scaled): how `--view` shows the other buffers.
     void draw_texture_to_main(GLuint texture, int out_w, int out_h, glm::vec2 tex_scale = {1, 1});
     // After render(): replaces the main frame buffer's image with `view` (views.cpp).
-    // Depth is shown encoded as colour (Figure 4d) on both depth paths.
+    // Depth is shown encoded as colour (Figure 4d) on every depth path (the position paths' eye z
+    // mapped to window depth first).
     void draw_view(View view, int out_w, int out_h);
 
     // Post-processing passes, public for the figures (Figure 10 shows them one by one).
@@ -232,6 +233,7 @@ private:
     void set_ortho(int w, int h);
     // Shader defines of the depth path and packed encoding (glsl120/depth_codec.glsl).
     std::vector<std::string> depth_defines() const;
+    // The G-buffer target the passes read eye z or position from (surface_eye_z / surface_eye_pos).
     int depth_target() const { return opts_.depth == DepthPath::texture ? PBuffer::DEPTH : G_DEPTH_PACKED; }
     // The material program a material draws with into `target` (-1: all, MRT).
     Program& material_program(const GpuMaterial& m, int target);

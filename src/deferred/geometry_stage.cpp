@@ -35,10 +35,13 @@ void DeferredShader::geometry_stage(const Scene& scene) {
     // Listing 7 clears every target to the background colour with one glClear; here each
     // target gets its own "no surface" value (docs/errata.md): a zero normal (0.5 grey,
     // which Listing 20's len > 0.1 test leaves unlit), zero diffuse with alpha 0 (the
-    // ambient pass skips it), zero specular, and the packed depth of the far plane.
-    const glm::vec4 clear[4] = {{0.5f, 0.5f, 0.5f, 0.0f}, {0, 0, 0, 0}, {0, 0, 0, 0},
-                                glm::vec4(encode_eye_z(opts_.encoding, -cam.far_plane, cam.near_plane,
-                                                       cam.far_plane), 0)};
+    // ambient pass skips it), zero specular, and the packed depth (or position) of the far plane.
+    // The position paths' target holds the far plane's eye z there (x = y = 0, alpha 0), so the
+    // light pass's depth test and the depth hand-off see the background where the depth paths do.
+    const glm::vec4 far_code = is_position_path(opts_.depth)
+                                   ? glm::vec4(0, 0, -cam.far_plane, 0)
+                                   : glm::vec4(encode_eye_z(opts_.encoding, -cam.far_plane, cam.near_plane, cam.far_plane), 0);
+    const glm::vec4 clear[4] = {{0.5f, 0.5f, 0.5f, 0.0f}, {0, 0, 0, 0}, {0, 0, 0, 0}, far_code};
     gl_state().apply(depth_pass_state());  // the clear writes depth: depth writes on, no scissor
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);

@@ -59,13 +59,9 @@ const std::pair<const char*, bool SkipOptions::*> kSkips[] = {
 std::vector<RenderOption> make_table() {
     std::vector<RenderOption> t;
     t.push_back(choice(
-        "depth", {"auto", "texture", "packed"},
-        [](const RenderOptions& r) {
-            return r.shader.depth == DepthPath::automatic ? "auto" : r.shader.depth == DepthPath::texture ? "texture" : "packed";
-        },
-        [](RenderOptions& r, const std::string& v) {
-            r.shader.depth = v == "auto" ? DepthPath::automatic : v == "texture" ? DepthPath::texture : DepthPath::packed;
-        }));
+        "depth", {"auto", "texture", "packed", "position16", "position32"},
+        [](const RenderOptions& r) { return std::string(depth_path_name(r.shader.depth)); },
+        [](RenderOptions& r, const std::string& v) { r.shader.depth = depth_path_from_name(v); }));
     t.push_back(choice(
         "depth-encoding", {"corrected", "literal", "linear", "log"},
         [](const RenderOptions& r) { return std::string(encoding_name(r.shader.encoding)); },

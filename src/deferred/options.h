@@ -8,8 +8,24 @@
 
 namespace dsr {
 
-// automatic: the depth texture where ARB_depth_texture exists, else packed (choose_paths).
-enum class DepthPath { texture, packed, automatic };
+// automatic: the depth texture where ARB_depth_texture exists, else packed (choose_paths); it
+// never picks a position path.
+//  texture     the G-buffer's depth texture, eye position rebuilt from depth (§3.4.3)
+//  packed      depth packed into an RGB8 target (Listings 11, 18), rebuilt the same way
+//  position16  eye-space position xyz stored in an RGBA16F target (LearnOpenGL's G-buffer)
+//  position32  the same in RGBA32F (the lecture's "GL_RGBA32F texture", Vasilovici's targets)
+enum class DepthPath { texture, packed, position16, position32, automatic };
+
+// "texture", "packed", "position16", "position32", "auto"; from_name throws dsr::Error otherwise.
+const char* depth_path_name(DepthPath d);
+DepthPath depth_path_from_name(const std::string& name);
+// The paths that store position instead of rebuilding it from depth.
+inline bool is_position_path(DepthPath d) { return d == DepthPath::position16 || d == DepthPath::position32; }
+
+// A G-buffer colour target's format (pure: render_targets.cpp maps it to the GL enum).
+enum class TargetFormat { rgba8, rgba16f, rgba32f };
+int target_format_bytes(TargetFormat f);   // 4, 8, 16
+const char* target_format_name(TargetFormat f);  // "RGBA8", "RGBA16F", "RGBA32F"
 
 // How each light reaches its pixels (issue 12; docs/benchmarks.md has one section per geometry):
 //  quad     the tutorial's scissored screen-aligned quad per light (§3.4.2, Listing 16)

@@ -1,10 +1,42 @@
 #include "deferred/paths.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "dsr_error.h"
 
 namespace dsr {
+
+namespace {
+
+// " (forced off: no-float)" when --caps hid it, so a refusal says it was asked for.
+std::string forced_note(const Caps& caps, const char* name) {
+    const auto& f = caps.forced_off;
+    return std::find(f.begin(), f.end(), name) != f.end() ? std::string(" (forced off: ") + name + ")" : "";
+}
+
+// The targets' formats (Paths::gbuffer_formats) and the bytes a pixel of them holds.
+void choose_gbuffer_formats(const Caps& caps, const ShaderOptions& opts, Paths& p) {
+    const TargetFormat base = opts.gbuffer_half ? TargetFormat::rgba16f : TargetFormat::rgba8;
+    p.gbuffer_formats.assign(size_t(p.gbuffer_targets), base);
+    if (p.depth_path == DepthPath::position16) p.gbuffer_formats[3] = TargetFormat::rgba16f;
+    if (p.depth_path == DepthPath::position32) p.gbuffer_formats[3] = TargetFormat::rgba32f;
+    const TargetFormat widest = *std::max_element(p.gbuffer_formats.begin(), p.gbuffer_formats.end(),
+                                                  [](TargetFormat a, TargetFormat b) {
+                                                      return target_format_bytes(a) < target_format_bytes(b);
+                                                  });
+    if (!caps.fbo_mixed_formats &&
+        std::any_of(p.gbuffer_formats.begin(), p.gbuffer_formats.end(), [&](TargetFormat f) { return f != widest; })) {
+        p.gbuffer_formats.assign(p.gbuffer_formats.size(), widest);
+        p.gbuffer_formats_note = std::string("every target ") + target_format_name(widest) +
+                                 ": EXT_framebuffer_object without ARB_framebuffer_object wants one format per framebuffer";
+    }
+    p.gbuffer_depth_texture = p.depth_path == DepthPath::texture;
+    p.gbuffer_bytes_per_pixel = 4;  // 24-bit depth, stored as D24X8
+    for (TargetFormat f : p.gbuffer_formats) p.gbuffer_bytes_per_pixel += target_format_bytes(f);
+}
+
+}  // namespace
 
 Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     Paths p;
@@ -12,8 +44,11 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
         p.depth_path = caps.depth_texture ? DepthPath::texture : DepthPath::packed;
     else
         p.depth_path = opts.depth;
-    // Figure 3: normal, diffuse, specular+shininess, and packed depth only when that path runs.
-    p.gbuffer_targets = p.depth_path == DepthPath::packed ? 4 : 3;
+    // Figure 3: normal, diffuse, specular+shininess, and packed depth only when that path runs;
+    // the position paths' eye-space position in the same fourth slot.
+    const bool position = is_position_path(p.depth_path);
+    p.gbuffer_targets = p.depth_path == DepthPath::packed || position ? 4 : 3;
+    choose_gbuffer_formats(caps, opts, p);
     // MRT needs render-to-texture too: without framebuffer objects the main buffer has one
     // colour buffer (§3.2, one pass per target).
     // --render-target: fbo where asked or automatic and present; copy or pbuffer otherwise.
@@ -22,7 +57,7 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     p.mrt = p.fbo && caps.draw_buffers && caps.max_draw_buffers >= p.gbuffer_targets;
     p.pow2 = !caps.npot;
     p.count_fragments = caps.occlusion_query;
-    p.depth = p.depth_path == DepthPath::texture ? "texture" : "packed";
+    p.depth = depth_path_name(p.depth_path);
     p.gbuffer = p.mrt ? "mrt" : "per-target";
     p.render_target = p.fbo ? "fbo" : p.pbuffer ? "pbuffer" : "copy";
     p.textures = p.pow2 ? "pow2" : "npot";
@@ -51,6 +86,14 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     if (!caps.glsl120)
         p.refused = "GLSL 1.20 is required and this GL offers " +
                     (caps.glsl_version.empty() ? std::string("none") : caps.glsl_version) + " (GL " + caps.version + ")";
+    else if (position && !caps.fbo)
+        p.refused = std::string("--depth ") + p.depth +
+                    " needs render to texture (EXT_framebuffer_object): without it the G-buffer is copied from the "
+                    "8-bit main frame buffer" + forced_note(caps, "no-fbo");
+    else if (position && !(caps.texture_float && (p.depth_path == DepthPath::position32 || caps.half_float)))
+        p.refused = std::string("--depth ") + p.depth + " needs a float G-buffer target (ARB_texture_float" +
+                    (p.depth_path == DepthPath::position16 ? " and ARB_half_float_pixel" : "") +
+                    "), which this GL lacks" + forced_note(caps, "no-float") + " (use --depth texture or packed)";
     else if (p.depth_path == DepthPath::texture && !caps.depth_texture)
         p.refused = "--depth texture needs ARB_depth_texture, which is missing (use --depth packed)";
     else if (opts.float_accum && !(caps.texture_float && p.fbo))
@@ -73,12 +116,19 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
 
 std::string describe(const Paths& p) {
     std::ostringstream o;
-    o << "  depth          "
-      << (p.depth_path == DepthPath::texture ? "texture (ARB_depth_texture)"
-                                              : "packed (float_to_color into an RGB8 target, §3.3.2)")
-      << "\n  G-buffer       "
+    const char* depth = p.depth_path == DepthPath::texture  ? "texture (ARB_depth_texture)"
+                        : p.depth_path == DepthPath::packed ? "packed (float_to_color into an RGB8 target, §3.3.2)"
+                        : p.depth_path == DepthPath::position16
+                            ? "position16 (eye-space position in an RGBA16F target, ARB_half_float_pixel)"
+                            : "position32 (eye-space position in an RGBA32F target, ARB_texture_float)";
+    std::string formats;
+    for (TargetFormat f : p.gbuffer_formats) formats += std::string(formats.empty() ? "" : " ") + target_format_name(f);
+    o << "  depth          " << depth << "\n  G-buffer       "
       << (p.mrt ? "mrt: one material pass into all " + std::to_string(p.gbuffer_targets) + " targets (ARB_draw_buffers)"
                 : "per-target: one material pass per G-buffer target (§3.2)")
+      << "\n  G-buffer bytes " << p.gbuffer_bytes_per_pixel << " per pixel (" << formats << " + 24-bit depth)";
+    if (!p.gbuffer_formats_note.empty()) o << "; " << p.gbuffer_formats_note;
+    o
       << "\n  render target  "
       << (p.fbo       ? "fbo: render to texture (EXT_framebuffer_object)"
           : p.pbuffer ? "pbuffer: one EGL pbuffer surface per buffer + glCopyTexSubImage2D"
@@ -110,6 +160,32 @@ const char* light_geometry_name(LightGeometry g) {
         case LightGeometry::tiles: return "tiles";
     }
     return "?";
+}
+
+const char* depth_path_name(DepthPath d) {
+    switch (d) {
+        case DepthPath::texture: return "texture";
+        case DepthPath::packed: return "packed";
+        case DepthPath::position16: return "position16";
+        case DepthPath::position32: return "position32";
+        case DepthPath::automatic: return "auto";
+    }
+    return "?";
+}
+
+DepthPath depth_path_from_name(const std::string& n) {
+    for (DepthPath d : {DepthPath::texture, DepthPath::packed, DepthPath::position16, DepthPath::position32,
+                        DepthPath::automatic})
+        if (n == depth_path_name(d)) return d;
+    throw Error("depth path '" + n + "': expected auto, texture, packed, position16 or position32");
+}
+
+int target_format_bytes(TargetFormat f) {
+    return f == TargetFormat::rgba8 ? 4 : f == TargetFormat::rgba16f ? 8 : 16;
+}
+
+const char* target_format_name(TargetFormat f) {
+    return f == TargetFormat::rgba8 ? "RGBA8" : f == TargetFormat::rgba16f ? "RGBA16F" : "RGBA32F";
 }
 
 LightGeometry light_geometry_from_name(const std::string& n) {

@@ -3,6 +3,7 @@
 // unit-tested; DeferredShader, `dsr info`, `render --depth auto` and the tests all ask it.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "deferred/options.h"
 #include "gl/caps.h"
@@ -16,9 +17,21 @@ struct Paths {
     bool pbuffer = false;        // copy from pbuffer surfaces of their own (--render-target pbuffer)
     bool pow2 = false;           // targets padded, material maps rescaled to powers of two
     bool count_fragments = true; // occlusion queries around the light passes
-    int gbuffer_targets = 3;     // normal, diffuse, specular (+ packed depth)
+    int gbuffer_targets = 3;     // normal, diffuse, specular (+ packed depth or position)
+    // Each G-buffer colour target's format, in target order: what RenderTargets allocates. Where
+    // only EXT_framebuffer_object is present (no ARB_framebuffer_object / GL 3.0) every colour
+    // attachment of one framebuffer takes one format ("incomplete: formats" otherwise), so a
+    // float position target makes every target float; `gbuffer_formats_note` then says so.
+    std::vector<TargetFormat> gbuffer_formats;
+    std::string gbuffer_formats_note;
+    // The G-buffer's depth: a depth texture on the texture path, a renderbuffer (depth testing
+    // only) on the packed and position paths.
+    bool gbuffer_depth_texture = true;
+    // Bytes a pixel of the G-buffer holds: its colour targets plus the 24-bit depth (counted as
+    // the 4 bytes it is stored in, D24X8).
+    int gbuffer_bytes_per_pixel = 0;
     // The same decisions by name (info, --stats, the tests).
-    std::string depth;           // "texture" | "packed"
+    std::string depth;           // "texture" | "packed" | "position16" | "position32"
     std::string gbuffer;         // "mrt" | "per-target"
     std::string render_target;   // "fbo" | "copy" | "pbuffer"
     std::string textures;        // "npot" | "pow2"

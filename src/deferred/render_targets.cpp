@@ -7,6 +7,11 @@
 
 namespace dsr {
 
+GLenum gl_format(TargetFormat f) {
+    return f == TargetFormat::rgba8 ? GLenum(GL_RGBA8) : f == TargetFormat::rgba16f ? GLenum(GL_RGBA16F_ARB)
+                                                                                     : GLenum(GL_RGBA32F_ARB);
+}
+
 RenderTargets::RenderTargets(const Paths& paths, const ShaderOptions& opts, int width, int height)
     : paths_(paths), opts_(opts), w_(width), h_(height) {
     allocate();
@@ -33,11 +38,12 @@ void RenderTargets::allocate() {
     g.use_fbo = paths_.fbo;
     g.use_pbuffer = paths_.pbuffer;
     g.pow2 = paths_.pow2;
-    // EXT_framebuffer_object wants one format for every colour attachment, so the half-float
-    // option makes all targets half; the packed depth keeps its byte codes (exact in half).
-    const GLenum gfmt = opts_.gbuffer_half ? GLenum(GL_RGBA16F_ARB) : GLenum(GL_RGBA8);
-    g.color_formats.assign(size_t(paths_.gbuffer_targets), gfmt);
-    g.depth = paths_.depth_path == DepthPath::packed ? DepthAttachment::renderbuffer : DepthAttachment::texture;
+    // The formats choose_paths picked (Paths::gbuffer_formats): RGBA8, or half with the half-float
+    // option (the packed depth keeps its byte codes, exact in half), and the position paths'
+    // float target; all one format where only EXT_framebuffer_object is present.
+    for (TargetFormat f : paths_.gbuffer_formats) g.color_formats.push_back(gl_format(f));
+    // The position paths keep a depth buffer for the pre-pass's depth test only: a renderbuffer.
+    g.depth = paths_.gbuffer_depth_texture ? DepthAttachment::texture : DepthAttachment::renderbuffer;
     g_ = std::make_unique<PBuffer>("G-buffer", g);
     // P-buffers 0-3 (§3.2). Bilinear, so the final pass can scale (§3.6).
     const int bs = opts_.post.bloom_scale;

@@ -10,8 +10,11 @@
 
 namespace dsr {
 
-// G-buffer targets (Figure 3).
-enum GTarget { G_NORMAL = 0, G_DIFFUSE = 1, G_SPECULAR = 2, G_DEPTH_PACKED = 3 };
+// G-buffer targets (Figure 3); the position paths' eye-space position takes the packed depth's slot.
+enum GTarget { G_NORMAL = 0, G_DIFFUSE = 1, G_SPECULAR = 2, G_DEPTH_PACKED = 3, G_POSITION = 3 };
+
+// The GL internal format of a G-buffer target format (GL_RGBA8, GL_RGBA16F_ARB, GL_RGBA32F_ARB).
+GLenum gl_format(TargetFormat f);
 
 // P-buffer roles (§3.2: "four P-buffers"); the values are the tutorial's buffer numbers.
 enum PRole {

@@ -46,11 +46,15 @@ void DeferredShader::draw_view(View view, int out_w, int out_h) {
                                      {gbuf().tex_scale_x(), gbuf().tex_scale_y()});
                 return;
             }
-            // The depth texture, encoded with the packed path's codec so both paths show
-            // the same picture (Figure 4d).
-            Image d = read_gbuffer(PBuffer::DEPTH);
+            // The depth texture, encoded with the packed path's codec so every path shows the
+            // same picture (Figure 4d); on the position paths the stored eye z mapped to window
+            // depth first, as the depth hand-off does (§3.4.3).
+            const bool position = is_position_path(opts_.depth);
+            Image d = read_gbuffer(position ? G_POSITION : PBuffer::DEPTH);
             for (size_t i = 0; i < d.rgba.size(); i += 4) {
-                glm::vec3 c = pack_depth(d.rgba[i]);
+                const float z = d.rgba[i + 2];
+                const float depth = position ? glm::clamp((planes_.x * z + planes_.y) / -z, 0.0f, 1.0f) : d.rgba[i];
+                glm::vec3 c = pack_depth(depth);
                 d.rgba[i] = c.r, d.rgba[i + 1] = c.g, d.rgba[i + 2] = c.b, d.rgba[i + 3] = 1.0f;
             }
             // Same extent as the G-buffer's textures (padded on the pow2 path).

@@ -28,14 +28,14 @@ static std::string gl_string(GLenum e) {
 }
 
 Caps probe_caps(const std::vector<std::string>& force_off) {
-    static const char* known[] = {"no-mrt",   "no-depth-texture",   "no-fbo",           "no-npot",
+    static const char* known[] = {"no-mrt",   "no-depth-texture",   "no-fbo", "no-arb-fbo", "no-npot",
                                   "no-float", "no-glsl", "no-occlusion-query", "no-pipeline-stats",
                                   "no-stencil", "no-packed-depth-stencil", "no-stencil-separate",
                                   "no-stencil-two-side", "no-depth-bounds"};
     for (const auto& f : force_off)
         if (std::none_of(std::begin(known), std::end(known), [&](const char* k) { return f == k; }))
             throw Error("unknown capability '" + f +
-                        "' (expected no-mrt, no-depth-texture, no-fbo, no-npot, no-float, no-glsl, "
+                        "' (expected no-mrt, no-depth-texture, no-fbo, no-arb-fbo, no-npot, no-float, no-glsl, "
                         "no-occlusion-query, no-pipeline-stats, no-stencil, no-packed-depth-stencil, "
                         "no-stencil-separate, no-stencil-two-side or no-depth-bounds)");
     auto off = [&](const char* k) { return std::find(force_off.begin(), force_off.end(), k) != force_off.end(); };
@@ -59,6 +59,9 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
     c.depth_texture = (at_least(c.gl_major, c.gl_minor, 1, 4) || has_extension("GL_ARB_depth_texture")) &&
                       !off("no-depth-texture");
     c.fbo = has_extension("GL_EXT_framebuffer_object") && !off("no-fbo");
+    // no-arb-fbo leaves EXT_framebuffer_object's one-format rule (what a 2005 driver enforced).
+    c.fbo_mixed_formats = c.fbo && (at_least(c.gl_major, c.gl_minor, 3, 0) || has_extension("GL_ARB_framebuffer_object")) &&
+                          !off("no-arb-fbo");
     c.npot = (gl20 || has_extension("GL_ARB_texture_non_power_of_two")) && !off("no-npot");
     c.texture_float = (at_least(c.gl_major, c.gl_minor, 3, 0) || has_extension("GL_ARB_texture_float")) &&
                       !off("no-float");
@@ -100,6 +103,7 @@ std::string describe(const Caps& c) {
       << c.max_draw_buffers << "\n"
       << "  " << yn(c.depth_texture) << " depth textures           (ARB_depth_texture)\n"
       << "  " << yn(c.fbo) << " render to texture        (EXT_framebuffer_object)\n"
+      << "  " << yn(c.fbo_mixed_formats) << " mixed target formats     (ARB_framebuffer_object)\n"
       << "  " << yn(c.npot) << " non-power-of-two         (ARB_texture_non_power_of_two)\n"
       << "  " << yn(c.texture_float) << " float targets            (ARB_texture_float)\n"
       << "  " << yn(c.half_float) << " half-float targets       (ARB_half_float_pixel)\n"

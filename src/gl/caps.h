@@ -14,6 +14,8 @@ struct Caps {
     int max_draw_buffers = 1;        // GL_MAX_DRAW_BUFFERS
     bool depth_texture = false;      // ARB_depth_texture: the depth-texture path, §3.3.2
     bool fbo = false;                // EXT_framebuffer_object: render to texture
+    bool fbo_mixed_formats = false;  // ARB_framebuffer_object (core in 3.0): colour attachments of one
+                                     // framebuffer in different formats (EXT wants one format)
     bool npot = false;               // ARB_texture_non_power_of_two
     bool texture_float = false;      // ARB_texture_float
     bool half_float = false;         // ARB_half_float_pixel
@@ -31,7 +33,7 @@ struct Caps {
 };
 
 // Reads the current context. `force_off` lists capabilities to report missing
-// (no-mrt, no-depth-texture, no-fbo, no-npot, no-float, no-glsl, no-occlusion-query,
+// (no-mrt, no-depth-texture, no-fbo, no-arb-fbo, no-npot, no-float, no-glsl, no-occlusion-query,
 // no-pipeline-stats, no-stencil, no-packed-depth-stencil, no-stencil-separate, no-stencil-two-side
 // (both two-sided mechanisms: GL 2.0's and EXT_stencil_two_side), no-depth-bounds); unknown names
 // throw dsr::Error.
