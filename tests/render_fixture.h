@@ -24,6 +24,13 @@ struct RenderResult {
     Paths paths;
 };
 
+// The default options on depth path p.
+inline ShaderOptions with_depth(DepthPath p) {
+    ShaderOptions o;
+    o.depth = p;
+    return o;
+}
+
 inline Scene default_scene() { return load_scene(resource_dir("data") + "/default.scene"); }
 
 // A white sphere lit head-on by one large light, on background (0.2, 0.4, 0.6) with ambient

@@ -11,12 +11,6 @@ using namespace dsr::test;
 namespace {
 constexpr int kSize = 256;  // small enough for 2 cores; the default scene at 512 is the CLI's job
 constexpr double kLsb = 1.0 / 255.0;
-
-ShaderOptions with_depth(DepthPath p) {
-    ShaderOptions o;
-    o.depth = p;
-    return o;
-}
 }  // namespace
 
 // The two depth paths reconstruct the same positions: the corrected packing keeps 24 bits,

@@ -15,12 +15,6 @@ using namespace dsr::test;
 namespace {
 constexpr int kSize = 128;
 constexpr double kLsb = 1.0 / 255.0;
-
-ShaderOptions with_depth(DepthPath p) {
-    ShaderOptions o;
-    o.depth = p;
-    return o;
-}
 }  // namespace
 
 // Both position paths shade the default scene like the depth texture: the stored position and
