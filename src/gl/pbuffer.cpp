@@ -77,7 +77,7 @@ PBuffer::PBuffer(std::string name, const PBufferDesc& desc) : name_(std::move(na
 PBuffer::~PBuffer() {
     if (depth_rb_) glDeleteRenderbuffersEXT(1, &depth_rb_);
     if (fbo_) glDeleteFramebuffersEXT(1, &fbo_);
-    if (surface_) {
+    if (surface_ && offscreen_surfaces()) {  // a context gone first took its surfaces with it
         if (rendering_) offscreen_surfaces()->make_surface_current(nullptr);
         offscreen_surfaces()->destroy_surface(surface_);
     }
