@@ -6,7 +6,9 @@
 //   ambient  Factor_amb of Equation 6 on the pass that lays a surface down, 0 on additive passes
 //   nlights  lights in this pass, <= MAX_LIGHTS (Listing 3: many per pass; Listing 4: one)
 // Variants: NORMAL_MAP (tangent space, as glsl120/material.frag), LISTING2_LITERAL,
-// MAX_LIGHTS n (set by the renderer from GL_MAX_FRAGMENT_UNIFORM_COMPONENTS).
+// MAX_LIGHTS n (set by the renderer from GL_MAX_FRAGMENT_UNIFORM_COMPONENTS), OPACITY (issue 13:
+// the transparent pass, src/forward/transparent_pass.cpp, blends with alpha = the material's
+// opacity; without it alpha is 1 as before).
 #include "lighting.glsl"
 
 #ifndef MAX_LIGHTS
@@ -22,6 +24,9 @@ uniform float shininess;        // M_shi of Equation 4, exactly
 uniform float tile;
 uniform vec3 ambient;
 uniform int nlights;
+#ifdef OPACITY
+uniform float opacity;          // Material::opacity, in (0, 1)
+#endif
 // One light as five vec4s (lighting.glsl light_contribution; deferred/light_params.h).
 uniform vec4 lightpos[MAX_LIGHTS];    // eye space, w = radius
 uniform vec4 lightcolor[MAX_LIGHTS];  // S_diff = S_spec, w = type
@@ -52,5 +57,9 @@ void main()
         c += light_contribution(lightpos[i], lightcolor[i], lightdir[i], lightspot[i], lightatt[i], vpos, n, Mdiff,
                                 Mspec, shininess);
     }
+#ifdef OPACITY
+    gl_FragColor = vec4(c, opacity);
+#else
     gl_FragColor = vec4(c, 1.0);
+#endif
 }

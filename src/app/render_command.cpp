@@ -142,6 +142,12 @@ int cmd_render(const std::vector<std::string>& argv) {
     if (paths.light_geometry == LightGeometry::tiles) j["tiles"] = {{"size", opts.tile_size}, {"lights_per_pass", opts.tile_lights}, {"tile_light_pairs", last.tile_light_pairs}};
     j["depth_bounds"] = paths.depth_bounds;
     j["light_passes"] = last.light_passes;
+    // Issue 13: the depth hand-off as run (null: nothing needed it) and the forward stage's work.
+    j["depth_handoff"] = paths.accum_depth ? nlohmann::json(depth_handoff_name(paths.depth_handoff)) : nlohmann::json(nullptr);
+    j["forward_stage"] = paths.forward_stage;
+    j["light_markers"] = last.light_markers;
+    j["transparent_objects"] = last.transparent_objects;
+    j["transparent_passes"] = last.transparent_passes;
     j["lights_as_quads"] = last.lights_as_quads;
     if (!stats_path.empty()) {  // reads the G-buffer back: only when asked for
         const FrameIdeal ideal = frame_ideal_fragments(ds, scene);
@@ -152,6 +158,7 @@ int cmd_render(const std::vector<std::string>& argv) {
                {"lights", med(&StageTimes::lights)},     {"bloom", med(&StageTimes::bloom)},
                {"aa", med(&StageTimes::aa)},             {"final", med(&StageTimes::final)},
                {"depth_copy", med(&StageTimes::depth_copy)}, {"ssao", med(&StageTimes::ssao)},
+               {"forward", med(&StageTimes::forward)},
                {"cpu", med(&StageTimes::cpu)}, {"frame", med(&StageTimes::frame)}};
     const size_t triangles = scene.triangle_count();
     struct rusage usage {};

@@ -64,7 +64,14 @@ const char* kRendererOptions =
     "  --ssao-scale 1|2        AO buffer at full or half resolution (default 1)\n"
     "  --ssao-radius R         hemisphere radius in eye-space units, 0.01..100 (default 0.5)\n"
     "  --ssao-strength S       ao = 1 - S x occluded fraction, 0..4 (default 1)\n"
-    "  --ssao-samples N        hemisphere samples per pixel, 4..64 (default 16)\n";
+    "  --ssao-samples N        hemisphere samples per pixel, 4..64 (default 16)\n"
+    "  --show-lights, --no-show-lights\n"
+    "                          an emissive marker at each point and spot light, drawn forward into\n"
+    "                          P-buffer 0 after the lights, so bloom makes it glow (default off)\n"
+    "  --depth-handoff auto|blit|pass\n"
+    "                          how the G-buffer's depth reaches P-buffer 0 for the passes that test\n"
+    "                          against it: EXT_framebuffer_blit, or a gl_FragDepth pass (default auto:\n"
+    "                          blit where present)\n";
 const char* kStateOptions =
     "  --gl-state-cache on|off\n"
     "                          off: every pass sets all of its GL state, so a cache bug can be\n"
@@ -85,6 +92,7 @@ std::vector<CommandUsage> make_table() {
                   "[--light-geometry quad|volume|stencil|tiles] [--depth-bounds on|off] [--tile-size N] [--tile-lights N]",
                   "[--tile-plan lists|groups] [--render-target auto|fbo|copy|pbuffer]",
                   "[--ssao|--no-ssao] [--ssao-scale 1|2] [--ssao-radius R] [--ssao-strength S] [--ssao-samples N]",
+                  "[--show-lights|--no-show-lights] [--depth-handoff auto|blit|pass]",
                   "[--context NAME] [--egl-device N] [--gl-state-cache on|off] [--debug-gl]"},
                  "render SCENE (default data/default.scene) with the deferred shader into one image",
                  "  SCENE                   scene file (default data/default.scene)\n"

@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include "deferred/gpu_scene.h"
+#include "forward/transparent_pass.h"
 #include "dsr_error.h"
 #include "gl/check.h"
 #include "gl/readback.h"
@@ -97,7 +98,7 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
         light_tiles_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);
     }
     if (opts.ssao.on) build_ssao_programs();
-    if (paths_.accum_depth) depth_copy_prog_ = Program(shader_dir, "post.vert", "depth_copy.frag", depth_defs);
+    build_depth_handoff();
     // Post programs are built only when their pass can run (the post stage costs nothing off).
     const PostOptions& p = opts.post;
     if (p.bloom) {
@@ -142,7 +143,29 @@ std::vector<std::string> DeferredShader::depth_defines() const {
     return d;
 }
 
-void DeferredShader::set_scene(const Scene& scene) { gpu_ = std::make_unique<GpuScene>(scene, !caps_.npot); }
+void DeferredShader::build_depth_handoff() {
+    if (paths_.accum_depth && paths_.depth_handoff == DepthHandoff::pass && !depth_copy_prog_.id())
+        depth_copy_prog_ = Program(shader_dir_, "post.vert", "depth_copy.frag", depth_defines());
+}
+
+void DeferredShader::set_scene(const Scene& scene) {
+    gpu_ = std::make_unique<GpuScene>(scene, !caps_.npot);
+    bounds_ = object_bounds(scene);
+    // Transparent materials (issue 13) are drawn by the forward stage, which needs the scene's
+    // depth in P-buffer 0: where the options did not foresee them (RenderOptions::resolved does),
+    // the paths are chosen again and the buffers reallocated; no other shader is rebuilt.
+    if (!gpu_->transparent_objects().empty()) {
+        if (!opts_.forward_surfaces) {
+            opts_.forward_surfaces = true;
+            const bool had_depth = paths_.accum_depth;
+            paths_ = choose_paths(caps_, opts_);
+            if (!paths_.refused.empty()) throw Error(paths_.refused);
+            if (!had_depth) targets_ = std::make_unique<RenderTargets>(paths_, opts_, w_, h_);
+            build_depth_handoff();
+        }
+        if (!transparent_) transparent_ = std::make_unique<TransparentPass>(shader_dir_, opts_.listing2_literal);
+    }
+}
 
 // --- Listing 6 -------------------------------------------------------------------------
 void DeferredShader::mrt_bind_render() { gbuf().bind_render(); }
@@ -211,6 +234,7 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     st.ms.final = ms[S_FINAL];
     st.ms.depth_copy = ms[S_DEPTH_COPY];
     st.ms.ssao = ms[S_SSAO];
+    st.ms.forward = ms[S_FORWARD];
     st.timing = timer_.source();
     check_gl("frame");  // per stage too with --debug-gl (check_gl_stage)
     return st;

@@ -28,6 +28,7 @@
 #include "gl/pbuffer.h"
 #include "gl/program.h"
 #include "gl/state.h"
+#include "scene/bounds.h"
 #include "scene/image.h"
 #include "scene/scene.h"
 
@@ -35,6 +36,7 @@ namespace dsr {
 
 class GpuScene;
 struct GpuMaterial;
+class TransparentPass;
 
 // Per-stage time of one frame, in milliseconds, from the FrameTimer (gl/frame_timer.h):
 // GPU timer queries or glFinish + wall clock, as `timing` says. `frame` is always the wall
@@ -43,6 +45,7 @@ struct StageTimes {
     double geometry = 0, ambient = 0, lights = 0, bloom = 0, aa = 0, final = 0, frame = 0;
     double ssao = 0;        // the SSAO pass and its blur (0 with --ssao off)
     double depth_copy = 0;  // hand_off_depth: the G-buffer's depth onto P-buffer 0 (0 where not needed)
+    double forward = 0;     // forward_stage: light markers and transparent surfaces (0 where not run)
     // CPU time of the rendering thread from the start of render() to its end-of-frame wait: the
     // submission cost (draw calls, state, uniforms). With glFinish-timed stages (llvmpipe) the
     // waits in between are in it as far as they spin; with timer queries (a GPU) they are not there.
@@ -70,6 +73,10 @@ struct FrameStats {
     int light_passes = 0;
     int lights_as_quads = 0;
     long long tile_light_pairs = 0;  // tiles: (tile, light) pairs its plan shaded (tile_plan.h)
+    // The forward stage (issue 13): markers drawn, transparent objects blended and their draws.
+    int light_markers = 0;
+    int transparent_objects = 0;
+    int transparent_passes = 0;
     StageTimes ms;
     TimingSource timing = TimingSource::wall;
 };
@@ -115,6 +122,9 @@ public:
     // Appendix A stages, public so tests and figures can run them one by one.
     void geometry_stage(const Scene& scene);
     void draw_lights(const Scene& scene, bool scissors, FrameStats& stats);
+    // Issue 13, forward_stage.cpp: after the light passes, into P-buffer 0 (bound, its depth handed
+    // off): light markers (--show-lights), then transparent surfaces back to front.
+    void forward_stage(const Scene& scene, FrameStats& stats);
     void post_stage(FrameStats& stats);
     void final_stage(int out_w, int out_h);
     // Any texture drawn into the main frame buffer the way the final stage draws P-buffer 0
@@ -180,7 +190,7 @@ public:
 
 private:
     // Stage slots of the frame timer, in StageTimes order.
-    enum Slot { S_GEOMETRY, S_AMBIENT, S_LIGHTS, S_BLOOM, S_AA, S_FINAL, S_DEPTH_COPY, S_SSAO, S_COUNT };
+    enum Slot { S_GEOMETRY, S_AMBIENT, S_LIGHTS, S_BLOOM, S_AA, S_FINAL, S_DEPTH_COPY, S_SSAO, S_FORWARD, S_COUNT };
     // Each pass's fixed-function state (gl/state.h), declared in its stage's file.
     static RenderState depth_pass_state();
     static RenderState material_pass_state();
@@ -196,6 +206,9 @@ private:
     void set_ssao_ortho();
     void begin_ssao_pass(PBuffer& target, Program& prog);
     void draw_lighting(const Scene& scene, bool scissors, FrameStats& stats);
+    void draw_light_markers(const Scene& scene, FrameStats& stats);
+    // The programs and buffers the paths need for the depth hand-off (the gl_FragDepth pass).
+    void build_depth_handoff();
     // One visible light of the frame: its shader parameters, eye-space volume and scissor rectangle.
     struct LightDraw {
         const Light* light;
@@ -271,6 +284,9 @@ private:
     Program blur_prog_[2];              // [select]
     Program aa_prog_[2];                // [factor only]
     std::unique_ptr<GpuScene> gpu_;
+    std::vector<ObjectBounds> bounds_;                   // object_bounds(scene), set_scene
+    std::unique_ptr<TransparentPass> transparent_;  // scenes with transparent materials
+    Mesh marker_mesh_;                                   // --show-lights: the unit sphere
     glm::mat4 view_{1}, proj_{1};
     glm::vec2 planes_{0};
     glm::vec3 corner_rays_[4];

@@ -6,13 +6,30 @@
 // from the depth texture (texture path, the value itself) or from the packed target (packed path,
 // decoded, Listing 18), colour writes off. The same pass serves both paths and the copy path
 // without framebuffer objects; EXT_framebuffer_blit could copy the texture path's depth but not
-// decode the packed one. `--stats` ms.depth_copy is its cost.
+// decode the packed one.
+// Issue 13: where EXT_framebuffer_blit exists (and both are framebuffer objects) the hand-off is a
+// blit of the G-buffer's depth buffer instead (`--depth-handoff auto|blit|pass`, Paths::
+// depth_handoff): the G-buffer always has a 24-bit depth buffer for its pre-pass (a texture on the
+// texture path, a renderbuffer on the others), so the blit serves every depth path and needs no
+// decoding; P-buffer 0's depth has the same 24 depth bits. `--stats` ms.depth_copy is its cost,
+// either way.
 #include "deferred/deferred_shader.h"
 #include "gl/state.h"
 
 namespace dsr {
 
 void DeferredShader::hand_off_depth() {
+    if (paths_.depth_handoff == DepthHandoff::blit) {
+        RenderState s;  // no scissor (it clips a blit); depth writes on for the stencil clear below
+        s.color_write = false;
+        gl_state().apply(s);
+        gbuf().blit_depth_to(pbuf(P_ACCUM));
+        if (paths_.accum_stencil) {
+            glClearStencil(0);
+            glClear(GL_STENCIL_BUFFER_BIT);
+        }
+        return;
+    }
     RenderState s;
     s.color_write = false;
     s.depth_test = true;  // GL writes depth only with the test on

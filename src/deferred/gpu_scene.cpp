@@ -61,7 +61,10 @@ GpuScene::GpuScene(const Scene& scene, bool pow2_textures) {
         models_[o] = obj.model;
         triangles_ += size_t(count) / 3;
     }
-    ranges_ = object_ranges_;
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        if (scene.materials.at(size_t(scene.objects[o].material)).transparent()) transparent_.push_back(o);
+        else ranges_.push_back(object_ranges_[o]);
+    }
     std::stable_sort(ranges_.begin(), ranges_.end(),
                      [](const DrawRange& a, const DrawRange& b) { return a.material < b.material; });
     glGenBuffers(1, &vbo_);
@@ -97,6 +100,7 @@ GpuScene::GpuScene(const Scene& scene, bool pow2_textures) {
         g.specular = m.specular;
         g.shininess_code = encode_shininess(m.shininess);
         g.tile = m.tile;
+        g.opacity = m.opacity;
         g.diffuse_tex = m.diffuse_map >= 0 ? textures_[m.diffuse_map].id() : white_.id();
         g.specular_tex = m.specular_map >= 0 ? textures_[m.specular_map].id() : white_.id();
         g.normal_map = m.normal_map >= 0;

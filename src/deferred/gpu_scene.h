@@ -20,6 +20,7 @@ struct GpuMaterial {
     GLuint diffuse_tex = 0, normal_tex = 0, specular_tex = 0;
     bool normal_map = false;
     bool has_specular = true;  // false: M_spec is zero, the specular target is zero
+    float opacity = 1;         // below 1: transparent, drawn by the forward pass (issue 13)
 };
 
 struct DrawRange {
@@ -52,11 +53,15 @@ public:
     void set_view(const glm::dmat4& view);
     // Loads r's object's modelview (GL_MODELVIEW) and draws its indices.
     void draw(const DrawRange& r) const;
-    // Every object, positions only is enough (the depth pre-pass, Listing 8).
+    // Every opaque object (ranges()), positions only is enough (the depth pre-pass, Listing 8).
     void draw_all() const;
 
-    // The objects' draws, ordered by material (stable: scene order within a material).
+    // The opaque objects' draws, ordered by material (stable: scene order within a material):
+    // what the G-buffer holds. Objects with a transparent material (opacity < 1) are left out.
     const std::vector<DrawRange>& ranges() const { return ranges_; }
+    // The objects with a transparent material, in scene order (the forward pass sorts them).
+    const std::vector<size_t>& transparent_objects() const { return transparent_; }
+    bool transparent(size_t object) const { return materials_[size_t(object_ranges_.at(object).material)].opacity < 1; }
     // The draw of Scene::objects[object]: per-object draws of the forward renderers
     // (Listings 3-4 draw object by object; the deferred passes draw by material).
     const DrawRange& object_range(size_t object) const { return object_ranges_.at(object); }
@@ -78,6 +83,7 @@ private:
     std::vector<GpuMaterial> materials_;
     std::vector<DrawRange> ranges_;
     std::vector<DrawRange> object_ranges_;
+    std::vector<size_t> transparent_;
 };
 
 }  // namespace dsr

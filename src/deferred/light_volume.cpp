@@ -292,4 +292,10 @@ bool inside_volume(const LightVolume& v, glm::dvec3 p) {
     return len > 0 && glm::dot(d, glm::normalize(glm::dvec3(v.axis))) > len * std::cos(double(v.half_angle));
 }
 
+bool volume_reaches(const LightVolume& v, glm::vec3 centre, float radius) {
+    if (v.kind == LightVolume::Kind::full_screen) return true;
+    const BoundingSphere b = bounding_sphere(v);
+    return glm::length(centre - b.centre) <= radius + b.radius;
+}
+
 }  // namespace dsr

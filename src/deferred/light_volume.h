@@ -50,6 +50,13 @@ struct BoundingSphere {
 // R cos a with radius R sin a; full_screen: radius +infinity.
 BoundingSphere bounding_sphere(const LightVolume& v);
 
+// Whether the light can add anything to a surface inside the sphere (centre, radius), both in
+// the same space: Equation 2 (and the attenuation cut, and a spot's cone) makes a light exactly
+// zero outside its volume, so a sphere its bounding sphere does not meet gets nothing; a
+// directional light reaches everything. The forward renderers' and the transparent pass's
+// light-object culling.
+bool volume_reaches(const LightVolume& v, glm::vec3 centre, float radius);
+
 // True when the volume lies wholly outside the frustum (Listing 17 on the volume): the sphere's
 // test; a cone is outside when its bounding sphere is, or when its enclosing mesh (below) lies
 // wholly outside one plane; full_screen is never outside. Conservative: never true for a volume

@@ -45,6 +45,12 @@ void DeferredShader::draw_lights(const Scene& scene, bool scissors, FrameStats& 
     draw_lighting(scene, scissors, stats);
     for (int i = 3; i >= 0; --i) mrt_unbind_texture(targets[i], units[i]);
     check_gl_stage("lighting stage: light passes");
+    if (paths_.forward_stage) {  // issue 13: markers and transparent surfaces (forward_stage.cpp)
+        timer_.end();
+        timer_.begin(S_FORWARD);
+        forward_stage(scene, stats);
+        check_gl_stage("forward stage");
+    }
     fb_unbind_render(P_ACCUM);
     timer_.end();
 }

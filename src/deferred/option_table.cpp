@@ -162,6 +162,14 @@ std::vector<RenderOption> make_table() {
     t.push_back(RenderOption{"ssao-samples", OptionKind::integer, {}, 4, 64, true,
                              [](const RenderOptions& r) { return std::to_string(r.shader.ssao.samples); },
                              [](RenderOptions& r, const std::string& v) { r.shader.ssao.samples = std::atoi(v.c_str()); }});
+    // The forward stage after the lights (issue 13).
+    t.push_back(RenderOption{"show-lights", OptionKind::toggle, {"on", "off"}, 0, 0, true,
+                             [](const RenderOptions& r) { return on_off(r.shader.show_lights); },
+                             [](RenderOptions& r, const std::string& v) { r.shader.show_lights = v == "on"; }});
+    t.push_back(choice(
+        "depth-handoff", {"auto", "blit", "pass"},
+        [](const RenderOptions& r) { return std::string(depth_handoff_name(r.shader.depth_handoff)); },
+        [](RenderOptions& r, const std::string& v) { r.shader.depth_handoff = depth_handoff_from_name(v); }));
     return t;
 }
 
@@ -185,6 +193,7 @@ ShaderOptions RenderOptions::resolved(const Scene& scene) const {
     s.post.aa = aa < 0 ? scene.post_aa : aa == 1;
     if (view == View::bloom) s.post.bloom = true;  // the view shows the bloom blur
     if (view == View::ssao) s.ssao.on = true;      // the view shows the AO buffer
+    for (const Material& m : scene.materials) s.forward_surfaces = s.forward_surfaces || m.transparent();
     return s;
 }
 

@@ -42,6 +42,11 @@ enum class RenderTarget { automatic, fbo, copy, pbuffer };
 // over the union of their tiles.
 enum class TileGrouping { lists, groups };
 
+// How the G-buffer's depth reaches P-buffer 0's depth buffer (depth_handoff.cpp): automatic picks
+// blit where EXT_framebuffer_blit and framebuffer objects exist, else pass (a full-screen pass
+// writing gl_FragDepth from the G-buffer's depth, decoding the packed target on the packed path).
+enum class DepthHandoff { automatic, blit, pass };
+
 enum class AaSource { normal, depth, both };
 enum class AaKernel { text, listing };
 
@@ -99,7 +104,17 @@ struct ShaderOptions {
     RenderTarget render_target = RenderTarget::automatic;
     TileGrouping tile_plan = TileGrouping::lists;
     SsaoOptions ssao;
+    // Issue 13: the forward stage after the light passes (forward_stage.cpp).
+    bool show_lights = false;       // --show-lights: an emissive marker at each point and spot light
+    // Set by DeferredShader::set_scene when the scene has transparent materials (opacity < 1): the
+    // forward stage draws them, so P-buffer 0 needs the scene's depth. Not a user option.
+    bool forward_surfaces = false;
+    DepthHandoff depth_handoff = DepthHandoff::automatic;
 };
+
+// "auto", "blit", "pass"; from_name throws dsr::Error listing them otherwise.
+const char* depth_handoff_name(DepthHandoff h);
+DepthHandoff depth_handoff_from_name(const std::string& name);
 
 // "quad", "volume", "stencil", "tiles"; from_name throws dsr::Error listing them otherwise.
 const char* light_geometry_name(LightGeometry g);

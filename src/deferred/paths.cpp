@@ -79,8 +79,12 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
         }
     }
     p.depth_bounds = opts.depth_bounds && p.light_geometry == LightGeometry::quad;
+    p.forward_stage = opts.show_lights || opts.forward_surfaces;
     p.accum_depth = p.light_geometry == LightGeometry::volume || p.light_geometry == LightGeometry::stencil ||
-                    p.depth_bounds;
+                    p.depth_bounds || p.forward_stage;
+    // The blit copies between two framebuffer objects; the copy and pbuffer targets have none.
+    p.depth_handoff = p.fbo && caps.framebuffer_blit && opts.depth_handoff != DepthHandoff::pass ? DepthHandoff::blit
+                                                                                                 : DepthHandoff::pass;
     p.accum_stencil = p.light_geometry == LightGeometry::stencil;
 
     if (!caps.glsl120)
@@ -108,6 +112,10 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
         p.refused = "--render-target pbuffer needs pbuffer surfaces: run with --context egl (OSMesa has none)";
     else if (opts.depth_bounds && opts.light_geometry != LightGeometry::quad)
         p.refused = "--depth-bounds on applies to --light-geometry quad only";
+    else if (opts.depth_handoff == DepthHandoff::blit && !(p.fbo && caps.framebuffer_blit))
+        p.refused = std::string("--depth-handoff blit needs EXT_framebuffer_blit between framebuffer objects, which ") +
+                    (p.fbo ? "this GL lacks" + forced_note(caps, "no-framebuffer-blit")
+                           : "the " + p.render_target + " render target has not") + " (use --depth-handoff pass)";
     else if (opts.light_geometry == LightGeometry::tiles &&
              (opts.tile_size < 8 || opts.tile_size > 512 || opts.tile_lights < 1 || opts.tile_lights > 32))
         p.refused = "tiles: tile size must be 8..512 and lights per pass 1..32";
@@ -139,7 +147,11 @@ std::string describe(const Paths& p) {
       << "\n  light geometry " << light_geometry_name(p.light_geometry);
     if (p.light_geometry == LightGeometry::stencil) o << " (" << stencil_faces_name(p.stencil_faces) << " faces)";
     if (!p.light_geometry_note.empty()) o << " (" << p.light_geometry_note << ")";
-    o << "\n";
+    o << "\n  depth hand-off "
+      << (!p.accum_depth ? "none (nothing tests against the scene's depth in P-buffer 0)"
+          : p.depth_handoff == DepthHandoff::blit ? "blit (EXT_framebuffer_blit of the G-buffer's depth buffer)"
+                                                  : "pass (a full-screen pass writing gl_FragDepth from the G-buffer's depth)")
+      << "\n";
     return o.str();
 }
 
@@ -186,6 +198,21 @@ int target_format_bytes(TargetFormat f) {
 
 const char* target_format_name(TargetFormat f) {
     return f == TargetFormat::rgba8 ? "RGBA8" : f == TargetFormat::rgba16f ? "RGBA16F" : "RGBA32F";
+}
+
+const char* depth_handoff_name(DepthHandoff h) {
+    switch (h) {
+        case DepthHandoff::automatic: return "auto";
+        case DepthHandoff::blit: return "blit";
+        case DepthHandoff::pass: return "pass";
+    }
+    return "?";
+}
+
+DepthHandoff depth_handoff_from_name(const std::string& n) {
+    for (DepthHandoff h : {DepthHandoff::automatic, DepthHandoff::blit, DepthHandoff::pass})
+        if (n == depth_handoff_name(h)) return h;
+    throw Error("depth hand-off '" + n + "': expected auto, blit or pass");
 }
 
 LightGeometry light_geometry_from_name(const std::string& n) {

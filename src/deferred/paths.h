@@ -45,6 +45,11 @@ struct Paths {
     // stencil and depth-bounds passes test against it); with stencil, a packed depth-stencil one.
     bool accum_depth = false;
     bool accum_stencil = false;
+    // The forward stage after the lights runs (--show-lights, or transparent surfaces), and how the
+    // G-buffer's depth reaches P-buffer 0 when accum_depth: a blit (EXT_framebuffer_blit, any depth
+    // path: it copies the G-buffer's depth buffer itself) or the gl_FragDepth pass.
+    bool forward_stage = false;
+    DepthHandoff depth_handoff = DepthHandoff::pass;  // never automatic; meaningful with accum_depth
     bool depth_bounds = false;
     // Non-empty: this GL cannot run these options, and why, in one line.
     std::string refused;

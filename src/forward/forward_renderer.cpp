@@ -12,7 +12,9 @@
 #include "dsr_error.h"
 #include "gl/blit.h"
 #include "gl/check.h"
+#include "forward/transparent_pass.h"
 #include "gl/state.h"
+#include "scene/bounds.h"
 
 namespace dsr {
 
@@ -89,33 +91,10 @@ bool ForwardRenderer::needs_any_light(const Scene& scene) {
 void ForwardRenderer::set_scene(const Scene& scene) {
     if (needs_any_light(scene) != any_light_) build_programs(!any_light_);
     gpu_ = std::make_unique<GpuScene>(scene);
-    // Bounding sphere per object: the mesh's (centre of its bounding box, radius to the
-    // farthest vertex), moved to world space in double (transforms are rigid with a uniform
-    // scale: the radius scales by the length of the model's first column).
-    std::vector<Bound> local(scene.meshes.size());
-    for (size_t i = 0; i < scene.meshes.size(); ++i) {
-        const Mesh& m = scene.meshes[i];
-        Bound& b = local[i];
-        if (!m.vertices.empty()) {
-            glm::vec3 lo = m.vertices[0].pos, hi = lo;
-            for (const Vertex& v : m.vertices) {
-                lo = glm::min(lo, v.pos);
-                hi = glm::max(hi, v.pos);
-            }
-            b.centre = 0.5f * (lo + hi);
-            for (const Vertex& v : m.vertices) b.radius = std::max(b.radius, glm::length(v.pos - b.centre));
-        }
-    }
-    bounds_.clear();
-    for (const Object& o : scene.objects) {
-        const Bound& l = local.at(o.mesh);
-        Bound b;
-        b.centre = glm::vec3(o.model * glm::dvec4(glm::dvec3(l.centre), 1.0));
-        b.radius = float(double(l.radius) * glm::length(glm::dvec3(o.model[0])));
-        // float rounding of the lengths and of the world centre: keep the sphere conservative
-        b.radius = b.radius * 1.0001f + 1e-7f * glm::length(b.centre);
-        bounds_.push_back(b);
-    }
+    bounds_ = object_bounds(scene);  // per object, world space (scene/bounds.h)
+    transparent_.reset();
+    if (!gpu_->transparent_objects().empty())
+        transparent_ = std::make_unique<TransparentPass>(shader_dir_, opts_.listing2_literal);
     check_gl("forward: uploading the scene");
 }
 
@@ -123,9 +102,7 @@ void ForwardRenderer::set_scene(const Scene& scene) {
 // zero outside its volume, so skipping an object whose bounding sphere the volume's bounding
 // sphere does not reach changes no pixel. A directional light reaches everything.
 bool ForwardRenderer::touches(size_t object, const Light& light) const {
-    if (light.type == Light::Type::directional) return true;
-    const BoundingSphere b = bounding_sphere(light_volume(light));
-    return glm::length(bounds_[object].centre - b.centre) <= bounds_[object].radius + b.radius;
+    return volume_reaches(light_volume(light), bounds_[object].centre, bounds_[object].radius);
 }
 
 Program& ForwardRenderer::use_material(const Scene& scene, size_t object) {
@@ -215,6 +192,11 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
         draw_multi(scene, st);
     }
     gpu_->unbind();
+    if (transparent_) {  // issue 13: blended over the opaque surfaces, as the deferred renderer's forward stage
+        const TransparentStats ts = transparent_->draw(scene, *gpu_, bounds_, light_params_, light_visible_);
+        st.passes += ts.passes;
+        st.light_object_pairs += int(ts.light_object_pairs);
+    }
 
     for (int u = 2; u >= 0; --u) {
         glActiveTexture(GL_TEXTURE0 + u);
@@ -239,6 +221,7 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
 void ForwardRenderer::draw_single(const Scene& scene, ForwardStats& st) {
     std::vector<int> lights;
     for (size_t m = 0; m < scene.objects.size(); ++m) {
+        if (gpu_->transparent(m)) continue;  // after the opaque ones (transparent_pass.h)
         lights.clear();
         for (size_t i = 0; i < scene.lights.size(); ++i)
             if (light_visible_[i] && touches(m, scene.lights[i]))
@@ -280,6 +263,7 @@ void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
     gl_state().apply(ambient);
     static const std::vector<int> none;
     for (size_t m = 0; m < scene.objects.size(); ++m) {
+        if (gpu_->transparent(m)) continue;
         Program& prog = use_material(scene, m);
         set_lights(prog, none, 0, 0, scene.ambient);
         draw_object(m, st);
@@ -292,7 +276,7 @@ void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
         if (!light_visible_[i]) continue;
         one[0] = int(i);
         for (size_t m = 0; m < scene.objects.size(); ++m) {
-            if (!touches(m, scene.lights[i])) continue;
+            if (gpu_->transparent(m) || !touches(m, scene.lights[i])) continue;
             Program& prog = use_material(scene, m);
             set_lights(prog, one, 0, 1, glm::vec3(0));
             draw_object(m, st);

@@ -9,7 +9,8 @@
 // depth reconstruction, float math, the material's shininess exactly. By default the passes
 // accumulate in an RGBA32F target copied to the main frame buffer at the end, so the 8-bit
 // output is the only rounding besides float math and texture filtering, and both forms give
-// the same image.
+// the same image. Transparent objects (opacity < 1) are drawn after the opaque ones by the same
+// TransparentPass the deferred renderer's forward stage uses (transparent_pass.h).
 #pragma once
 #include <memory>
 #include <string>
@@ -22,11 +23,13 @@
 #include "gl/pbuffer.h"
 #include "gl/program.h"
 #include "gl/state.h"
+#include "scene/bounds.h"
 #include "scene/scene.h"
 
 namespace dsr {
 
 class GpuScene;
+class TransparentPass;
 
 enum class ForwardMode { single, multi };
 
@@ -68,10 +71,6 @@ public:
     int lights_per_pass() const { return batch_; }
 
 private:
-    struct Bound {  // world-space bounding sphere of one object, for light-object culling
-        glm::vec3 centre{0};
-        float radius = 0;
-    };
     static RenderState surface_state();
     static RenderState add_state(GLuint program);
     void draw_single(const Scene& scene, ForwardStats& st);
@@ -95,7 +94,8 @@ private:
     GLint loc_light_[2][5] = {{-1, -1, -1, -1, -1}, {-1, -1, -1, -1, -1}};  // [nm][LightParams field]
     std::unique_ptr<PBuffer> target_;  // RGBA32F accumulation, when opts_.float_target
     std::unique_ptr<GpuScene> gpu_;
-    std::vector<Bound> bounds_;
+    std::unique_ptr<TransparentPass> transparent_;  // scenes with transparent materials
+    std::vector<ObjectBounds> bounds_;  // per object, world space: light-object culling
     glm::mat4 view_{1};
     std::vector<LightParams> light_params_;  // per frame, eye space
     std::vector<char> light_visible_;   // per frame: not culled by the frustum

@@ -31,13 +31,13 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
     static const char* known[] = {"no-mrt",   "no-depth-texture",   "no-fbo", "no-arb-fbo", "no-npot",
                                   "no-float", "no-glsl", "no-occlusion-query", "no-pipeline-stats",
                                   "no-stencil", "no-packed-depth-stencil", "no-stencil-separate",
-                                  "no-stencil-two-side", "no-depth-bounds"};
+                                  "no-stencil-two-side", "no-depth-bounds", "no-framebuffer-blit"};
     for (const auto& f : force_off)
         if (std::none_of(std::begin(known), std::end(known), [&](const char* k) { return f == k; }))
             throw Error("unknown capability '" + f +
                         "' (expected no-mrt, no-depth-texture, no-fbo, no-arb-fbo, no-npot, no-float, no-glsl, "
                         "no-occlusion-query, no-pipeline-stats, no-stencil, no-packed-depth-stencil, "
-                        "no-stencil-separate, no-stencil-two-side or no-depth-bounds)");
+                        "no-stencil-separate, no-stencil-two-side, no-depth-bounds or no-framebuffer-blit)");
     auto off = [&](const char* k) { return std::find(force_off.begin(), force_off.end(), k) != force_off.end(); };
 
     Caps c;
@@ -84,6 +84,8 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
     c.stencil_two_side_ext = has_extension("GL_EXT_stencil_two_side") && gl_entry.ActiveStencilFaceEXT &&
                              !off("no-stencil-two-side");
     c.depth_bounds = has_extension("GL_EXT_depth_bounds_test") && gl_entry.DepthBoundsEXT && !off("no-depth-bounds");
+    c.framebuffer_blit = c.fbo && (at_least(c.gl_major, c.gl_minor, 3, 0) || has_extension("GL_EXT_framebuffer_blit")) &&
+                         gl_entry.BlitFramebufferEXT && !off("no-framebuffer-blit");
     c.pbuffer_surfaces = offscreen_surfaces() != nullptr;
     c.forced_off = force_off;
     while (glGetError() != GL_NO_ERROR) {}
@@ -115,6 +117,7 @@ std::string describe(const Caps& c) {
       << "  " << yn(c.stencil_separate) << " two-sided stencil        (glStencilOpSeparate, OpenGL 2.0)\n"
       << "  " << yn(c.stencil_two_side_ext) << " two-sided stencil        (EXT_stencil_two_side)\n"
       << "  " << yn(c.depth_bounds) << " depth bounds test        (EXT_depth_bounds_test)\n"
+      << "  " << yn(c.framebuffer_blit) << " framebuffer blit         (EXT_framebuffer_blit)\n"
       << "  " << yn(c.pbuffer_surfaces) << " pbuffer surfaces         (EGL pbuffers for --render-target pbuffer)\n";
     if (!c.forced_off.empty()) {
         o << "forced off:";

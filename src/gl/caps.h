@@ -28,6 +28,7 @@ struct Caps {
     bool stencil_separate = false;   // glStencilOpSeparate (GL 2.0): both faces in one stencil pass
     bool stencil_two_side_ext = false;  // EXT_stencil_two_side: the same before GL 2.0
     bool depth_bounds = false;       // EXT_depth_bounds_test (NVIDIA; not llvmpipe)
+    bool framebuffer_blit = false;   // EXT_framebuffer_blit (core in 3.0): the depth hand-off by blit (issue 13)
     bool pbuffer_surfaces = false;   // the context offers pbuffer surfaces (gl/surfaces.h: EGL)
     std::vector<std::string> forced_off;  // names hidden by --caps / DSR_CAPS
 };
@@ -35,7 +36,8 @@ struct Caps {
 // Reads the current context. `force_off` lists capabilities to report missing
 // (no-mrt, no-depth-texture, no-fbo, no-arb-fbo, no-npot, no-float, no-glsl, no-occlusion-query,
 // no-pipeline-stats, no-stencil, no-packed-depth-stencil, no-stencil-separate, no-stencil-two-side
-// (both two-sided mechanisms: GL 2.0's and EXT_stencil_two_side), no-depth-bounds); unknown names
+// (both two-sided mechanisms: GL 2.0's and EXT_stencil_two_side), no-depth-bounds,
+// no-framebuffer-blit); unknown names
 // throw dsr::Error.
 Caps probe_caps(const std::vector<std::string>& force_off = {});
 // "no-mrt,,no-fbo" -> {"no-mrt", "no-fbo"}: the --caps / $DSR_CAPS list, empty items dropped.

@@ -64,3 +64,4 @@
 #define glGetQueryObjectui64v ::dsr::gl_entry.GetQueryObjectui64v
 #define glActiveStencilFaceEXT ::dsr::gl_entry.ActiveStencilFaceEXT
 #define glDepthBoundsEXT ::dsr::gl_entry.DepthBoundsEXT
+#define glBlitFramebufferEXT ::dsr::gl_entry.BlitFramebufferEXT

@@ -74,6 +74,16 @@ PBuffer::PBuffer(std::string name, const PBufferDesc& desc) : name_(std::move(na
     check_gl(("creating P-buffer " + name_).c_str());
 }
 
+void PBuffer::blit_depth_to(const PBuffer& dst) const {
+    if (!desc_.use_fbo || !dst.desc_.use_fbo || dst.desc_.width != desc_.width || dst.desc_.height != desc_.height)
+        throw Error("P-buffer " + name_ + ": a depth blit needs two framebuffer objects of one size (to " + dst.name_ + ")");
+    glBindFramebufferEXT(GL_READ_FRAMEBUFFER_EXT, fbo_);
+    glBindFramebufferEXT(GL_DRAW_FRAMEBUFFER_EXT, dst.fbo_);
+    glBlitFramebufferEXT(0, 0, desc_.width, desc_.height, 0, 0, desc_.width, desc_.height, GL_DEPTH_BUFFER_BIT,
+                         GL_NEAREST);
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, dst.fbo_);
+}
+
 PBuffer::~PBuffer() {
     if (depth_rb_) glDeleteRenderbuffersEXT(1, &depth_rb_);
     if (fbo_) glDeleteFramebuffersEXT(1, &fbo_);

@@ -59,6 +59,12 @@ public:
     void bind_texture(int target, int unit);
     void unbind_texture(int target, int unit);
 
+    // Copies this buffer's depth into `dst`'s depth buffer with EXT_framebuffer_blit (both fbo
+    // implementation, same size, both with a depth attachment of the same depth bits), then
+    // binds `dst` for drawing again: what the depth hand-off does while dst is the render target.
+    // The caller checks Caps::framebuffer_blit; the scissor test must be off (it clips blits).
+    void blit_depth_to(const PBuffer& dst) const;
+
     GLuint texture(int target) const;
     int width() const { return desc_.width; }
     int height() const { return desc_.height; }

@@ -53,7 +53,10 @@ struct Material {
     float shininess = 16.0f;
     int diffuse_map = -1, normal_map = -1, specular_map = -1;
     float tile = 1.0f;
-    float opacity = 1.0f;  // MTL d (or 1 - Tr); kept for the transparency issue, not drawn yet
+    // `opacity A` or MTL d (1 - Tr): below 1 the material is left out of the G-buffer and drawn
+    // by the forward pass after the lights, blended (issue 13; README "Transparent surfaces").
+    float opacity = 1.0f;
+    bool transparent() const { return opacity < 1.0f; }
 };
 
 // Tangent frame per vertex (Listing 10's a2v): tangent follows +u, binormal +v.

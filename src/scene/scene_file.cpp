@@ -226,7 +226,7 @@ private:
                 line.expected_last("a material name not used before (first defined on line " +
                                    std::to_string(material_lines_[i]) + ")");
         const std::vector<std::string> keys = {"diffuse", "specular", "shininess", "diffuse_map",
-                                               "normal_map", "specular_map", "tile"};
+                                               "normal_map", "specular_map", "tile", "opacity"};
         std::set<std::string> seen;
         while (!line.done()) {
             const std::string k = line.key(keys, seen);
@@ -236,7 +236,10 @@ private:
                 m.shininess = line.number("shininess");
                 if (!(m.shininess >= 1 && m.shininess <= 2048)) line.expected_last("shininess in [1, 2048]");
             } else if (k == "tile") m.tile = line.positive("tile");
-            else {
+            else if (k == "opacity") {  // issue 13: below 1, drawn by the forward pass after the lights
+                m.opacity = line.number("opacity");
+                if (!(m.opacity > 0 && m.opacity <= 1)) line.expected_last("opacity in (0, 1]");
+            } else {
                 const std::string& file = line.word("a file name for " + k);
                 const int index = texture(line, k, file);
                 if (k == "diffuse_map") m.diffuse_map = index;

@@ -1,0 +1,122 @@
+#include "forward/transparent_pass.h"
+
+#include <algorithm>
+
+#include "deferred/gpu_scene.h"
+#include "deferred/light_volume.h"
+#include "forward/transparent_order.h"
+#include "gl/check.h"
+#include "gl/state.h"
+
+namespace dsr {
+
+TransparentPass::TransparentPass(const std::string& shader_dir, bool listing2_literal)
+    : shader_dir_(shader_dir), listing2_literal_(listing2_literal) {
+    // Lights per pass as the forward single-pass renderer sizes them: five vec4s a light within
+    // the fragment uniform space, room kept for the material's uniforms.
+    GLint comps = 0;
+    glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
+    batch_ = std::clamp((int(comps) - 64) / 20, 1, 64);
+}
+
+Program& TransparentPass::program(bool normal_map, bool any_light) {
+    Program& p = progs_[normal_map][any_light];
+    if (!p.id()) {
+        std::vector<std::string> defs = {"MAX_LIGHTS " + std::to_string(batch_), "OPACITY"};
+        if (normal_map) defs.push_back("NORMAL_MAP");
+        if (listing2_literal_) defs.push_back("LISTING2_LITERAL");
+        if (!any_light) defs.push_back("LIGHT_POINT_ONLY");
+        p = Program(shader_dir_, "forward.vert", "forward.frag", defs);
+        p.use();
+        p.set("normaltex", 0);
+        p.set("colortex", 1);
+        p.set("speculartex", 2);
+    }
+    return p;
+}
+
+namespace {
+
+// The first pass of an object: blended over what lies behind it, a * colour + (1 - a) * dst.
+// Later passes (more lights than one pass holds) add a * their lights on the same fragments: the
+// depth test is against the opaque depth, unchanged, so they pass exactly where the first did.
+RenderState transparent_state(GLuint program, bool first) {
+    RenderState s = opaque_geometry();
+    s.depth_write = false;
+    s.blend = true;
+    s.blend_src = GL_SRC_ALPHA;
+    s.blend_dst = first ? GL_ONE_MINUS_SRC_ALPHA : GL_ONE;
+    s.program = program;
+    return s;
+}
+
+}  // namespace
+
+TransparentStats TransparentPass::draw(const Scene& scene, const GpuScene& gpu, const std::vector<ObjectBounds>& bounds,
+                                       const std::vector<LightParams>& lights, const std::vector<char>& visible) {
+    TransparentStats st;
+    const std::vector<size_t> order = transparent_order(gpu.transparent_objects(), bounds, glm::dvec3(scene.camera.pos));
+    if (order.empty()) return st;
+    gpu.bind_all();
+    std::vector<int> reach;
+    std::vector<glm::vec4> v[5];
+    for (size_t o : order) {
+        reach.clear();
+        bool any_light = false;
+        for (size_t i = 0; i < scene.lights.size(); ++i) {
+            const Light& l = scene.lights[i];
+            if (!visible[i] || !volume_reaches(light_volume(l), bounds[o].centre, bounds[o].radius)) continue;
+            reach.push_back(int(i));
+            any_light = any_light || l.type != Light::Type::point || l.attenuation;
+        }
+        st.light_object_pairs += (long long)reach.size();
+        const int mi = gpu.object_range(o).material;
+        const GpuMaterial& m = gpu.material(mi);
+        Program& prog = program(m.normal_map, any_light);
+        gl_state().use_program(prog.id());
+        prog.set("diffuse", m.diffuse);
+        prog.set("specular", m.specular);
+        prog.set("shininess", scene.materials[size_t(mi)].shininess);  // exact, as the forward renderers
+        prog.set("tile", m.tile);
+        prog.set("opacity", m.opacity);
+        const GLuint tex[3] = {m.normal_tex, m.diffuse_tex, m.specular_tex};
+        for (int u = 0; u < 3; ++u) {
+            glActiveTexture(GL_TEXTURE0 + u);
+            glBindTexture(GL_TEXTURE_2D, tex[u]);
+        }
+        glActiveTexture(GL_TEXTURE0);
+        // Ambient (Eq. 6) and the first batch_ lights blended over the background; the rest added.
+        size_t k = 0;
+        do {
+            const size_t n = std::min(reach.size() - k, size_t(batch_));
+            for (auto& a : v) a.resize(std::max<size_t>(n, 1));
+            for (size_t i = 0; i < n; ++i) {
+                const LightParams& lp = lights[size_t(reach[k + i])];
+                v[0][i] = lp.pos, v[1][i] = lp.color, v[2][i] = lp.dir, v[3][i] = lp.spot, v[4][i] = lp.att;
+            }
+            gl_state().apply(transparent_state(prog.id(), k == 0));
+            prog.set("nlights", int(n));
+            prog.set("ambient", k == 0 ? scene.ambient : glm::vec3(0));
+            if (n) {
+                prog.set_array("lightpos", v[0].data(), int(n));
+                prog.set_array("lightcolor", v[1].data(), int(n));
+                prog.set_array("lightdir", v[2].data(), int(n));
+                prog.set_array("lightspot", v[3].data(), int(n));
+                prog.set_array("lightatt", v[4].data(), int(n));
+            }
+            gpu.draw(gpu.object_range(o));
+            ++st.passes;
+            k += n;
+        } while (k < reach.size());
+        ++st.objects;
+    }
+    for (int u = 2; u >= 0; --u) {
+        glActiveTexture(GL_TEXTURE0 + u);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    gpu.unbind();
+    check_gl_stage("transparent pass");
+    return st;
+}
+
+}  // namespace dsr

@@ -1,0 +1,59 @@
+// Transparent surfaces (issue 13): the tutorial's answer to deferred shading's "major
+// limitation" (§4): "fall-back to a non deferred shading approach for transparent surfaces and
+// blend them". Objects whose material has opacity < 1 are kept out of the G-buffer
+// (GpuScene::ranges) and drawn here, after the opaque surfaces are in the target and its depth
+// buffer holds their depth: back to front by object (transparent_order.h), each lit by the lights
+// whose volume reaches its bounding sphere with lighting.glsl (the light passes' function, through
+// forward.frag, ambient included), blended GL_SRC_ALPHA / GL_ONE_MINUS_SRC_ALPHA, depth tested
+// against the opaque surfaces (GL_LEQUAL) and not written. Used by the deferred renderer's forward
+// stage (deferred/forward_stage.cpp) and by the forward renderers, so both draw a transparent
+// object the same way.
+//
+// What is approximate (README "Transparent surfaces"): the order is per object, not per pixel;
+// back faces are culled (a closed object shows its near side only); transparent surfaces cast no
+// shadows (nothing does) and get no SSAO; nothing is written to the depth buffer, so a transparent
+// surface never hides another.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "deferred/light_params.h"
+#include "gl/program.h"
+#include "scene/bounds.h"
+#include "scene/scene.h"
+
+namespace dsr {
+
+class GpuScene;
+
+struct TransparentStats {
+    int objects = 0;             // transparent objects drawn
+    int passes = 0;              // draw calls (more than one per object past max lights per pass)
+    long long light_object_pairs = 0;
+};
+
+class TransparentPass {
+public:
+    // Compiles nothing yet: each program (normal map or not, every light type or the tutorial's
+    // point lights only) is built on first use. Needs a current context with GLSL 1.20.
+    TransparentPass(const std::string& shader_dir, bool listing2_literal);
+
+    // Draws gpu's transparent objects into the bound framebuffer. Before: GL_PROJECTION holds the
+    // camera's projection, gpu.set_view(camera) was called, the depth buffer holds the opaque
+    // surfaces' depth. `bounds`: object_bounds(scene); `lights`: every scene light's
+    // light_params (eye space) and `visible`: whether it survived frustum culling.
+    TransparentStats draw(const Scene& scene, const GpuScene& gpu, const std::vector<ObjectBounds>& bounds,
+                          const std::vector<LightParams>& lights, const std::vector<char>& visible);
+
+    int lights_per_pass() const { return batch_; }
+
+private:
+    Program& program(bool normal_map, bool any_light);
+
+    std::string shader_dir_;
+    bool listing2_literal_;
+    int batch_ = 1;
+    Program progs_[2][2];  // [normal map][any light]
+};
+
+}  // namespace dsr
