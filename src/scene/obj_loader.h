@@ -8,7 +8,7 @@
 //        kMaxPolygonVertices corners, v | v/t | v//n | v/t/n, negative = relative), o, g, s,
 //        mtllib (one file per line), usemtl; l, p, vp and the free-form statements are warned
 //        about and skipped; anything else is an error.
-//   MTL: newmtl, Kd, Ks, Ns, d / Tr (opacity, kept for transparency), map_Kd, map_Ks, map_Ns
+//   MTL: newmtl, Kd, Ks, Ns, d / Tr (opacity: below 1 drawn by the forward stage, issue 13), map_Kd, map_Ks, map_Ns
 //        (a specular map, as the windmill in ../shared/assets uses it), map_bump / map_Bump /
 //        bump / norm (a tangent-space normal map; a greyscale one is a height map, converted on
 //        load with strength -bm). Ka, Ke, Ni, illum, Tf, map_Ka, map_d, disp, refl and the PBR
