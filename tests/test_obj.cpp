@@ -112,6 +112,7 @@ TEST_F(ObjFiles, QuadWithMaterialAndMaps) {
     EXPECT_EQ(mat.specular, vec3(0.2f, 0.3f, 0.4f));
     EXPECT_FLOAT_EQ(mat.shininess, 64);
     EXPECT_FLOAT_EQ(mat.opacity, 0.75f);
+    EXPECT_TRUE(mat.transparent()) << "d below 1: drawn by the forward stage (issue 13)";
     ASSERT_GE(mat.diffuse_map, 0);
     ASSERT_GE(mat.specular_map, 0);
     EXPECT_EQ(m.textures[size_t(mat.diffuse_map)].width, 4);
