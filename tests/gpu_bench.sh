@@ -115,6 +115,10 @@ run)
         $dsr render --context egl --size 1920x1080 --ssao --ssao-scale $sc --frames 30 \
             --stats "$out/ssao_scale$sc.json" -o "$out/ssao_scale$sc.png"
     done
+    # The forward stage (issue 13): the depth hand-off by blit and by pass on both depth paths,
+    # markers and the transparency figure's scene (docs/forward.md).
+    FORWARD_FLAGS="--context egl" FORWARD_SIZES="1920x1080 3840x2160" FORWARD_FRAMES=30 \
+        $src/tests/forward_measure.sh $dsr "$out/forward" | tee "$out/forward.md"
     # The tiles geometry's other plan (groups), against quad in the same run.
     if [ -n "${GPU_BENCH_GROUPS:-1}" ]; then
         $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-50} \

@@ -84,6 +84,16 @@ TEST(PathsForward, TheForwardStageGetsTheSceneDepthByBlitOrPass) {
     EXPECT_NE(choose_paths(c, o).refused.find("the copy render target"), std::string::npos);
     o.depth_handoff = DepthHandoff::automatic;
     EXPECT_EQ(choose_paths(c, o).depth_handoff, DepthHandoff::pass);
+    // The stencil geometry's DEPTH24_STENCIL8 cannot be blitted into from the G-buffer's depth.
+    c.fbo = c.stencil = c.packed_depth_stencil = c.stencil_separate = true;
+    o.light_geometry = LightGeometry::stencil;
+    p = choose_paths(c, o);
+    EXPECT_EQ(p.light_geometry, LightGeometry::stencil);
+    EXPECT_EQ(p.depth_handoff, DepthHandoff::pass);
+    o.depth_handoff = DepthHandoff::blit;
+    EXPECT_NE(choose_paths(c, o).refused.find("differ in format"), std::string::npos);
+    o.light_geometry = LightGeometry::volume;
+    EXPECT_EQ(choose_paths(c, o).depth_handoff, DepthHandoff::blit);
 }
 
 namespace {

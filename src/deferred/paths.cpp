@@ -79,13 +79,17 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
         }
     }
     p.depth_bounds = opts.depth_bounds && p.light_geometry == LightGeometry::quad;
+    p.accum_stencil = p.light_geometry == LightGeometry::stencil;
     p.forward_stage = opts.show_lights || opts.forward_surfaces;
     p.accum_depth = p.light_geometry == LightGeometry::volume || p.light_geometry == LightGeometry::stencil ||
                     p.depth_bounds || p.forward_stage;
-    // The blit copies between two framebuffer objects; the copy and pbuffer targets have none.
-    p.depth_handoff = p.fbo && caps.framebuffer_blit && opts.depth_handoff != DepthHandoff::pass ? DepthHandoff::blit
-                                                                                                 : DepthHandoff::pass;
-    p.accum_stencil = p.light_geometry == LightGeometry::stencil;
+    // The blit copies between two framebuffer objects (the copy and pbuffer targets have none),
+    // and only between depth buffers of one format: EXT_framebuffer_blit makes a depth blit between
+    // DEPTH_COMPONENT24 (the G-buffer's) and the stencil geometry's DEPTH24_STENCIL8 an
+    // INVALID_OPERATION. Mesa lets it pass; dsr follows the spec and takes the pass there.
+    p.depth_handoff = p.fbo && caps.framebuffer_blit && !p.accum_stencil && opts.depth_handoff != DepthHandoff::pass
+                          ? DepthHandoff::blit
+                          : DepthHandoff::pass;
 
     if (!caps.glsl120)
         p.refused = "GLSL 1.20 is required and this GL offers " +
@@ -116,6 +120,9 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
         p.refused = std::string("--depth-handoff blit needs EXT_framebuffer_blit between framebuffer objects, which ") +
                     (p.fbo ? "this GL lacks" + forced_note(caps, "no-framebuffer-blit")
                            : "the " + p.render_target + " render target has not") + " (use --depth-handoff pass)";
+    else if (opts.depth_handoff == DepthHandoff::blit && p.accum_stencil)
+        p.refused = "--depth-handoff blit: the stencil geometry's depth-stencil buffer and the G-buffer's depth differ in "
+                    "format, and a depth blit between them is INVALID_OPERATION (use --depth-handoff pass or auto)";
     else if (opts.light_geometry == LightGeometry::tiles &&
              (opts.tile_size < 8 || opts.tile_size > 512 || opts.tile_lights < 1 || opts.tile_lights > 32))
         p.refused = "tiles: tile size must be 8..512 and lights per pass 1..32";
