@@ -3,6 +3,7 @@
 // skips what is unchanged while its off switch sets everything and gives the same image.
 #include <gtest/gtest.h>
 
+#include "gl/rounding_probe.h"
 #include "gl/state.h"
 #include "render_fixture.h"
 
@@ -13,12 +14,12 @@ std::string describe(const RenderState& s) {
     char b[512];
     std::snprintf(b, sizeof b,
                   "blend %d %#x %#x depth %d %#x w%d stencil %d f(%#x %d %#x %#x %#x %#x %#x) b(%#x %d) cull %d %#x "
-                  "scissor %d color %d alpha %d %#x %.2f tex %d %#x program %u",
+                  "scissor %d color %d alpha %d %#x %.2f tex %d %#x program %u dither %d",
                   s.blend, s.blend_src, s.blend_dst, s.depth_test, s.depth_func, s.depth_write, s.stencil_test,
                   s.stencil_front.func, s.stencil_front.ref, s.stencil_front.mask, s.stencil_front.fail,
                   s.stencil_front.zfail, s.stencil_front.zpass, s.stencil_front.write_mask, s.stencil_back.func,
                   s.stencil_back.ref, s.cull, s.cull_face, s.scissor, s.color_write, s.alpha_test, s.alpha_func,
-                  s.alpha_ref, s.texture_2d, s.tex_env, s.program);
+                  s.alpha_ref, s.texture_2d, s.tex_env, s.program, s.dither);
     return b;
 }
 
@@ -45,6 +46,7 @@ void scramble() {
     glEnable(GL_TEXTURE_2D);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
     glUseProgram(0);
+    glEnable(GL_DITHER);
     gl_state().reset();
 }
 
@@ -168,8 +170,30 @@ TEST(GlState, ApplyChangesOnlyWhatDiffers) {
 
 TEST(GlState, DefaultsAreGlsOwn) {
     auto ctx = create_context(ContextDesc{"osmesa", 16, 16});
-    EXPECT_EQ(read_gl_state(), RenderState{}) << "GL " << describe(read_gl_state()) << "\n   RenderState{} "
-                                              << describe(RenderState{});
+    // Every field's default is GL's, but GL_DITHER: GL starts with it on, dsr turns it off (state.h).
+    RenderState gl_defaults;
+    gl_defaults.dither = true;
+    EXPECT_EQ(read_gl_state(), gl_defaults) << "GL " << describe(read_gl_state()) << "\n   GL's defaults "
+                                            << describe(gl_defaults);
+}
+
+// The RGBA8 rounding probe `dsr info` prints: on llvmpipe round to nearest, ties to even, no
+// dithering; it leaves the cache reset and dither off for the next pass.
+TEST(GlState, Unorm8RoundingProbe) {
+    auto ctx = create_context(ContextDesc{"osmesa", 16, 16});
+    const Unorm8Rounding r = probe_unorm8_rounding();
+    ASSERT_TRUE(r.measured);
+    EXPECT_EQ(r.plain[0], 0);
+    EXPECT_EQ(r.plain[1], 1);
+    EXPECT_EQ(r.added_ten, 10) << "each additive pass rounds 0.6/255 to one step";
+    if (probe_caps().renderer.find("llvmpipe") != std::string::npos) {
+        EXPECT_EQ(r.plain[2], 2);
+        EXPECT_EQ(r.plain[3], 2) << "llvmpipe rounds ties to even";
+        EXPECT_EQ(r.dither_min, r.dither_max) << "llvmpipe does not dither";
+    }
+    gl_state().apply(RenderState{});
+    EXPECT_FALSE(glIsEnabled(GL_DITHER));
+    EXPECT_NE(describe(r).find("10 x 0.6/255 added -> 10"), std::string::npos) << describe(r);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "deferred/paths.h"
 #include "gl/caps.h"
+#include "gl/rounding_probe.h"
 #include "gl/surfaces.h"
 #include "gl/frame_timer.h"
 #include "platform/context.h"
@@ -57,6 +58,7 @@ int cmd_info(const std::vector<std::string>& argv) {
     std::printf("  --render-target pbuffer: %s\n",
                 offscreen_surfaces() ? ("EGL pbuffer surfaces; " + offscreen_surfaces()->bind_tex_image_note()).c_str()
                                      : "refused (this context has no pbuffer surfaces: --context egl)");
+    if (caps.fbo) std::fputs(describe(probe_unorm8_rounding()).c_str(), stdout);
     const TimingCheck& t = choose_timing(caps, ctx->width(), ctx->height());
     std::printf("  timing         %s (%s", timing_name(t.source), t.reason.c_str());
     if (t.query_ms >= 0) std::printf("; same passes: %.3f ms by timer query, %.3f ms by wall clock", t.query_ms, t.wall_ms);

@@ -49,6 +49,10 @@ struct RenderState {
     bool texture_2d = false;            // GL_TEXTURE_2D on unit 0 off (fixed-function texturing)
     GLenum tex_env = GL_MODULATE;       // unit 0's GL_TEXTURE_ENV_MODE
     GLuint program = 0;                 // glUseProgram(0): fixed function
+    // GL_DITHER, which GL turns on by default, off: a dithering GL rounds a colour to 8 bits
+    // differently at each pixel, and over many additive passes (one a light, Listing 14) the
+    // per-pixel bias adds up, so the geometries that sum lights in a shader would no longer match.
+    bool dither = false;
 
     bool operator==(const RenderState& o) const;
     bool operator!=(const RenderState& o) const { return !(*this == o); }
