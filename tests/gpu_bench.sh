@@ -10,7 +10,9 @@
 #                                    and the libpng image backend, then run info, renders and the
 #                                    GPU bench, writing every result into OUTDIR
 #                                    (GPU_BENCH_SMOKE=1: build, info and one small render only;
-#                                    GPU_BENCH_SIZES, _FRAMES, _LIGHTS: the bench's sweep)
+#                                    GPU_BENCH_SIZES, _FRAMES, _LIGHTS: the bench's sweep;
+#                                    GPU_BENCH_PARTS: some of renders geometry targets ssao
+#                                    forward groups bench, default all)
 #
 # The build links the system's libEGL/libOpenGL (glvnd, the NVIDIA driver behind them), never
 # libOSMesa; it is the same renderer objects as the headless build.
@@ -69,10 +71,13 @@ run)
     dsr=$build/dsr
     # The binary finds glsl120/ and data/ beside its parent folder or in DSR_SOURCE_DIR.
     $dsr info --context egl | tee "$out/info.txt"
+    # GPU_BENCH_PARTS picks sections (the device time is short): part NAME is true for each.
+    part() { [[ " ${GPU_BENCH_PARTS:-all} " == *" all "* || " ${GPU_BENCH_PARTS:-all} " == *" $1 "* ]]; }
     if [ -n "${GPU_BENCH_SMOKE:-}" ]; then  # a check of the build on a machine without a GPU
         $dsr render --context egl --size 160x120 -o "$out/smoke.png"
         exit 0
     fi
+    if part renders; then
     for s in 1920x1080 3840x2160; do
         $dsr render --context egl --size $s --no-bloom --no-aa --frames 60 --stats "$out/render_$s.json" \
             -o "$out/default_$s.png"
@@ -80,6 +85,10 @@ run)
     $dsr render --context egl --size 1920x1080 --frames 60 --stats "$out/render_post_1920x1080.json" \
         -o "$out/default_post_1920x1080.png"
     $dsr render --context egl --size 512x512 --no-bloom --no-aa -o "$out/default_512.png"
+    fi
+    if part geometry; then
+    [ -f "$out/default_1920x1080.png" ] || $dsr render --context egl --size 1920x1080 --no-bloom --no-aa \
+        -o "$out/default_1920x1080.png"
     # Light geometries (issue 12) and the depth-bounds test on the default scene at 1080p, each
     # image against quad's (the 1920x1080 render above).
     for g in volume stencil tiles; do
@@ -94,7 +103,9 @@ run)
         --frames 20 --stats "$out/geometry_tiles1.json" -o "$out/geometry_tiles1.png"
     echo "geometry tiles (1 light a pass) vs quad: $($dsr compare "$out/default_1920x1080.png" "$out/geometry_tiles1.png" 2>&1 | tail -1)" \
         | tee -a "$out/geometry_compare.txt"
+    fi
     # The tutorial's P-buffers as EGL pbuffer surfaces, and the copy path, against fbo (issue 15).
+    if part targets; then
     for rt in pbuffer copy; do
         for extra in "--no-bloom --no-aa" ""; do
             tag=$rt${extra:+_nopost}
@@ -110,27 +121,34 @@ run)
         echo "depth-bounds on vs off: $($dsr compare "$out/default_1920x1080.png" "$out/depth_bounds.png" 2>&1 | tail -1)" \
             | tee -a "$out/geometry_compare.txt"
     fi
+    fi
     # SSAO's cost on the GPU (issue 13), full and half resolution.
+    if part ssao; then
     for sc in 1 2; do
         $dsr render --context egl --size 1920x1080 --ssao --ssao-scale $sc --frames 30 \
             --stats "$out/ssao_scale$sc.json" -o "$out/ssao_scale$sc.png"
     done
+    fi
     # The forward stage (issue 13): the depth hand-off by blit and by pass on both depth paths,
     # markers and the transparency figure's scene (docs/forward.md).
+    if part forward; then
     FORWARD_FLAGS="--context egl" FORWARD_SIZES="1920x1080 3840x2160" FORWARD_FRAMES=30 \
         $src/tests/forward_measure.sh $dsr "$out/forward" | tee "$out/forward.md"
+    fi
     # The tiles geometry's other plan (groups), against quad in the same run.
-    if [ -n "${GPU_BENCH_GROUPS:-1}" ]; then
+    if part groups; then
         $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-50} \
             --lights ${GPU_BENCH_GROUP_LIGHTS:-own,1024,4096,1024-overlap,32-large} --light-geometry quad,tiles \
             --tile-plan groups --json "$out/gpu_bench_groups_1920x1080.json" \
             --report "$out/gpu_bench_groups_1920x1080.md" > "$out/gpu_bench_groups_1920x1080.txt"
     fi
+    if part bench; then
     for s in ${GPU_BENCH_SIZES:-1920x1080}; do
         $dsr bench $src/data/default.scene --context egl --size $s --frames ${GPU_BENCH_FRAMES:-50} \
             --lights ${GPU_BENCH_LIGHTS:-own,256,1024,4096} --json "$out/gpu_bench_$s.json" \
             --report "$out/gpu_bench_$s.md" | tee "$out/gpu_bench_$s.txt"
     done
+    fi
     ;;
 *)
     sed -n '2,16p' "$0"
