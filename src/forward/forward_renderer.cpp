@@ -12,6 +12,7 @@
 #include "dsr_error.h"
 #include "gl/blit.h"
 #include "gl/check.h"
+#include "forward/forward_material.h"
 #include "forward/transparent_pass.h"
 #include "gl/state.h"
 #include "scene/bounds.h"
@@ -110,16 +111,7 @@ Program& ForwardRenderer::use_material(const Scene& scene, size_t object) {
     const GpuMaterial& m = gpu_->material(mi);
     Program& prog = prog_[m.normal_map ? 1 : 0];
     prog.use();
-    prog.set("diffuse", m.diffuse);
-    prog.set("specular", m.specular);
-    prog.set("shininess", scene.materials[mi].shininess);  // exact, not GpuMaterial's 8-bit code
-    prog.set("tile", m.tile);
-    const GLuint tex[3] = {m.normal_tex, m.diffuse_tex, m.specular_tex};
-    for (int u = 0; u < 3; ++u) {
-        glActiveTexture(GL_TEXTURE0 + u);
-        glBindTexture(GL_TEXTURE_2D, tex[u]);
-    }
-    glActiveTexture(GL_TEXTURE0);
+    set_forward_material(prog, m, scene.materials[mi].shininess);  // exact, not GpuMaterial's 8-bit code
     return prog;
 }
 

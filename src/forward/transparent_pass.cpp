@@ -4,6 +4,7 @@
 
 #include "deferred/gpu_scene.h"
 #include "deferred/light_volume.h"
+#include "forward/forward_material.h"
 #include "forward/transparent_order.h"
 #include "gl/check.h"
 #include "gl/state.h"
@@ -74,17 +75,8 @@ TransparentStats TransparentPass::draw(const Scene& scene, const GpuScene& gpu, 
         const GpuMaterial& m = gpu.material(mi);
         Program& prog = program(m.normal_map, any_light);
         gl_state().use_program(prog.id());
-        prog.set("diffuse", m.diffuse);
-        prog.set("specular", m.specular);
-        prog.set("shininess", scene.materials[size_t(mi)].shininess);  // exact, as the forward renderers
-        prog.set("tile", m.tile);
+        set_forward_material(prog, m, scene.materials[size_t(mi)].shininess);  // as the forward renderers
         prog.set("opacity", m.opacity);
-        const GLuint tex[3] = {m.normal_tex, m.diffuse_tex, m.specular_tex};
-        for (int u = 0; u < 3; ++u) {
-            glActiveTexture(GL_TEXTURE0 + u);
-            glBindTexture(GL_TEXTURE_2D, tex[u]);
-        }
-        glActiveTexture(GL_TEXTURE0);
         // Ambient (Eq. 6) and the first batch_ lights blended over the background; the rest added.
         size_t k = 0;
         do {
