@@ -127,6 +127,19 @@ TEST(Analytic, RejectsTextureMaps) {
     EXPECT_THROW(analytic_reference(default_scene(), 8, 8), Error);
 }
 
+// Transparent materials (issue 13) are blended by the forward stage; the trace has no blending.
+TEST(Analytic, RejectsTransparentMaterials) {
+    Scene s = lit_sphere_scene();
+    EXPECT_NO_THROW(analytic_reference(s, 8, 8));
+    s.materials[0].opacity = 0.5f;
+    try {
+        analytic_reference(s, 8, 8);
+        ADD_FAILURE() << "a transparent material was traced as opaque";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("is transparent"), std::string::npos) << e.what();
+    }
+}
+
 // The forward renderer against the trace. On planes (exactly their triangles) with the same
 // pixel-centre sampling, the only differences are float against double arithmetic and the 8-bit
 // output. Interior pixels (3x3 neighbourhood on one mesh in the trace) of the planes: within the

@@ -278,6 +278,8 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
     for (size_t mi = 0; mi < scene.materials.size(); ++mi) {
         const Material& m = scene.materials[mi];
         const std::string what = "analytic reference: material '" + m.name + "' ";
+        if (m.transparent())  // the trace finds the nearest surface only: nothing is blended
+            throw Error(what + "is transparent (opacity " + std::to_string(m.opacity) + "); the reference is opaque only");
         if (m.specular_map >= 0) throw Error(what + "has a specular map; the reference has none");
         if (m.diffuse_map >= 0 && !opts.bilinear_diffuse_maps)
             throw Error(what + "has a diffuse map; only constant materials have an analytic reference "
