@@ -12,7 +12,7 @@
 #                                    (GPU_BENCH_SMOKE=1: build, info and one small render only;
 #                                    GPU_BENCH_SIZES, _FRAMES, _LIGHTS: the bench's sweep;
 #                                    GPU_BENCH_PARTS: some of renders geometry targets ssao
-#                                    forward groups bench, default all)
+#                                    forward tiles groups bench, default all)
 #
 # The build links the system's libEGL/libOpenGL (glvnd, the NVIDIA driver behind them), never
 # libOSMesa; it is the same renderer objects as the headless build.
@@ -134,6 +134,14 @@ run)
     if part forward; then
     FORWARD_FLAGS="--context egl" FORWARD_SIZES="1920x1080 3840x2160" FORWARD_FRAMES=30 \
         $src/tests/forward_measure.sh $dsr "$out/forward" | tee "$out/forward.md"
+    fi
+    # tiles against quad alone (GPU_BENCH_TILES_LIGHTS), the image difference in the bench's
+    # max_lsb_vs_quad column: is the in-shader sum of several lights the blend's sum here?
+    if part tiles; then
+        $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-30} \
+            --lights ${GPU_BENCH_TILES_LIGHTS:-own,1024,1024-overlap} --light-geometry quad,tiles \
+            --json "$out/gpu_bench_tiles_1920x1080.json" --report "$out/gpu_bench_tiles_1920x1080.md" \
+            | tee "$out/gpu_bench_tiles_1920x1080.txt"
     fi
     # The tiles geometry's other plan (groups), against quad in the same run.
     if part groups; then
