@@ -19,6 +19,11 @@ uniform vec4 lightdir[BATCH];
 uniform vec4 lightspot[BATCH];
 uniform vec4 lightatt[BATCH];
 uniform vec2 planes;
+#ifdef QUANTIZE_8BIT
+// 1 - where this GL's conversion to 8 bits turns up (gl/rounding_probe.h): 0.5 for round to
+// nearest; less where the GL rounds a little above the half, so each term rounds as its pass would.
+uniform float quantize_round;
+#endif
 uniform vec3 zrange;
 
 varying vec2 texcoord;
@@ -82,7 +87,7 @@ void main()
         vec3 t = clamp(light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, normal,
                                           diffuse, specular.rgb, shininess), 0.0, 1.0);
 #ifdef QUANTIZE_8BIT
-        t = floor(t * 255.0 + 0.5) / 255.0;
+        t = floor(t * 255.0 + quantize_round) / 255.0;
 #endif
         c += t;
         any = true;

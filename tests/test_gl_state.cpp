@@ -191,9 +191,29 @@ TEST(GlState, Unorm8RoundingProbe) {
         EXPECT_EQ(r.plain[3], 2) << "llvmpipe rounds ties to even";
         EXPECT_EQ(r.dither_min, r.dither_max) << "llvmpipe does not dither";
     }
+    if (probe_caps().renderer.find("llvmpipe") != std::string::npos)
+        for (float t : r.threshold) EXPECT_NEAR(t, 0.5f, 0.00051f) << "llvmpipe rounds to nearest";
+    EXPECT_EQ(unorm8_round_offset(r), unorm8_round_offset(unorm8_rounding()));
     gl_state().apply(RenderState{});
     EXPECT_FALSE(glIsEnabled(GL_DITHER));
     EXPECT_NE(describe(r).find("10 x 0.6/255 added -> 10"), std::string::npos) << describe(r);
+}
+
+// The tiles geometry's rounding offset from the probe: round to nearest (whatever the ties) keeps
+// 0.5; a GL that turns up later gets 1 minus the median threshold; nothing measured keeps 0.5.
+TEST(GlState, Unorm8RoundOffsetFollowsTheMeasuredThreshold) {
+    Unorm8Rounding r;
+    EXPECT_EQ(unorm8_round_offset(r), 0.5f) << "not measured";
+    r.measured = true;
+    const float nearest[4] = {0.5005f, 0.5f, 0.5005f, 0.5005f};
+    std::copy(nearest, nearest + 4, r.threshold);
+    EXPECT_EQ(unorm8_round_offset(r), 0.5f);
+    const float late[4] = {0.52f, 0.53f, 0.53f, -1.0f};
+    std::copy(late, late + 4, r.threshold);
+    EXPECT_NEAR(unorm8_round_offset(r), 0.47f, 1e-6f);
+    const float none[4] = {-1, -1, -1, -1};
+    std::copy(none, none + 4, r.threshold);
+    EXPECT_EQ(unorm8_round_offset(r), 0.5f);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "forward/transparent_pass.h"
 #include "dsr_error.h"
 #include "gl/check.h"
+#include "gl/rounding_probe.h"
 #include "gl/readback.h"
 
 namespace dsr {
@@ -92,7 +93,12 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
         tdefs.push_back("BATCH " + std::to_string(tile_batch_));
         // P-buffer 0 is RGBA8: several lights summed in one pass are each rounded as their own
         // pass would be. One light a pass needs no emulation: the blend rounds it as quad's does.
-        if (!opts.float_accum && opts.tile_lights > 1) tdefs.push_back("QUANTIZE_8BIT");
+        if (!opts.float_accum && opts.tile_lights > 1) {
+            tdefs.push_back("QUANTIZE_8BIT");
+            // Rounded as this GL rounds into RGBA8, measured once (gl/rounding_probe.h): NVIDIA and
+            // llvmpipe need not agree.
+            if (paths_.fbo) tile_round_ = unorm8_round_offset(unorm8_rounding());
+        }
         light_tiles_any_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);
         tdefs.push_back("LIGHT_POINT_ONLY");  // frames of tutorial point lights only, as quad's light_prog_
         light_tiles_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);

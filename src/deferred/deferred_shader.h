@@ -274,6 +274,7 @@ private:
     Program light_tiles_prog_;          // light_tiles.frag: up to tile_lights lights per pass (LIGHT_POINT_ONLY)
     Program light_tiles_any_prog_;      // the same for frames with spot, directional or attenuated lights
     int tile_batch_ = 0;                // lights light_tiles.frag holds in its uniform arrays
+    float tile_round_ = 0.5f;           // light_tiles.frag's quantize_round (gl/rounding_probe.h)
     Program depth_copy_prog_;           // depth_copy.frag: the depth hand-off
     Program ssao_prog_;                 // ssao.frag (with --ssao)
     Program ssao_blur_prog_;            // ssao_blur.frag (with --ssao)

@@ -42,6 +42,7 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     const bool point_only = std::all_of(lights.begin(), lights.end(), [](const LightDraw& l) { return tutorial_light(*l.light); });
     Program& prog = point_only ? light_tiles_prog_ : light_tiles_any_prog_;
     set_light_uniforms(prog);
+    prog.set("quantize_round", tile_round_);  // ignored (optimised away) without QUANTIZE_8BIT
     gl_state().apply(light_pass_state(prog.id(), false));
     LightQueries q(counting_ && paths_.count_fragments, counting_ && caps_.pipeline_statistics);
     const int id_vecs = groups ? 0 : tile_id_vecs(opts_.tile_lights);

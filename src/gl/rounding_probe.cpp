@@ -1,7 +1,9 @@
 #include "gl/rounding_probe.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "gl/caps.h"
 #include "gl/pbuffer.h"
@@ -64,6 +66,42 @@ Unorm8Rounding probe_unorm8_rounding() {
     for (int k = 0; k < 10; ++k) fill(0.6f);
     read_red(px);
     r.added_ten = px[0];
+    // The sweep: one point per value, a column per step, a row per k, in a 201 x 4 target of its own.
+    {
+        PBufferDesc sd;
+        sd.width = 201;
+        sd.height = 4;
+        sd.color_formats = {GL_RGBA8};
+        PBuffer sweep("rounding sweep", sd);
+        target.unbind_render();
+        sweep.bind_render();
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glOrtho(0, 201, 0, 4, -1, 1);
+        gl_state().apply(s);
+        const int ks[4] = {0, 1, 100, 200};
+        glBegin(GL_POINTS);
+        for (int row = 0; row < 4; ++row)
+            for (int i = 0; i <= 200; ++i) {
+                const float v = (float(ks[row]) + 0.45f + 0.0005f * float(i)) / 255.0f;
+                glColor4f(v, v, v, 1.0f);
+                glVertex2f(float(i) + 0.5f, float(row) + 0.5f);
+            }
+        glEnd();
+        std::vector<unsigned char> px(201 * 4 * 4);
+        glReadPixels(0, 0, 201, 4, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
+        for (int row = 0; row < 4; ++row)
+            for (int i = 0; i <= 200; ++i)
+                if (px[size_t(4 * (row * 201 + i))] == ks[row] + 1) {
+                    r.threshold[row] = 0.45f + 0.0005f * float(i);
+                    break;
+                }
+        sweep.unbind_render();
+        target.bind_render();
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glMatrixMode(GL_MODELVIEW);
+    }
     RenderState dither = s;
     dither.dither = true;
     gl_state().apply(dither);
@@ -82,14 +120,33 @@ Unorm8Rounding probe_unorm8_rounding() {
     return r;
 }
 
+const Unorm8Rounding& unorm8_rounding() {
+    static const Unorm8Rounding r = probe_unorm8_rounding();
+    return r;
+}
+
+float unorm8_round_offset(const Unorm8Rounding& r) {
+    if (!r.measured) return 0.5f;
+    std::vector<float> t;
+    for (float v : r.threshold)
+        if (v >= 0) t.push_back(v);
+    if (t.empty()) return 0.5f;
+    std::sort(t.begin(), t.end());
+    const float median = t[t.size() / 2];
+    return std::fabs(median - 0.5f) <= 0.0011f ? 0.5f : 1.0f - median;
+}
+
 std::string describe(const Unorm8Rounding& r) {
     if (!r.measured) return "  RGBA8 rounding  not measured (no framebuffer objects)\n";
-    char b[320];
+    char b[480];
     std::snprintf(b, sizeof b,
                   "  RGBA8 rounding  v/255 written: 0.4 -> %d, 0.6 -> %d, 1.5 -> %d, 2.5 -> %d; 10 x 0.6/255 added -> %d; "
-                  "1.5/255 with GL_DITHER on over 4x4: %d..%d\n",
-                  r.plain[0], r.plain[1], r.plain[2], r.plain[3], r.added_ten, r.dither_min, r.dither_max);
-    return b;
+                  "1.5/255 with GL_DITHER on over 4x4: %d..%d; (k+f)/255 turns to k+1 from f = %.4f (k 0), %.4f (1), "
+                  "%.4f (100), %.4f (200)\n",
+                  r.plain[0], r.plain[1], r.plain[2], r.plain[3], r.added_ten, r.dither_min, r.dither_max, r.threshold[0],
+                  r.threshold[1], r.threshold[2], r.threshold[3]);
+    return std::string(b) + "                  the tiles geometry's 8-bit emulation adds " +
+           std::to_string(unorm8_round_offset(r)) + " before floor()\n";
 }
 
 }  // namespace dsr

@@ -16,11 +16,21 @@ struct Unorm8Rounding {
     // The same 1.5/255 write over a 4x4 block with GL_DITHER on: the smallest and largest byte
     // (equal where the GL does not dither 8-bit targets).
     int dither_min = 0, dither_max = 0;
+    // Where the rounding turns up: for (k + f)/255 written with f swept over [0.45, 0.55] in steps
+    // of 0.0005, the smallest f that gives byte k + 1, for k = 0, 1, 100, 200 (0.5 for round to
+    // nearest, ties up; just above 0.5 where ties go down; -1 where no f in the sweep did).
+    float threshold[4] = {-1, -1, -1, -1};
 };
 
 // Needs a current context with EXT_framebuffer_object; draws into a 4x4 target of its own and
 // leaves the state cache reset (gl_state().reset()).
 Unorm8Rounding probe_unorm8_rounding();
+// The probe's result for this process, measured on first call (the GL's rounding does not change).
+const Unorm8Rounding& unorm8_rounding();
+// What to add to t * 255 before floor() to round as this GL does: 0.5 where the sweep's
+// thresholds lie within a step of the half (round to nearest, whatever the ties), else 1 minus
+// their median; 0.5 when not measured.
+float unorm8_round_offset(const Unorm8Rounding& r);
 std::string describe(const Unorm8Rounding& r);
 
 }  // namespace dsr
