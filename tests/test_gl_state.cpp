@@ -197,6 +197,7 @@ TEST(GlState, Unorm8RoundingProbe) {
     gl_state().apply(RenderState{});
     EXPECT_FALSE(glIsEnabled(GL_DITHER));
     EXPECT_NE(describe(r).find("10 x 0.6/255 added -> 10"), std::string::npos) << describe(r);
+    std::printf("[ rounding ] %s", describe(r).c_str());
 }
 
 // The tiles geometry's rounding offset from the probe: round to nearest (whatever the ties) keeps
@@ -205,14 +206,11 @@ TEST(GlState, Unorm8RoundOffsetFollowsTheMeasuredThreshold) {
     Unorm8Rounding r;
     EXPECT_EQ(unorm8_round_offset(r), 0.5f) << "not measured";
     r.measured = true;
-    const float nearest[4] = {0.5005f, 0.5f, 0.5005f, 0.5005f};
-    std::copy(nearest, nearest + 4, r.threshold);
+    for (int k = 0; k < 255; ++k) r.threshold[k] = k % 3 ? 0.5005f : 0.5f;
     EXPECT_EQ(unorm8_round_offset(r), 0.5f);
-    const float late[4] = {0.52f, 0.53f, 0.53f, -1.0f};
-    std::copy(late, late + 4, r.threshold);
+    for (int k = 0; k < 255; ++k) r.threshold[k] = k < 100 ? 0.52f : k < 254 ? 0.53f : -1.0f;
     EXPECT_NEAR(unorm8_round_offset(r), 0.47f, 1e-6f);
-    const float none[4] = {-1, -1, -1, -1};
-    std::copy(none, none + 4, r.threshold);
+    std::fill(r.threshold, r.threshold + 255, -1.0f);
     EXPECT_EQ(unorm8_round_offset(r), 0.5f);
 }
 

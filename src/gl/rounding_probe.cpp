@@ -66,34 +66,34 @@ Unorm8Rounding probe_unorm8_rounding() {
     for (int k = 0; k < 10; ++k) fill(0.6f);
     read_red(px);
     r.added_ten = px[0];
-    // The sweep: one point per value, a column per step, a row per k, in a 201 x 4 target of its own.
+    // The sweep: one point per value, a column per step of f, a row per k, in a target of its own.
     {
+        constexpr int kSteps = 201, kRows = 255;
         PBufferDesc sd;
-        sd.width = 201;
-        sd.height = 4;
+        sd.width = kSteps;
+        sd.height = kRows;
         sd.color_formats = {GL_RGBA8};
         PBuffer sweep("rounding sweep", sd);
         target.unbind_render();
         sweep.bind_render();
         glMatrixMode(GL_PROJECTION);
         glLoadIdentity();
-        glOrtho(0, 201, 0, 4, -1, 1);
+        glOrtho(0, kSteps, 0, kRows, -1, 1);
         gl_state().apply(s);
-        const int ks[4] = {0, 1, 100, 200};
         glBegin(GL_POINTS);
-        for (int row = 0; row < 4; ++row)
-            for (int i = 0; i <= 200; ++i) {
-                const float v = (float(ks[row]) + 0.45f + 0.0005f * float(i)) / 255.0f;
+        for (int k = 0; k < kRows; ++k)
+            for (int i = 0; i < kSteps; ++i) {
+                const float v = (float(k) + 0.45f + 0.0005f * float(i)) / 255.0f;
                 glColor4f(v, v, v, 1.0f);
-                glVertex2f(float(i) + 0.5f, float(row) + 0.5f);
+                glVertex2f(float(i) + 0.5f, float(k) + 0.5f);
             }
         glEnd();
-        std::vector<unsigned char> px(201 * 4 * 4);
-        glReadPixels(0, 0, 201, 4, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
-        for (int row = 0; row < 4; ++row)
-            for (int i = 0; i <= 200; ++i)
-                if (px[size_t(4 * (row * 201 + i))] == ks[row] + 1) {
-                    r.threshold[row] = 0.45f + 0.0005f * float(i);
+        std::vector<unsigned char> px(size_t(kSteps) * kRows * 4);
+        glReadPixels(0, 0, kSteps, kRows, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
+        for (int k = 0; k < kRows; ++k)
+            for (int i = 0; i < kSteps; ++i)
+                if (px[size_t(4 * (k * kSteps + i))] == k + 1) {
+                    r.threshold[k] = 0.45f + 0.0005f * float(i);
                     break;
                 }
         sweep.unbind_render();
@@ -138,13 +138,20 @@ float unorm8_round_offset(const Unorm8Rounding& r) {
 
 std::string describe(const Unorm8Rounding& r) {
     if (!r.measured) return "  RGBA8 rounding  not measured (no framebuffer objects)\n";
-    char b[480];
+    std::vector<float> t(r.threshold, r.threshold + 255);
+    const int missing = int(std::count(t.begin(), t.end(), -1.0f));
+    int off_half = 0;
+    for (float v : t) off_half += v >= 0 && std::fabs(v - 0.5f) > 0.0011f;
+    std::sort(t.begin(), t.end());
+    char b[640];
     std::snprintf(b, sizeof b,
                   "  RGBA8 rounding  v/255 written: 0.4 -> %d, 0.6 -> %d, 1.5 -> %d, 2.5 -> %d; 10 x 0.6/255 added -> %d; "
-                  "1.5/255 with GL_DITHER on over 4x4: %d..%d; (k+f)/255 turns to k+1 from f = %.4f (k 0), %.4f (1), "
-                  "%.4f (100), %.4f (200)\n",
+                  "1.5/255 with GL_DITHER on over 4x4: %d..%d\n"
+                  "                  (k+f)/255 turns to k+1 from f = %.4f (k 0), %.4f (1), %.4f (100), %.4f (200); over "
+                  "k 0..254: min %.4f, median %.4f, max %.4f, %d more than a step from 0.5, %d not in [0.45, 0.55]\n",
                   r.plain[0], r.plain[1], r.plain[2], r.plain[3], r.added_ten, r.dither_min, r.dither_max, r.threshold[0],
-                  r.threshold[1], r.threshold[2], r.threshold[3]);
+                  r.threshold[1], r.threshold[100], r.threshold[200], t[size_t(missing)], t[size_t(missing + (255 - missing) / 2)],
+                  t.back(), off_half, missing);
     return std::string(b) + "                  the tiles geometry's 8-bit emulation adds " +
            std::to_string(unorm8_round_offset(r)) + " before floor()\n";
 }

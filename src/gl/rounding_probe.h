@@ -2,6 +2,7 @@
 // tiles geometry sums several lights in a shader and rounds each as its own pass would be rounded;
 // that is exact only if the GL rounds the way the shader assumes). `dsr info` prints it.
 #pragma once
+#include <algorithm>
 #include <string>
 
 namespace dsr {
@@ -17,9 +18,10 @@ struct Unorm8Rounding {
     // (equal where the GL does not dither 8-bit targets).
     int dither_min = 0, dither_max = 0;
     // Where the rounding turns up: for (k + f)/255 written with f swept over [0.45, 0.55] in steps
-    // of 0.0005, the smallest f that gives byte k + 1, for k = 0, 1, 100, 200 (0.5 for round to
-    // nearest, ties up; just above 0.5 where ties go down; -1 where no f in the sweep did).
-    float threshold[4] = {-1, -1, -1, -1};
+    // of 0.0005, the smallest f that gives byte k + 1, for every k in 0..254 (0.5 for round to
+    // nearest, ties up; 0.5005 where exact ties go down; -1 where no f in the sweep did).
+    float threshold[255];
+    Unorm8Rounding() { std::fill(threshold, threshold + 255, -1.0f); }
 };
 
 // Needs a current context with EXT_framebuffer_object; draws into a 4x4 target of its own and
