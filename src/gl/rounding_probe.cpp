@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <vector>
 
 #include "gl/caps.h"
@@ -66,9 +67,11 @@ Unorm8Rounding probe_unorm8_rounding() {
     for (int k = 0; k < 10; ++k) fill(0.6f);
     read_red(px);
     r.added_ten = px[0];
-    // The sweep: one point per value, a column per step of f, a row per k, in a target of its own.
+    // The sweeps: one point per value, a column per step of f, a row per k (then per (j, k) for the
+    // additive one), in a target of their own.
     {
-        constexpr int kSteps = 201, kRows = 255;
+        constexpr int kSteps = 601, kRows = 255 + 15;
+        constexpr float kF0 = 0.35f, kDf = 0.0005f;
         PBufferDesc sd;
         sd.width = kSteps;
         sd.height = kRows;
@@ -80,22 +83,37 @@ Unorm8Rounding probe_unorm8_rounding() {
         glLoadIdentity();
         glOrtho(0, kSteps, 0, kRows, -1, 1);
         gl_state().apply(s);
-        glBegin(GL_POINTS);
-        for (int k = 0; k < kRows; ++k)
-            for (int i = 0; i < kSteps; ++i) {
-                const float v = (float(k) + 0.45f + 0.0005f * float(i)) / 255.0f;
-                glColor4f(v, v, v, 1.0f);
-                glVertex2f(float(i) + 0.5f, float(k) + 0.5f);
-            }
-        glEnd();
+        auto points = [&](int row0, int rows, const std::function<float(int, int)>& value) {
+            glBegin(GL_POINTS);
+            for (int row = 0; row < rows; ++row)
+                for (int i = 0; i < kSteps; ++i) {
+                    const float v = value(row, i) / 255.0f;
+                    glColor4f(v, v, v, 1.0f);
+                    glVertex2f(float(i) + 0.5f, float(row0 + row) + 0.5f);
+                }
+            glEnd();
+        };
+        points(0, 255, [&](int k, int i) { return float(k) + kF0 + kDf * float(i); });
+        // The additive rows: j/255 laid down, then (k + f)/255 added.
+        points(255, 15, [&](int row, int) { return float(Unorm8Rounding::kAddJ[row / 3]); });
+        RenderState add = s;
+        add.blend = true;
+        add.blend_src = add.blend_dst = GL_ONE;
+        gl_state().apply(add);
+        points(255, 15, [&](int row, int i) { return float(Unorm8Rounding::kAddK[row % 3]) + kF0 + kDf * float(i); });
+        gl_state().apply(s);
         std::vector<unsigned char> px(size_t(kSteps) * kRows * 4);
         glReadPixels(0, 0, kSteps, kRows, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
-        for (int k = 0; k < kRows; ++k)
+        auto first_up = [&](int row, int want) {
             for (int i = 0; i < kSteps; ++i)
-                if (px[size_t(4 * (k * kSteps + i))] == k + 1) {
-                    r.threshold[k] = 0.45f + 0.0005f * float(i);
-                    break;
-                }
+                if (px[size_t(4 * (row * kSteps + i))] == want) return kF0 + kDf * float(i);
+            return -1.0f;
+        };
+        for (int k = 0; k < 255; ++k) r.threshold[k] = first_up(k, k + 1);
+        for (int row = 0; row < 15; ++row) {
+            const int j = Unorm8Rounding::kAddJ[row / 3], k = Unorm8Rounding::kAddK[row % 3];
+            r.added[row / 3][row % 3] = first_up(255 + row, j + k + 1);
+        }
         sweep.unbind_render();
         target.bind_render();
         glMatrixMode(GL_PROJECTION);
@@ -148,11 +166,18 @@ std::string describe(const Unorm8Rounding& r) {
                   "  RGBA8 rounding  v/255 written: 0.4 -> %d, 0.6 -> %d, 1.5 -> %d, 2.5 -> %d; 10 x 0.6/255 added -> %d; "
                   "1.5/255 with GL_DITHER on over 4x4: %d..%d\n"
                   "                  (k+f)/255 turns to k+1 from f = %.4f (k 0), %.4f (1), %.4f (100), %.4f (200); over "
-                  "k 0..254: min %.4f, median %.4f, max %.4f, %d more than a step from 0.5, %d not in [0.45, 0.55]\n",
+                  "k 0..254: min %.4f, median %.4f, max %.4f, %d more than a step from 0.5, %d not in [0.35, 0.65]\n",
                   r.plain[0], r.plain[1], r.plain[2], r.plain[3], r.added_ten, r.dither_min, r.dither_max, r.threshold[0],
                   r.threshold[1], r.threshold[100], r.threshold[200], t[size_t(missing)], t[size_t(missing + (255 - missing) / 2)],
                   t.back(), off_half, missing);
-    return std::string(b) + "                  the tiles geometry's 8-bit emulation adds " +
+    std::string add = "                  (k+f)/255 added onto j/255 turns to j+k+1 from f =";
+    for (int a = 0; a < 5; ++a)
+        for (int c = 0; c < 3; ++c) {
+            char e[64];
+            std::snprintf(e, sizeof e, " %.4f (j %d k %d)", r.added[a][c], Unorm8Rounding::kAddJ[a], Unorm8Rounding::kAddK[c]);
+            add += e;
+        }
+    return std::string(b) + add + "\n                  the tiles geometry's 8-bit emulation adds " +
            std::to_string(unorm8_round_offset(r)) + " before floor()\n";
 }
 

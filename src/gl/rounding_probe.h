@@ -17,11 +17,20 @@ struct Unorm8Rounding {
     // The same 1.5/255 write over a 4x4 block with GL_DITHER on: the smallest and largest byte
     // (equal where the GL does not dither 8-bit targets).
     int dither_min = 0, dither_max = 0;
-    // Where the rounding turns up: for (k + f)/255 written with f swept over [0.45, 0.55] in steps
+    // Where the rounding turns up: for (k + f)/255 written with f swept over [0.35, 0.65] in steps
     // of 0.0005, the smallest f that gives byte k + 1, for every k in 0..254 (0.5 for round to
     // nearest, ties up; 0.5005 where exact ties go down; -1 where no f in the sweep did).
     float threshold[255];
-    Unorm8Rounding() { std::fill(threshold, threshold + 255, -1.0f); }
+    // The same for (k + f)/255 added (GL_ONE, GL_ONE) onto j/255, for j in kAddJ and k in kAddK:
+    // byte j + k + 1 from f = added[j][k]. Equal to threshold[k] where the GL rounds the source
+    // before the add, to threshold[j + k] where it rounds the sum.
+    static constexpr int kAddJ[5] = {0, 50, 100, 150, 200};
+    static constexpr int kAddK[3] = {0, 1, 20};
+    float added[5][3];
+    Unorm8Rounding() {
+        std::fill(threshold, threshold + 255, -1.0f);
+        std::fill(&added[0][0], &added[0][0] + 15, -1.0f);
+    }
 };
 
 // Needs a current context with EXT_framebuffer_object; draws into a 4x4 target of its own and
