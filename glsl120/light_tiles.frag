@@ -20,8 +20,9 @@ uniform vec4 lightspot[BATCH];
 uniform vec4 lightatt[BATCH];
 uniform vec2 planes;
 #ifdef QUANTIZE_8BIT
-// 1 - where this GL's conversion to 8 bits turns up (gl/rounding_probe.h): 0.5 for round to
-// nearest; less where the GL rounds a little above the half, so each term rounds as its pass would.
+// How this GL converts a colour to 8 bits (gl/rounding_probe.h), so each term rounds as its own
+// pass would: QUANTIZE_TRUNCATE 2^n where it truncates to n bits first (the H200: 4096.0), then
+// round to nearest (quantize_round 0.5); where no model fits the probe, 1 - the median threshold.
 uniform float quantize_round;
 #endif
 uniform vec3 zrange;
@@ -87,6 +88,9 @@ void main()
         vec3 t = clamp(light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, normal,
                                           diffuse, specular.rgb, shininess), 0.0, 1.0);
 #ifdef QUANTIZE_8BIT
+#ifdef QUANTIZE_TRUNCATE
+        t = floor(t * QUANTIZE_TRUNCATE) / QUANTIZE_TRUNCATE;  // this GL's colour to 2^-n first
+#endif
         t = floor(t * 255.0 + quantize_round) / 255.0;
 #endif
         c += t;

@@ -194,6 +194,8 @@ TEST(GlState, Unorm8RoundingProbe) {
     if (probe_caps().renderer.find("llvmpipe") != std::string::npos)
         for (float t : r.threshold) EXPECT_NEAR(t, 0.5f, 0.00051f) << "llvmpipe rounds to nearest";
     EXPECT_EQ(unorm8_round_offset(r), unorm8_round_offset(unorm8_rounding()));
+    if (probe_caps().renderer.find("llvmpipe") != std::string::npos)
+        EXPECT_EQ(unorm8_truncate_bits(r), 0) << "round(t x 255) explains every threshold";
     gl_state().apply(RenderState{});
     EXPECT_FALSE(glIsEnabled(GL_DITHER));
     EXPECT_NE(describe(r).find("10 x 0.6/255 added -> 10"), std::string::npos) << describe(r);
@@ -202,6 +204,27 @@ TEST(GlState, Unorm8RoundingProbe) {
 
 // The tiles geometry's rounding offset from the probe: round to nearest (whatever the ties) keeps
 // 0.5; a GL that turns up later gets 1 minus the median threshold; nothing measured keeps 0.5.
+// The truncation model: thresholds made by a GL that truncates to n bits first are told apart
+// from round to nearest and from each other n, and the H200's measured ones are n = 12.
+TEST(GlState, Unorm8TruncationModelFitsTheThresholdsItMade) {
+    for (int bits : {0, 10, 12, 14}) {
+        Unorm8Rounding r;
+        r.measured = true;
+        for (int k = 0; k < 255; ++k) r.threshold[k] = predicted_threshold(bits, k);
+        EXPECT_EQ(unorm8_truncate_bits(r), bits);
+    }
+    // dsr info on the H200 (docs/gpu.md): 0.5605 (k 0), 0.5565 (1), 0.5435 (100), 0.5265 (200).
+    EXPECT_FLOAT_EQ(predicted_threshold(12, 0), 0.5605f);
+    EXPECT_FLOAT_EQ(predicted_threshold(12, 1), 0.5565f);
+    EXPECT_FLOAT_EQ(predicted_threshold(12, 100), 0.5435f);
+    EXPECT_FLOAT_EQ(predicted_threshold(12, 200), 0.5265f);
+    Unorm8Rounding odd;
+    odd.measured = true;
+    for (int k = 0; k < 255; ++k) odd.threshold[k] = 0.6f;  // a constant late threshold: no model
+    EXPECT_EQ(unorm8_truncate_bits(odd), -1);
+    EXPECT_NEAR(unorm8_round_offset(odd), 0.4f, 1e-6f);
+}
+
 TEST(GlState, Unorm8RoundOffsetFollowsTheMeasuredThreshold) {
     Unorm8Rounding r;
     EXPECT_EQ(unorm8_round_offset(r), 0.5f) << "not measured";

@@ -95,9 +95,16 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
         // pass would be. One light a pass needs no emulation: the blend rounds it as quad's does.
         if (!opts.float_accum && opts.tile_lights > 1) {
             tdefs.push_back("QUANTIZE_8BIT");
-            // Rounded as this GL rounds into RGBA8, measured once (gl/rounding_probe.h): NVIDIA and
-            // llvmpipe need not agree.
-            if (paths_.fbo) tile_round_ = unorm8_round_offset(unorm8_rounding());
+            // Rounded as this GL rounds into RGBA8, measured once (gl/rounding_probe.h): llvmpipe
+            // rounds t x 255 to nearest; the H200 truncates t to 12 bits first, which rounds up
+            // later than the half by as much as 0.06 of a step, and over the dozens of lights a
+            // pixel of 1024-overlap gets the difference reached 16 LSB.
+            if (paths_.fbo) {
+                const Unorm8Rounding& r = unorm8_rounding();
+                const int bits = unorm8_truncate_bits(r);
+                if (bits > 0) tdefs.push_back("QUANTIZE_TRUNCATE " + std::to_string(1 << bits) + ".0");
+                tile_round_ = bits >= 0 ? 0.5f : unorm8_round_offset(r);
+            }
         }
         light_tiles_any_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);
         tdefs.push_back("LIGHT_POINT_ONLY");  // frames of tutorial point lights only, as quad's light_prog_

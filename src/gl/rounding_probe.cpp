@@ -14,6 +14,10 @@ namespace dsr {
 
 namespace {
 
+// The threshold sweeps' grid of f (Unorm8Rounding::threshold).
+constexpr float kSweepF0 = 0.35f, kSweepDf = 0.0005f;
+constexpr int kSweepSteps = 601;
+
 // Fills the bound 4x4 target with colour (v, v, v, 1) / 255 by a fixed-function quad; returns
 // the red bytes.
 void fill(float v) {
@@ -70,8 +74,8 @@ Unorm8Rounding probe_unorm8_rounding() {
     // The sweeps: one point per value, a column per step of f, a row per k (then per (j, k) for the
     // additive one), in a target of their own.
     {
-        constexpr int kSteps = 601, kRows = 255 + 15;
-        constexpr float kF0 = 0.35f, kDf = 0.0005f;
+        constexpr int kSteps = kSweepSteps, kRows = 255 + 15;
+        constexpr float kF0 = kSweepF0, kDf = kSweepDf;
         PBufferDesc sd;
         sd.width = kSteps;
         sd.height = kRows;
@@ -154,6 +158,36 @@ float unorm8_round_offset(const Unorm8Rounding& r) {
     return std::fabs(median - 0.5f) <= 0.0011f ? 0.5f : 1.0f - median;
 }
 
+float predicted_threshold(int bits, int k) {
+    for (int i = 0; i < kSweepSteps; ++i) {
+        const float f = kSweepF0 + kSweepDf * float(i);
+        float t = (float(k) + f) / 255.0f;  // as the probe's glColor4f got it
+        if (bits > 0) t = std::floor(t * std::ldexp(1.0f, bits)) / std::ldexp(1.0f, bits);
+        const double x = double(t) * 255.0;
+        // Round to nearest, ties to even (llvmpipe's; the fit allows a step either way for ties).
+        const double frac = x - std::floor(x);
+        const bool up = frac > 0.5 || (frac == 0.5 && std::fmod(std::floor(x), 2.0) == 1.0);
+        if (std::floor(x) + (up ? 1 : 0) >= double(k + 1)) return f;
+    }
+    return -1.0f;
+}
+
+int unorm8_truncate_bits(const Unorm8Rounding& r) {
+    if (!r.measured) return -1;
+    auto fits = [&](int bits) {
+        for (int k = 0; k < 255; ++k) {
+            const float p = predicted_threshold(bits, k);
+            if (r.threshold[k] < 0 && p < 0) continue;  // neither turns up within the sweep
+            if (r.threshold[k] < 0 || p < 0 || std::fabs(r.threshold[k] - p) > kSweepDf * 1.5f) return false;
+        }
+        return true;
+    };
+    if (fits(0)) return 0;
+    for (int bits = 8; bits <= 16; ++bits)
+        if (fits(bits)) return bits;
+    return -1;
+}
+
 std::string describe(const Unorm8Rounding& r) {
     if (!r.measured) return "  RGBA8 rounding  not measured (no framebuffer objects)\n";
     std::vector<float> t(r.threshold, r.threshold + 255);
@@ -177,8 +211,13 @@ std::string describe(const Unorm8Rounding& r) {
             std::snprintf(e, sizeof e, " %.4f (j %d k %d)", r.added[a][c], Unorm8Rounding::kAddJ[a], Unorm8Rounding::kAddK[c]);
             add += e;
         }
-    return std::string(b) + add + "\n                  the tiles geometry's 8-bit emulation adds " +
-           std::to_string(unorm8_round_offset(r)) + " before floor()\n";
+    const int bits = unorm8_truncate_bits(r);
+    const std::string model = bits == 0  ? "round(t x 255)"
+                              : bits > 0 ? "round(floor(t x 2^" + std::to_string(bits) + ") / 2^" + std::to_string(bits) +
+                                               " x 255): t truncated to " + std::to_string(bits) + " bits first"
+                                         : "no model fits; the tiles geometry's emulation adds " +
+                                               std::to_string(unorm8_round_offset(r)) + " before floor()";
+    return std::string(b) + add + "\n                  model: " + model + "\n";
 }
 
 }  // namespace dsr

@@ -40,8 +40,18 @@ Unorm8Rounding probe_unorm8_rounding();
 const Unorm8Rounding& unorm8_rounding();
 // What to add to t * 255 before floor() to round as this GL does: 0.5 where the sweep's
 // thresholds lie within a step of the half (round to nearest, whatever the ties), else 1 minus
-// their median; 0.5 when not measured.
+// their median; 0.5 when not measured. The fallback where no model below fits.
 float unorm8_round_offset(const Unorm8Rounding& r);
+
+// The conversion model that reproduces every measured threshold (to the sweep's step):
+//   0   round to nearest: byte = round(t * 255) (llvmpipe)
+//   n   t first truncated to n fractional bits, then rounded: byte = round(floor(t * 2^n) / 2^n * 255)
+//       (the H200: n = 12, from thresholds 0.5605 at k 0 down to 0.5265 at k 200)
+//   -1  none of n = 8..16 fits (or nothing was measured)
+// The thresholds each model predicts come from the same float arithmetic the probe's points had.
+int unorm8_truncate_bits(const Unorm8Rounding& r);
+// The threshold model n predicts for k, on the probe's grid of f (-1: none on the grid).
+float predicted_threshold(int bits, int k);
 std::string describe(const Unorm8Rounding& r);
 
 }  // namespace dsr
