@@ -322,6 +322,28 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"no_fbo_packed", DepthPath::packed, DepthHandoff::automatic, {"no-fbo"}, DepthHandoff::pass}),
     [](const ::testing::TestParamInfo<Case>& i) { return std::string(i.param.name); });
 
+// The forward stage behind every light geometry: the same pane over the same lights as with quad,
+// within the 1 LSB the geometries keep between themselves; stencil's depth-stencil buffer gets
+// the pass, the others the blit.
+TEST(ForwardScene, EveryLightGeometryHandsOffAndBlendsTheSame) {
+    Scene s = wall_scene();
+    s.materials.push_back(matte("glass", {0.2f, 0.5f, 0.9f}, 0.4f));
+    s = with_pane(s, 2, {0.2f, 0.2f, 0.6f}, {1.6f, 1.4f});
+    ShaderOptions o;
+    o.show_lights = true;
+    const RenderResult q = render_scene(s, kN, kN, o);
+    for (LightGeometry g : {LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles}) {
+        ShaderOptions og = o;
+        og.light_geometry = g;
+        const RenderResult r = render_scene(s, kN, kN, og);
+        EXPECT_EQ(r.paths.light_geometry, g);
+        EXPECT_EQ(r.paths.depth_handoff, g == LightGeometry::stencil ? DepthHandoff::pass : DepthHandoff::blit);
+        EXPECT_EQ(r.stats.transparent_objects, 1);
+        const ImageDiff d = compare_logged(std::string("forward_behind_") + light_geometry_name(g), r.image, q.image, 1.0 / 255);
+        EXPECT_LE(d.max_lsb(), 1.0) << light_geometry_name(g);
+    }
+}
+
 // Opacity 1 in a scene file is the opaque path: the same image as no opacity at all.
 TEST(ForwardScene, OpacityOneIsTheOpaquePathAndBadOpacityIsOneError) {
     const std::string head =
