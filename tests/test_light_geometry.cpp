@@ -200,12 +200,21 @@ TEST(LightGeometry, TilesOverSeveralBatchesMatchQuad) {
     ASSERT_GT(tiles.stats.lights_drawn, 128);  // more than one batch
     EXPECT_GT(tiles.stats.tile_light_pairs, 0);
     EXPECT_LT(tiles.stats.light_passes, quad.stats.light_passes / 4);
-    // The groups plan: one draw per 8 lights, each over the union of its lights' tiles.
+    // The groups plan: one draw per 8 lights, each over the union of its lights' tiles; with depth
+    // culling, lights that meet no tile's surfaces take no place in a group.
     ShaderOptions g = with_geometry(LightGeometry::tiles);
     g.tile_plan = TileGrouping::groups;
+    g.tile_depth = false;
     const RenderResult groups = render_scene(s, kW, kH, g);
     expect_same("tiles_groups_512", groups, quad);
+    EXPECT_FALSE(groups.stats.tile_depth);
     EXPECT_EQ(groups.stats.light_passes, (groups.stats.lights_drawn + 7) / 8);
+    g.tile_depth = true;
+    const RenderResult culled = render_scene(s, kW, kH, g);
+    expect_same("tiles_groups_depth_512", culled, quad);
+    ASSERT_TRUE(culled.stats.tile_depth);
+    EXPECT_LE(culled.stats.light_passes, groups.stats.light_passes);
+    EXPECT_LT(culled.stats.tile_light_pairs, groups.stats.tile_light_pairs);
 }
 
 }  // namespace dsr::test

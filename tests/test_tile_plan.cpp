@@ -1,8 +1,11 @@
 // The tiles geometry's plan (deferred/tile_plan.h) against brute force: every (tile, light) pair
-// whose rectangle overlaps the tile is shaded exactly once, no draw holds more than the pass's
+// whose rectangle overlaps the tile (and, with depth culling, whose depth spans share a z) is shaded
+// exactly once, no draw holds more than the pass's
 // lights per tile, every draw's lights come from its own batch.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <random>
 #include <set>
@@ -13,8 +16,25 @@ using namespace dsr;
 
 namespace {
 
-void check_plan(const std::vector<ScissorRect>& rects, int w, int h, int ts, int n, int b) {
-    const TilePlan plan = plan_tiles(rects, w, h, ts, n, b);
+// Brute force: some z lies in both spans.
+bool share_a_z(const DepthSpan& a, const DepthSpan& b) { return std::max(a.lo, b.lo) <= std::min(a.hi, b.hi); }
+
+// Random depth spans: per light around z in [-50, -1] with radius [0, 6] (every 7th unbounded, as a
+// directional light); per tile a surface span, every 5th empty (background only).
+TileDepth random_depth(std::mt19937& rng, size_t lights, int tiles) {
+    std::uniform_real_distribution<float> z(-50.0f, -1.0f), r(0.0f, 6.0f), dz(0.0f, 10.0f);
+    TileDepth d;
+    for (size_t i = 0; i < lights; ++i) d.lights.push_back(i % 7 == 3 ? DepthSpan{} : light_depth_span(z(rng), r(rng)));
+    for (int t = 0; t < tiles; ++t) {
+        const float lo = z(rng);
+        d.tiles.push_back(t % 5 == 2 ? DepthSpan{1e30f, -1e30f} : DepthSpan{lo, lo + dz(rng)});
+    }
+    return d;
+}
+
+void check_plan(const std::vector<ScissorRect>& rects, int w, int h, int ts, int n, int b,
+                const TileDepth* depth = nullptr) {
+    const TilePlan plan = plan_tiles(rects, w, h, ts, n, b, depth);
     // Batches: each non-empty (on screen) light exactly once, at most b lights each.
     std::multiset<int> in_batches;
     for (const auto& batch : plan.batches) {
@@ -53,7 +73,9 @@ void check_plan(const std::vector<ScissorRect>& rects, int w, int h, int ts, int
                 const ScissorRect& r = rects[size_t(i)];
                 const int x0 = std::max(r.x0, x * ts), x1 = std::min({r.x1, (x + 1) * ts, w});
                 const int y0 = std::max(r.y0, y * ts), y1 = std::min({r.y1, (y + 1) * ts, h});
-                if (x1 > x0 && y1 > y0) {
+                const int tiles_x = (w + ts - 1) / ts;
+                if (x1 > x0 && y1 > y0 &&
+                    (!depth || share_a_z(depth->lights[size_t(i)], depth->tiles[size_t(y) * tiles_x + x]))) {
                     want.insert(i);
                     on_screen.insert(i);
                 }
@@ -79,6 +101,24 @@ TEST(TilePlan, EveryOverlapShadedOnceAgainstBruteForce) {
         const int ts = 8 << (trial % 3), n = 1 + trial % 9, b = 1 + (trial * 13) % 70;
         SCOPED_TRACE(testing::Message() << "trial " << trial << " " << w << "x" << h << " ts " << ts << " n " << n << " b " << b);
         check_plan(rects, w, h, ts, n, b);
+        const TileDepth depth = random_depth(rng, rects.size(), ((w + ts - 1) / ts) * ((h + ts - 1) / ts));
+        check_plan(rects, w, h, ts, n, b, &depth);
+    }
+}
+
+// A light's span holds every surface z the shader's depth test (abs(z - zl) > r rejects, in float)
+// lets through, and nothing far outside it.
+TEST(TilePlan, LightDepthSpanHoldsWhatTheDepthTestPasses) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const float zl = -std::pow(10.0f, 6.0f * u(rng) - 2.0f), r = std::pow(10.0f, 5.0f * u(rng) - 2.0f);
+        const DepthSpan s = light_depth_span(zl, r);
+        for (int k = 0; k <= 64; ++k) {  // surface z across [zl - 1.01 r, zl + 1.01 r]
+            const float z = zl + r * (-1.01f + 2.02f * float(k) / 64.0f);
+            if (!(std::fabs(z - zl) > r)) EXPECT_TRUE(z >= s.lo && z <= s.hi) << zl << " " << r << " " << z;
+        }
+        EXPECT_LE(s.hi - s.lo, 2.0f * r * 1.001f + 1e-4f * std::fabs(zl)) << zl << " " << r;
     }
 }
 
@@ -125,7 +165,13 @@ TEST(TilePlan, GroupsCoverTheUnionOfTheirLightsTiles) {
             r.x0 = pos(rng), r.y0 = pos(rng);
             r.x1 = r.x0 + size(rng), r.y1 = r.y0 + size(rng);
         }
-        const TilePlan plan = plan_tile_groups(rects, w, h, ts, n);
+        const int tiles_x = (w + ts - 1) / ts, tiles_y = (h + ts - 1) / ts;
+        const TileDepth depth = random_depth(rng, rects.size(), tiles_x * tiles_y);
+        const bool cull = trial % 2 == 1;  // odd trials with depth culling
+        const TilePlan plan = plan_tile_groups(rects, w, h, ts, n, cull ? &depth : nullptr);
+        auto meets = [&](int l, int x, int y) {
+            return !cull || share_a_z(depth.lights[size_t(l)], depth.tiles[size_t(y) * tiles_x + x]);
+        };
         ASSERT_EQ(plan.draws.size(), plan.batches.size());
         std::set<int> seen;
         for (size_t g = 0; g < plan.batches.size(); ++g) {
@@ -138,7 +184,7 @@ TEST(TilePlan, GroupsCoverTheUnionOfTheirLightsTiles) {
                 for (int y = 0; y * ts < h; ++y)
                     for (int x = 0; x * ts < w; ++x)
                         if (std::max(r.x0, x * ts) < std::min({r.x1, (x + 1) * ts, w}) &&
-                            std::max(r.y0, y * ts) < std::min({r.y1, (y + 1) * ts, h}))
+                            std::max(r.y0, y * ts) < std::min({r.y1, (y + 1) * ts, h}) && meets(l, x, y))
                             want.insert({x, y});
             }
             for (const TileQuad& q : plan.draws[g].quads) {
@@ -149,8 +195,12 @@ TEST(TilePlan, GroupsCoverTheUnionOfTheirLightsTiles) {
         }
         for (int i = 0; i < int(rects.size()); ++i) {
             const ScissorRect& r = rects[size_t(i)];
-            const bool on_screen = std::max(r.x0, 0) < std::min(r.x1, w) && std::max(r.y0, 0) < std::min(r.y1, h);
-            EXPECT_EQ(seen.count(i) == 1, on_screen) << "light " << i;
+            bool reaches = false;  // some tile its rectangle overlaps and (culling) whose span it meets
+            for (int y = 0; y < tiles_y; ++y)
+                for (int x = 0; x < tiles_x; ++x)
+                    reaches = reaches || (std::max(r.x0, x * ts) < std::min({r.x1, (x + 1) * ts, w}) &&
+                                          std::max(r.y0, y * ts) < std::min({r.y1, (y + 1) * ts, h}) && meets(i, x, y));
+            EXPECT_EQ(seen.count(i) == 1, reaches) << "light " << i;
         }
     }
 }

@@ -46,6 +46,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
     std::string backend = default_context_backend();  // --context, else $DSR_CONTEXT
     int w = 0, h = 0, frames = 0, tile_size = 0, tile_lights = 0;
     bool quick = false;
+    int tile_depth = -1;  // --tile-depth; -1: the default
     while (!args.done()) {
         std::string a = args.next();
         if (a == "--quick") quick = true;
@@ -58,6 +59,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
         else if (a == "--tile-size") tile_size = args.int_value(a, 8, 512);
         else if (a == "--tile-lights") tile_lights = args.int_value(a, 1, 32);
         else if (a == "--tile-plan") tile_plan = args.value(a);
+        else if (a == "--tile-depth") tile_depth = args.on_off(a) ? 1 : 0;
         else if (a == "--context") backend = args.value(a);
         else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
         else if (scene_path.empty()) scene_path = a;
@@ -70,6 +72,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
     if (frames) cfg.frames = frames;
     if (tile_size) cfg.tile_size = tile_size;
     if (tile_lights) cfg.tile_lights = tile_lights;
+    if (tile_depth >= 0) cfg.tile_depth = tile_depth == 1;
     if (!tile_plan.empty()) {
         if (tile_plan != "lists" && tile_plan != "groups") args.fail("--tile-plan: expected lists or groups, got '" + tile_plan + "'");
         cfg.tile_plan = tile_plan == "groups" ? TileGrouping::groups : TileGrouping::lists;

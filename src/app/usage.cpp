@@ -48,6 +48,8 @@ const char* kRendererOptions =
     "  --tile-plan lists|groups\n"
     "                          tiles: each tile its exact light list (default), or lights in\n"
     "                          screen-order groups drawn over the union of their tiles\n"
+    "  --tile-depth on|off     tiles: leave out each tile's lights whose sphere misses the depth\n"
+    "                          span of its surfaces (default on; needs float targets)\n"
     "  --render-target auto|fbo|copy|pbuffer\n"
     "                          where the G-buffer and P-buffers are drawn: framebuffer objects,\n"
     "                          the main buffer copied to textures, or EGL pbuffer surfaces copied\n"
@@ -83,7 +85,7 @@ std::vector<CommandUsage> make_table() {
                   "[--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]",
                   "[--aa-kernel text|listing] [--aa-weight W]",
                   "[--light-geometry quad|volume|stencil|tiles] [--depth-bounds on|off] [--tile-size N] [--tile-lights N]",
-                  "[--tile-plan lists|groups] [--render-target auto|fbo|copy|pbuffer]",
+                  "[--tile-plan lists|groups] [--tile-depth on|off] [--render-target auto|fbo|copy|pbuffer]",
                   "[--ssao|--no-ssao] [--ssao-scale 1|2] [--ssao-radius R] [--ssao-strength S] [--ssao-samples N]",
                   "[--context NAME] [--egl-device N] [--gl-state-cache on|off] [--debug-gl]"},
                  "render SCENE (default data/default.scene) with the deferred shader into one image",
@@ -105,7 +107,8 @@ std::vector<CommandUsage> make_table() {
     t.push_back({"bench",
                  {"[SCENE] [--quick] [--json FILE.json] [--report FILE.md] [--size WxH] [--frames N]",
                   "[--lights own,32,256,1024,1024-overlap,32-large] [--light-geometry LIST]\n"
-                 "                 [--tile-size N] [--tile-lights N] [--tile-plan lists|groups] [--context NAME]"},
+                 "                 [--tile-size N] [--tile-lights N] [--tile-plan lists|groups] [--tile-depth on|off]\n"
+                 "                 [--context NAME]"},
                  "depth path x scissor x skips x encodings x lights vs forward: times, fragments, error",
                  "  SCENE                   scene to measure (default: data/default.scene and\n"
                  "                          tests/data/analytic.scene)\n"
@@ -123,7 +126,8 @@ std::vector<CommandUsage> make_table() {
                  "                          (default all four)\n"
                  "  --tile-size N           the tiles rows' tile side in pixels, 8..512 (default 32)\n"
                  "  --tile-lights N         the tiles rows' lights per pass, 1..32 (default 8)\n"
-                 "  --tile-plan lists|groups  the tiles rows' plan (default lists)\n" +
+                 "  --tile-plan lists|groups  the tiles rows' plan (default lists)\n"
+                 "  --tile-depth on|off     the tiles rows' depth culling (default on)\n" +
                      std::string(kContextOption)});
     t.push_back({"stress",
                  {"[--quick] [--json FILE] [--report FILE.md] [--plot FILE.png] [--only TEXT]",

@@ -34,8 +34,22 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     std::vector<ScissorRect> rects(lights.size());
     for (size_t i = 0; i < lights.size(); ++i) rects[i] = lights[i].rect;
     const bool groups = opts_.tile_plan == TileGrouping::groups;
-    const TilePlan plan = groups ? plan_tile_groups(rects, w_, h_, opts_.tile_size, opts_.tile_lights)
-                                 : plan_tiles(rects, w_, h_, opts_.tile_size, opts_.tile_lights, tile_batch_);
+    // Depth culling (tile_depth.cpp): most of a tile's rectangle-overlapping lights lie in front of
+    // or behind all of its surfaces (1024-overlap at 256x256: 6.6M tile-pixel-light pairs from the
+    // rectangles, 0.6M pixel-light pairs inside a sphere).
+    TileDepth depth;
+    if (opts_.tile_depth) depth.tiles = tile_depth_spans();
+    const TileDepth* cull = depth.tiles.empty() ? nullptr : &depth;
+    if (cull) {
+        depth.lights.resize(lights.size());
+        for (size_t i = 0; i < lights.size(); ++i) {
+            const LightParams& p = lights[i].params;
+            if (p.color.w < 1.5f) depth.lights[i] = light_depth_span(p.pos.z, p.pos.w);  // directional: all
+        }
+    }
+    const TilePlan plan = groups ? plan_tile_groups(rects, w_, h_, opts_.tile_size, opts_.tile_lights, cull)
+                                 : plan_tiles(rects, w_, h_, opts_.tile_size, opts_.tile_lights, tile_batch_, cull);
+    stats.tile_depth = cull != nullptr;
 
     // The tutorial's cheaper point-light shader where every light of the frame allows it (as quad
     // picks per light): the general one evaluates every type's terms for every light.

@@ -98,6 +98,7 @@ struct ShaderOptions {
     int tile_lights = 8;            // tiles: lights per pass (the shader's constant loop bound)
     RenderTarget render_target = RenderTarget::automatic;
     TileGrouping tile_plan = TileGrouping::lists;
+    bool tile_depth = true;         // tiles: leave out a tile's lights that miss its surfaces' depth span (tile_depth.cpp)
     SsaoOptions ssao;
 };
 

@@ -1,6 +1,7 @@
 #include "deferred/tile_plan.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace dsr {
@@ -17,20 +18,37 @@ unsigned morton2(unsigned x, unsigned y) {
     return spread(x) | (spread(y) << 1);
 }
 
+DepthSpan light_depth_span(float z, float radius) {
+    // 1e-5 relative: a thousand times float's rounding of z - zl in the shader and of the spans here.
+    const float margin = 1e-5f * (std::fabs(z) + std::fabs(radius)) + 1e-30f;
+    return DepthSpan{z - radius - margin, z + radius + margin};
+}
+
 namespace {
 
-// The rectangles clipped to the screen, and the non-empty ones' indices in Morton order of their
-// centre's tile (stable: equal codes keep the input order).
+// Whether light l may shade tile (x, y): always without depth culling.
+bool depth_meets(const TileDepth* depth, int l, int x, int y, int tiles_x) {
+    return !depth || spans_meet(depth->lights[size_t(l)], depth->tiles[size_t(y) * tiles_x + x]);
+}
+
+// The rectangles clipped to the screen, and the indices of the lights that reach some tile
+// (non-empty rectangle; with depth, a tile of it whose span meets the light's) in Morton order of
+// their centre's tile (stable: equal codes keep the input order).
 std::vector<int> morton_order(const std::vector<ScissorRect>& rects, int width, int height, int ts,
-                              std::vector<ScissorRect>& clipped) {
+                              std::vector<ScissorRect>& clipped, const TileDepth* depth) {
     clipped.assign(rects.size(), ScissorRect{});
     std::vector<int> order;
+    const int tx = (width + ts - 1) / ts;
     for (size_t i = 0; i < rects.size(); ++i) {
         ScissorRect r = rects[i];
         r.x0 = std::max(r.x0, 0), r.y0 = std::max(r.y0, 0);
         r.x1 = std::min(r.x1, width), r.y1 = std::min(r.y1, height);
         clipped[i] = r;
-        if (!r.empty()) order.push_back(int(i));
+        if (r.empty()) continue;
+        bool reaches = !depth;
+        for (int y = r.y0 / ts; y <= (r.y1 - 1) / ts && !reaches; ++y)
+            for (int x = r.x0 / ts; x <= (r.x1 - 1) / ts && !reaches; ++x) reaches = depth_meets(depth, int(i), x, y, tx);
+        if (reaches) order.push_back(int(i));
     }
     std::vector<unsigned> key(rects.size(), 0);
     for (int i : order) {
@@ -44,13 +62,13 @@ std::vector<int> morton_order(const std::vector<ScissorRect>& rects, int width, 
 }  // namespace
 
 TilePlan plan_tile_groups(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
-                          int lights_per_pass) {
+                          int lights_per_pass, const TileDepth* depth) {
     TilePlan plan;
     if (width <= 0 || height <= 0 || tile_size <= 0 || lights_per_pass <= 0) return plan;
     const int ts = tile_size, n = lights_per_pass;
     const int tx = (width + ts - 1) / ts, ty = (height + ts - 1) / ts;
     std::vector<ScissorRect> clipped;
-    const std::vector<int> order = morton_order(rects, width, height, ts, clipped);
+    const std::vector<int> order = morton_order(rects, width, height, ts, clipped, depth);
     std::vector<char> covered(size_t(tx) * ty);
     for (size_t s = 0; s < order.size(); s += size_t(n)) {
         plan.batches.emplace_back(order.begin() + long(s), order.begin() + long(std::min(order.size(), s + size_t(n))));
@@ -59,7 +77,8 @@ TilePlan plan_tile_groups(const std::vector<ScissorRect>& rects, int width, int 
         for (int l : group) {
             const ScissorRect& r = clipped[size_t(l)];
             for (int y = r.y0 / ts; y <= (r.y1 - 1) / ts; ++y)
-                for (int x = r.x0 / ts; x <= (r.x1 - 1) / ts; ++x) covered[size_t(y) * tx + x] = 1;
+                for (int x = r.x0 / ts; x <= (r.x1 - 1) / ts; ++x)
+                    if (depth_meets(depth, l, x, y, tx)) covered[size_t(y) * tx + x] = 1;
         }
         TileDraw d;
         d.batch = int(plan.batches.size()) - 1;
@@ -77,13 +96,13 @@ TilePlan plan_tile_groups(const std::vector<ScissorRect>& rects, int width, int 
 }
 
 TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
-                    int lights_per_pass, int batch_size) {
+                    int lights_per_pass, int batch_size, const TileDepth* depth) {
     TilePlan plan;
     if (width <= 0 || height <= 0 || tile_size <= 0 || lights_per_pass <= 0 || batch_size <= 0) return plan;
     const int ts = tile_size, n = lights_per_pass;
     const int tx = (width + ts - 1) / ts, ty = (height + ts - 1) / ts;
     std::vector<ScissorRect> clipped;
-    const std::vector<int> order = morton_order(rects, width, height, ts, clipped);
+    const std::vector<int> order = morton_order(rects, width, height, ts, clipped, depth);
     for (size_t s = 0; s < order.size(); s += size_t(batch_size))
         plan.batches.emplace_back(order.begin() + long(s), order.begin() + long(std::min(order.size(), s + size_t(batch_size))));
 
@@ -96,6 +115,7 @@ TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height
             const ScissorRect& r = clipped[size_t(batch[size_t(slot)])];
             for (int y = r.y0 / ts; y <= (r.y1 - 1) / ts; ++y)
                 for (int x = r.x0 / ts; x <= (r.x1 - 1) / ts; ++x) {
+                    if (!depth_meets(depth, batch[size_t(slot)], x, y, tx)) continue;
                     std::vector<int>& bin = bins[size_t(y) * tx + x];
                     bin.push_back(slot);
                     most = std::max(most, bin.size());
