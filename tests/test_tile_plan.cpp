@@ -16,18 +16,23 @@ using namespace dsr;
 
 namespace {
 
-// Brute force: some z lies in both spans.
-bool share_a_z(const DepthSpan& a, const DepthSpan& b) { return std::max(a.lo, b.lo) <= std::min(a.hi, b.hi); }
+// Brute force for the plans: the pair is shaded iff the light reaches the tile's box (sphere_meets_box
+// has its own brute-force test below).
+bool share_a_z(const TileDepth& d, int l, int tile) { return sphere_meets_box(d.lights[size_t(l)], d.tiles[size_t(tile)]); }
 
-// Random depth spans: per light around z in [-50, -1] with radius [0, 6] (every 7th unbounded, as a
-// directional light); per tile a surface span, every 5th empty (background only).
+// Random culling data: per light a sphere in [-20, 20]^2 x [-50, -1] with radius [0, 6] (every 7th
+// unbounded, as a directional light); per tile a box, every 5th empty (background only).
 TileDepth random_depth(std::mt19937& rng, size_t lights, int tiles) {
-    std::uniform_real_distribution<float> z(-50.0f, -1.0f), r(0.0f, 6.0f), dz(0.0f, 10.0f);
+    std::uniform_real_distribution<float> xy(-20.0f, 20.0f), z(-50.0f, -1.0f), r(0.0f, 6.0f), dz(0.0f, 10.0f);
     TileDepth d;
-    for (size_t i = 0; i < lights; ++i) d.lights.push_back(i % 7 == 3 ? DepthSpan{} : light_depth_span(z(rng), r(rng)));
+    for (size_t i = 0; i < lights; ++i)
+        d.lights.push_back(i % 7 == 3 ? LightBound{} : LightBound{glm::vec3(xy(rng), xy(rng), z(rng)), r(rng)});
     for (int t = 0; t < tiles; ++t) {
-        const float lo = z(rng);
-        d.tiles.push_back(t % 5 == 2 ? DepthSpan{1e30f, -1e30f} : DepthSpan{lo, lo + dz(rng)});
+        TileBox b;
+        b.lo = glm::vec3(xy(rng), xy(rng), z(rng));
+        b.hi = b.lo + glm::vec3(dz(rng), dz(rng), dz(rng));
+        b.empty = t % 5 == 2;
+        d.tiles.push_back(b);
     }
     return d;
 }
@@ -75,7 +80,7 @@ void check_plan(const std::vector<ScissorRect>& rects, int w, int h, int ts, int
                 const int y0 = std::max(r.y0, y * ts), y1 = std::min({r.y1, (y + 1) * ts, h});
                 const int tiles_x = (w + ts - 1) / ts;
                 if (x1 > x0 && y1 > y0 &&
-                    (!depth || share_a_z(depth->lights[size_t(i)], depth->tiles[size_t(y) * tiles_x + x]))) {
+                    (!depth || share_a_z(*depth, i, y * tiles_x + x))) {
                     want.insert(i);
                     on_screen.insert(i);
                 }
@@ -106,20 +111,66 @@ TEST(TilePlan, EveryOverlapShadedOnceAgainstBruteForce) {
     }
 }
 
-// A light's span holds every surface z the shader's depth test (abs(z - zl) > r rejects, in float)
-// lets through, and nothing far outside it.
-TEST(TilePlan, LightDepthSpanHoldsWhatTheDepthTestPasses) {
-    std::mt19937 rng(3);
+// tile_box holds every surface point of its pixels (pixel centres on their view rays, z in the
+// span), computed as light.frag reconstructs it; an empty span gives an empty box.
+TEST(TilePlan, TileBoxHoldsEverySurfacePointOfItsPixels) {
+    std::mt19937 rng(5);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    for (int trial = 0; trial < 2000; ++trial) {
-        const float zl = -std::pow(10.0f, 6.0f * u(rng) - 2.0f), r = std::pow(10.0f, 5.0f * u(rng) - 2.0f);
-        const DepthSpan s = light_depth_span(zl, r);
-        for (int k = 0; k <= 64; ++k) {  // surface z across [zl - 1.01 r, zl + 1.01 r]
-            const float z = zl + r * (-1.01f + 2.02f * float(k) / 64.0f);
-            if (!(std::fabs(z - zl) > r)) EXPECT_TRUE(z >= s.lo && z <= s.hi) << zl << " " << r << " " << z;
+    EXPECT_TRUE(tile_box(DepthSpan{1e30f, -1e30f}, 0, 0, 8, 8, glm::vec4(0.01f, 0.01f, -1, -1)).empty);
+    for (int trial = 0; trial < 300; ++trial) {
+        const int w = 64 + trial, h = 48 + trial, ts = 8 << (trial % 3);
+        const glm::vec4 map(2.0f * (0.2f + u(rng)) / float(w), 2.0f * (0.2f + u(rng)) / float(h), -(0.2f + u(rng)), -(0.2f + u(rng)));
+        const int x0 = (trial * 7) % w / ts * ts, y0 = (trial * 5) % h / ts * ts;
+        const int x1 = std::min(w, x0 + ts), y1 = std::min(h, y0 + ts);
+        const float zlo = -std::pow(10.0f, 3.0f * u(rng)), zhi = zlo * u(rng);
+        const TileBox b = tile_box(DepthSpan{zlo, zhi}, float(x0), float(y0), float(x1), float(y1), map);
+        ASSERT_FALSE(b.empty);
+        for (int k = 0; k < 200; ++k) {
+            const float px = float(x0 + int(u(rng) * float(x1 - x0 - 1) + 0.5f)) + 0.5f;
+            const float py = float(y0 + int(u(rng) * float(y1 - y0 - 1) + 0.5f)) + 0.5f;
+            const float z = zlo + (zhi - zlo) * u(rng);
+            const glm::vec3 ray(px * map.x + map.z, py * map.y + map.w, -1.0f);
+            const glm::vec3 p(ray.x / ray.z * z, ray.y / ray.z * z, z);  // light.frag's pos
+            const float e = 1e-5f * std::fabs(z) * 4.0f;  // the rounding sphere_meets_box's margin covers
+            EXPECT_TRUE(p.x >= b.lo.x - e && p.x <= b.hi.x + e && p.y >= b.lo.y - e && p.y <= b.hi.y + e &&
+                        p.z >= b.lo.z && p.z <= b.hi.z)
+                << "trial " << trial << " point " << p.x << "," << p.y << "," << p.z;
         }
-        EXPECT_LE(s.hi - s.lo, 2.0f * r * 1.001f + 1e-4f * std::fabs(zl)) << zl << " " << r;
     }
+}
+
+// sphere_meets_box against sampling: true wherever a point of the box lies in the sphere, false
+// where the box's nearest point is clearly outside it; an unbounded light meets every non-empty box.
+TEST(TilePlan, SphereMeetsBoxAgainstSampling) {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    TileBox box{glm::vec3(0), glm::vec3(1), false};
+    EXPECT_TRUE(sphere_meets_box(LightBound{}, box));
+    box.empty = true;
+    EXPECT_FALSE(sphere_meets_box(LightBound{}, box));
+    int met = 0, missed = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        TileBox b;
+        b.lo = glm::vec3(u(rng), u(rng), u(rng)) * 10.0f - 5.0f;
+        b.hi = b.lo + glm::vec3(u(rng), u(rng), u(rng)) * 3.0f;
+        b.empty = false;
+        const LightBound l{glm::vec3(u(rng), u(rng), u(rng)) * 14.0f - 7.0f, u(rng) * 6.0f};
+        bool inside = false;  // a sampled point of the box (faces included) within the sphere
+        for (int k = 0; k < 400 && !inside; ++k) {
+            glm::vec3 t(u(rng), u(rng), u(rng));
+            if (k % 4 == 0) t[k % 3] = float((k / 4) % 2);  // on a face
+            const glm::vec3 p = b.lo + t * (b.hi - b.lo);
+            inside = glm::length(p - l.centre) <= l.radius;
+        }
+        const glm::vec3 nearest = glm::clamp(l.centre, b.lo, b.hi);
+        const bool clearly_out = glm::length(nearest - l.centre) > l.radius * 1.001f + 1e-3f;
+        const bool meets = sphere_meets_box(l, b);
+        if (inside) EXPECT_TRUE(meets) << "trial " << trial;
+        if (clearly_out) EXPECT_FALSE(meets) << "trial " << trial;
+        met += meets, missed += !meets;
+    }
+    EXPECT_GT(met, 300);  // both outcomes exercised
+    EXPECT_GT(missed, 300);
 }
 
 TEST(TilePlan, OneDrawPerLayerNotPerTile) {
@@ -170,7 +221,7 @@ TEST(TilePlan, GroupsCoverTheUnionOfTheirLightsTiles) {
         const bool cull = trial % 2 == 1;  // odd trials with depth culling
         const TilePlan plan = plan_tile_groups(rects, w, h, ts, n, cull ? &depth : nullptr);
         auto meets = [&](int l, int x, int y) {
-            return !cull || share_a_z(depth.lights[size_t(l)], depth.tiles[size_t(y) * tiles_x + x]);
+            return !cull || share_a_z(depth, l, y * tiles_x + x);
         };
         ASSERT_EQ(plan.draws.size(), plan.batches.size());
         std::set<int> seen;

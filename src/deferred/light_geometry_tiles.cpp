@@ -38,13 +38,21 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     // or behind all of its surfaces (1024-overlap at 256x256: 6.6M tile-pixel-light pairs from the
     // rectangles, 0.6M pixel-light pairs inside a sphere).
     TileDepth depth;
-    if (opts_.tile_depth) depth.tiles = tile_depth_spans();
-    const TileDepth* cull = depth.tiles.empty() ? nullptr : &depth;
+    const std::vector<DepthSpan> spans = opts_.tile_depth ? tile_depth_spans() : std::vector<DepthSpan>{};
+    const TileDepth* cull = spans.empty() ? nullptr : &depth;
     if (cull) {
+        const int ts = opts_.tile_size, tx = (w_ + ts - 1) / ts;
+        const glm::vec3 lo = corner_rays_[0], hi = corner_rays_[2];  // light.frag's ray_map
+        const glm::vec4 ray_map((hi.x - lo.x) / float(w_), (hi.y - lo.y) / float(h_), lo.x, lo.y);
+        for (size_t t = 0; t < spans.size(); ++t) {
+            const int x = int(t) % tx, y = int(t) / tx;
+            depth.tiles.push_back(tile_box(spans[t], float(x * ts), float(y * ts), float(std::min(w_, (x + 1) * ts)),
+                                           float(std::min(h_, (y + 1) * ts)), ray_map));
+        }
         depth.lights.resize(lights.size());
         for (size_t i = 0; i < lights.size(); ++i) {
             const LightParams& p = lights[i].params;
-            if (p.color.w < 1.5f) depth.lights[i] = light_depth_span(p.pos.z, p.pos.w);  // directional: all
+            if (p.color.w < 1.5f) depth.lights[i] = LightBound{glm::vec3(p.pos), p.pos.w};  // directional: unbounded
         }
     }
     const TilePlan plan = groups ? plan_tile_groups(rects, w_, h_, opts_.tile_size, opts_.tile_lights, cull)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace dsr {
@@ -18,17 +19,42 @@ unsigned morton2(unsigned x, unsigned y) {
     return spread(x) | (spread(y) << 1);
 }
 
-DepthSpan light_depth_span(float z, float radius) {
-    // 1e-5 relative: a thousand times float's rounding of z - zl in the shader and of the spans here.
-    const float margin = 1e-5f * (std::fabs(z) + std::fabs(radius)) + 1e-30f;
-    return DepthSpan{z - radius - margin, z + radius + margin};
+TileBox tile_box(const DepthSpan& span, float x0, float y0, float x1, float y1, glm::vec4 ray_map) {
+    TileBox b;
+    if (!(span.lo <= span.hi)) return b;  // empty (or NaN): no surface to light
+    // Each coordinate of ray * (-z) is bilinear in (window x or y, z): its extremes are at corners.
+    const float zs[2] = {-span.lo, -span.hi};
+    const float rx[2] = {x0 * ray_map.x + ray_map.z, x1 * ray_map.x + ray_map.z};
+    const float ry[2] = {y0 * ray_map.y + ray_map.w, y1 * ray_map.y + ray_map.w};
+    b.lo = glm::vec3(std::numeric_limits<float>::infinity());
+    b.hi = -b.lo;
+    for (float z : zs)
+        for (int i = 0; i < 2; ++i) {
+            const glm::vec3 p(rx[i] * z, ry[i] * z, -z);
+            b.lo = glm::min(b.lo, p), b.hi = glm::max(b.hi, p);
+        }
+    b.lo.z = span.lo, b.hi.z = span.hi;
+    b.empty = false;
+    return b;
+}
+
+bool sphere_meets_box(const LightBound& light, const TileBox& box) {
+    if (box.empty) return false;
+    if (light.radius < 0) return true;
+    const glm::vec3 c = light.centre;
+    const glm::vec3 d = glm::max(glm::max(box.lo - c, c - box.hi), glm::vec3(0));  // per axis, to the box
+    // 1e-5 relative: a thousand times float's rounding of the shader's and this arithmetic.
+    const glm::vec3 m = glm::max(glm::abs(box.lo), glm::abs(box.hi));
+    const float margin = 1e-5f * (std::max({m.x, m.y, m.z}) + std::fabs(c.x) + std::fabs(c.y) + std::fabs(c.z) + light.radius);
+    const float r = light.radius + margin;
+    return glm::dot(d, d) <= r * r;
 }
 
 namespace {
 
 // Whether light l may shade tile (x, y): always without depth culling.
 bool depth_meets(const TileDepth* depth, int l, int x, int y, int tiles_x) {
-    return !depth || spans_meet(depth->lights[size_t(l)], depth->tiles[size_t(y) * tiles_x + x]);
+    return !depth || sphere_meets_box(depth->lights[size_t(l)], depth->tiles[size_t(y) * tiles_x + x]);
 }
 
 // The rectangles clipped to the screen, and the indices of the lights that reach some tile

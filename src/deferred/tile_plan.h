@@ -12,6 +12,8 @@
 #include <limits>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "deferred/scissor.h"
 
 namespace dsr {
@@ -32,30 +34,44 @@ struct TilePlan {
     long long tile_light_pairs = 0;         // (tile, light) pairs shaded: what the rectangles allow
 };
 
-// An eye-space depth span [lo, hi] (eye z < 0 ahead of the camera): a light's sphere, or the
-// surfaces of a tile that the light shader can light. lo > hi: nothing (a tile of background only).
+// An eye-space depth span [lo, hi] (eye z < 0 ahead of the camera): the surfaces of a tile that the
+// light shader can light (tile_depth.frag). lo > hi: nothing (a tile of background only).
 struct DepthSpan {
     float lo = -std::numeric_limits<float>::infinity();
     float hi = std::numeric_limits<float>::infinity();
 };
-// Some z lies in both (an empty span, lo > hi, meets nothing, not even the unbounded one).
-inline bool spans_meet(const DepthSpan& a, const DepthSpan& b) {
-    return (a.lo > b.lo ? a.lo : b.lo) <= (a.hi < b.hi ? a.hi : b.hi);
-}
 
-// Depth culling for the plans (optional): a light shades a tile only where its sphere's depth span
-// meets the tile's surfaces' span. Exact, not an approximation: outside its sphere every light type
-// but the directional adds exactly 0 (lighting.glsl), and a surface of the tile whose z lies
-// outside [z - r, z + r] is outside the sphere. Lights that meet no tile are left out of the batches.
-struct TileDepth {
-    std::vector<DepthSpan> lights;  // one per rect; a directional light: the default, everything
-    std::vector<DepthSpan> tiles;   // one per tile, row by row (tiles_x * tiles_y)
+// A light for depth culling: its sphere in eye space (a spot's cone lies in the sphere about its
+// apex); radius < 0: unbounded (a directional light).
+struct LightBound {
+    glm::vec3 centre{0};
+    float radius = -1;
 };
 
-// A light's depth span as the shader's depth test sees it (abs(pos.z - z) > radius rejects),
-// widened by a few float steps of its operands so that rounding on either side never culls a
-// pair the shader would light.
-DepthSpan light_depth_span(float z, float radius);
+// The eye-space box around every surface point of a tile: empty where the tile has no surface the
+// light shader can light.
+struct TileBox {
+    glm::vec3 lo{0}, hi{0};
+    bool empty = true;
+};
+
+// The box of window pixels [x0, x1) x [y0, y1) whose surfaces' eye z lie in `span`: a surface point
+// is its pixel's view ray times -z, the ray through window point (x, y) being
+// (x * ray_map.x + ray_map.z, y * ray_map.y + ray_map.w, -1) (affine, as light.frag's ray_map).
+TileBox tile_box(const DepthSpan& span, float x0, float y0, float x1, float y1, glm::vec4 ray_map);
+
+// Whether the light's sphere reaches into the box, widened by 1e-5 of the magnitudes involved so
+// that float rounding here or in the shader never culls a pair the shader would light.
+bool sphere_meets_box(const LightBound& light, const TileBox& box);
+
+// Depth culling for the plans (optional): a light shades a tile only where its sphere reaches the
+// box around the tile's surfaces. Exact, not an approximation: outside its sphere every light type
+// but the directional adds exactly 0 (lighting.glsl). Lights that reach no tile are left out of the
+// batches.
+struct TileDepth {
+    std::vector<LightBound> lights;  // one per rect
+    std::vector<TileBox> tiles;      // one per tile, row by row (tiles_x * tiles_y)
+};
 
 // How the tiles geometry groups its work (`--tile-plan`, TileGrouping in options.h):
 //  lists   each tile shades exactly the lights whose rectangle overlaps it: batches in uniform
