@@ -146,6 +146,11 @@ int cmd_bench(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "bench: %s; GL %s (%s); %dx%d, %d warm-up + %d timed frames per row\n", sum.machine.c_str(),
                  caps.renderer.c_str(), caps.version.c_str(), cfg.w, cfg.h, cfg.warmup, cfg.frames);
 
+    // Whether the invocation counter can judge the stencil goal (gl/invocation_probe.h).
+    sum.invocation_probe = probe_invocation_counter(resource_dir("glsl120"));
+    if (sum.invocation_probe)
+        std::fprintf(stderr, "bench: invocation counter probe: %lld invocations, %lld samples passed, for %lld pixels failing the stencil test\n",
+                     sum.invocation_probe->invocations, sum.invocation_probe->samples, sum.invocation_probe->pixels);
     const double t0 = now_ms();
     bench::Runner runner(cfg, caps, resource_dir("glsl120"));
     runner.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
@@ -166,7 +171,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "bench: %zu rows in %.0f s\n", sum.rows.size(), sum.seconds);
 
     for (auto& s : scenes) sum.scenes.push_back(bench::file_stem(s));
-    sum.goals = bench::goals(sum.rows, sum.scenes[0], own_counts[0]);
+    sum.goals = bench::goals(sum.rows, sum.scenes[0], own_counts[0], sum.invocation_probe);
     std::fputs(bench::text_report(sum).c_str(), stdout);
     std::fflush(stdout);  // the table before the stderr lines that follow
 
