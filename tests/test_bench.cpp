@@ -513,7 +513,8 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     const nlohmann::ordered_json whole = bench::to_json(s);
     for (auto it = whole.begin(); it != whole.end(); ++it) top.push_back(it.key());
     EXPECT_EQ(top, (std::vector<std::string>{"machine", "gl_renderer", "gl_version", "config", "seconds", "goals",
-                                             "notes", "rows"}));
+                                             "invocation_probe", "notes", "rows"}));
+    EXPECT_TRUE(whole["invocation_probe"].is_null());  // not probed: null, never zeros
 }
 
 // The printed table: one column per header, "-" where a value does not apply, columns aligned.
