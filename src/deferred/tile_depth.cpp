@@ -1,8 +1,10 @@
-// The tiles geometry's depth culling (tile_plan.h TileDepth): a pass of one fragment per screen tile
-// (glsl120/tile_depth.frag) into a small float target, read back, gives each tile's span of surface
-// eye z; the plan then leaves out a tile's lights whose sphere lies wholly in front of or behind its
+// The tiles geometry's depth culling (tile_plan.h TileDepth): a pass of one fragment per tile column
+// and window row (glsl120/tile_depth.frag) into a small float target, read back and taken together
+// per tile, gives each tile's span of surface eye z; the plan then leaves out a tile's lights whose sphere lies wholly in front of or behind its
 // surfaces. The read-back waits for the geometry pass, which the light passes wait for anyway; on a
 // GPU it is a pipeline drain, measured with the rest of the light stage (ms.lights).
+#include <algorithm>
+
 #include "deferred/deferred_shader.h"
 #include "gl/check.h"
 #include "gl/readback.h"
@@ -25,7 +27,7 @@ void DeferredShader::make_tile_depth_buf() {
     const int ts = opts_.tile_size;
     PBufferDesc d;
     d.width = (w_ + ts - 1) / ts;
-    d.height = (h_ + ts - 1) / ts;
+    d.height = h_;  // a fragment per row of a tile
     d.color_formats = {GL_RGBA32F_ARB};
     d.pow2 = !caps_.npot;
     tile_depth_buf_ = std::make_unique<PBuffer>("tile depth", d);
@@ -35,10 +37,11 @@ void DeferredShader::make_tile_depth_buf() {
 // them so. Empty without the buffer (make_tile_depth_buf).
 std::vector<DepthSpan> DeferredShader::tile_depth_spans() {
     if (!tile_depth_buf_) return {};
-    const int tx = tile_depth_buf_->width(), ty = tile_depth_buf_->height();
+    const int ts = opts_.tile_size;
+    const int tx = tile_depth_buf_->width(), rows = tile_depth_buf_->height(), ty = (rows + ts - 1) / ts;
     fb_unbind_render(P_ACCUM);
     tile_depth_buf_->bind_render();
-    set_ortho(tx, ty);
+    set_ortho(tx, rows);
     RenderState s = fixed_function_2d();  // spans written, not blended
     s.program = tile_depth_prog_.id();
     gl_state().apply(s);
@@ -49,21 +52,22 @@ std::vector<DepthSpan> DeferredShader::tile_depth_spans() {
     tile_depth_prog_.set("texel", glm::vec2(gbuf().tex_scale_x() / float(w_), gbuf().tex_scale_y() / float(h_)));
     tile_depth_prog_.set("size", glm::vec2(float(w_), float(h_)));
     glBegin(GL_QUADS);
-    glVertex2f(0, 0), glVertex2f(float(tx), 0), glVertex2f(float(tx), float(ty)), glVertex2f(0, float(ty));
+    glVertex2f(0, 0), glVertex2f(float(tx), 0), glVertex2f(float(tx), float(rows)), glVertex2f(0, float(rows));
     glEnd();
     tile_depth_buf_->unbind_render();
     const PBuffer& pb = *tile_depth_buf_;
     glActiveTexture(GL_TEXTURE4);  // read_texture binds on the active unit: not one of the G-buffer's 0..3
-    const Image img = read_texture(pb.texture(0), tx, ty, pb.texture_width(), pb.texture_height(), false);
+    const Image img = read_texture(pb.texture(0), tx, rows, pb.texture_width(), pb.texture_height(), false);
     glActiveTexture(GL_TEXTURE0);
     fb_bind_render(P_ACCUM);  // framebuffer objects keep its contents
     set_ortho(w_, h_);
     check_gl("tile depth spans");
-    std::vector<DepthSpan> spans(size_t(tx) * ty);
-    for (int y = 0; y < ty; ++y)
+    std::vector<DepthSpan> spans(size_t(tx) * ty, DepthSpan{1e30f, -1e30f});
+    for (int r = 0; r < rows; ++r)
         for (int x = 0; x < tx; ++x) {
-            const float* p = img.at(x, y);
-            spans[size_t(y) * tx + x] = DepthSpan{p[0], p[1]};
+            const float* p = img.at(x, r);
+            DepthSpan& s = spans[size_t(r / ts) * tx + x];
+            s.lo = std::min(s.lo, p[0]), s.hi = std::max(s.hi, p[1]);
         }
     return spans;
 }
