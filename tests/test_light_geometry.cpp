@@ -200,7 +200,7 @@ TEST(LightGeometry, TilesOverSeveralBatchesMatchQuad) {
     ASSERT_GT(tiles.stats.lights_drawn, 128);  // more than one batch
     EXPECT_GT(tiles.stats.tile_light_pairs, 0);
     EXPECT_LT(tiles.stats.light_passes, quad.stats.light_passes / 4);
-    // The groups plan: one draw per 8 lights, each over the union of its lights' tiles; with depth
+    // The groups plan: one draw per tile_lights lights, each over the union of its lights' tiles; with depth
     // culling, lights that meet no tile's surfaces take no place in a group.
     ShaderOptions g = with_geometry(LightGeometry::tiles);
     g.tile_plan = TileGrouping::groups;
@@ -208,7 +208,7 @@ TEST(LightGeometry, TilesOverSeveralBatchesMatchQuad) {
     const RenderResult groups = render_scene(s, kW, kH, g);
     expect_same("tiles_groups_512", groups, quad);
     EXPECT_FALSE(groups.stats.tile_depth);
-    EXPECT_EQ(groups.stats.light_passes, (groups.stats.lights_drawn + 7) / 8);
+    EXPECT_EQ(groups.stats.light_passes, (groups.stats.lights_drawn + g.tile_lights - 1) / g.tile_lights);
     g.tile_depth = true;
     const RenderResult culled = render_scene(s, kW, kH, g);
     expect_same("tiles_groups_depth_512", culled, quad);

@@ -60,8 +60,8 @@ const char* kRendererOptions =
     "                          screen tiles with several lights per pass\n"
     "  --depth-bounds on|off   quad: EXT_depth_bounds_test on each light's depth span (default off;\n"
     "                          refused where the GL lacks it, as llvmpipe does)\n"
-    "  --tile-size N           tiles: pixels per tile side, 8..512 (default 32)\n"
-    "  --tile-lights N         tiles: lights per pass, 1..32 (default 8)\n"
+    "  --tile-size N           tiles: pixels per tile side, 8..512 (default 16)\n"
+    "  --tile-lights N         tiles: lights per pass, 1..32 (default 32)\n"
     "  --ssao, --no-ssao       screen-space ambient occlusion scaling the ambient pass (default off)\n"
     "  --ssao-scale 1|2        AO buffer at full or half resolution (default 1)\n"
     "  --ssao-radius R         hemisphere radius in eye-space units, 0.01..100 (default 0.5)\n"
@@ -124,8 +124,8 @@ std::vector<CommandUsage> make_table() {
                  "                          (default own,32,256,1024,1024-overlap,32-large)\n"
                  "  --light-geometry LIST   light geometries to measure: quad, volume, stencil, tiles\n"
                  "                          (default all four)\n"
-                 "  --tile-size N           the tiles rows' tile side in pixels, 8..512 (default 32)\n"
-                 "  --tile-lights N         the tiles rows' lights per pass, 1..32 (default 8)\n"
+                 "  --tile-size N           the tiles rows' tile side in pixels, 8..512 (default 16)\n"
+                 "  --tile-lights N         the tiles rows' lights per pass, 1..32 (default 32)\n"
                  "  --tile-plan lists|groups  the tiles rows' plan (default lists)\n"
                  "  --tile-depth on|off     the tiles rows' depth culling (default on)\n" +
                      std::string(kContextOption)});
