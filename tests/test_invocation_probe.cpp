@@ -13,7 +13,7 @@
 using namespace dsr;
 
 TEST(InvocationProbe, RejectedQuadPassesNoSample) {
-    auto ctx = create_context(ContextDesc{"osmesa", 64, 64});
+    auto ctx = create_context(ContextDesc{"osmesa", 256, 128});  // larger than the probe's quad
     const Caps caps = probe_caps();
     const std::optional<InvocationProbe> p = probe_invocation_counter(resource_dir("glsl120"), 64);
     if (!caps.pipeline_statistics) {

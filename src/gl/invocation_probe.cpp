@@ -21,6 +21,9 @@ std::optional<InvocationProbe> probe_invocation_counter(const std::string& shade
     s.stencil_front.func = s.stencil_back.func = GL_NEVER;
     s.stencil_front.write_mask = s.stencil_back.write_mask = 0;
     gl_state().apply(s);
+    GLint viewport[4];
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glViewport(0, 0, size, size);  // size x size pixels, whatever the framebuffer's size
     glMatrixMode(GL_PROJECTION);
     glPushMatrix();
     glLoadIdentity();
@@ -45,6 +48,7 @@ std::optional<InvocationProbe> probe_invocation_counter(const std::string& shade
     glMatrixMode(GL_PROJECTION);
     glPopMatrix();
     glMatrixMode(GL_MODELVIEW);
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
     gl_state().apply(fixed_function_2d());
     check_gl("invocation counter probe");
     InvocationProbe p;
