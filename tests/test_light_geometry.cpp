@@ -218,3 +218,28 @@ TEST(LightGeometry, TilesOverSeveralBatchesMatchQuad) {
 }
 
 }  // namespace dsr::test
+
+namespace dsr::test {
+
+// The tiles' depth culling reads the surfaces through the same surface_eye_z on every depth path;
+// on the position paths the stored x and y (half floats with position16) are not exactly on the
+// view ray the tile's box is built from (tile_box's xy_slack). Culling on or off, the same image
+// as quad's, with fewer tile-light pairs.
+TEST(LightGeometry, TilesDepthCullingOnThePositionPaths) {
+    const Scene s = with_overlapping_lights(default_scene(), 512);
+    for (DepthPath d : {DepthPath::position16, DepthPath::position32}) {
+        const std::string path = d == DepthPath::position16 ? "position16" : "position32";
+        const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad, d));
+        ShaderOptions o = with_geometry(LightGeometry::tiles, d);
+        o.tile_depth = false;
+        const RenderResult all = render_scene(s, kW, kH, o);
+        o.tile_depth = true;
+        const RenderResult culled = render_scene(s, kW, kH, o);
+        ASSERT_TRUE(culled.stats.tile_depth) << path;
+        expect_same("tiles_depth_" + path, culled, quad);
+        expect_same("tiles_nodepth_" + path, all, quad);
+        EXPECT_LT(culled.stats.tile_light_pairs, all.stats.tile_light_pairs) << path;
+    }
+}
+
+}  // namespace dsr::test

@@ -117,6 +117,13 @@ TEST(TilePlan, TileBoxHoldsEverySurfacePointOfItsPixels) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     EXPECT_TRUE(tile_box(DepthSpan{1e30f, -1e30f}, 0, 0, 8, 8, glm::vec4(0.01f, 0.01f, -1, -1)).empty);
+    // xy_slack widens x and y by that fraction of their magnitude, not z.
+    const TileBox tight = tile_box(DepthSpan{-4, -2}, 0, 0, 8, 8, glm::vec4(0.01f, 0.01f, -1, -1));
+    const TileBox slack = tile_box(DepthSpan{-4, -2}, 0, 0, 8, 8, glm::vec4(0.01f, 0.01f, -1, -1), 0.5f);
+    EXPECT_FLOAT_EQ(slack.lo.x, tight.lo.x * 1.5f);  // lo.x = -4: the largest magnitude
+    EXPECT_FLOAT_EQ(slack.hi.x, tight.hi.x + 0.5f * std::fabs(tight.lo.x));
+    EXPECT_EQ(slack.lo.z, tight.lo.z);
+    EXPECT_EQ(slack.hi.z, tight.hi.z);
     for (int trial = 0; trial < 300; ++trial) {
         const int w = 64 + trial, h = 48 + trial, ts = 8 << (trial % 3);
         const glm::vec4 map(2.0f * (0.2f + u(rng)) / float(w), 2.0f * (0.2f + u(rng)) / float(h), -(0.2f + u(rng)), -(0.2f + u(rng)));

@@ -19,7 +19,8 @@ unsigned morton2(unsigned x, unsigned y) {
     return spread(x) | (spread(y) << 1);
 }
 
-TileBox tile_box(const DepthSpan& span, float x0, float y0, float x1, float y1, glm::vec4 ray_map) {
+TileBox tile_box(const DepthSpan& span, float x0, float y0, float x1, float y1, glm::vec4 ray_map,
+                 float xy_slack) {
     TileBox b;
     if (!(span.lo <= span.hi)) return b;  // empty (or NaN): no surface to light
     // Each coordinate of ray * (-z) is bilinear in (window x or y, z): its extremes are at corners.
@@ -33,6 +34,10 @@ TileBox tile_box(const DepthSpan& span, float x0, float y0, float x1, float y1, 
             const glm::vec3 p(rx[i] * z, ry[i] * z, -z);
             b.lo = glm::min(b.lo, p), b.hi = glm::max(b.hi, p);
         }
+    for (int a = 0; a < 2; ++a) {
+        const float m = xy_slack * std::max(std::fabs(b.lo[a]), std::fabs(b.hi[a]));
+        b.lo[a] -= m, b.hi[a] += m;
+    }
     b.lo.z = span.lo, b.hi.z = span.hi;
     b.empty = false;
     return b;

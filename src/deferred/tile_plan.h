@@ -58,7 +58,10 @@ struct TileBox {
 // The box of window pixels [x0, x1) x [y0, y1) whose surfaces' eye z lie in `span`: a surface point
 // is its pixel's view ray times -z, the ray through window point (x, y) being
 // (x * ray_map.x + ray_map.z, y * ray_map.y + ray_map.w, -1) (affine, as light.frag's ray_map).
-TileBox tile_box(const DepthSpan& span, float x0, float y0, float x1, float y1, glm::vec4 ray_map);
+// xy_slack: a stored position's x and y may lie this far (relative) off its ray (--depth
+// position16 rounds them to half floats); the box grows by it.
+TileBox tile_box(const DepthSpan& span, float x0, float y0, float x1, float y1, glm::vec4 ray_map,
+                 float xy_slack = 0);
 
 // Whether the light's sphere reaches into the box, widened by 1e-5 of the magnitudes involved so
 // that float rounding here or in the shader never culls a pair the shader would light.
