@@ -3,8 +3,8 @@
 // per pass (§3.4.3's "multiple lights per pass"). The uniform arrays hold a batch of BATCH lights;
 // the quad's vertices carry which of them shade this tile (`ids`: two slot indices a float, hi*256 +
 // lo, 255 for none). The G-buffer is read once, then Listing 20's light loop runs over the tile's
-// lights, with light.frag's per-light tests (LIGHT_DEPTH_TEST, LIGHT_SPHERE_TEST) as `continue`; the
-// sum is blended once. A pixel no light reaches is discarded (nothing to add; light_fragments
+// lights, with light.frag's per-light tests (LIGHT_DEPTH_TEST, LIGHT_SPHERE_TEST) as early returns
+// from shade(); the sum is blended once. A pixel no light reaches is discarded (nothing to add; light_fragments
 // counts the rest).
 #include "depth_codec.glsl"
 #include "lighting.glsl"
@@ -35,6 +35,43 @@ varying vec4 ids[ID_VECS];  // --tile-plan lists: this quad's light slots
 uniform int light_count;    // --tile-plan groups: the draw's group, slots 0 .. light_count-1
 #endif
 
+// Light slot i of the batch at surface point pos: its term, clamped and rounded as its own pass
+// would blend it, added to c.
+void shade(int i, vec3 pos, vec3 normal, vec3 diffuse, vec4 specular, float shininess, inout vec3 c, inout bool any)
+{
+    vec4 lp = lightpos[i];
+    float type = lightcolor[i].w;
+#ifdef LIGHT_POINT_ONLY
+    type = 0.0;
+#endif
+#ifdef LIGHT_DEPTH_TEST
+    if (type < 1.5 && abs(pos.z - lp.z) > lp.w)
+        return;
+#endif
+#ifdef LIGHT_SPHERE_TEST
+    vec3 d = pos - lp.xyz;
+    if (type < 1.5 && dot(d, d) >= lp.w * lp.w)
+        return;
+#ifndef LIGHT_POINT_ONLY
+    if (type > 0.5 && type < 1.5 && dot(d, lightdir[i].xyz) <= length(d) * lightdir[i].w)
+        return;
+#endif
+#endif
+    vec3 t = clamp(light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, normal,
+                                      diffuse, specular.rgb, shininess), 0.0, 1.0);
+    // Each light's term clamped to [0, 1] as its own pass's blend would be and, into the RGBA8
+    // P-buffer 0, rounded to the 8-bit step that pass would have written, as this GL rounds: the
+    // sum then matches the quad geometry's image instead of differing by up to N/2 LSB.
+#ifdef QUANTIZE_8BIT
+#ifdef QUANTIZE_TRUNCATE
+    t = floor(t * QUANTIZE_TRUNCATE) / QUANTIZE_TRUNCATE;  // this GL's colour to 2^-n first
+#endif
+    t = floor(t * 255.0 + quantize_round) / 255.0;
+#endif
+    c += t;
+    any = true;
+}
+
 void main()
 {
     vec3 pos = surface_eye_pos(depth_map, texcoord, vpos, planes, zrange);
@@ -48,54 +85,27 @@ void main()
     float shininess = decode_shininess(specular.a);
     vec3 c = vec3(0.0);
     bool any = false;
-    for (int k = 0; k < MAX_LIGHTS; ++k) {
 #ifdef ID_VECS
-        // Slot k: the high or low half of float k/2 (interpolated, so rounded back to an integer).
-        float pair = floor(ids[k / 8][(k / 2) - 4 * (k / 8)] + 0.5);
+    // Two slots a float, decoded once per pair: one iteration per light (decoding each slot in its
+    // own iteration) made the light stage 1.6x slower on llvmpipe (1024-overlap, 32 lights a pass).
+    for (int k = 0; k < (MAX_LIGHTS + 1) / 2; ++k) {
+        float pair = floor(ids[k / 4][k - 4 * (k / 4)] + 0.5);
         float hi = floor(pair / 256.0);
-        float slot = (k - 2 * (k / 2)) == 0 ? hi : pair - 256.0 * hi;
-        if (slot > 254.5)
-            break;  // the quad's slots are filled from the first: no more lights
-        int i = int(slot);
+        if (hi > 254.5)
+            break;
+        shade(int(hi), pos, normal, diffuse, specular, shininess, c, any);
+        float lo = pair - 256.0 * hi;
+        if (lo > 254.5)
+            break;
+        shade(int(lo), pos, normal, diffuse, specular, shininess, c, any);
+    }
 #else
+    for (int k = 0; k < MAX_LIGHTS; ++k) {
         if (k >= light_count)
             break;
-        int i = k;  // the loop counter: the same light data in every pixel of the draw
-#endif
-        vec4 lp = lightpos[i];
-        float type = lightcolor[i].w;
-#ifdef LIGHT_POINT_ONLY
-        // Every light of the frame is a tutorial point light (Equation 2): light.frag's tests
-        // without the type checks, and lighting.glsl's point-only light_contribution.
-        type = 0.0;
-#endif
-#ifdef LIGHT_DEPTH_TEST
-        if (type < 1.5 && abs(pos.z - lp.z) > lp.w)
-            continue;
-#endif
-#ifdef LIGHT_SPHERE_TEST
-        vec3 d = pos - lp.xyz;
-        if (type < 1.5 && dot(d, d) >= lp.w * lp.w)
-            continue;
-#ifndef LIGHT_POINT_ONLY
-        if (type > 0.5 && type < 1.5 && dot(d, lightdir[i].xyz) <= length(d) * lightdir[i].w)
-            continue;
-#endif
-#endif
-        // Each light's term clamped to [0, 1] as its own pass's blend would be and, into the
-        // RGBA8 P-buffer 0, rounded to the 8-bit step that pass would have written: the sum then
-        // matches the quad geometry's image exactly instead of differing by up to N/2 LSB.
-        vec3 t = clamp(light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, normal,
-                                          diffuse, specular.rgb, shininess), 0.0, 1.0);
-#ifdef QUANTIZE_8BIT
-#ifdef QUANTIZE_TRUNCATE
-        t = floor(t * QUANTIZE_TRUNCATE) / QUANTIZE_TRUNCATE;  // this GL's colour to 2^-n first
-#endif
-        t = floor(t * 255.0 + quantize_round) / 255.0;
-#endif
-        c += t;
-        any = true;
+        shade(k, pos, normal, diffuse, specular, shininess, c, any);
     }
+#endif
     if (!any)
         discard;
     gl_FragColor = vec4(c, 1.0);

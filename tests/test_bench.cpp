@@ -378,6 +378,22 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     EXPECT_NE(g[3].find("32-large: not measured"), std::string::npos) << g[3];
     EXPECT_NE(g[4].find("largest 2 LSB"), std::string::npos) << g[4];
     EXPECT_NE(g[4].find("-> NOT met"), std::string::npos) << g[4];
+
+    // A GL whose invocation counter counts fragments the stencil rejects cannot judge the stencil
+    // goal: neither met nor NOT met, with the occlusion-query ratio as information. A GL whose
+    // counter counted none of the probe's rejected fragments is judged as before.
+    rows[1].light_fragments = 105;
+    InvocationProbe counts;
+    counts.pixels = counts.invocations = 4096;
+    const std::vector<std::string> c = bench::geometry_goals(rows, "default", 3, counts);
+    EXPECT_EQ(c[0], "stencil light_invocations <= 1.25 x ideal, default with 3 lights: cannot be judged on this GL: its "
+                    "fragment-shader invocation counter counts fragments the stencil test rejects (probe: 4096 "
+                    "invocations for 4096 pixels that all fail the stencil test); invocations 110 / 100 = 1.100; "
+                    "what passed the stencil (occlusion query) 105 / 100 = 1.050 (information)");
+    EXPECT_EQ(c[1].find("-> "), std::string::npos) << c[1];
+    InvocationProbe exact;
+    exact.pixels = 4096;
+    EXPECT_EQ(bench::geometry_goals(rows, "default", 3, exact)[0], g[0]);
 }
 
 // Where the GL cannot count (no ARB_pipeline_statistics_query, no occlusion queries), the rows say
@@ -497,7 +513,8 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     const nlohmann::ordered_json whole = bench::to_json(s);
     for (auto it = whole.begin(); it != whole.end(); ++it) top.push_back(it.key());
     EXPECT_EQ(top, (std::vector<std::string>{"machine", "gl_renderer", "gl_version", "config", "seconds", "goals",
-                                             "notes", "rows"}));
+                                             "invocation_probe", "notes", "rows"}));
+    EXPECT_TRUE(whole["invocation_probe"].is_null());  // not probed: null, never zeros
 }
 
 // The printed table: one column per header, "-" where a value does not apply, columns aligned.

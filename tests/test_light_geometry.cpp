@@ -200,12 +200,46 @@ TEST(LightGeometry, TilesOverSeveralBatchesMatchQuad) {
     ASSERT_GT(tiles.stats.lights_drawn, 128);  // more than one batch
     EXPECT_GT(tiles.stats.tile_light_pairs, 0);
     EXPECT_LT(tiles.stats.light_passes, quad.stats.light_passes / 4);
-    // The groups plan: one draw per 8 lights, each over the union of its lights' tiles.
+    // The groups plan: one draw per tile_lights lights, each over the union of its lights' tiles; with depth
+    // culling, lights that meet no tile's surfaces take no place in a group.
     ShaderOptions g = with_geometry(LightGeometry::tiles);
     g.tile_plan = TileGrouping::groups;
+    g.tile_depth = false;
     const RenderResult groups = render_scene(s, kW, kH, g);
     expect_same("tiles_groups_512", groups, quad);
-    EXPECT_EQ(groups.stats.light_passes, (groups.stats.lights_drawn + 7) / 8);
+    EXPECT_FALSE(groups.stats.tile_depth);
+    EXPECT_EQ(groups.stats.light_passes, (groups.stats.lights_drawn + g.tile_lights - 1) / g.tile_lights);
+    g.tile_depth = true;
+    const RenderResult culled = render_scene(s, kW, kH, g);
+    expect_same("tiles_groups_depth_512", culled, quad);
+    ASSERT_TRUE(culled.stats.tile_depth);
+    EXPECT_LE(culled.stats.light_passes, groups.stats.light_passes);
+    EXPECT_LT(culled.stats.tile_light_pairs, groups.stats.tile_light_pairs);
+}
+
+}  // namespace dsr::test
+
+namespace dsr::test {
+
+// The tiles' depth culling reads the surfaces through the same surface_eye_z on every depth path;
+// on the position paths the stored x and y (half floats with position16) are not exactly on the
+// view ray the tile's box is built from (tile_box's xy_slack). Culling on or off, the same image
+// as quad's, with fewer tile-light pairs.
+TEST(LightGeometry, TilesDepthCullingOnThePositionPaths) {
+    const Scene s = with_overlapping_lights(default_scene(), 512);
+    for (DepthPath d : {DepthPath::position16, DepthPath::position32}) {
+        const std::string path = d == DepthPath::position16 ? "position16" : "position32";
+        const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad, d));
+        ShaderOptions o = with_geometry(LightGeometry::tiles, d);
+        o.tile_depth = false;
+        const RenderResult all = render_scene(s, kW, kH, o);
+        o.tile_depth = true;
+        const RenderResult culled = render_scene(s, kW, kH, o);
+        ASSERT_TRUE(culled.stats.tile_depth) << path;
+        expect_same("tiles_depth_" + path, culled, quad);
+        expect_same("tiles_nodepth_" + path, all, quad);
+        EXPECT_LT(culled.stats.tile_light_pairs, all.stats.tile_light_pairs) << path;
+    }
 }
 
 }  // namespace dsr::test

@@ -1,8 +1,11 @@
 // The tiles geometry's plan (deferred/tile_plan.h) against brute force: every (tile, light) pair
-// whose rectangle overlaps the tile is shaded exactly once, no draw holds more than the pass's
+// whose rectangle overlaps the tile (and, with depth culling, whose depth spans share a z) is shaded
+// exactly once, no draw holds more than the pass's
 // lights per tile, every draw's lights come from its own batch.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <random>
 #include <set>
@@ -13,8 +16,30 @@ using namespace dsr;
 
 namespace {
 
-void check_plan(const std::vector<ScissorRect>& rects, int w, int h, int ts, int n, int b) {
-    const TilePlan plan = plan_tiles(rects, w, h, ts, n, b);
+// Brute force for the plans: the pair is shaded iff the light reaches the tile's box (sphere_meets_box
+// has its own brute-force test below).
+bool share_a_z(const TileDepth& d, int l, int tile) { return sphere_meets_box(d.lights[size_t(l)], d.tiles[size_t(tile)]); }
+
+// Random culling data: per light a sphere in [-20, 20]^2 x [-50, -1] with radius [0, 6] (every 7th
+// unbounded, as a directional light); per tile a box, every 5th empty (background only).
+TileDepth random_depth(std::mt19937& rng, size_t lights, int tiles) {
+    std::uniform_real_distribution<float> xy(-20.0f, 20.0f), z(-50.0f, -1.0f), r(0.0f, 6.0f), dz(0.0f, 10.0f);
+    TileDepth d;
+    for (size_t i = 0; i < lights; ++i)
+        d.lights.push_back(i % 7 == 3 ? LightBound{} : LightBound{glm::vec3(xy(rng), xy(rng), z(rng)), r(rng)});
+    for (int t = 0; t < tiles; ++t) {
+        TileBox b;
+        b.lo = glm::vec3(xy(rng), xy(rng), z(rng));
+        b.hi = b.lo + glm::vec3(dz(rng), dz(rng), dz(rng));
+        b.empty = t % 5 == 2;
+        d.tiles.push_back(b);
+    }
+    return d;
+}
+
+void check_plan(const std::vector<ScissorRect>& rects, int w, int h, int ts, int n, int b,
+                const TileDepth* depth = nullptr) {
+    const TilePlan plan = plan_tiles(rects, w, h, ts, n, b, depth);
     // Batches: each non-empty (on screen) light exactly once, at most b lights each.
     std::multiset<int> in_batches;
     for (const auto& batch : plan.batches) {
@@ -53,7 +78,9 @@ void check_plan(const std::vector<ScissorRect>& rects, int w, int h, int ts, int
                 const ScissorRect& r = rects[size_t(i)];
                 const int x0 = std::max(r.x0, x * ts), x1 = std::min({r.x1, (x + 1) * ts, w});
                 const int y0 = std::max(r.y0, y * ts), y1 = std::min({r.y1, (y + 1) * ts, h});
-                if (x1 > x0 && y1 > y0) {
+                const int tiles_x = (w + ts - 1) / ts;
+                if (x1 > x0 && y1 > y0 &&
+                    (!depth || share_a_z(*depth, i, y * tiles_x + x))) {
                     want.insert(i);
                     on_screen.insert(i);
                 }
@@ -79,7 +106,82 @@ TEST(TilePlan, EveryOverlapShadedOnceAgainstBruteForce) {
         const int ts = 8 << (trial % 3), n = 1 + trial % 9, b = 1 + (trial * 13) % 70;
         SCOPED_TRACE(testing::Message() << "trial " << trial << " " << w << "x" << h << " ts " << ts << " n " << n << " b " << b);
         check_plan(rects, w, h, ts, n, b);
+        const TileDepth depth = random_depth(rng, rects.size(), ((w + ts - 1) / ts) * ((h + ts - 1) / ts));
+        check_plan(rects, w, h, ts, n, b, &depth);
     }
+}
+
+// tile_box holds every surface point of its pixels (pixel centres on their view rays, z in the
+// span), computed as light.frag reconstructs it; an empty span gives an empty box.
+TEST(TilePlan, TileBoxHoldsEverySurfacePointOfItsPixels) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    EXPECT_TRUE(tile_box(DepthSpan{1e30f, -1e30f}, 0, 0, 8, 8, glm::vec4(0.01f, 0.01f, -1, -1)).empty);
+    // xy_slack widens x and y by that fraction of their magnitude, not z.
+    const TileBox tight = tile_box(DepthSpan{-4, -2}, 0, 0, 8, 8, glm::vec4(0.01f, 0.01f, -1, -1));
+    const TileBox slack = tile_box(DepthSpan{-4, -2}, 0, 0, 8, 8, glm::vec4(0.01f, 0.01f, -1, -1), 0.5f);
+    EXPECT_FLOAT_EQ(slack.lo.x, tight.lo.x * 1.5f);  // lo.x = -4: the largest magnitude
+    EXPECT_FLOAT_EQ(slack.hi.x, tight.hi.x + 0.5f * std::fabs(tight.lo.x));
+    EXPECT_EQ(slack.lo.z, tight.lo.z);
+    EXPECT_EQ(slack.hi.z, tight.hi.z);
+    for (int trial = 0; trial < 300; ++trial) {
+        const int w = 64 + trial, h = 48 + trial, ts = 8 << (trial % 3);
+        const glm::vec4 map(2.0f * (0.2f + u(rng)) / float(w), 2.0f * (0.2f + u(rng)) / float(h), -(0.2f + u(rng)), -(0.2f + u(rng)));
+        const int x0 = (trial * 7) % w / ts * ts, y0 = (trial * 5) % h / ts * ts;
+        const int x1 = std::min(w, x0 + ts), y1 = std::min(h, y0 + ts);
+        const float zlo = -std::pow(10.0f, 3.0f * u(rng)), zhi = zlo * u(rng);
+        const TileBox b = tile_box(DepthSpan{zlo, zhi}, float(x0), float(y0), float(x1), float(y1), map);
+        ASSERT_FALSE(b.empty);
+        for (int k = 0; k < 200; ++k) {
+            const float px = float(x0 + int(u(rng) * float(x1 - x0 - 1) + 0.5f)) + 0.5f;
+            const float py = float(y0 + int(u(rng) * float(y1 - y0 - 1) + 0.5f)) + 0.5f;
+            const float z = zlo + (zhi - zlo) * u(rng);
+            const glm::vec3 ray(px * map.x + map.z, py * map.y + map.w, -1.0f);
+            const glm::vec3 p(ray.x / ray.z * z, ray.y / ray.z * z, z);  // light.frag's pos
+            const float e = 1e-5f * std::fabs(z) * 4.0f;  // the rounding sphere_meets_box's margin covers
+            EXPECT_TRUE(p.x >= b.lo.x - e && p.x <= b.hi.x + e && p.y >= b.lo.y - e && p.y <= b.hi.y + e &&
+                        p.z >= b.lo.z && p.z <= b.hi.z)
+                << "trial " << trial << " point " << p.x << "," << p.y << "," << p.z;
+        }
+    }
+}
+
+// sphere_meets_box against sampling: true wherever a point of the box lies in the sphere, false
+// where the box's nearest point is clearly outside it; an unbounded light meets every non-empty box.
+TEST(TilePlan, SphereMeetsBoxAgainstSampling) {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    TileBox box{glm::vec3(0), glm::vec3(1), false};
+    EXPECT_TRUE(sphere_meets_box(LightBound{}, box));
+    box.empty = true;
+    EXPECT_FALSE(sphere_meets_box(LightBound{}, box));
+    int met = 0, missed = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        TileBox b;
+        b.lo = glm::vec3(u(rng), u(rng), u(rng)) * 10.0f - 5.0f;
+        b.hi = b.lo + glm::vec3(u(rng), u(rng), u(rng)) * 3.0f;
+        b.empty = false;
+        const LightBound l{glm::vec3(u(rng), u(rng), u(rng)) * 14.0f - 7.0f, u(rng) * 6.0f};
+        bool inside = false;  // a sampled point of the box (faces included) within the sphere
+        for (int k = 0; k < 400 && !inside; ++k) {
+            glm::vec3 t(u(rng), u(rng), u(rng));
+            if (k % 4 == 0) t[k % 3] = float((k / 4) % 2);  // on a face
+            const glm::vec3 p = b.lo + t * (b.hi - b.lo);
+            inside = glm::length(p - l.centre) <= l.radius;
+        }
+        const glm::vec3 nearest = glm::clamp(l.centre, b.lo, b.hi);
+        const bool clearly_out = glm::length(nearest - l.centre) > l.radius * 1.001f + 1e-3f;
+        const bool meets = sphere_meets_box(l, b);
+        if (inside) {
+            EXPECT_TRUE(meets) << "trial " << trial;
+        }
+        if (clearly_out) {
+            EXPECT_FALSE(meets) << "trial " << trial;
+        }
+        met += meets, missed += !meets;
+    }
+    EXPECT_GT(met, 300);  // both outcomes exercised
+    EXPECT_GT(missed, 300);
 }
 
 TEST(TilePlan, OneDrawPerLayerNotPerTile) {
@@ -125,7 +227,13 @@ TEST(TilePlan, GroupsCoverTheUnionOfTheirLightsTiles) {
             r.x0 = pos(rng), r.y0 = pos(rng);
             r.x1 = r.x0 + size(rng), r.y1 = r.y0 + size(rng);
         }
-        const TilePlan plan = plan_tile_groups(rects, w, h, ts, n);
+        const int tiles_x = (w + ts - 1) / ts, tiles_y = (h + ts - 1) / ts;
+        const TileDepth depth = random_depth(rng, rects.size(), tiles_x * tiles_y);
+        const bool cull = trial % 2 == 1;  // odd trials with depth culling
+        const TilePlan plan = plan_tile_groups(rects, w, h, ts, n, cull ? &depth : nullptr);
+        auto meets = [&](int l, int x, int y) {
+            return !cull || share_a_z(depth, l, y * tiles_x + x);
+        };
         ASSERT_EQ(plan.draws.size(), plan.batches.size());
         std::set<int> seen;
         for (size_t g = 0; g < plan.batches.size(); ++g) {
@@ -138,7 +246,7 @@ TEST(TilePlan, GroupsCoverTheUnionOfTheirLightsTiles) {
                 for (int y = 0; y * ts < h; ++y)
                     for (int x = 0; x * ts < w; ++x)
                         if (std::max(r.x0, x * ts) < std::min({r.x1, (x + 1) * ts, w}) &&
-                            std::max(r.y0, y * ts) < std::min({r.y1, (y + 1) * ts, h}))
+                            std::max(r.y0, y * ts) < std::min({r.y1, (y + 1) * ts, h}) && meets(l, x, y))
                             want.insert({x, y});
             }
             for (const TileQuad& q : plan.draws[g].quads) {
@@ -149,8 +257,12 @@ TEST(TilePlan, GroupsCoverTheUnionOfTheirLightsTiles) {
         }
         for (int i = 0; i < int(rects.size()); ++i) {
             const ScissorRect& r = rects[size_t(i)];
-            const bool on_screen = std::max(r.x0, 0) < std::min(r.x1, w) && std::max(r.y0, 0) < std::min(r.y1, h);
-            EXPECT_EQ(seen.count(i) == 1, on_screen) << "light " << i;
+            bool reaches = false;  // some tile its rectangle overlaps and (culling) whose span it meets
+            for (int y = 0; y < tiles_y; ++y)
+                for (int x = 0; x < tiles_x; ++x)
+                    reaches = reaches || (std::max(r.x0, x * ts) < std::min({r.x1, (x + 1) * ts, w}) &&
+                                          std::max(r.y0, y * ts) < std::min({r.y1, (y + 1) * ts, h}) && meets(i, x, y));
+            EXPECT_EQ(seen.count(i) == 1, reaches) << "light " << i;
         }
     }
 }

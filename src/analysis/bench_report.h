@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/bench_run.h"
+#include "gl/invocation_probe.h"
 #include "scene/image.h"
 
 namespace dsr::bench {
@@ -41,12 +42,17 @@ const Row* fastest_row(const std::vector<Row>& rows, const std::string& scene, i
 // "-> met" or "-> NOT met", or says it was not measured; lines starting with two spaces are
 // information about the one before (light_fragments / ideal, which the sphere test makes hold
 // by construction, is printed as such, never as "met").
-std::vector<std::string> goals(const std::vector<Row>& rows, const std::string& scene, int own_lights);
+// probe: the GL's invocation counter (gl/invocation_probe.h), for the stencil goal.
+std::vector<std::string> goals(const std::vector<Row>& rows, const std::string& scene, int own_lights,
+                               const std::optional<InvocationProbe>& probe = std::nullopt);
 // The light geometries' goals (issue 12), which goals() appends: stencil light_invocations <= 1.25 x
 // ideal at the own count and 1024; tiles >= 3x faster than quad on 1024-overlap; the best deferred
 // row >= 1.5x faster than forward single-pass on 32-large; every geometry's image within 1 LSB of
-// quad's. A goal whose rows are missing says "not measured in this run".
-std::vector<std::string> geometry_goals(const std::vector<Row>& rows, const std::string& scene, int own_lights);
+// quad's. A goal whose rows are missing says "not measured in this run". Where the probe found that
+// the GL's invocation counter counts fragments the stencil test rejects, the stencil goal says it
+// "cannot be judged on this GL" and gives the occlusion-query ratio as information.
+std::vector<std::string> geometry_goals(const std::vector<Row>& rows, const std::string& scene, int own_lights,
+                                        const std::optional<InvocationProbe>& probe = std::nullopt);
 // The default configuration (depth texture, scissor, every skip, RGBA8) with this light geometry.
 const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& scene, int lights,
                              const std::string& geometry);
@@ -63,6 +69,7 @@ struct Summary {
     double seconds = 0;                           // the whole sweep
     std::vector<Row> rows;
     std::vector<std::string> goals, notes;
+    std::optional<InvocationProbe> invocation_probe;  // null where the GL cannot be probed
 };
 
 // docs/benchmarks.json: machine, GL, config, seconds, goals, notes, rows.

@@ -80,6 +80,7 @@ std::unique_ptr<RowRun> deferred(const Config& cfg, const Caps& caps, const std:
     ShaderOptions o;
     o.light_geometry = geometry;
     o.tile_size = cfg.tile_size, o.tile_lights = cfg.tile_lights, o.tile_plan = cfg.tile_plan;
+    o.tile_depth = cfg.tile_depth;
     o.depth = depth;
     o.encoding = enc;
     o.scissor = scissor;

@@ -30,6 +30,7 @@ struct Config {
     int tile_size = ShaderOptions{}.tile_size;      // the tiles rows' --tile-size and --tile-lights
     int tile_lights = ShaderOptions{}.tile_lights;
     TileGrouping tile_plan = ShaderOptions{}.tile_plan;
+    bool tile_depth = ShaderOptions{}.tile_depth;
     // Light geometries with rows of their own (the default configuration with each); quad's rows
     // are always there.
     std::vector<LightGeometry> geometries = {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil,

@@ -46,6 +46,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
     std::string backend = default_context_backend();  // --context, else $DSR_CONTEXT
     int w = 0, h = 0, frames = 0, tile_size = 0, tile_lights = 0;
     bool quick = false;
+    int tile_depth = -1;  // --tile-depth; -1: the default
     while (!args.done()) {
         std::string a = args.next();
         if (a == "--quick") quick = true;
@@ -58,6 +59,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
         else if (a == "--tile-size") tile_size = args.int_value(a, 8, 512);
         else if (a == "--tile-lights") tile_lights = args.int_value(a, 1, 32);
         else if (a == "--tile-plan") tile_plan = args.value(a);
+        else if (a == "--tile-depth") tile_depth = args.on_off(a) ? 1 : 0;
         else if (a == "--context") backend = args.value(a);
         else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
         else if (scene_path.empty()) scene_path = a;
@@ -70,6 +72,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
     if (frames) cfg.frames = frames;
     if (tile_size) cfg.tile_size = tile_size;
     if (tile_lights) cfg.tile_lights = tile_lights;
+    if (tile_depth >= 0) cfg.tile_depth = tile_depth == 1;
     if (!tile_plan.empty()) {
         if (tile_plan != "lists" && tile_plan != "groups") args.fail("--tile-plan: expected lists or groups, got '" + tile_plan + "'");
         cfg.tile_plan = tile_plan == "groups" ? TileGrouping::groups : TileGrouping::lists;
@@ -143,6 +146,11 @@ int cmd_bench(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "bench: %s; GL %s (%s); %dx%d, %d warm-up + %d timed frames per row\n", sum.machine.c_str(),
                  caps.renderer.c_str(), caps.version.c_str(), cfg.w, cfg.h, cfg.warmup, cfg.frames);
 
+    // Whether the invocation counter can judge the stencil goal (gl/invocation_probe.h).
+    sum.invocation_probe = probe_invocation_counter(resource_dir("glsl120"));
+    if (sum.invocation_probe)
+        std::fprintf(stderr, "bench: invocation counter probe: %lld invocations, %lld samples passed, for %lld pixels failing the stencil test\n",
+                     sum.invocation_probe->invocations, sum.invocation_probe->samples, sum.invocation_probe->pixels);
     const double t0 = now_ms();
     bench::Runner runner(cfg, caps, resource_dir("glsl120"));
     runner.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
@@ -163,7 +171,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "bench: %zu rows in %.0f s\n", sum.rows.size(), sum.seconds);
 
     for (auto& s : scenes) sum.scenes.push_back(bench::file_stem(s));
-    sum.goals = bench::goals(sum.rows, sum.scenes[0], own_counts[0]);
+    sum.goals = bench::goals(sum.rows, sum.scenes[0], own_counts[0], sum.invocation_probe);
     std::fputs(bench::text_report(sum).c_str(), stdout);
     std::fflush(stdout);  // the table before the stderr lines that follow
 

@@ -48,6 +48,8 @@ const char* kRendererOptions =
     "  --tile-plan lists|groups\n"
     "                          tiles: each tile its exact light list (default), or lights in\n"
     "                          screen-order groups drawn over the union of their tiles\n"
+    "  --tile-depth on|off     tiles: leave out each tile's lights whose sphere misses the depth\n"
+    "                          span of its surfaces (default on; needs float targets)\n"
     "  --render-target auto|fbo|copy|pbuffer\n"
     "                          where the G-buffer and P-buffers are drawn: framebuffer objects,\n"
     "                          the main buffer copied to textures, or EGL pbuffer surfaces copied\n"
@@ -58,8 +60,8 @@ const char* kRendererOptions =
     "                          screen tiles with several lights per pass\n"
     "  --depth-bounds on|off   quad: EXT_depth_bounds_test on each light's depth span (default off;\n"
     "                          refused where the GL lacks it, as llvmpipe does)\n"
-    "  --tile-size N           tiles: pixels per tile side, 8..512 (default 32)\n"
-    "  --tile-lights N         tiles: lights per pass, 1..32 (default 8)\n"
+    "  --tile-size N           tiles: pixels per tile side, 8..512 (default 16)\n"
+    "  --tile-lights N         tiles: lights per pass, 1..32 (default 32)\n"
     "  --ssao, --no-ssao       screen-space ambient occlusion scaling the ambient pass (default off)\n"
     "  --ssao-scale 1|2        AO buffer at full or half resolution (default 1)\n"
     "  --ssao-radius R         hemisphere radius in eye-space units, 0.01..100 (default 0.5)\n"
@@ -90,7 +92,7 @@ std::vector<CommandUsage> make_table() {
                   "[--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]",
                   "[--aa-kernel text|listing] [--aa-weight W]",
                   "[--light-geometry quad|volume|stencil|tiles] [--depth-bounds on|off] [--tile-size N] [--tile-lights N]",
-                  "[--tile-plan lists|groups] [--render-target auto|fbo|copy|pbuffer]",
+                  "[--tile-plan lists|groups] [--tile-depth on|off] [--render-target auto|fbo|copy|pbuffer]",
                   "[--ssao|--no-ssao] [--ssao-scale 1|2] [--ssao-radius R] [--ssao-strength S] [--ssao-samples N]",
                   "[--show-lights|--no-show-lights] [--depth-handoff auto|blit|pass]",
                   "[--context NAME] [--egl-device N] [--gl-state-cache on|off] [--debug-gl]"},
@@ -113,7 +115,8 @@ std::vector<CommandUsage> make_table() {
     t.push_back({"bench",
                  {"[SCENE] [--quick] [--json FILE.json] [--report FILE.md] [--size WxH] [--frames N]",
                   "[--lights own,32,256,1024,1024-overlap,32-large] [--light-geometry LIST]\n"
-                 "                 [--tile-size N] [--tile-lights N] [--tile-plan lists|groups] [--context NAME]"},
+                 "                 [--tile-size N] [--tile-lights N] [--tile-plan lists|groups] [--tile-depth on|off]\n"
+                 "                 [--context NAME]"},
                  "depth path x scissor x skips x encodings x lights vs forward: times, fragments, error",
                  "  SCENE                   scene to measure (default: data/default.scene and\n"
                  "                          tests/data/analytic.scene)\n"
@@ -129,9 +132,10 @@ std::vector<CommandUsage> make_table() {
                  "                          (default own,32,256,1024,1024-overlap,32-large)\n"
                  "  --light-geometry LIST   light geometries to measure: quad, volume, stencil, tiles\n"
                  "                          (default all four)\n"
-                 "  --tile-size N           the tiles rows' tile side in pixels, 8..512 (default 32)\n"
-                 "  --tile-lights N         the tiles rows' lights per pass, 1..32 (default 8)\n"
-                 "  --tile-plan lists|groups  the tiles rows' plan (default lists)\n" +
+                 "  --tile-size N           the tiles rows' tile side in pixels, 8..512 (default 16)\n"
+                 "  --tile-lights N         the tiles rows' lights per pass, 1..32 (default 32)\n"
+                 "  --tile-plan lists|groups  the tiles rows' plan (default lists)\n"
+                 "  --tile-depth on|off     the tiles rows' depth culling (default on)\n" +
                      std::string(kContextOption)});
     t.push_back({"stress",
                  {"[--quick] [--json FILE] [--report FILE.md] [--plot FILE.png] [--only TEXT]",

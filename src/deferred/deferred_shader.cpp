@@ -109,6 +109,7 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
         light_tiles_any_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);
         tdefs.push_back("LIGHT_POINT_ONLY");  // frames of tutorial point lights only, as quad's light_prog_
         light_tiles_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);
+        make_tile_depth_buf();  // and its program (tile_depth.cpp)
     }
     if (opts.ssao.on) build_ssao_programs();
     build_depth_handoff();
@@ -140,6 +141,7 @@ void DeferredShader::resize(int width, int height) {
     w_ = width;
     h_ = height;
     position_buf_.reset();  // rebuilt at the new size on next use
+    if (tile_depth_buf_) make_tile_depth_buf();
     check_gl("resizing the deferred buffers");
 }
 

@@ -23,6 +23,7 @@
 #include "deferred/light_params.h"
 #include "deferred/light_volume.h"
 #include "deferred/scissor.h"
+#include "deferred/tile_plan.h"
 #include "gl/caps.h"
 #include "gl/frame_timer.h"
 #include "gl/pbuffer.h"
@@ -73,6 +74,7 @@ struct FrameStats {
     int light_passes = 0;
     int lights_as_quads = 0;
     long long tile_light_pairs = 0;  // tiles: (tile, light) pairs its plan shaded (tile_plan.h)
+    bool tile_depth = false;         // tiles: the plan culled by the tiles' depth spans (tile_depth.cpp)
     // The forward stage (issue 13): markers drawn, transparent objects blended and their draws.
     int light_markers = 0;
     int transparent_objects = 0;
@@ -275,6 +277,10 @@ private:
     Program light_tiles_any_prog_;      // the same for frames with spot, directional or attenuated lights
     int tile_batch_ = 0;                // lights light_tiles.frag holds in its uniform arrays
     float tile_round_ = 0.5f;           // light_tiles.frag's quantize_round (gl/rounding_probe.h)
+    Program tile_depth_prog_;           // tile_depth.frag: each tile's span of surface eye z (tile_depth.cpp)
+    std::unique_ptr<PBuffer> tile_depth_buf_;  // one RGBA32F texel per tile
+    void make_tile_depth_buf();
+    std::vector<DepthSpan> tile_depth_spans();
     Program depth_copy_prog_;           // depth_copy.frag: the depth hand-off
     Program ssao_prog_;                 // ssao.frag (with --ssao)
     Program ssao_blur_prog_;            // ssao_blur.frag (with --ssao)

@@ -34,8 +34,32 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     std::vector<ScissorRect> rects(lights.size());
     for (size_t i = 0; i < lights.size(); ++i) rects[i] = lights[i].rect;
     const bool groups = opts_.tile_plan == TileGrouping::groups;
-    const TilePlan plan = groups ? plan_tile_groups(rects, w_, h_, opts_.tile_size, opts_.tile_lights)
-                                 : plan_tiles(rects, w_, h_, opts_.tile_size, opts_.tile_lights, tile_batch_);
+    // Depth culling (tile_depth.cpp): most of a tile's rectangle-overlapping lights lie in front of
+    // or behind all of its surfaces (1024-overlap at 256x256: 6.6M tile-pixel-light pairs from the
+    // rectangles, 0.6M pixel-light pairs inside a sphere).
+    TileDepth depth;
+    const std::vector<DepthSpan> spans = opts_.tile_depth ? tile_depth_spans() : std::vector<DepthSpan>{};
+    const TileDepth* cull = spans.empty() ? nullptr : &depth;
+    if (cull) {
+        const int ts = opts_.tile_size, tx = (w_ + ts - 1) / ts;
+        const glm::vec3 lo = corner_rays_[0], hi = corner_rays_[2];  // light.frag's ray_map
+        const glm::vec4 ray_map((hi.x - lo.x) / float(w_), (hi.y - lo.y) / float(h_), lo.x, lo.y);
+        // position16 stores x and y as half floats, up to 2^-11 off the ray, relative: two such steps.
+        const float slack = opts_.depth == DepthPath::position16 ? 1.0f / 1024.0f : 0.0f;
+        for (size_t t = 0; t < spans.size(); ++t) {
+            const int x = int(t) % tx, y = int(t) / tx;
+            depth.tiles.push_back(tile_box(spans[t], float(x * ts), float(y * ts), float(std::min(w_, (x + 1) * ts)),
+                                           float(std::min(h_, (y + 1) * ts)), ray_map, slack));
+        }
+        depth.lights.resize(lights.size());
+        for (size_t i = 0; i < lights.size(); ++i) {
+            const LightParams& p = lights[i].params;
+            if (p.color.w < 1.5f) depth.lights[i] = LightBound{glm::vec3(p.pos), p.pos.w};  // directional: unbounded
+        }
+    }
+    const TilePlan plan = groups ? plan_tile_groups(rects, w_, h_, opts_.tile_size, opts_.tile_lights, cull)
+                                 : plan_tiles(rects, w_, h_, opts_.tile_size, opts_.tile_lights, tile_batch_, cull);
+    stats.tile_depth = cull != nullptr;
 
     // The tutorial's cheaper point-light shader where every light of the frame allows it (as quad
     // picks per light): the general one evaluates every type's terms for every light.

@@ -91,6 +91,7 @@ std::vector<RenderOption> make_table() {
         "tile-plan", {"lists", "groups"},
         [](const RenderOptions& r) { return std::string(r.shader.tile_plan == TileGrouping::groups ? "groups" : "lists"); },
         [](RenderOptions& r, const std::string& v) { r.shader.tile_plan = v == "groups" ? TileGrouping::groups : TileGrouping::lists; }));
+    t.push_back(switch_option("tile-depth", &ShaderOptions::tile_depth));
     t.push_back(choice(
         "lighting", {"equations", "listing"},
         [](const RenderOptions& r) { return r.shader.listing2_literal ? "listing" : "equations"; },

@@ -9,7 +9,10 @@
 //     vertices carrying its lights' indices into the batch. So a frame is a handful of draws, not
 //     one per tile (the earlier plan: 2040 draws at 1920x1080, 13 ms of CPU submission on the H200).
 #pragma once
+#include <limits>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "deferred/scissor.h"
 
@@ -31,6 +34,48 @@ struct TilePlan {
     long long tile_light_pairs = 0;         // (tile, light) pairs shaded: what the rectangles allow
 };
 
+// An eye-space depth span [lo, hi] (eye z < 0 ahead of the camera): the surfaces of a tile that the
+// light shader can light (tile_depth.frag). lo > hi: nothing (a tile of background only).
+struct DepthSpan {
+    float lo = -std::numeric_limits<float>::infinity();
+    float hi = std::numeric_limits<float>::infinity();
+};
+
+// A light for depth culling: its sphere in eye space (a spot's cone lies in the sphere about its
+// apex); radius < 0: unbounded (a directional light).
+struct LightBound {
+    glm::vec3 centre{0};
+    float radius = -1;
+};
+
+// The eye-space box around every surface point of a tile: empty where the tile has no surface the
+// light shader can light.
+struct TileBox {
+    glm::vec3 lo{0}, hi{0};
+    bool empty = true;
+};
+
+// The box of window pixels [x0, x1) x [y0, y1) whose surfaces' eye z lie in `span`: a surface point
+// is its pixel's view ray times -z, the ray through window point (x, y) being
+// (x * ray_map.x + ray_map.z, y * ray_map.y + ray_map.w, -1) (affine, as light.frag's ray_map).
+// xy_slack: a stored position's x and y may lie this far (relative) off its ray (--depth
+// position16 rounds them to half floats); the box grows by it.
+TileBox tile_box(const DepthSpan& span, float x0, float y0, float x1, float y1, glm::vec4 ray_map,
+                 float xy_slack = 0);
+
+// Whether the light's sphere reaches into the box, widened by 1e-5 of the magnitudes involved so
+// that float rounding here or in the shader never culls a pair the shader would light.
+bool sphere_meets_box(const LightBound& light, const TileBox& box);
+
+// Depth culling for the plans (optional): a light shades a tile only where its sphere reaches the
+// box around the tile's surfaces. Exact, not an approximation: outside its sphere every light type
+// but the directional adds exactly 0 (lighting.glsl). Lights that reach no tile are left out of the
+// batches.
+struct TileDepth {
+    std::vector<LightBound> lights;  // one per rect
+    std::vector<TileBox> tiles;      // one per tile, row by row (tiles_x * tiles_y)
+};
+
 // How the tiles geometry groups its work (`--tile-plan`, TileGrouping in options.h):
 //  lists   each tile shades exactly the lights whose rectangle overlaps it: batches in uniform
 //          arrays, per-quad light slots, one draw per batch and layer (above); the shader indexes
@@ -39,9 +84,9 @@ struct TilePlan {
 //          tile any of its lights overlaps, each tile shading the whole group: the shader's loop
 //          indexes the arrays with its counter, so the light data is uniform across the draw.
 // rects: each light's scissor rectangle (empty ones are left out); the screen width x height cut
-// into tile_size tiles. batch_size >= 1, lights_per_pass >= 1.
+// into tile_size tiles. batch_size >= 1, lights_per_pass >= 1. depth: null for no depth culling.
 TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
-                    int lights_per_pass, int batch_size);
+                    int lights_per_pass, int batch_size, const TileDepth* depth = nullptr);
 
 // vec4s of packed light slots a tile vertex carries (two slots per float): texture coordinates 2..
 inline int tile_id_vecs(int lights_per_pass) { return (lights_per_pass + 7) / 8; }
@@ -49,7 +94,7 @@ inline int tile_id_vecs(int lights_per_pass) { return (lights_per_pass + 7) / 8;
 // The groups plan: batches are the groups (at most lights_per_pass each), one draw per group whose
 // quads cover every tile one of its lights overlaps, each quad's slots the whole group.
 TilePlan plan_tile_groups(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
-                          int lights_per_pass);
+                          int lights_per_pass, const TileDepth* depth = nullptr);
 
 // Morton (Z-order) code of tile (x, y), x and y < 2^16: interleaved bits.
 unsigned morton2(unsigned x, unsigned y);
