@@ -143,10 +143,13 @@ run)
             --json "$out/gpu_bench_tiles_1920x1080.json" --report "$out/gpu_bench_tiles_1920x1080.md" \
             | tee "$out/gpu_bench_tiles_1920x1080.txt"
         # The tiles' depth culling reads each tile's depth span back to the CPU: what that stall
-        # costs a GPU, against the same bench without it.
-        $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-30} \
-            --lights 1024-overlap,32-large --light-geometry quad,tiles --tile-depth off \
-            --json "$out/gpu_bench_tiles_nodepth_1920x1080.json" > "$out/gpu_bench_tiles_nodepth_1920x1080.txt"
+        # costs a GPU, against the same bench without it; and the settings before the llvmpipe
+        # tuning (32-pixel tiles, 8 lights a pass).
+        for v in "nodepth:--tile-depth off" "t32l8:--tile-size 32 --tile-lights 8"; do
+            $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-30} \
+                --lights 1024-overlap,32-large --light-geometry quad,tiles ${v#*:} \
+                --json "$out/gpu_bench_tiles_${v%%:*}_1920x1080.json" > "$out/gpu_bench_tiles_${v%%:*}_1920x1080.txt"
+        done
     fi
     # The tiles geometry's other plan (groups), against quad in the same run.
     if part groups; then

@@ -172,20 +172,33 @@ float predicted_threshold(int bits, int k) {
     return -1.0f;
 }
 
+int unorm8_model_misfits(const Unorm8Rounding& r, int bits, std::string* which) {
+    int misfits = 0;
+    for (int k = 0; k < 255; ++k) {
+        const float p = predicted_threshold(bits, k);
+        if (r.threshold[k] < 0 && p < 0) continue;  // neither turns up within the sweep
+        if (r.threshold[k] < 0 || p < 0 || std::fabs(r.threshold[k] - p) > kSweepDf * 1.5f) {
+            if (which && misfits < 8) {
+                char e[64];
+                std::snprintf(e, sizeof e, " k %d: %.4f not %.4f", k, r.threshold[k], p);
+                *which += e;
+            }
+            ++misfits;
+        }
+    }
+    return misfits;
+}
+
 int unorm8_truncate_bits(const Unorm8Rounding& r) {
     if (!r.measured) return -1;
-    auto fits = [&](int bits) {
-        for (int k = 0; k < 255; ++k) {
-            const float p = predicted_threshold(bits, k);
-            if (r.threshold[k] < 0 && p < 0) continue;  // neither turns up within the sweep
-            if (r.threshold[k] < 0 || p < 0 || std::fabs(r.threshold[k] - p) > kSweepDf * 1.5f) return false;
-        }
-        return true;
-    };
-    if (fits(0)) return 0;
-    for (int bits = 8; bits <= 16; ++bits)
-        if (fits(bits)) return bits;
-    return -1;
+    // The model with the fewest thresholds off by more than a step, if that is at most 8 of 255:
+    // a k whose threshold lies within float rounding of a grid point may land a step either side.
+    int best = -1, best_misfits = 9;
+    for (int bits : {0, 8, 9, 10, 11, 12, 13, 14, 15, 16}) {
+        const int m = unorm8_model_misfits(r, bits, nullptr);
+        if (m < best_misfits) best = bits, best_misfits = m;
+    }
+    return best;
 }
 
 std::string describe(const Unorm8Rounding& r) {
@@ -217,7 +230,10 @@ std::string describe(const Unorm8Rounding& r) {
                                                " x 255): t truncated to " + std::to_string(bits) + " bits first"
                                          : "no model fits; the tiles geometry's emulation adds " +
                                                std::to_string(unorm8_round_offset(r)) + " before floor()";
-    return std::string(b) + add + "\n                  model: " + model + "\n";
+    std::string misfit;
+    const int n = bits >= 0 ? unorm8_model_misfits(r, bits, &misfit) : unorm8_model_misfits(r, 12, &misfit);
+    return std::string(b) + add + "\n                  model: " + model + "; " + std::to_string(n) + " of 255 thresholds off it" +
+           (bits >= 0 ? "" : " (against n = 12)") + (misfit.empty() ? "" : ":" + misfit) + "\n";
 }
 
 }  // namespace dsr

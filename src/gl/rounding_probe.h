@@ -47,9 +47,11 @@ float unorm8_round_offset(const Unorm8Rounding& r);
 //   0   round to nearest: byte = round(t * 255) (llvmpipe)
 //   n   t first truncated to n fractional bits, then rounded: byte = round(floor(t * 2^n) / 2^n * 255)
 //       (the H200: n = 12, from thresholds 0.5605 at k 0 down to 0.5265 at k 200)
-//   -1  none of n = 8..16 fits (or nothing was measured)
+//   -1  none of n = 8..16 fits but for at most 8 thresholds (or nothing was measured)
 // The thresholds each model predicts come from the same float arithmetic the probe's points had.
 int unorm8_truncate_bits(const Unorm8Rounding& r);
+// How many of the 255 thresholds model `bits` misses by more than a step (`which`: the first few).
+int unorm8_model_misfits(const Unorm8Rounding& r, int bits, std::string* which = nullptr);
 // The threshold model n predicts for k, on the probe's grid of f (-1: none on the grid).
 float predicted_threshold(int bits, int k);
 std::string describe(const Unorm8Rounding& r);
