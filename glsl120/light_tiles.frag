@@ -21,8 +21,8 @@ uniform vec4 lightatt[BATCH];
 uniform vec2 planes;
 #ifdef QUANTIZE_8BIT
 // How this GL converts a colour to 8 bits (gl/rounding_probe.h), so each term rounds as its own
-// pass would: QUANTIZE_TRUNCATE 2^n where it truncates to n bits first (the H200: 4096.0), then
-// round to nearest (quantize_round 0.5); where no model fits the probe, 1 - the median threshold.
+// pass would: to nearest (quantize_round 0.5); QUANTIZE_TRUNCATE 2^n where it truncates to n bits
+// first and rounds ties down (the H200: 4096.0); where no model fits, 1 - the median threshold.
 uniform float quantize_round;
 #endif
 uniform vec3 zrange;
@@ -64,9 +64,12 @@ void shade(int i, vec3 pos, vec3 normal, vec3 diffuse, vec4 specular, float shin
     // sum then matches the quad geometry's image instead of differing by up to N/2 LSB.
 #ifdef QUANTIZE_8BIT
 #ifdef QUANTIZE_TRUNCATE
-    t = floor(t * QUANTIZE_TRUNCATE) / QUANTIZE_TRUNCATE;  // this GL's colour to 2^-n first
-#endif
+    // This GL's colour to 2^-n first, then to nearest with a tie down (the H200's t = 0.5 gives 127).
+    t = floor(t * QUANTIZE_TRUNCATE) / QUANTIZE_TRUNCATE;
+    t = ceil(t * 255.0 - 0.5) / 255.0;
+#else
     t = floor(t * 255.0 + quantize_round) / 255.0;
+#endif
 #endif
     c += t;
     any = true;

@@ -145,7 +145,9 @@ run)
         # The tiles' depth culling reads each tile's depth span back to the CPU: what that stall
         # costs a GPU, against the same bench without it; and the settings before the llvmpipe
         # tuning (32-pixel tiles, 8 lights a pass).
-        for v in "nodepth:--tile-depth off" "t32l8:--tile-size 32 --tile-lights 8"; do
+        variants=("nodepth:--tile-depth off" "t32l8:--tile-size 32 --tile-lights 8")
+        [ "${GPU_BENCH_TILES_VARIANTS:-all}" = none ] && variants=()
+        for v in "${variants[@]}"; do
             $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-30} \
                 --lights 1024-overlap,32-large --light-geometry quad,tiles ${v#*:} \
                 --json "$out/gpu_bench_tiles_${v%%:*}_1920x1080.json" > "$out/gpu_bench_tiles_${v%%:*}_1920x1080.txt"

@@ -218,6 +218,7 @@ TEST(GlState, Unorm8TruncationModelFitsTheThresholdsItMade) {
     EXPECT_FLOAT_EQ(predicted_threshold(12, 1), 0.5565f);
     EXPECT_FLOAT_EQ(predicted_threshold(12, 100), 0.5435f);
     EXPECT_FLOAT_EQ(predicted_threshold(12, 200), 0.5265f);
+    EXPECT_FLOAT_EQ(predicted_threshold(12, 127), 0.5625f) << "the H200's tie at 127.5 goes down";
     Unorm8Rounding odd;
     odd.measured = true;
     for (int k = 0; k < 255; ++k) odd.threshold[k] = 0.6f;  // a constant late threshold: no model
