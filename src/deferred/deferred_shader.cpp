@@ -3,17 +3,14 @@
 
 #include <algorithm>
 
+#include "deferred/gpu_scene.h"
 #include "deferred/tile_plan.h"
 #include "dsr_clock.h"
-
-#include <algorithm>
-
-#include "deferred/gpu_scene.h"
-#include "forward/transparent_pass.h"
 #include "dsr_error.h"
+#include "forward/transparent_pass.h"
 #include "gl/check.h"
-#include "gl/rounding_probe.h"
 #include "gl/readback.h"
+#include "gl/rounding_probe.h"
 
 namespace dsr {
 

@@ -220,6 +220,7 @@ private:
         bool full;
     };
     std::vector<LightDraw> visible_lights(const Scene& scene, bool scissors, FrameStats& stats);
+    std::vector<LightDraw> frame_lights_;  // this frame's visible_lights (draw_lighting; the forward stage reads them)
     void set_light_uniforms(Program& prog);
     static void set_light_params(Program& prog, const LightParams& lp);
     // One file per geometry (light_geometry_*.cpp).

@@ -11,11 +11,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "deferred/culling.h"
 #include "deferred/deferred_shader.h"
 #include "deferred/gpu_scene.h"
 #include "deferred/light_marker.h"
-#include "deferred/light_volume.h"
 #include "forward/transparent_pass.h"
 #include "gl/check.h"
 #include "gl/state.h"
@@ -28,13 +26,14 @@ void DeferredShader::forward_stage(const Scene& scene, FrameStats& stats) {
     glMatrixMode(GL_MODELVIEW);
     if (opts_.show_lights) draw_light_markers(scene, stats);
     if (transparent_ && !gpu_->transparent_objects().empty()) {
-        // Every light in eye space (in double, as the light passes) and whether the frustum keeps it.
-        const auto frustum = frustum_planes(proj_ * view_);
+        // The lights the light passes drew (visible_lights: frustum-culled, in eye space), by scene
+        // index; the others reach no visible pixel, or add nothing.
         std::vector<LightParams> params(scene.lights.size());
-        std::vector<char> visible(scene.lights.size());
-        for (size_t i = 0; i < scene.lights.size(); ++i) {
-            visible[i] = !volume_outside(frustum, light_volume(scene.lights[i]));
-            params[i] = light_params(scene.lights[i], scene.camera);
+        std::vector<char> visible(scene.lights.size(), 0);
+        for (const LightDraw& l : frame_lights_) {
+            const size_t i = size_t(l.light - scene.lights.data());
+            params[i] = l.params;
+            visible[i] = 1;
         }
         const TransparentStats ts = transparent_->draw(scene, *gpu_, bounds_, params, visible);
         stats.transparent_objects = ts.objects;

@@ -5,8 +5,8 @@
 // once. The plan (tile_plan.h, pure) batches the work: a batch of lights sits in the shader's
 // uniform arrays, and one draw per batch and layer covers every tile with lights in that layer,
 // each quad's vertices carrying its lights' indices (two per float, in texture coordinates 2..5).
-// The tile's depth range is not used: on GL 2.x it needs a reduction pass read back to the CPU
-// (a stall) or another pass per tile; the in-shader depth and sphere tests reject instead.
+// With --tile-depth on, each tile's span of surface depth (tile_depth.cpp: a small pass read back,
+// a stall on a GPU) drops the tile's lights whose sphere misses its surfaces.
 #include <algorithm>
 
 #include "deferred/deferred_shader.h"

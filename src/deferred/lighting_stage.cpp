@@ -161,7 +161,8 @@ std::vector<DeferredShader::LightDraw> DeferredShader::visible_lights(const Scen
 void DeferredShader::draw_lighting(const Scene& scene, bool scissors, FrameStats& stats) {
     const auto rays = corner_rays(proj_[0][0], proj_[1][1]);
     for (int i = 0; i < 4; ++i) corner_rays_[i] = rays[i];
-    const std::vector<LightDraw> lights = visible_lights(scene, scissors, stats);
+    frame_lights_ = visible_lights(scene, scissors, stats);
+    const std::vector<LightDraw>& lights = frame_lights_;
     switch (paths_.light_geometry) {
         case LightGeometry::quad: draw_lights_quad(lights, stats); break;
         case LightGeometry::volume: draw_lights_volume(lights, stats); break;
