@@ -29,6 +29,7 @@
 #include "gl/pbuffer.h"
 #include "gl/program.h"
 #include "gl/state.h"
+#include "gl/stream_buffer.h"
 #include "scene/bounds.h"
 #include "scene/image.h"
 #include "scene/scene.h"
@@ -75,6 +76,9 @@ struct FrameStats {
     int lights_as_quads = 0;
     long long tile_light_pairs = 0;  // tiles: (tile, light) pairs its plan shaded (tile_plan.h)
     bool tile_depth = false;         // tiles: the plan culled by the tiles' depth spans (tile_depth.cpp)
+    // tiles, wall clock inside the light stage: the depth spans' two passes and read-back (which
+    // waits for the G-buffer: on a GPU, a pipeline drain), and the plan with its vertices' upload.
+    double tile_depth_ms = 0, tile_plan_ms = 0;
     // The forward stage (issue 13): markers drawn, transparent objects blended and their draws.
     int light_markers = 0;
     int transparent_objects = 0;
@@ -279,7 +283,11 @@ private:
     int tile_batch_ = 0;                // lights light_tiles.frag holds in its uniform arrays
     float tile_round_ = 0.5f;           // light_tiles.frag's quantize_round (gl/rounding_probe.h)
     Program tile_depth_prog_;           // tile_depth.frag: each tile's span of surface eye z (tile_depth.cpp)
-    std::unique_ptr<PBuffer> tile_depth_buf_;  // one RGBA32F texel per tile
+    Program tile_reduce_prog_;          // tile_depth_reduce.frag: a tile's rows together
+    std::unique_ptr<PBuffer> tile_depth_rows_;  // RGBA32F: a texel per tile column and window row
+    std::unique_ptr<PBuffer> tile_depth_buf_;   // RGBA32F: a texel per tile, read back
+    StreamBuffer tile_vertices_;        // the frame's tile quads (light_geometry_tiles.cpp)
+    std::vector<float> tile_verts_;     // their CPU copy, kept for its storage
     void make_tile_depth_buf();
     std::vector<DepthSpan> tile_depth_spans();
     Program depth_copy_prog_;           // depth_copy.frag: the depth hand-off

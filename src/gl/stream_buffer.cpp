@@ -1,0 +1,19 @@
+#include "gl/stream_buffer.h"
+
+#include "gl/entry_points.h"
+
+namespace dsr {
+
+StreamBuffer::~StreamBuffer() {
+    if (id_) glDeleteBuffers(1, &id_);
+}
+
+void StreamBuffer::upload(const void* data, size_t bytes) {
+    if (!id_) glGenBuffers(1, &id_);
+    glBindBuffer(GL_ARRAY_BUFFER, id_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(bytes), data, GL_STREAM_DRAW);
+}
+
+void StreamBuffer::unbind() { glBindBuffer(GL_ARRAY_BUFFER, 0); }
+
+}  // namespace dsr
