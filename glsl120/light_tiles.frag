@@ -26,9 +26,8 @@ uniform vec2 planes;
 uniform float quantize_round;
 #endif
 uniform vec3 zrange;
-
-varying vec2 texcoord;
-varying vec3 vpos;
+uniform vec2 uv_scale;  // light.frag's: texture coordinates and view ray from gl_FragCoord
+uniform vec4 ray_map;
 #ifdef ID_VECS
 varying vec4 ids[ID_VECS];  // --tile-plan lists: this quad's light slots
 #else
@@ -77,7 +76,8 @@ void shade(int i, vec3 pos, vec3 normal, vec3 diffuse, vec4 specular, float shin
 
 void main()
 {
-    vec3 pos = surface_eye_pos(depth_map, texcoord, vpos, planes, zrange);
+    vec2 texcoord = gl_FragCoord.xy * uv_scale;
+    vec3 pos = surface_eye_pos(depth_map, texcoord, vec3(gl_FragCoord.xy * ray_map.xy + ray_map.zw, -1.0), planes, zrange);
     vec3 normal = texture2D(normal_map, texcoord).xyz - 0.5;
     float len = length(normal);
     if (len <= 0.1)

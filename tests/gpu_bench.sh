@@ -139,17 +139,23 @@ run)
     # max_lsb_vs_quad column: is the in-shader sum of several lights the blend's sum here?
     if part tiles; then
         $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-30} \
-            --lights ${GPU_BENCH_TILES_LIGHTS:-own,1024,1024-overlap,32-large} --light-geometry quad,volume,tiles \
+            --lights ${GPU_BENCH_TILES_LIGHTS:-own,1024,1024-overlap,32-large} --light-geometry quad,volume,stencil,tiles \
             --json "$out/gpu_bench_tiles_1920x1080.json" --report "$out/gpu_bench_tiles_1920x1080.md" \
             | tee "$out/gpu_bench_tiles_1920x1080.txt"
-        # Where the tiles' CPU time goes: the depth spans' read-back (a pipeline drain) and the plan.
-        $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --light-geometry tiles --frames 30 \
-            --stats "$out/tiles_stats_1920x1080.json" -o "$out/tiles_1920x1080.png"
+        # Per stage, and where the tiles' CPU time goes: the depth spans' read-back (a pipeline
+        # drain) and the plan (--stats tiles.depth_ms, plan_ms).
+        for l in own 1024-overlap 32-large; do
+            for g in quad volume tiles; do
+                $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --lights $l --light-geometry $g \
+                    --frames 30 --stats "$out/stats_${l}_$g.json" -o "$out/render_${l}_$g.png"
+            done
+        done
         # The tiles' depth culling reads each tile's depth span back to the CPU: what that stall
         # costs a GPU, against the same bench without it; and 32-pixel tiles with 8 lights a pass.
-        # GPU_BENCH_TILES_VARIANTS: some of nodepth t32l8 (default both), or none.
-        for v in "nodepth:--tile-depth off" "t32l8:--tile-size 32 --tile-lights 8"; do
-            [[ " ${GPU_BENCH_TILES_VARIANTS:-nodepth t32l8} " == *" ${v%%:*} "* ]] || continue
+        # GPU_BENCH_TILES_VARIANTS: some of nodepth t32l8 t32l8nodepth (default all), or none.
+        for v in "nodepth:--tile-depth off" "t32l8:--tile-size 32 --tile-lights 8" \
+                 "t32l8nodepth:--tile-size 32 --tile-lights 8 --tile-depth off"; do
+            [[ " ${GPU_BENCH_TILES_VARIANTS:-nodepth t32l8 t32l8nodepth} " == *" ${v%%:*} "* ]] || continue
             $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-30} \
                 --lights 1024-overlap,32-large --light-geometry quad,tiles ${v#*:} \
                 --json "$out/gpu_bench_tiles_${v%%:*}_1920x1080.json" > "$out/gpu_bench_tiles_${v%%:*}_1920x1080.txt"

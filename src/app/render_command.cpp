@@ -1,5 +1,6 @@
 // `dsr render`: scene file -> Scene -> DeferredShader::render -> main buffer -> image file.
 #include <algorithm>
+#include <optional>
 #include <cstdio>
 #include <cstdlib>
 
@@ -9,6 +10,7 @@
 
 #include "dsr_clock.h"
 #include "app/args.h"
+#include "analysis/bench_scenes.h"
 #include "app/commands.h"
 #include "analysis/frame_ideal.h"
 #include "app/files.h"
@@ -38,7 +40,7 @@ bool has_ext(const std::string& path, const char* ext) {
 
 int cmd_render(const std::vector<std::string>& argv) {
     Args args("render", argv);
-    std::string scene_path, out = "out.png", stats_path;
+    std::string scene_path, out = "out.png", stats_path, lights_arg;
     int w = 512, h = 512, out_w = 0, out_h = 0, frames = 1;
     RenderOptions ro;  // the option table's flags (deferred/option_table.h)
     std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";
@@ -50,6 +52,7 @@ int cmd_render(const std::vector<std::string>& argv) {
         else if (a == "--size") args.size_value(a, w, h);
         else if (a == "--frames") frames = args.int_value(a, 1, 100000);
         else if (a == "--stats") stats_path = args.value(a);
+        else if (a == "--lights") lights_arg = args.value(a);
         else if (a == "--out-size") args.size_value(a, out_w, out_h);
         else if (parse_render_flag(args, a, ro)) continue;
         else if (a == "--caps") caps_list += "," + args.value(a);
@@ -67,9 +70,14 @@ int cmd_render(const std::vector<std::string>& argv) {
     if (!stats_path.empty() && !has_ext(stats_path, ".json"))
         args.fail("--stats: expected a file ending .json, got '" + stats_path + "'");
     if (scene_path.empty()) scene_path = resource_dir("data") + "/default.scene";
+    std::optional<LightSpec> light_spec;
+    if (!lights_arg.empty() && !(light_spec = parse_light_spec(lights_arg)))
+        args.fail("--lights: expected 'own', a count N in [0, 65536], N-overlap (N a multiple of 8) or N-large, got '" +
+                  lights_arg + "'");
 
     const double load_start = now_ms();
     Scene scene = load_scene(scene_path);  // every input error surfaces before any output
+    if (light_spec) scene = bench_scene(scene, *light_spec);  // the bench's lights (bench_scenes.h)
     const double load_ms = now_ms() - load_start;
     if (out_w == 0) out_w = w, out_h = h;
     const View view = ro.view;

@@ -86,7 +86,7 @@ std::vector<CommandUsage> make_table() {
                  {"[SCENE] [-o OUT] [--size WxH] [--depth auto|texture|packed|position16|position32]",
                   "[--depth-encoding corrected|literal|linear|log] [--no-skip variants,empty-lights,light-depth-test,light-sphere-test]",
                   "[--scissor on|off] [--lighting equations|listing] [--gbuffer rgba8|half]",
-                  "[--frames N] [--stats FILE.json] [--caps no-mrt,no-depth-texture,...]",
+                  "[--frames N] [--stats FILE.json] [--lights own|N|N-overlap|N-large] [--caps no-mrt,no-depth-texture,...]",
                   "[--out-size WxH] [--view final|normal|diffuse|specular|depth|blur-factor|bloom|ssao]",
                   "[--bloom|--no-bloom] [--bloom-scale 2|4] [--bloom-taps N] [--bloom-strength S]",
                   "[--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]",
@@ -102,7 +102,9 @@ std::vector<CommandUsage> make_table() {
                  "  --size WxH              G-buffer and P-buffer size (default 512x512)\n"
                  "  --out-size WxH          main frame buffer the final stage scales to (default: --size)\n"
                  "  --frames N              frames to render; --stats reports the medians (default 1)\n"
-                 "  --stats FILE.json       per-stage times, light counts and fragments, paths chosen\n" +
+                 "  --stats FILE.json       per-stage times, light counts and fragments, paths chosen\n"
+                 "  --lights SPEC           the scene's lights replaced as one item of the bench's --lights:\n"
+                 "                          N spread, N-overlap or N-large (that one replaces the scene too)\n" +
                      std::string(kCapsOption) + kRendererOptions +
                      std::string(kContextOption) + kEglDeviceOption + kStateOptions});
     t.push_back({"figures",

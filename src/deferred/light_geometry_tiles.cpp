@@ -21,9 +21,10 @@ namespace {
 
 constexpr float kNoLight = 255.0f;  // an empty slot; batch indices stay below it
 
-// A tile quad's vertex, as floats: window position (2), G-buffer texcoord (2), view ray (3), then
-// id_vecs vec4s of packed light slots (pairs: slot[2j] * 256 + slot[2j + 1]).
-constexpr int kFixedFloats = 7;
+// A tile quad's vertex, as floats: window position (2), then id_vecs vec4s of packed light slots
+// (pairs: slot[2j] * 256 + slot[2j + 1]) in texture coordinates 2... The shader takes texture
+// coordinates and view ray from gl_FragCoord (light.frag).
+constexpr int kFixedFloats = 2;
 
 }  // namespace
 
@@ -70,8 +71,6 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     gl_state().apply(light_pass_state(prog.id(), false));
     LightQueries q(counting_ && paths_.count_fragments, counting_ && caps_.pipeline_statistics);
     const int id_vecs = groups ? 0 : tile_id_vecs(opts_.tile_lights);
-    // The G-buffer's content may be padded to powers of two: scale into its extent (as draw_rect).
-    const float sx = gbuf().tex_scale_x() / float(w_), sy = gbuf().tex_scale_y() / float(h_);
 
     // Every draw's vertices in one buffer, uploaded once (StreamBuffer); each draw then points at
     // its own range. Only the slot vectors the shader declares travel.
@@ -92,8 +91,7 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
             const float xs[4] = {float(t.x0), float(t.x1), float(t.x1), float(t.x0)};
             const float ys[4] = {float(t.y0), float(t.y0), float(t.y1), float(t.y1)};
             for (int c = 0; c < 4; ++c) {
-                const glm::vec3 r = view_ray_at(xs[c], ys[c]);
-                const float fixed[kFixedFloats] = {xs[c], ys[c], xs[c] * sx, ys[c] * sy, r.x, r.y, r.z};
+                const float fixed[kFixedFloats] = {xs[c], ys[c]};
                 out = std::copy(fixed, fixed + kFixedFloats, out);
                 out = std::copy(ids, ids + 4 * id_vecs, out);
             }
@@ -105,18 +103,13 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     const GLsizei bytes = GLsizei(stride * sizeof(float));
     auto at = [](int f) { return reinterpret_cast<const void*>(size_t(f) * sizeof(float)); };  // buffer offsets
     glVertexPointer(2, GL_FLOAT, bytes, at(0));
-    glClientActiveTexture(GL_TEXTURE0);
-    glTexCoordPointer(2, GL_FLOAT, bytes, at(2));
-    glClientActiveTexture(GL_TEXTURE1);
-    glTexCoordPointer(3, GL_FLOAT, bytes, at(4));
     for (int k = 0; k < id_vecs; ++k) {
         glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
         glTexCoordPointer(4, GL_FLOAT, bytes, at(kFixedFloats + 4 * k));
     }
     glEnableClientState(GL_VERTEX_ARRAY);
-    const int units = 2 + id_vecs;
-    for (int u = 0; u < units; ++u) {
-        glClientActiveTexture(GLenum(GL_TEXTURE0 + u));
+    for (int k = 0; k < id_vecs; ++k) {
+        glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
         glEnableClientState(GL_TEXTURE_COORD_ARRAY);
     }
     std::vector<glm::vec4> pos, color, dir, spot, att;
@@ -144,10 +137,11 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
         glDrawArrays(GL_QUADS, GLint(first[di]), GLsizei(first[di + 1] - first[di]));
         q.end();
     }
-    for (int u = units - 1; u >= 0; --u) {
-        glClientActiveTexture(GLenum(GL_TEXTURE0 + u));
+    for (int k = id_vecs - 1; k >= 0; --k) {
+        glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
         glDisableClientState(GL_TEXTURE_COORD_ARRAY);
     }
+    glClientActiveTexture(GL_TEXTURE0);
     glDisableClientState(GL_VERTEX_ARRAY);
     StreamBuffer::unbind();
     q.collect(stats);

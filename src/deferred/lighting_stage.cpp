@@ -98,7 +98,7 @@ void DeferredShader::set_light_uniforms(Program& prog) {
     prog.set("depth_map", 3);
     prog.set("planes", planes_);
     prog.set("zrange", zrange_);
-    // VOLUME: texture coordinates from gl_FragCoord (the G-buffer may be padded to powers of two).
+    // Texture coordinates from gl_FragCoord (the G-buffer may be padded to powers of two).
     prog.set("uv_scale", glm::vec2(gbuf().tex_scale_x() / float(w_), gbuf().tex_scale_y() / float(h_)));
     // The view ray through window point (x, y): the corner rays' bilinear map, which is affine.
     const glm::vec3 lo = corner_rays_[0], hi = corner_rays_[2];

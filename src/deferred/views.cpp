@@ -111,10 +111,7 @@ Image DeferredShader::reconstructed_positions() {
     gl_state().apply(s);
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    position_prog_.set("normal_map", 0);
-    position_prog_.set("depth_map", 3);
-    position_prog_.set("planes", planes_);
-    position_prog_.set("zrange", zrange_);
+    set_light_uniforms(position_prog_);  // light.frag's: samplers, planes, uv_scale and ray_map
     mrt_bind_texture(G_NORMAL, 0);
     mrt_bind_texture(depth_target(), 3);
     draw_rect(0, 0, float(w_), float(h_), true);
