@@ -130,6 +130,19 @@ TEST(Cli, RenderWritesImageAndStats) {
     EXPECT_GT(j["ms"]["frame"].get<double>(), 0.0);
 }
 
+// --lights: the bench's generated light sets on the scene (bench_scenes.h), so a bench row's scene
+// can be rendered and looked at; 32-large replaces the scene too (its 9 boxes, its camera).
+TEST(Cli, RenderWithTheBenchLights) {
+    std::string d = temp_dir();
+    for (const char* spec : {"16", "64-overlap", "32-large"}) {
+        RunResult r = run(std::string("render --size 64x64 --lights ") + spec + " -o " + d + "/a.png --stats " + d + "/s.json");
+        ASSERT_EQ(r.status, 0) << spec << ": " << r.output;
+        std::ifstream in(d + "/s.json");
+        const nlohmann::json j = nlohmann::json::parse(in);
+        EXPECT_EQ(j["lights_total"].get<int>(), std::atoi(spec)) << spec;
+    }
+}
+
 TEST(Cli, ExrOutputAndPackedPath) {
     std::string d = temp_dir();
     RunResult r = run("render --size 32x32 --depth packed -o " + d + "/a.exr --stats " + d + "/s.json");
@@ -168,6 +181,7 @@ TEST(Cli, BadFlagsAreOneClearError) {
         {"render --bogus", "unknown option '--bogus'"},
         {"render -o out.bmpx", "-o: expected a file ending"},
         {"render --caps no-such", "unknown capability 'no-such'"},
+        {"render --lights 12-over", "--lights: expected 'own', a count N"},
         {"frobnicate", "unknown command"},
     };
     for (const Case& c : cases) {
