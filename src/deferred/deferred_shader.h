@@ -286,7 +286,7 @@ private:
     Program tile_reduce_prog_;          // tile_depth_reduce.frag: a tile's rows together
     std::unique_ptr<PBuffer> tile_depth_rows_;  // RGBA32F: a texel per tile column and window row
     std::unique_ptr<PBuffer> tile_depth_buf_;   // RGBA32F: a texel per tile, read back
-    StreamBuffer tile_vertices_;        // the frame's tile quads (light_geometry_tiles.cpp)
+    std::vector<std::unique_ptr<StreamBuffer>> tile_vertices_;  // each batch's tile quads (light_geometry_tiles.cpp)
     std::vector<float> tile_verts_;     // their CPU copy, kept for its storage
     void make_tile_depth_buf();
     std::vector<DepthSpan> tile_depth_spans();

@@ -58,8 +58,6 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
             if (p.color.w < 1.5f) depth.lights[i] = LightBound{glm::vec3(p.pos), p.pos.w};  // directional: unbounded
         }
     }
-    const TilePlan plan = groups ? plan_tile_groups(rects, w_, h_, opts_.tile_size, opts_.tile_lights, cull)
-                                 : plan_tiles(rects, w_, h_, opts_.tile_size, opts_.tile_lights, tile_batch_, cull);
     stats.tile_depth = cull != nullptr;
 
     // The tutorial's cheaper point-light shader where every light of the frame allows it (as quad
@@ -71,71 +69,97 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     gl_state().apply(light_pass_state(prog.id(), false));
     LightQueries q(counting_ && paths_.count_fragments, counting_ && caps_.pipeline_statistics);
     const int id_vecs = groups ? 0 : tile_id_vecs(opts_.tile_lights);
-
-    // Every draw's vertices in one buffer, uploaded once (StreamBuffer); each draw then points at
-    // its own range. Only the slot vectors the shader declares travel.
     const int stride = kFixedFloats + 4 * id_vecs;
-    size_t quads = 0;
-    for (const TileDraw& d : plan.draws) quads += d.quads.size();
-    // A member, so its storage is reused: a fresh multi-megabyte vector each frame cost page faults
-    // (at 1920x1080 on llvmpipe, building these vertices took 1.5-2.9 ms a frame that way).
-    std::vector<float>& verts = tile_verts_;
-    verts.resize(quads * 4 * size_t(stride));
-    std::vector<size_t> first(plan.draws.size() + 1, 0);
-    float* out = verts.data();
-    for (size_t di = 0; di < plan.draws.size(); ++di) {
-        for (const TileQuad& t : plan.draws[di].quads) {
-            float ids[16];
-            auto slot = [&](size_t k) { return k < t.slots.size() ? float(t.slots[k]) : kNoLight; };
-            for (int j = 0; j < 4 * id_vecs; ++j) ids[j] = slot(2 * size_t(j)) * 256.0f + slot(2 * size_t(j) + 1);
-            const float xs[4] = {float(t.x0), float(t.x1), float(t.x1), float(t.x0)};
-            const float ys[4] = {float(t.y0), float(t.y0), float(t.y1), float(t.y1)};
-            for (int c = 0; c < 4; ++c) {
-                const float fixed[kFixedFloats] = {xs[c], ys[c]};
-                out = std::copy(fixed, fixed + kFixedFloats, out);
-                out = std::copy(ids, ids + 4 * id_vecs, out);
-            }
-        }
-        first[di + 1] = size_t(out - verts.data()) / size_t(stride);
-    }
-    tile_vertices_.upload(verts.data(), verts.size() * sizeof(float));
-    stats.tile_plan_ms = now_ms() - t1;
-    const GLsizei bytes = GLsizei(stride * sizeof(float));
-    auto at = [](int f) { return reinterpret_cast<const void*>(size_t(f) * sizeof(float)); };  // buffer offsets
-    glVertexPointer(2, GL_FLOAT, bytes, at(0));
-    for (int k = 0; k < id_vecs; ++k) {
-        glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
-        glTexCoordPointer(4, GL_FLOAT, bytes, at(kFixedFloats + 4 * k));
-    }
     glEnableClientState(GL_VERTEX_ARRAY);
     for (int k = 0; k < id_vecs; ++k) {
         glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
         glEnableClientState(GL_TEXTURE_COORD_ARRAY);
     }
     std::vector<glm::vec4> pos, color, dir, spot, att;
-    int uploaded = -1;
-    for (size_t di = 0; di < plan.draws.size(); ++di) {
-        const TileDraw& d = plan.draws[di];
-        if (d.batch != uploaded) {  // lighting.glsl's five vec4s per light, one uniform array each
-            const std::vector<int>& batch = plan.batches[size_t(d.batch)];
-            pos.clear(), color.clear(), dir.clear(), spot.clear(), att.clear();
-            for (int l : batch) {
-                const LightParams& p = lights[size_t(l)].params;
-                pos.push_back(p.pos), color.push_back(p.color), dir.push_back(p.dir);
-                spot.push_back(p.spot), att.push_back(p.att);
+    double plan_ms = now_ms() - t1;  // the tile boxes; then each batch's plan, vertices and upload
+
+    // One batch: its lights into the uniform arrays, its draws' vertices into the stream buffer
+    // (uploaded once for the batch; each draw points at its own range), one draw per layer.
+    int uploads = 0;
+    auto draw_batch = [&](const std::vector<int>& batch, const std::vector<TileDraw>& draws) {
+        const double t = now_ms();
+        size_t quads = 0;
+        for (const TileDraw& d : draws) quads += d.quads.size();
+        // A member, so its storage is reused: a fresh multi-megabyte vector each frame cost page
+        // faults (at 1920x1080 on llvmpipe, building these vertices took 1.5-2.9 ms a frame that way).
+        std::vector<float>& verts = tile_verts_;
+        verts.resize(quads * 4 * size_t(stride));
+        std::vector<size_t> first(draws.size() + 1, 0);
+        float* out = verts.data();
+        for (size_t di = 0; di < draws.size(); ++di) {
+            for (const TileQuad& tq : draws[di].quads) {
+                float ids[16];
+                auto slot = [&](size_t k) { return k < tq.slots.size() ? float(tq.slots[k]) : kNoLight; };
+                for (int j = 0; j < 4 * id_vecs; ++j) ids[j] = slot(2 * size_t(j)) * 256.0f + slot(2 * size_t(j) + 1);
+                const float xs[4] = {float(tq.x0), float(tq.x1), float(tq.x1), float(tq.x0)};
+                const float ys[4] = {float(tq.y0), float(tq.y0), float(tq.y1), float(tq.y1)};
+                for (int c = 0; c < 4; ++c) {
+                    *out++ = xs[c], *out++ = ys[c];
+                    out = std::copy(ids, ids + 4 * id_vecs, out);
+                }
             }
-            const int count = int(batch.size());
-            prog.set_array("lightpos", pos.data(), count);
-            prog.set_array("lightcolor", color.data(), count);
-            prog.set_array("lightdir", dir.data(), count);
-            prog.set_array("lightspot", spot.data(), count);
-            prog.set_array("lightatt", att.data(), count);
-            if (groups) prog.set("light_count", count);
-            uploaded = d.batch;
+            first[di + 1] = size_t(out - verts.data()) / size_t(stride);
         }
-        q.begin();
-        glDrawArrays(GL_QUADS, GLint(first[di]), GLsizei(first[di + 1] - first[di]));
-        q.end();
+        // A buffer object per batch of the frame: refilling the one the previous batch's draws
+        // still read made llvmpipe finish them first (the plan's time went from 0.4 to 3 ms).
+        if (size_t(uploads) == tile_vertices_.size()) tile_vertices_.push_back(std::make_unique<StreamBuffer>());
+        tile_vertices_[size_t(uploads++)]->upload(verts.data(), verts.size() * sizeof(float));
+        plan_ms += now_ms() - t;
+        const GLsizei bytes = GLsizei(stride * sizeof(float));
+        auto at = [](int f) { return reinterpret_cast<const void*>(size_t(f) * sizeof(float)); };  // buffer offsets
+        glVertexPointer(2, GL_FLOAT, bytes, at(0));
+        for (int k = 0; k < id_vecs; ++k) {
+            glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
+            glTexCoordPointer(4, GL_FLOAT, bytes, at(kFixedFloats + 4 * k));
+        }
+        pos.clear(), color.clear(), dir.clear(), spot.clear(), att.clear();
+        for (int l : batch) {  // lighting.glsl's five vec4s per light, one uniform array each
+            const LightParams& p = lights[size_t(l)].params;
+            pos.push_back(p.pos), color.push_back(p.color), dir.push_back(p.dir);
+            spot.push_back(p.spot), att.push_back(p.att);
+        }
+        const int count = int(batch.size());
+        prog.set_array("lightpos", pos.data(), count);
+        prog.set_array("lightcolor", color.data(), count);
+        prog.set_array("lightdir", dir.data(), count);
+        prog.set_array("lightspot", spot.data(), count);
+        prog.set_array("lightatt", att.data(), count);
+        if (groups) prog.set("light_count", count);
+        for (size_t di = 0; di < draws.size(); ++di) {
+            q.begin();
+            glDrawArrays(GL_QUADS, GLint(first[di]), GLsizei(first[di + 1] - first[di]));
+            q.end();
+        }
+        stats.light_passes += int(draws.size());
+    };
+
+    stats.light_passes = 0;
+    stats.tile_light_pairs = 0;
+    if (groups) {
+        const double t = now_ms();
+        const TilePlan plan = plan_tile_groups(rects, w_, h_, opts_.tile_size, opts_.tile_lights, cull);
+        plan_ms += now_ms() - t;
+        for (const TileDraw& d : plan.draws) draw_batch(plan.batches[size_t(d.batch)], {d});
+        stats.tile_light_pairs = plan.tile_light_pairs;
+    } else {
+        // Batch by batch (tile_plan.h TilePlanner): the GL shades a batch while the CPU plans the
+        // next; the flush after each hands the batch over instead of holding it until the buffer fills.
+        double t = now_ms();
+        TilePlanner planner(rects, w_, h_, opts_.tile_size, opts_.tile_lights, tile_batch_, cull);
+        std::vector<TileDraw> draws;
+        for (int b = 0; b < int(planner.batches().size()); ++b) {
+            if (b) t = now_ms();
+            draws.clear();
+            stats.tile_light_pairs += planner.plan_batch(b, draws);
+            plan_ms += now_ms() - t;
+            draw_batch(planner.batches()[size_t(b)], draws);
+            glFlush();
+        }
     }
     for (int k = id_vecs - 1; k >= 0; --k) {
         glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
@@ -145,8 +169,7 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     glDisableClientState(GL_VERTEX_ARRAY);
     StreamBuffer::unbind();
     q.collect(stats);
-    stats.light_passes = int(plan.draws.size());
-    stats.tile_light_pairs = plan.tile_light_pairs;
+    stats.tile_plan_ms = plan_ms;
 }
 
 }  // namespace dsr

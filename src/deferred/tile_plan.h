@@ -12,15 +12,43 @@
 #include <limits>
 #include <vector>
 
+#include <array>
+#include <initializer_list>
+#include <memory>
+
 #include <glm/glm.hpp>
 
 #include "deferred/scissor.h"
 
 namespace dsr {
 
+// Up to 32 light slots held inline: a plan at 1920x1080 has thousands of quads, and a heap
+// vector each was a third of the plan's time.
+class SlotList {
+public:
+    static constexpr int kCapacity = 32;  // tile_lights' upper bound (options.h)
+    SlotList() = default;
+    SlotList(std::initializer_list<int> l) { assign(l.begin(), l.end()); }
+    template <class It>
+    void assign(It first, It last) {
+        n_ = 0;
+        for (; first != last; ++first) push_back(*first);
+    }
+    void push_back(int s) { v_.at(size_t(n_++)) = s; }  // at(): more than kCapacity is a bug
+    size_t size() const { return size_t(n_); }
+    bool empty() const { return n_ == 0; }
+    int operator[](size_t i) const { return v_[i]; }
+    const int* begin() const { return v_.data(); }
+    const int* end() const { return v_.data() + n_; }
+
+private:
+    int n_ = 0;
+    std::array<int, kCapacity> v_{};
+};
+
 struct TileQuad {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // window pixels, x1/y1 exclusive
-    std::vector<int> slots;              // indices into the batch's lights, at most lights_per_pass
+    SlotList slots;                      // indices into the batch's lights, at most lights_per_pass
 };
 
 struct TileDraw {
@@ -87,6 +115,24 @@ struct TileDepth {
 // into tile_size tiles. batch_size >= 1, lights_per_pass >= 1. depth: null for no depth culling.
 TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
                     int lights_per_pass, int batch_size, const TileDepth* depth = nullptr);
+
+// plan_tiles a batch at a time, so that a renderer can draw a batch while it plans the next (on a
+// GPU the plan is CPU time the GPU would otherwise wait through: at 1920x1080 with 1024-overlap's
+// lights, 2-6 ms on the H200's host). The same batches and draws as plan_tiles. depth, when given,
+// must outlive the planner.
+class TilePlanner {
+public:
+    TilePlanner(const std::vector<ScissorRect>& rects, int width, int height, int tile_size, int lights_per_pass,
+                int batch_size, const TileDepth* depth = nullptr);
+    ~TilePlanner();
+    const std::vector<std::vector<int>>& batches() const;
+    // Appends batch b's draws (one per layer) to out; returns the (tile, light) pairs they shade.
+    long long plan_batch(int b, std::vector<TileDraw>& out);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 // vec4s of packed light slots a tile vertex carries (two slots per float): texture coordinates 2..
 inline int tile_id_vecs(int lights_per_pass) { return (lights_per_pass + 7) / 8; }
