@@ -20,18 +20,26 @@ uniform vec4 lightspot;          // (cos of the soft edge's inner angle, exponen
 uniform vec4 lightatt;           // (KC, KL, KQ, law): lighting.glsl
 uniform vec2 planes;             // §3.4.3: (-f/(f-n), -f*n/(f-n))
 uniform vec3 zrange;             // (near, far, log2(far/near)) for the linear and log encodings
-uniform vec2 uv_scale;           // G-buffer texture coordinates per window pixel
+uniform vec2 uv_scale;           // VOLUME: G-buffer texture coordinates per window pixel
 uniform vec4 ray_map;            // view ray (x, y) = gl_FragCoord.xy * ray_map.xy + ray_map.zw, z = -1
+
+#ifndef VOLUME
+varying vec2 texcoord;           // the quad's (light.vert)
+#endif
 
 void main()
 {
-    // The pixel centre's texture coordinates and view ray (Listing 19's corner rays, which are
-    // affine in window coordinates, as a map of gl_FragCoord): what interpolating them across the
-    // drawn primitive gives in exact arithmetic, but the same float result whatever draws the
-    // pixel. Interpolated across each light's rectangle, tile or mesh, the reconstructed points
-    // differed in their last bits between light geometries, and on the H200 the 8-bit rounding of
-    // ~20 lights a pixel turned that into 4 LSB between the geometries' images (1024-overlap).
+    // The pixel centre's view ray (Listing 19's corner rays, which are affine in window
+    // coordinates, as a map of gl_FragCoord): what interpolating them across the drawn primitive
+    // gives in exact arithmetic, but the same float result whatever draws the pixel. Interpolated
+    // across each light's rectangle, tile or mesh, the reconstructed points differed in their last
+    // bits between light geometries, and on the H200 the 8-bit rounding of ~20 lights a pixel
+    // turned that into 4 LSB between the geometries' images (1024-overlap). The texture
+    // coordinates may be interpolated: at a pixel centre they pick the same nearest texel either
+    // way, and on llvmpipe computing them too made quad's light passes ~5% slower.
+#ifdef VOLUME
     vec2 texcoord = gl_FragCoord.xy * uv_scale;
+#endif
     vec3 vpos = vec3(gl_FragCoord.xy * ray_map.xy + ray_map.zw, -1.0);
     // pos.z = -planes.y/(planes.x+depth), pos.xy along the view ray; or the stored position.
     vec3 pos = surface_eye_pos(depth_map, texcoord, vpos, planes, zrange);
