@@ -2,8 +2,9 @@
 // Lighting pass vertex shader: a screen-aligned quad (§3.4.3). Texture coordinate 1 carries
 // the eye-space view ray (x, y, -1) of each corner (Listing 19's clean form), interpolated
 // linearly across the quad: exact, since the ray is affine in window coordinates.
-// The light shaders (light.frag, light_tiles.frag) take theirs from gl_FragCoord instead, so that
-// every light geometry reconstructs the same point; ssao.frag reads these.
+// The light shaders (light.frag, light_tiles.frag) take the ray from gl_FragCoord instead, so that
+// every light geometry reconstructs the same point; light.frag reads the texture coordinates, and
+// ssao.frag both.
 // VOLUME: the light's volume mesh instead (light geometries volume and stencil).
 // ID_VECS (light_tiles.frag): texture coordinates 2.. carry the quad's light slots, two a float.
 varying vec2 texcoord;

@@ -26,7 +26,7 @@ uniform vec2 planes;
 uniform float quantize_round;
 #endif
 uniform vec3 zrange;
-uniform vec2 uv_scale;  // light.frag's: texture coordinates and view ray from gl_FragCoord
+uniform vec2 uv_scale;  // texture coordinates and (light.frag's) view ray from gl_FragCoord
 uniform vec4 ray_map;
 #ifdef ID_VECS
 varying vec4 ids[ID_VECS];  // --tile-plan lists: this quad's light slots

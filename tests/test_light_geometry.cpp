@@ -22,7 +22,7 @@ ShaderOptions with_geometry(LightGeometry g, DepthPath d = DepthPath::texture) {
     return o;
 }
 
-// Every light shader takes its texture coordinates and view ray from gl_FragCoord (light.frag), so a
+// Every light shader takes its view ray from gl_FragCoord (light.frag), so a
 // pixel's reconstructed point is the same float whatever geometry draws it, and on llvmpipe the
 // geometries' images are identical (0 LSB); before, interpolated across each primitive, quad and
 // volume differed by 1 LSB on the default scene at 256x256 here, and by 4 LSB on the H200.

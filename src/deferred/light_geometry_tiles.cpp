@@ -22,8 +22,8 @@ namespace {
 constexpr float kNoLight = 255.0f;  // an empty slot; batch indices stay below it
 
 // A tile quad's vertex, as floats: window position (2), then id_vecs vec4s of packed light slots
-// (pairs: slot[2j] * 256 + slot[2j + 1]) in texture coordinates 2... The shader takes texture
-// coordinates and view ray from gl_FragCoord (light.frag).
+// (pairs: slot[2j] * 256 + slot[2j + 1]) in texture coordinates 2... The shader takes the G-buffer
+// coordinates and the view ray from gl_FragCoord (the ray as light.frag does).
 constexpr int kFixedFloats = 2;
 
 }  // namespace
