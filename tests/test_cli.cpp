@@ -182,6 +182,7 @@ TEST(Cli, BadFlagsAreOneClearError) {
         {"render -o out.bmpx", "-o: expected a file ending"},
         {"render --caps no-such", "unknown capability 'no-such'"},
         {"render --lights 12-over", "--lights: expected 'own', a count N"},
+        {"render --tile-size 4", "--tile-size: expected auto or an integer in [8, 512], got '4'"},
         {"frobnicate", "unknown command"},
     };
     for (const Case& c : cases) {

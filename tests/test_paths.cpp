@@ -207,3 +207,29 @@ TEST(Paths, RenderTargetAskedForIsKeptOrRefused) {
 }
 
 }  // namespace dsr
+
+namespace dsr {
+
+// --tile-size / --tile-lights auto (0): 16 pixels and 32 lights a pass on a CPU rasteriser (the
+// llvmpipe measurements), 32 and 8 on a GPU (the H200's); explicit values are kept, and the range
+// is checked on what is resolved.
+TEST(Paths, TileDefaultsFollowTheRasteriser) {
+    ShaderOptions o;
+    o.light_geometry = LightGeometry::tiles;
+    Caps c = caps_for(0);
+    for (bool sw : {true, false}) {
+        c.software_rasterizer = sw;
+        const Paths p = choose_paths(c, o);
+        EXPECT_TRUE(p.refused.empty()) << p.refused;
+        EXPECT_EQ(p.tile_size, sw ? 16 : 32);
+        EXPECT_EQ(p.tile_lights, sw ? 32 : 8);
+    }
+    o.tile_size = 24, o.tile_lights = 5;
+    const Paths p = choose_paths(c, o);
+    EXPECT_EQ(p.tile_size, 24);
+    EXPECT_EQ(p.tile_lights, 5);
+    o.tile_size = 4;
+    EXPECT_NE(choose_paths(c, o).refused.find("tile size must be 8..512"), std::string::npos);
+}
+
+}  // namespace dsr

@@ -136,10 +136,20 @@ TEST(OptionTable, EveryValueRoundTripsAndRenderDefaultsHold) {
     // The one-line helpers for plain fields.
     const RenderOption sw = switch_option("x", &ShaderOptions::gbuffer_half);
     RenderOption in = sw;  // an integer entry's checks (integer_option makes them for an int field)
-    in.kind = OptionKind::integer, in.lo = 8, in.hi = 512;
+    in.kind = OptionKind::integer, in.lo = 8, in.hi = 512, in.values.clear();
     EXPECT_EQ(check_render_option(in, "32"), "");
     EXPECT_EQ(check_render_option(in, "7"), "expected an integer in [8, 512], got '7'");
     EXPECT_EQ(check_render_option(in, "3.5"), "expected an integer in [8, 512], got '3.5'");
+    in.values = {"auto"};  // integer_option(..., with_auto): the GL's default, stored as 0
+    EXPECT_EQ(check_render_option(in, "auto"), "");
+    EXPECT_EQ(check_render_option(in, "7"), "expected auto or an integer in [8, 512], got '7'");
+    const RenderOption ts = *find_render_option("tile-size");
+    RenderOptions t;
+    EXPECT_EQ(ts.get(t), "auto");
+    EXPECT_EQ(set_render_option(t, ts, "24"), "");
+    EXPECT_EQ(t.shader.tile_size, 24);
+    EXPECT_EQ(set_render_option(t, ts, "auto"), "");
+    EXPECT_EQ(t.shader.tile_size, 0);
     RenderOptions q;
     EXPECT_EQ(set_render_option(q, sw, "on"), "");
     EXPECT_TRUE(q.shader.gbuffer_half);

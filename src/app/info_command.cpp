@@ -54,6 +54,11 @@ int cmd_info(const std::vector<std::string>& argv) {
                                                                                 : " faces (two passes, no two-sided stencil)"))
                           .c_str()
                     : sp.light_geometry_note.c_str());
+    ShaderOptions tiles = defaults;
+    tiles.light_geometry = LightGeometry::tiles;
+    const Paths tp = choose_paths(caps, tiles);
+    std::printf("  --light-geometry tiles: %d-pixel tiles, %d lights a pass (auto: %s)\n", tp.tile_size, tp.tile_lights,
+                caps.software_rasterizer ? "a CPU rasteriser's" : "a GPU's");
     std::printf("  --depth-bounds on: %s\n", caps.depth_bounds ? "EXT_depth_bounds_test" : "refused (no EXT_depth_bounds_test)");
     std::printf("  --render-target pbuffer: %s\n",
                 offscreen_surfaces() ? ("EGL pbuffer surfaces; " + offscreen_surfaces()->bind_tex_image_note()).c_str()

@@ -147,7 +147,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["light_geometry_asked"] = light_geometry_name(opts.light_geometry);
     if (!paths.light_geometry_note.empty()) j["light_geometry_note"] = paths.light_geometry_note;
     if (paths.light_geometry == LightGeometry::stencil) j["stencil_faces"] = stencil_faces_name(paths.stencil_faces);
-    if (paths.light_geometry == LightGeometry::tiles) j["tiles"] = {{"size", opts.tile_size}, {"lights_per_pass", opts.tile_lights}, {"tile_light_pairs", last.tile_light_pairs}, {"depth_culling", last.tile_depth}, {"depth_ms", last.tile_depth_ms}, {"plan_ms", last.tile_plan_ms}};
+    if (paths.light_geometry == LightGeometry::tiles) j["tiles"] = {{"size", paths.tile_size}, {"lights_per_pass", paths.tile_lights}, {"tile_light_pairs", last.tile_light_pairs}, {"depth_culling", last.tile_depth}, {"depth_ms", last.tile_depth_ms}, {"plan_ms", last.tile_plan_ms}};
     j["depth_bounds"] = paths.depth_bounds;
     j["light_passes"] = last.light_passes;
     // Issue 13: the depth hand-off as run (null: nothing needed it) and the forward stage's work.

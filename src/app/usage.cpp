@@ -60,8 +60,9 @@ const char* kRendererOptions =
     "                          screen tiles with several lights per pass\n"
     "  --depth-bounds on|off   quad: EXT_depth_bounds_test on each light's depth span (default off;\n"
     "                          refused where the GL lacks it, as llvmpipe does)\n"
-    "  --tile-size N           tiles: pixels per tile side, 8..512 (default 16)\n"
-    "  --tile-lights N         tiles: lights per pass, 1..32 (default 32)\n"
+    "  --tile-size auto|N      tiles: pixels per tile side, 8..512 (default auto: 16 on a CPU\n"
+    "                          rasteriser such as llvmpipe, else 32; `info` says which)\n"
+    "  --tile-lights auto|N    tiles: lights per pass, 1..32 (default auto: 32 on a CPU rasteriser, else 8)\n"
     "  --ssao, --no-ssao       screen-space ambient occlusion scaling the ambient pass (default off)\n"
     "  --ssao-scale 1|2        AO buffer at full or half resolution (default 1)\n"
     "  --ssao-radius R         hemisphere radius in eye-space units, 0.01..100 (default 0.5)\n"
@@ -91,7 +92,7 @@ std::vector<CommandUsage> make_table() {
                   "[--bloom|--no-bloom] [--bloom-scale 2|4] [--bloom-taps N] [--bloom-strength S]",
                   "[--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]",
                   "[--aa-kernel text|listing] [--aa-weight W]",
-                  "[--light-geometry quad|volume|stencil|tiles] [--depth-bounds on|off] [--tile-size N] [--tile-lights N]",
+                  "[--light-geometry quad|volume|stencil|tiles] [--depth-bounds on|off] [--tile-size auto|N] [--tile-lights auto|N]",
                   "[--tile-plan lists|groups] [--tile-depth on|off] [--render-target auto|fbo|copy|pbuffer]",
                   "[--ssao|--no-ssao] [--ssao-scale 1|2] [--ssao-radius R] [--ssao-strength S] [--ssao-samples N]",
                   "[--show-lights|--no-show-lights] [--depth-handoff auto|blit|pass]",
@@ -134,8 +135,8 @@ std::vector<CommandUsage> make_table() {
                  "                          (default own,32,256,1024,1024-overlap,32-large)\n"
                  "  --light-geometry LIST   light geometries to measure: quad, volume, stencil, tiles\n"
                  "                          (default all four)\n"
-                 "  --tile-size N           the tiles rows' tile side in pixels, 8..512 (default 16)\n"
-                 "  --tile-lights N         the tiles rows' lights per pass, 1..32 (default 32)\n"
+                 "  --tile-size N           the tiles rows' tile side in pixels, 8..512 (default: render's auto)\n"
+                 "  --tile-lights N         the tiles rows' lights per pass, 1..32 (default: render's auto)\n"
                  "  --tile-plan lists|groups  the tiles rows' plan (default lists)\n"
                  "  --tile-depth on|off     the tiles rows' depth culling (default on)\n" +
                      std::string(kContextOption)});

@@ -21,6 +21,7 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     paths_ = choose_paths(caps, opts);
     if (!paths_.refused.empty()) throw Error(paths_.refused);
     opts_.depth = paths_.depth_path;
+    opts_.tile_size = paths_.tile_size, opts_.tile_lights = paths_.tile_lights;  // auto resolved
     const int bs = opts.post.bloom_scale;
     if (bs != 2 && bs != 4) throw Error("bloom scale must be 2 or 4, got " + std::to_string(bs));
     if (opts.post.bloom_taps < 3 || opts.post.bloom_taps > 15 || opts.post.bloom_taps % 2 == 0)
@@ -78,19 +79,19 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     }
     if (lg == LightGeometry::tiles) {
         auto tdefs = ldefs;
-        tdefs.push_back("MAX_LIGHTS " + std::to_string(opts.tile_lights));
+        tdefs.push_back("MAX_LIGHTS " + std::to_string(opts_.tile_lights));
         if (opts.tile_plan == TileGrouping::lists)  // groups: the light count is a uniform instead
-            tdefs.push_back("ID_VECS " + std::to_string(tile_id_vecs(opts.tile_lights)));
+            tdefs.push_back("ID_VECS " + std::to_string(tile_id_vecs(opts_.tile_lights)));
         // The batch the uniform arrays hold: five vec4s a light within the fragment stage's
         // uniform budget (GL 2.0 guarantees 64 vec4s; llvmpipe and NVIDIA give 1024), a few vec4s
         // kept for the other uniforms, and below tile_plan's empty-slot index 255.
         GLint comps = 0;
         glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
-        tile_batch_ = opts.tile_plan == TileGrouping::groups ? opts.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
+        tile_batch_ = opts.tile_plan == TileGrouping::groups ? opts_.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
         tdefs.push_back("BATCH " + std::to_string(tile_batch_));
         // P-buffer 0 is RGBA8: several lights summed in one pass are each rounded as their own
         // pass would be. One light a pass needs no emulation: the blend rounds it as quad's does.
-        if (!opts.float_accum && opts.tile_lights > 1) {
+        if (!opts.float_accum && opts_.tile_lights > 1) {
             tdefs.push_back("QUANTIZE_8BIT");
             // Rounded as this GL rounds into RGBA8, measured once (gl/rounding_probe.h): llvmpipe
             // rounds t x 255 to nearest; the H200 truncates t to 12 bits first, which rounds up

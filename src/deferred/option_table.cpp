@@ -85,8 +85,8 @@ std::vector<RenderOption> make_table() {
             r.shader.render_target = v == "fbo" ? RenderTarget::fbo : v == "copy" ? RenderTarget::copy
                                      : v == "pbuffer" ? RenderTarget::pbuffer : RenderTarget::automatic;
         }));
-    t.push_back(integer_option("tile-size", 8, 512, &ShaderOptions::tile_size));
-    t.push_back(integer_option("tile-lights", 1, 32, &ShaderOptions::tile_lights));
+    t.push_back(integer_option("tile-size", 8, 512, &ShaderOptions::tile_size, true));
+    t.push_back(integer_option("tile-lights", 1, 32, &ShaderOptions::tile_lights, true));
     t.push_back(choice(
         "tile-plan", {"lists", "groups"},
         [](const RenderOptions& r) { return std::string(r.shader.tile_plan == TileGrouping::groups ? "groups" : "lists"); },
@@ -182,10 +182,16 @@ RenderOption switch_option(std::string name, bool ShaderOptions::*field) {
                         [field](RenderOptions& r, const std::string& v) { r.shader.*field = v == "on"; }};
 }
 
-RenderOption integer_option(std::string name, int lo, int hi, int ShaderOptions::*field) {
-    return RenderOption{std::move(name), OptionKind::integer, {}, float(lo), float(hi), true,
-                        [field](const RenderOptions& r) { return std::to_string(r.shader.*field); },
-                        [field](RenderOptions& r, const std::string& v) { r.shader.*field = std::atoi(v.c_str()); }};
+RenderOption integer_option(std::string name, int lo, int hi, int ShaderOptions::*field, bool with_auto) {
+    std::vector<std::string> words;
+    if (with_auto) words.push_back("auto");  // stored as 0: the GL's default (choose_paths)
+    return RenderOption{std::move(name), OptionKind::integer, words, float(lo), float(hi), true,
+                        [field](const RenderOptions& r) {
+                            return r.shader.*field == 0 ? std::string("auto") : std::to_string(r.shader.*field);
+                        },
+                        [field](RenderOptions& r, const std::string& v) {
+                            r.shader.*field = v == "auto" ? 0 : std::atoi(v.c_str());
+                        }};
 }
 
 ShaderOptions RenderOptions::resolved(const Scene& scene) const {
@@ -226,11 +232,14 @@ std::string check_render_option(const RenderOption& o, const std::string& v) {
             return "";
         }
         case OptionKind::integer: {
+            for (const std::string& a : o.values)  // words it also takes (auto)
+                if (v == a) return "";
             char* end = nullptr;
             errno = 0;
             const long n = v.empty() ? 0 : std::strtol(v.c_str(), &end, 10);
             if (v.empty() || errno != 0 || *end != '\0' || n < long(o.lo) || n > long(o.hi))
-                return "expected an integer in [" + std::to_string(long(o.lo)) + ", " + std::to_string(long(o.hi)) +
+                return "expected " + (o.values.empty() ? std::string() : joined(o.values, "|") + " or ") +
+                       "an integer in [" + std::to_string(long(o.lo)) + ", " + std::to_string(long(o.hi)) +
                        "], got '" + v + "'";
             return "";
         }

@@ -28,7 +28,7 @@ enum class OptionKind {
     on_off,  // on|off: --NAME on|off
     toggle,  // on|off, given as --NAME / --no-NAME on the command line, `set NAME on|off` in a script
     number,  // a float in [lo, hi]: --NAME X
-    integer, // an integer in [lo, hi]: --NAME N
+    integer, // an integer in [lo, hi], or one of `values` (auto): --NAME N
     subset,  // a comma-separated subset of `values` (or `none`): --NAME a,b
 };
 
@@ -48,7 +48,8 @@ struct RenderOption {
 //   t.push_back(switch_option("depth-bounds", &ShaderOptions::depth_bounds));
 //   t.push_back(integer_option("tile-size", 8, 512, &ShaderOptions::tile_size));
 RenderOption switch_option(std::string name, bool ShaderOptions::*field);  // on|off
-RenderOption integer_option(std::string name, int lo, int hi, int ShaderOptions::*field);
+// with_auto: also takes `auto`, stored as 0 (a default the GL decides).
+RenderOption integer_option(std::string name, int lo, int hi, int ShaderOptions::*field, bool with_auto = false);
 
 // Every option, in the order the panel shows them.
 const std::vector<RenderOption>& render_options();

@@ -99,11 +99,14 @@ struct ShaderOptions {
     bool gbuffer_half = false;
     LightGeometry light_geometry = LightGeometry::quad;
     bool depth_bounds = false;      // EXT_depth_bounds_test on the quad passes (refused where missing)
-    // Measured on llvmpipe at 256x256 (docs/light_geometry.md): 16 pixels and 32 lights a pass were
-    // as fast as 8 pixels on 1024-overlap and faster on 32-large; 32 pixels let 3x more
-    // tile-light pairs through the depth culling.
-    int tile_size = 16;             // tiles: pixels per side
-    int tile_lights = 32;           // tiles: lights per pass (the shader's constant loop bound)
+    // tiles: pixels per side and lights per pass (the shader's constant loop bound); 0 is auto,
+    // resolved by choose_paths (Paths::tile_size, tile_lights) from the GL: on a CPU rasteriser 16
+    // and 32 (llvmpipe at 256x256: as fast as 8 pixels on 1024-overlap, faster on 32-large, and
+    // 32 pixels let 3x more tile-light pairs through the depth culling), else 32 and 8 (the H200:
+    // 7.16 against 9.13 ms on 1024-overlap at 1920x1080, 6.77 against 8.44 on 32-large;
+    // docs/light_geometry.md).
+    int tile_size = 0;
+    int tile_lights = 0;
     RenderTarget render_target = RenderTarget::automatic;
     TileGrouping tile_plan = TileGrouping::lists;
     bool tile_depth = true;         // tiles: leave out a tile's lights that miss its surfaces' depth span (tile_depth.cpp)

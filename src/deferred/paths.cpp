@@ -65,6 +65,8 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     // Light geometry (issue 12). Stencil needs a stencil buffer where P-buffer 0 is drawn: with
     // framebuffer objects a packed depth-stencil attachment, without them the main buffer's.
     p.light_geometry = opts.light_geometry;
+    p.tile_size = opts.tile_size ? opts.tile_size : caps.software_rasterizer ? 16 : 32;
+    p.tile_lights = opts.tile_lights ? opts.tile_lights : caps.software_rasterizer ? 32 : 8;
     if (opts.light_geometry == LightGeometry::stencil) {
         const char* missing = !caps.stencil ? "a stencil buffer"
                               : p.fbo && !caps.packed_depth_stencil ? "EXT_packed_depth_stencil"
@@ -124,7 +126,7 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
         p.refused = "--depth-handoff blit: the stencil geometry's depth-stencil buffer and the G-buffer's depth differ in "
                     "format, and a depth blit between them is INVALID_OPERATION (use --depth-handoff pass or auto)";
     else if (opts.light_geometry == LightGeometry::tiles &&
-             (opts.tile_size < 8 || opts.tile_size > 512 || opts.tile_lights < 1 || opts.tile_lights > 32))
+             (p.tile_size < 8 || p.tile_size > 512 || p.tile_lights < 1 || p.tile_lights > 32))
         p.refused = "tiles: tile size must be 8..512 and lights per pass 1..32";
     return p;
 }

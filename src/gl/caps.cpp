@@ -43,6 +43,8 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
     Caps c;
     c.vendor = gl_string(GL_VENDOR);
     c.renderer = gl_string(GL_RENDERER);
+    for (const char* sw : {"llvmpipe", "softpipe", "swrast"})
+        c.software_rasterizer = c.software_rasterizer || c.renderer.find(sw) != std::string::npos;
     c.version = gl_string(GL_VERSION);
     c.glsl_version = gl_string(GL_SHADING_LANGUAGE_VERSION);
     std::sscanf(c.version.c_str(), "%d.%d", &c.gl_major, &c.gl_minor);
@@ -118,7 +120,8 @@ std::string describe(const Caps& c) {
       << "  " << yn(c.stencil_two_side_ext) << " two-sided stencil        (EXT_stencil_two_side)\n"
       << "  " << yn(c.depth_bounds) << " depth bounds test        (EXT_depth_bounds_test)\n"
       << "  " << yn(c.framebuffer_blit) << " framebuffer blit         (EXT_framebuffer_blit)\n"
-      << "  " << yn(c.pbuffer_surfaces) << " pbuffer surfaces         (EGL pbuffers for --render-target pbuffer)\n";
+      << "  " << yn(c.pbuffer_surfaces) << " pbuffer surfaces         (EGL pbuffers for --render-target pbuffer)\n"
+      << "  " << yn(c.software_rasterizer) << " CPU rasteriser           (llvmpipe, softpipe or swrast: the tiles defaults)\n";
     if (!c.forced_off.empty()) {
         o << "forced off:";
         for (auto& f : c.forced_off) o << " " << f;

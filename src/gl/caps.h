@@ -30,6 +30,9 @@ struct Caps {
     bool depth_bounds = false;       // EXT_depth_bounds_test (NVIDIA; not llvmpipe)
     bool framebuffer_blit = false;   // EXT_framebuffer_blit (core in 3.0): the depth hand-off by blit (issue 13)
     bool pbuffer_surfaces = false;   // the context offers pbuffer surfaces (gl/surfaces.h: EGL)
+    // A CPU rasteriser (Mesa's llvmpipe, softpipe or swrast, by GL_RENDERER): the tiles geometry's
+    // defaults differ there (options.h).
+    bool software_rasterizer = false;
     std::vector<std::string> forced_off;  // names hidden by --caps / DSR_CAPS
 };
 
