@@ -13,33 +13,11 @@ uniform sampler2D normal_map;    // unit 0
 uniform sampler2D diffuse_map;   // unit 1
 uniform sampler2D specular_map;  // unit 2
 uniform sampler2D depth_map;     // unit 3
-#ifdef LIGHT_TEXTURE
-// --tile-light-data texture: row i of this RGBA32F texture holds light slot i's five vec4s at
-// x = 0..4 (LIGHT_TEXTURE_W x LIGHT_TEXTURE_H texels, nearest, no mipmaps, so the level sampled
-// does not depend on derivatives inside the loop). On the H200 the uniform arrays indexed by a
-// slot from a varying were most of the tiles' shading (docs/gpu.md).
-uniform sampler2D light_data;    // unit 4
-vec4 light_vec(int i, float k)
-{
-    return texture2D(light_data, vec2((k + 0.5) / LIGHT_TEXTURE_W, (float(i) + 0.5) / LIGHT_TEXTURE_H));
-}
-#define LIGHTPOS(i) light_vec(i, 0.0)
-#define LIGHTCOLOR(i) light_vec(i, 1.0)
-#define LIGHTDIR(i) light_vec(i, 2.0)
-#define LIGHTSPOT(i) light_vec(i, 3.0)
-#define LIGHTATT(i) light_vec(i, 4.0)
-#else
 uniform vec4 lightpos[BATCH];    // lighting.glsl light_contribution's five vec4s per light
 uniform vec4 lightcolor[BATCH];
 uniform vec4 lightdir[BATCH];
 uniform vec4 lightspot[BATCH];
 uniform vec4 lightatt[BATCH];
-#define LIGHTPOS(i) lightpos[i]
-#define LIGHTCOLOR(i) lightcolor[i]
-#define LIGHTDIR(i) lightdir[i]
-#define LIGHTSPOT(i) lightspot[i]
-#define LIGHTATT(i) lightatt[i]
-#endif
 uniform vec2 planes;
 #ifdef QUANTIZE_8BIT
 // How this GL converts a colour to 8 bits (gl/rounding_probe.h), so each term rounds as its own
@@ -60,12 +38,10 @@ uniform int light_count;    // --tile-plan groups: the draw's group, slots 0 .. 
 // would blend it, added to c.
 void shade(int i, vec3 pos, vec3 normal, vec3 diffuse, vec4 specular, float shininess, inout vec3 c, inout bool any)
 {
-    vec4 lp = LIGHTPOS(i);
+    vec4 lp = lightpos[i];
+    float type = lightcolor[i].w;
 #ifdef LIGHT_POINT_ONLY
-    float type = 0.0;
-#else
-    vec4 lcolor = LIGHTCOLOR(i);
-    float type = lcolor.w;
+    type = 0.0;
 #endif
 #ifdef LIGHT_DEPTH_TEST
     if (type < 1.5 && abs(pos.z - lp.z) > lp.w)
@@ -76,12 +52,11 @@ void shade(int i, vec3 pos, vec3 normal, vec3 diffuse, vec4 specular, float shin
     if (type < 1.5 && dot(d, d) >= lp.w * lp.w)
         return;
 #ifndef LIGHT_POINT_ONLY
-    vec4 ldir = LIGHTDIR(i);
-    if (type > 0.5 && type < 1.5 && dot(d, ldir.xyz) <= length(d) * ldir.w)
+    if (type > 0.5 && type < 1.5 && dot(d, lightdir[i].xyz) <= length(d) * lightdir[i].w)
         return;
 #endif
 #endif
-    vec3 t = clamp(light_contribution(lp, LIGHTCOLOR(i), LIGHTDIR(i), LIGHTSPOT(i), LIGHTATT(i), pos, normal,
+    vec3 t = clamp(light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, normal,
                                       diffuse, specular.rgb, shininess), 0.0, 1.0);
     // Each light's term clamped to [0, 1] as its own pass's blend would be and, into the RGBA8
     // P-buffer 0, rounded to the 8-bit step that pass would have written, as this GL rounds: the

@@ -251,23 +251,3 @@ TEST(LightGeometry, TilesDepthCullingOnThePositionPaths) {
 }
 
 }  // namespace dsr::test
-
-namespace dsr::test {
-
-// --tile-light-data texture (the GPU's auto): each light's five vec4s from a float texture row
-// instead of uniform arrays; the same image as quad's over several batches and with spot and
-// directional lights (the general shader's every fetch).
-TEST(LightGeometry, TilesLightDataFromATextureMatchQuad) {
-    for (const Scene& s : {with_overlapping_lights(default_scene(), 512), load_scene(resource_dir("data") + "/lights.scene")}) {
-        const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
-        ShaderOptions o = with_geometry(LightGeometry::tiles);
-        o.tile_light_data = TileLightData::texture;
-        const RenderResult tiles = render_scene(s, kW, kH, o);
-        ASSERT_TRUE(tiles.paths.tile_light_texture);
-        expect_same("tiles_light_texture", tiles, quad);
-        o.tile_light_data = TileLightData::automatic;  // a CPU rasteriser: the uniforms
-        EXPECT_FALSE(render_scene(s, 32, 32, o).paths.tile_light_texture);
-    }
-}
-
-}  // namespace dsr::test

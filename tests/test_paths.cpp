@@ -230,18 +230,6 @@ TEST(Paths, TileDefaultsFollowTheRasteriser) {
     EXPECT_EQ(p.tile_lights, 5);
     o.tile_size = 4;
     EXPECT_NE(choose_paths(c, o).refused.find("tile size must be 8..512"), std::string::npos);
-    // The light data: a float texture on a GPU that has float textures, uniforms elsewhere, and
-    // never for the groups plan (its index is uniform across a draw already).
-    o.tile_size = 0;
-    c.software_rasterizer = false;
-    EXPECT_TRUE(choose_paths(c, o).tile_light_texture);
-    c.texture_float = false;
-    EXPECT_FALSE(choose_paths(c, o).tile_light_texture);
-    o.tile_light_data = TileLightData::texture;
-    EXPECT_NE(choose_paths(c, o).refused.find("--tile-light-data texture needs ARB_texture_float"), std::string::npos);
-    c.texture_float = true;
-    o.tile_plan = TileGrouping::groups;
-    EXPECT_FALSE(choose_paths(c, o).tile_light_texture);
 }
 
 }  // namespace dsr

@@ -63,9 +63,6 @@ const char* kRendererOptions =
     "  --tile-size auto|N      tiles: pixels per tile side, 8..512 (default auto: 16 on a CPU\n"
     "                          rasteriser such as llvmpipe, else 32; `info` says which)\n"
     "  --tile-lights auto|N    tiles: lights per pass, 1..32 (default auto: 32 on a CPU rasteriser, else 8)\n"
-    "  --tile-light-data auto|uniforms|texture\n"
-    "                          tiles: each light's data from uniform arrays or a float texture, read\n"
-    "                          by the slot a tile carries (default auto: the texture on a GPU)\n"
     "  --ssao, --no-ssao       screen-space ambient occlusion scaling the ambient pass (default off)\n"
     "  --ssao-scale 1|2        AO buffer at full or half resolution (default 1)\n"
     "  --ssao-radius R         hemisphere radius in eye-space units, 0.01..100 (default 0.5)\n"
@@ -96,7 +93,6 @@ std::vector<CommandUsage> make_table() {
                   "[--bloom-mode color|listing] [--aa|--no-aa] [--aa-source normal|depth|both]",
                   "[--aa-kernel text|listing] [--aa-weight W]",
                   "[--light-geometry quad|volume|stencil|tiles] [--depth-bounds on|off] [--tile-size auto|N] [--tile-lights auto|N]",
-                  "[--tile-light-data auto|uniforms|texture]",
                   "[--tile-plan lists|groups] [--tile-depth on|off] [--render-target auto|fbo|copy|pbuffer]",
                   "[--ssao|--no-ssao] [--ssao-scale 1|2] [--ssao-radius R] [--ssao-strength S] [--ssao-samples N]",
                   "[--show-lights|--no-show-lights] [--depth-handoff auto|blit|pass]",

@@ -89,11 +89,6 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
         glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
         tile_batch_ = opts.tile_plan == TileGrouping::groups ? opts_.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
         tdefs.push_back("BATCH " + std::to_string(tile_batch_));
-        if (paths_.tile_light_texture) {  // light_tiles.frag LIGHT_TEXTURE: 8 x pow2(batch) texels
-            tdefs.push_back("LIGHT_TEXTURE");
-            tdefs.push_back("LIGHT_TEXTURE_W 8.0");
-            tdefs.push_back("LIGHT_TEXTURE_H " + std::to_string(next_pow2(tile_batch_)) + ".0");
-        }
         // P-buffer 0 is RGBA8: several lights summed in one pass are each rounded as their own
         // pass would be. One light a pass needs no emulation: the blend rounds it as quad's does.
         if (!opts.float_accum && opts_.tile_lights > 1) {

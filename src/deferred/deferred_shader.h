@@ -30,7 +30,6 @@
 #include "gl/program.h"
 #include "gl/state.h"
 #include "gl/stream_buffer.h"
-#include "gl/texture.h"
 #include "scene/bounds.h"
 #include "scene/image.h"
 #include "scene/scene.h"
@@ -289,7 +288,6 @@ private:
     std::unique_ptr<PBuffer> tile_depth_buf_;   // RGBA32F: a texel per tile, read back
     std::vector<std::unique_ptr<StreamBuffer>> tile_vertices_;  // each batch's tile quads (light_geometry_tiles.cpp)
     std::vector<float> tile_verts_;     // their CPU copy, kept for its storage
-    std::vector<Texture> tile_light_textures_;  // each batch's light data (--tile-light-data texture)
     void make_tile_depth_buf();
     std::vector<DepthSpan> tile_depth_spans();
     Program depth_copy_prog_;           // depth_copy.frag: the depth hand-off

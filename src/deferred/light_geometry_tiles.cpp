@@ -117,36 +117,18 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
             glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
             glTexCoordPointer(4, GL_FLOAT, bytes, at(kFixedFloats + 4 * k));
         }
-        const int count = int(batch.size());
-        if (paths_.tile_light_texture) {
-            // Row i: slot i's five vec4s (light_tiles.frag LIGHT_TEXTURE). A texture per batch of
-            // the frame, as the vertex buffers: refilling one still being read would wait.
-            std::vector<glm::vec4> rows;
-            for (int l : batch) {
-                const LightParams& p = lights[size_t(l)].params;
-                rows.insert(rows.end(), {p.pos, p.color, p.dir, p.spot, p.att});
-            }
-            glActiveTexture(GL_TEXTURE4);  // first: Texture's constructor binds on the active unit
-            if (size_t(uploads - 1) == tile_light_textures_.size())
-                tile_light_textures_.emplace_back(8, next_pow2(tile_batch_), GL_RGBA32F_ARB, GL_RGBA, GL_FLOAT, nullptr);
-            glBindTexture(GL_TEXTURE_2D, tile_light_textures_[size_t(uploads - 1)].id());
-            glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 5, count, GL_RGBA, GL_FLOAT, rows.data());
-            glActiveTexture(GL_TEXTURE0);
-            prog.set("light_data", 4);
-        } else {
-            pos.clear(), color.clear(), dir.clear(), spot.clear(), att.clear();
-            for (int l : batch) {  // lighting.glsl's five vec4s per light, one uniform array each
-                const LightParams& p = lights[size_t(l)].params;
-                pos.push_back(p.pos), color.push_back(p.color), dir.push_back(p.dir);
-                spot.push_back(p.spot), att.push_back(p.att);
-            }
-            prog.set_array("lightpos", pos.data(), count);
-            prog.set_array("lightcolor", color.data(), count);
-            prog.set_array("lightdir", dir.data(), count);
-            prog.set_array("lightspot", spot.data(), count);
-            prog.set_array("lightatt", att.data(), count);
+        pos.clear(), color.clear(), dir.clear(), spot.clear(), att.clear();
+        for (int l : batch) {  // lighting.glsl's five vec4s per light, one uniform array each
+            const LightParams& p = lights[size_t(l)].params;
+            pos.push_back(p.pos), color.push_back(p.color), dir.push_back(p.dir);
+            spot.push_back(p.spot), att.push_back(p.att);
         }
+        const int count = int(batch.size());
+        prog.set_array("lightpos", pos.data(), count);
+        prog.set_array("lightcolor", color.data(), count);
+        prog.set_array("lightdir", dir.data(), count);
+        prog.set_array("lightspot", spot.data(), count);
+        prog.set_array("lightatt", att.data(), count);
         if (groups) prog.set("light_count", count);
         for (size_t di = 0; di < draws.size(); ++di) {
             q.begin();
@@ -186,11 +168,6 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     glClientActiveTexture(GL_TEXTURE0);
     glDisableClientState(GL_VERTEX_ARRAY);
     StreamBuffer::unbind();
-    if (paths_.tile_light_texture) {  // leave unit 4 as tile_depth_spans does
-        glActiveTexture(GL_TEXTURE4);
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glActiveTexture(GL_TEXTURE0);
-    }
     q.collect(stats);
     stats.tile_plan_ms = plan_ms;
 }

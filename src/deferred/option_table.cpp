@@ -93,17 +93,6 @@ std::vector<RenderOption> make_table() {
         [](RenderOptions& r, const std::string& v) { r.shader.tile_plan = v == "groups" ? TileGrouping::groups : TileGrouping::lists; }));
     t.push_back(switch_option("tile-depth", &ShaderOptions::tile_depth));
     t.push_back(choice(
-        "tile-light-data", {"auto", "uniforms", "texture"},
-        [](const RenderOptions& r) {
-            const TileLightData d = r.shader.tile_light_data;
-            return std::string(d == TileLightData::uniforms ? "uniforms" : d == TileLightData::texture ? "texture" : "auto");
-        },
-        [](RenderOptions& r, const std::string& v) {
-            r.shader.tile_light_data = v == "uniforms"  ? TileLightData::uniforms
-                                       : v == "texture" ? TileLightData::texture
-                                                        : TileLightData::automatic;
-        }));
-    t.push_back(choice(
         "lighting", {"equations", "listing"},
         [](const RenderOptions& r) { return r.shader.listing2_literal ? "listing" : "equations"; },
         [](RenderOptions& r, const std::string& v) { r.shader.listing2_literal = v == "listing"; }));

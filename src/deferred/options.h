@@ -38,8 +38,6 @@ enum class LightGeometry { quad, volume, stencil, tiles };
 // EXT_framebuffer_object exists, else copy; pbuffer needs a context with pbuffer surfaces (EGL).
 enum class RenderTarget { automatic, fbo, copy, pbuffer };
 
-enum class TileLightData { automatic, uniforms, texture };
-
 // The tiles geometry's plan (tile_plan.h): exact per-tile light lists, or groups of lights drawn
 // over the union of their tiles.
 enum class TileGrouping { lists, groups };
@@ -111,11 +109,6 @@ struct ShaderOptions {
     int tile_lights = 0;
     RenderTarget render_target = RenderTarget::automatic;
     TileGrouping tile_plan = TileGrouping::lists;
-    // tiles (lists plan): where the shader reads each light's data by the slot a quad carries:
-    // uniform arrays, or an RGBA32F texture (one row per light); auto: the texture on a GPU with
-    // float textures (on the H200 the per-slot uniform fetch was most of the tiles' shading), the
-    // uniforms on a CPU rasteriser.
-    TileLightData tile_light_data = TileLightData::automatic;
     bool tile_depth = true;         // tiles: leave out a tile's lights that miss its surfaces' depth span (tile_depth.cpp)
     SsaoOptions ssao;
     // Issue 13: the forward stage after the light passes (forward_stage.cpp).

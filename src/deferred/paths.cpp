@@ -67,10 +67,6 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     p.light_geometry = opts.light_geometry;
     p.tile_size = opts.tile_size ? opts.tile_size : caps.software_rasterizer ? 16 : 32;
     p.tile_lights = opts.tile_lights ? opts.tile_lights : caps.software_rasterizer ? 32 : 8;
-    p.tile_light_texture = opts.light_geometry == LightGeometry::tiles && opts.tile_plan == TileGrouping::lists &&
-                           (opts.tile_light_data == TileLightData::texture ||
-                            (opts.tile_light_data == TileLightData::automatic && !caps.software_rasterizer &&
-                             caps.texture_float));
     if (opts.light_geometry == LightGeometry::stencil) {
         const char* missing = !caps.stencil ? "a stencil buffer"
                               : p.fbo && !caps.packed_depth_stencil ? "EXT_packed_depth_stencil"
@@ -129,8 +125,6 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     else if (opts.depth_handoff == DepthHandoff::blit && p.accum_stencil)
         p.refused = "--depth-handoff blit: the stencil geometry's depth-stencil buffer and the G-buffer's depth differ in "
                     "format, and a depth blit between them is INVALID_OPERATION (use --depth-handoff pass or auto)";
-    else if (p.tile_light_texture && !caps.texture_float)
-        p.refused = "--tile-light-data texture needs ARB_texture_float, which this GL lacks" + forced_note(caps, "no-float");
     else if (opts.light_geometry == LightGeometry::tiles &&
              (p.tile_size < 8 || p.tile_size > 512 || p.tile_lights < 1 || p.tile_lights > 32))
         p.refused = "tiles: tile size must be 8..512 and lights per pass 1..32";

@@ -40,7 +40,6 @@ struct Paths {
     LightGeometry light_geometry = LightGeometry::quad;
     std::string light_geometry_note;
     int tile_size = 16, tile_lights = 32;  // tiles: as asked, or the GL's defaults for 0 (auto)
-    bool tile_light_texture = false;       // tiles: light data from a float texture (options.h)
     enum class StencilFaces { separate, two_side_ext, one_sided };  // GL 2.0 | EXT_stencil_two_side | two passes
     StencilFaces stencil_faces = StencilFaces::separate;
     // P-buffers 0 and 1 get a depth attachment the G-buffer's depth is handed to (the volume,
