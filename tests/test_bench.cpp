@@ -291,6 +291,8 @@ TEST(Bench, ConfigTextNamesEveryChoice) {
     r.depth = "packed", r.encoding = "log", r.scissor = false, r.gbuffer = "half", r.skips_off.clear();
     EXPECT_EQ(bench::config_text(r), "deferred packed/log - half");
     EXPECT_EQ(bench::config_text(forward_row("default", 3, "forward-multi", 1.0)), "forward-multi");
+    r.light_geometry = "tiles", r.tile_size = 32, r.tile_lights = 8;  // the tiles settings as run (auto resolved)
+    EXPECT_EQ(bench::config_text(r), "deferred packed/log - half tiles 32/8");
 }
 
 // The goals as the report states them, judged on rows made by hand: met, NOT met, not measured,
@@ -476,7 +478,7 @@ TEST(Bench, FastestRowIsTheFasterForm) {
 TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     const nlohmann::ordered_json f = bench::row_json(forward_row("default", 3, "forward-single", 2.0));
     const std::vector<std::string> keys = {
-        "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "gbuffer_bytes_per_pixel", "light_geometry", "scissor", "skips_off",
+        "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "gbuffer_bytes_per_pixel", "light_geometry", "tile_size", "tile_lights", "scissor", "skips_off",
         "lights", "lights_label", "size", "frames", "ms_median", "ms_min", "ms_max", "cpu_ms_median", "light_fragments",
         "ideal_fragments", "fragments_ratio", "scissor_pixels", "lights_drawn", "passes", "max_lsb", "mean_lsb",
         "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic", "light_invocations",

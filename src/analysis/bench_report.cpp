@@ -28,6 +28,8 @@ json row_json(const Row& r) {
     j["gbuffer"] = r.gbuffer ? json(*r.gbuffer) : json(nullptr);
     j["gbuffer_bytes_per_pixel"] = r.gbuffer_bytes_per_pixel;  // 0: forward rows have no G-buffer
     j["light_geometry"] = r.light_geometry ? json(*r.light_geometry) : json(nullptr);
+    j["tile_size"] = r.tile_size ? json(*r.tile_size) : json(nullptr);
+    j["tile_lights"] = r.tile_lights ? json(*r.tile_lights) : json(nullptr);
     j["scissor"] = r.scissor;
     j["skips_off"] = r.skips_off;
     j["lights"] = r.lights;

@@ -96,6 +96,8 @@ std::unique_ptr<RowRun> deferred(const Config& cfg, const Caps& caps, const std:
     if (depth == DepthPath::packed) r.encoding = encoding_name(enc);
     r.gbuffer = gbuffer_half ? "half" : "rgba8";
     r.light_geometry = light_geometry_name(run->ds->paths().light_geometry);
+    if (run->ds->paths().light_geometry == LightGeometry::tiles)
+        r.tile_size = run->ds->paths().tile_size, r.tile_lights = run->ds->paths().tile_lights;
     r.scissor = scissor;
     r.skips_off = skips_off;
     return run;
@@ -144,6 +146,7 @@ std::string config_text(const Row& r) {
     if (r.gbuffer == std::string("half")) s += " half";
     for (auto& k : r.skips_off) s += " no-" + k;
     if (r.light_geometry && *r.light_geometry != "quad") s += " " + *r.light_geometry;
+    if (r.tile_size && r.tile_lights) s += " " + std::to_string(*r.tile_size) + "/" + std::to_string(*r.tile_lights);
     return s;
 }
 

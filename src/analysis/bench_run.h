@@ -43,6 +43,7 @@ struct Row {
     std::optional<std::string> accum;       // forward rows: "float" (RGBA32F target) | "rgba8" (the main buffer)
     std::optional<std::string> depth, encoding, gbuffer;  // gbuffer: rgba8 | half
     std::optional<std::string> light_geometry;  // deferred rows, as run: quad | volume | stencil | tiles
+    std::optional<int> tile_size, tile_lights;  // tiles rows, as run (--tile-size/--tile-lights auto resolved)
     bool scissor = false;
     std::vector<std::string> skips_off;
     int lights = 0, w = 0, h = 0, frames = 0;
