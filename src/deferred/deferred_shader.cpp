@@ -205,10 +205,20 @@ glm::vec3 DeferredShader::view_ray_at(float x, float y) const {
            v * ((1 - u) * corner_rays_[3] + u * corner_rays_[2]);
 }
 
+glm::vec4 DeferredShader::ray_map() const {
+    const glm::vec3 lo = corner_rays_[0], hi = corner_rays_[2];
+    return glm::vec4((hi.x - lo.x) / float(w_), (hi.y - lo.y) / float(h_), lo.x, lo.y);
+}
+
+glm::vec2 DeferredShader::gbuffer_uv_scale() const {
+    return glm::vec2(gbuf().tex_scale_x() / float(w_), gbuf().tex_scale_y() / float(h_));
+}
+
 void DeferredShader::draw_rect(float x0, float y0, float x1, float y1, bool rays) {
     const float xs[4] = {x0, x1, x1, x0}, ys[4] = {y0, y0, y1, y1};
     // The G-buffer's content may be padded to powers of two: scale into its extent.
-    const float sx = gbuf().tex_scale_x() / float(w_), sy = gbuf().tex_scale_y() / float(h_);
+    const glm::vec2 uv = gbuffer_uv_scale();
+    const float sx = uv.x, sy = uv.y;
     glBegin(GL_QUADS);
     for (int i = 0; i < 4; ++i) {
         glMultiTexCoord2f(GL_TEXTURE0, xs[i] * sx, ys[i] * sy);

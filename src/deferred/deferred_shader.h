@@ -250,6 +250,11 @@ private:
     void draw_rect(float x0, float y0, float x1, float y1, bool rays);
     // The eye-space view ray (x, y, -1) at window position (x, y): bilinear in the corner rays.
     glm::vec3 view_ray_at(float x, float y) const;
+    // The view ray's affine map of window coordinates, as the light shaders take it from
+    // gl_FragCoord: (x, y) = window.xy * ray_map.xy + ray_map.zw, z = -1.
+    glm::vec4 ray_map() const;
+    // G-buffer texture coordinates per window pixel (its textures may be padded to powers of two).
+    glm::vec2 gbuffer_uv_scale() const;
     void set_ortho(int w, int h);
     // Shader defines of the depth path and packed encoding (glsl120/depth_codec.glsl).
     std::vector<std::string> depth_defines() const;
@@ -258,6 +263,7 @@ private:
     // The material program a material draws with into `target` (-1: all, MRT).
     Program& material_program(const GpuMaterial& m, int target);
     PBuffer& gbuf() { return targets_->gbuffer(); }
+    const PBuffer& gbuf() const { return targets_->gbuffer(); }
     PBuffer& pbuf(int role) { return targets_->pbuffer(role); }
 
     Caps caps_;

@@ -43,14 +43,13 @@ void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, Fra
     const TileDepth* cull = spans.empty() ? nullptr : &depth;
     if (cull) {
         const int ts = opts_.tile_size, tx = (w_ + ts - 1) / ts;
-        const glm::vec3 lo = corner_rays_[0], hi = corner_rays_[2];  // light.frag's ray_map
-        const glm::vec4 ray_map((hi.x - lo.x) / float(w_), (hi.y - lo.y) / float(h_), lo.x, lo.y);
+        const glm::vec4 rays = ray_map();  // light.frag's
         // position16 stores x and y as half floats, up to 2^-11 off the ray, relative: two such steps.
         const float slack = opts_.depth == DepthPath::position16 ? 1.0f / 1024.0f : 0.0f;
         for (size_t t = 0; t < spans.size(); ++t) {
             const int x = int(t) % tx, y = int(t) / tx;
             depth.tiles.push_back(tile_box(spans[t], float(x * ts), float(y * ts), float(std::min(w_, (x + 1) * ts)),
-                                           float(std::min(h_, (y + 1) * ts)), ray_map, slack));
+                                           float(std::min(h_, (y + 1) * ts)), rays, slack));
         }
         depth.lights.resize(lights.size());
         for (size_t i = 0; i < lights.size(); ++i) {

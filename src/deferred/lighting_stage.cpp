@@ -99,10 +99,9 @@ void DeferredShader::set_light_uniforms(Program& prog) {
     prog.set("planes", planes_);
     prog.set("zrange", zrange_);
     // Texture coordinates from gl_FragCoord (the G-buffer may be padded to powers of two).
-    prog.set("uv_scale", glm::vec2(gbuf().tex_scale_x() / float(w_), gbuf().tex_scale_y() / float(h_)));
+    prog.set("uv_scale", gbuffer_uv_scale());
     // The view ray through window point (x, y): the corner rays' bilinear map, which is affine.
-    const glm::vec3 lo = corner_rays_[0], hi = corner_rays_[2];
-    prog.set("ray_map", glm::vec4((hi.x - lo.x) / float(w_), (hi.y - lo.y) / float(h_), lo.x, lo.y));
+    prog.set("ray_map", ray_map());
 }
 
 // set_light_params: one light as lighting.glsl's five vec4s (light_params.h).

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "deferred/deferred_shader.h"
+#include "deferred/screen_quad.h"
 #include "gl/check.h"
 #include "gl/state.h"
 
@@ -55,11 +56,9 @@ std::vector<DepthSpan> DeferredShader::tile_depth_spans() {
     tile_depth_prog_.set("depth_map", 3);
     tile_depth_prog_.set("planes", planes_);
     tile_depth_prog_.set("zrange", zrange_);
-    tile_depth_prog_.set("texel", glm::vec2(gbuf().tex_scale_x() / float(w_), gbuf().tex_scale_y() / float(h_)));
+    tile_depth_prog_.set("texel", gbuffer_uv_scale());
     tile_depth_prog_.set("size", glm::vec2(float(w_), float(h_)));
-    glBegin(GL_QUADS);
-    glVertex2f(0, 0), glVertex2f(float(tx), 0), glVertex2f(float(tx), float(rows)), glVertex2f(0, float(rows));
-    glEnd();
+    draw_quad(float(tx), float(rows), 1, 1);  // both passes read gl_FragCoord, not texture coordinates
     tile_depth_rows_->unbind_render();
     // Pass 2: each tile's rows together, on unit 4 (not one of the G-buffer's 0..3).
     tile_depth_buf_->bind_render();
@@ -71,9 +70,7 @@ std::vector<DepthSpan> DeferredShader::tile_depth_spans() {
     tile_reduce_prog_.set("texel", glm::vec2(1.0f / float(tile_depth_rows_->texture_width()),
                                              1.0f / float(tile_depth_rows_->texture_height())));
     tile_reduce_prog_.set("rows", float(rows));
-    glBegin(GL_QUADS);
-    glVertex2f(0, 0), glVertex2f(float(tx), 0), glVertex2f(float(tx), float(ty)), glVertex2f(0, float(ty));
-    glEnd();
+    draw_quad(float(tx), float(ty), 1, 1);
     // Read from the bound framebuffer: one texel per tile, two floats used of four.
     std::vector<float> px(size_t(tx) * ty * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);

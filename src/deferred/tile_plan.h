@@ -9,12 +9,11 @@
 //     vertices carrying its lights' indices into the batch. So a frame is a handful of draws, not
 //     one per tile (the earlier plan: 2040 draws at 1920x1080, 13 ms of CPU submission on the H200).
 #pragma once
-#include <limits>
-#include <vector>
-
 #include <array>
 #include <initializer_list>
+#include <limits>
 #include <memory>
+#include <vector>
 
 #include <glm/glm.hpp>
 
