@@ -52,9 +52,10 @@ void main()
     vec3 Mdiff = texture2D(colortex, txcoord).rgb * diffuse;
     vec3 Mspec = texture2D(speculartex, txcoord).rgb * specular;
     vec3 c = ambient * Mdiff;  // Equation 6 (zero on additive passes)
+    vec3 v = view_vector(vpos);
     for (int i = 0; i < MAX_LIGHTS; ++i) {
         if (i >= nlights) break;
-        c += light_contribution(lightpos[i], lightcolor[i], lightdir[i], lightspot[i], lightatt[i], vpos, n, Mdiff,
+        c += light_contribution(lightpos[i], lightcolor[i], lightdir[i], lightspot[i], lightatt[i], vpos, v, n, Mdiff,
                                 Mspec, shininess);
     }
 #ifdef OPACITY

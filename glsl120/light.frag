@@ -79,7 +79,7 @@ void main()
 #endif
     vec3 diffuse = texture2D(diffuse_map, texcoord).rgb;
     vec4 specular = texture2D(specular_map, texcoord);
-    vec3 c = light_contribution(lightpos, lightcolor, lightdir, lightspot, lightatt, pos, normal, diffuse,
+    vec3 c = light_contribution(lightpos, lightcolor, lightdir, lightspot, lightatt, pos, view_vector(pos), normal, diffuse,
                                 specular.rgb, decode_shininess(specular.a));
     gl_FragColor = vec4(c, 1.0);
 }

@@ -36,7 +36,7 @@ uniform int light_count;    // --tile-plan groups: the draw's group, slots 0 .. 
 
 // Light slot i of the batch at surface point pos: its term, clamped and rounded as its own pass
 // would blend it, added to c.
-void shade(int i, vec3 pos, vec3 normal, vec3 diffuse, vec4 specular, float shininess, inout vec3 c, inout bool any)
+void shade(int i, vec3 pos, vec3 v, vec3 normal, vec3 diffuse, vec4 specular, float shininess, inout vec3 c, inout bool any)
 {
     vec4 lp = lightpos[i];
     float type = lightcolor[i].w;
@@ -56,7 +56,7 @@ void shade(int i, vec3 pos, vec3 normal, vec3 diffuse, vec4 specular, float shin
         return;
 #endif
 #endif
-    vec3 t = clamp(light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, normal,
+    vec3 t = clamp(light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, v, normal,
                                       diffuse, specular.rgb, shininess), 0.0, 1.0);
     // Each light's term clamped to [0, 1] as its own pass's blend would be and, into the RGBA8
     // P-buffer 0, rounded to the 8-bit step that pass would have written, as this GL rounds: the
@@ -86,6 +86,7 @@ void main()
     vec3 diffuse = texture2D(diffuse_map, texcoord).rgb;
     vec4 specular = texture2D(specular_map, texcoord);
     float shininess = decode_shininess(specular.a);
+    vec3 v = view_vector(pos);  // once, not per light
     vec3 c = vec3(0.0);
     bool any = false;
 #ifdef ID_VECS
@@ -96,17 +97,17 @@ void main()
         float hi = floor(pair / 256.0);
         if (hi > 254.5)
             break;
-        shade(int(hi), pos, normal, diffuse, specular, shininess, c, any);
+        shade(int(hi), pos, v, normal, diffuse, specular, shininess, c, any);
         float lo = pair - 256.0 * hi;
         if (lo > 254.5)
             break;
-        shade(int(lo), pos, normal, diffuse, specular, shininess, c, any);
+        shade(int(lo), pos, v, normal, diffuse, specular, shininess, c, any);
     }
 #else
     for (int k = 0; k < MAX_LIGHTS; ++k) {
         if (k >= light_count)
             break;
-        shade(k, pos, normal, diffuse, specular, shininess, c, any);
+        shade(k, pos, v, normal, diffuse, specular, shininess, c, any);
     }
 #endif
     if (!any)
