@@ -5,14 +5,21 @@
 // light, not normalised, dist = length(l)); the ambient term is the fixed-function pass (Eq. 6).
 // v is view_vector(p), taken once per pixel by the caller: a shader that loops over lights
 // (forward.frag, light_tiles.frag) would otherwise normalise the same vector for every light
-// (the compiler does not hoist it: 1024-overlap's tiles light stage took 7% longer on llvmpipe).
+// (llvmpipe does not hoist it: 1024-overlap's tiles light stage took 7% longer, forward single-pass
+// on 32-large 10%). VIEW_PER_LIGHT takes it here from p instead, per light, as before: the NVIDIA
+// compiler made forward single-pass's general-light loop (32-large) 45% slower with v passed in
+// (3.96 against 5.74 ms at 1080p on the H200; docs/gpu.md, run 10), so the forward renderer asks
+// for it on GPUs where its lights need the general shader.
 vec3 view_vector(vec3 p)
 {
     return -normalize(p);  // Equation 5: from p towards the viewer at the eye-space origin
 }
 
-vec3 brdf(vec3 Scolor, vec3 l, float dist, vec3 v, vec3 n, vec3 Mdiff, vec3 Mspec, float Mshi)
+vec3 brdf(vec3 Scolor, vec3 l, float dist, vec3 p, vec3 v, vec3 n, vec3 Mdiff, vec3 Mspec, float Mshi)
 {
+#ifdef VIEW_PER_LIGHT
+    v = view_vector(p);
+#endif
 #ifdef LISTING2_LITERAL
     v = -v;  // Listing 2's normalize(p), exactly: negation rounds nothing
     vec3 h = normalize(v + l);
@@ -34,7 +41,7 @@ vec3 lighting(vec3 Scolor, vec3 Spos, float Sradius, vec3 p, vec3 v, vec3 n, vec
     vec3 l = Spos - p;                          // from p towards the light
     float dist = length(l);
     float att = max(0.0, 1.0 - dist / Sradius); // Equation 2
-    return att * brdf(Scolor, l, dist, v, n, Mdiff, Mspec, Mshi);
+    return att * brdf(Scolor, l, dist, p, v, n, Mdiff, Mspec, Mshi);
 }
 
 // One light of any type (issue 12) at eye-space point p, seen along v = view_vector(p); scene/light_law.h is its CPU twin and
@@ -70,7 +77,7 @@ vec3 light_contribution(vec4 Lpos, vec4 Lcolor, vec4 Ldir, vec4 Lspot, vec4 Latt
     float edge = c > Ldir.w ? smoothstep(Ldir.w, Lspot.x, c) : 0.0;
     float spot = edge * (Lspot.y > 0.0 ? pow(max(c, 1e-30), Lspot.y) : 1.0);
     f = directional ? 1.0 : (Lcolor.w > 0.5 ? f * spot : f);
-    return f * brdf(Lcolor.rgb, l, dist, v, n, Mdiff, Mspec, Mshi);
+    return f * brdf(Lcolor.rgb, l, dist, p, v, n, Mdiff, Mspec, Mshi);
 #endif
 }
 

@@ -64,13 +64,16 @@ ForwardRenderer::~ForwardRenderer() = default;
 
 // The tutorial's point lights take forward.frag with LIGHT_POINT_ONLY (lighting.glsl: no type or
 // law selection, the cost the forward rows always had); a scene with any other light the general
-// shader. Rebuilt only when a scene needs the other kind.
+// shader (with VIEW_PER_LIGHT on a GPU). Rebuilt only when a scene needs the other kind.
 void ForwardRenderer::build_programs(bool any_light) {
     for (int nm = 0; nm < 2; ++nm) {
         std::vector<std::string> defs = {"MAX_LIGHTS " + std::to_string(batch_)};
         if (nm) defs.push_back("NORMAL_MAP");
         if (opts_.listing2_literal) defs.push_back("LISTING2_LITERAL");
         if (!any_light) defs.push_back("LIGHT_POINT_ONLY");
+        // lighting.glsl: the view vector per light, the form each compiler ran fastest (forward
+        // single-pass is the baseline the deferred rows are held against, so it gets its best).
+        if (any_light && !caps_.software_rasterizer) defs.push_back("VIEW_PER_LIGHT");
         prog_[nm] = Program(shader_dir_, "forward.vert", "forward.frag", defs);
         prog_[nm].use();
         prog_[nm].set("normaltex", 0);
