@@ -6,10 +6,10 @@
 // v is view_vector(p), taken once per pixel by the caller: a shader that loops over lights
 // (forward.frag, light_tiles.frag) would otherwise normalise the same vector for every light
 // (llvmpipe does not hoist it: 1024-overlap's tiles light stage took 7% longer, forward single-pass
-// on 32-large 10%). VIEW_PER_LIGHT takes it here from p instead, per light, as before: the NVIDIA
-// compiler made forward single-pass's general-light loop (32-large) 45% slower with v passed in
-// (3.96 against 5.74 ms at 1080p on the H200; docs/gpu.md, run 10), so the forward renderer asks
-// for it on GPUs where its lights need the general shader.
+// on 32-large 10%). VIEW_PER_LIGHT takes it from p per light instead, as before: with v passed
+// in, the NVIDIA compiler ran forward single-pass's general-light loop (32-large) 45% slower (H200
+// at 1080p: 3.96 against 5.74 ms; docs/gpu.md, run 10), so the forward renderer asks for it on
+// GPUs where its lights need the general shader.
 vec3 view_vector(vec3 p)
 {
     return -normalize(p);  // Equation 5: from p towards the viewer at the eye-space origin
@@ -17,15 +17,15 @@ vec3 view_vector(vec3 p)
 
 vec3 brdf(vec3 Scolor, vec3 l, float dist, vec3 p, vec3 v, vec3 n, vec3 Mdiff, vec3 Mspec, float Mshi)
 {
-#ifdef VIEW_PER_LIGHT
-    v = view_vector(p);
-#endif
 #ifdef LISTING2_LITERAL
     v = -v;  // Listing 2's normalize(p), exactly: negation rounds nothing
     vec3 h = normalize(v + l);
     l = l / max(dist, 1e-30);
 #else
     l = dist > 0.0 ? l / dist : n;
+#ifdef VIEW_PER_LIGHT
+    v = -normalize(p);  // here, after l, where it always was: first in brdf, 4.21-4.27 ms (run 10)
+#endif
     vec3 hv = l + v;
     float hl = length(hv);
     vec3 h = hl > 1e-6 ? hv / hl : n;           // l opposite v: no highlight, no NaN
