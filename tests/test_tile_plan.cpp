@@ -56,16 +56,20 @@ void check_plan(const std::vector<ScissorRect>& rects, int w, int h, int ts, int
         for (const TileQuad& q : d.quads) {
             EXPECT_LE(int(q.slots.size()), n);
             EXPECT_FALSE(q.slots.empty());
+            // One tile high, a run of whole tiles wide (the last may end at the screen's edge).
             EXPECT_EQ(q.x0 % ts, 0);
             EXPECT_EQ(q.y0 % ts, 0);
-            EXPECT_EQ(q.x1, std::min(w, q.x0 + ts));
+            EXPECT_GT(q.x1, q.x0);
+            EXPECT_TRUE(q.x1 == w || (q.x1 % ts == 0 && q.x1 < w)) << q.x1;
             EXPECT_EQ(q.y1, std::min(h, q.y0 + ts));
-            EXPECT_TRUE(tiles_of_draw.insert({q.x0 / ts, q.y0 / ts}).second) << "a tile twice in one draw";
-            for (int s : q.slots) {
-                ASSERT_GE(s, 0);
-                ASSERT_LT(s, int(batch.size()));
-                shaded[{q.x0 / ts, q.y0 / ts}].insert(batch[size_t(s)]);
-                ++pairs;
+            for (int tx = q.x0 / ts; tx * ts < q.x1; ++tx) {
+                EXPECT_TRUE(tiles_of_draw.insert({tx, q.y0 / ts}).second) << "a tile twice in one draw";
+                for (int s : q.slots) {
+                    ASSERT_GE(s, 0);
+                    ASSERT_LT(s, int(batch.size()));
+                    shaded[{tx, q.y0 / ts}].insert(batch[size_t(s)]);
+                    ++pairs;
+                }
             }
         }
     }
@@ -185,14 +189,19 @@ TEST(TilePlan, SphereMeetsBoxAgainstSampling) {
 }
 
 TEST(TilePlan, OneDrawPerLayerNotPerTile) {
-    // 64 lights over the whole 256x256 screen, 8 per pass, one batch: 8 draws of 64 tiles each.
+    // 64 lights over the whole 256x256 screen, 8 per pass, one batch: 8 draws of 64 tiles each,
+    // every tile of a row with the same lights, so one quad a row.
     std::vector<ScissorRect> rects(64, ScissorRect{0, 0, 256, 256});
     const TilePlan plan = plan_tiles(rects, 256, 256, 32, 8, 128);
     ASSERT_EQ(plan.batches.size(), 1u);
     ASSERT_EQ(plan.draws.size(), 8u);
     for (const TileDraw& d : plan.draws) {
-        EXPECT_EQ(d.quads.size(), 64u);
-        for (const TileQuad& q : d.quads) EXPECT_EQ(q.slots.size(), 8u);
+        EXPECT_EQ(d.quads.size(), 8u);
+        for (const TileQuad& q : d.quads) {
+            EXPECT_EQ(q.slots.size(), 8u);
+            EXPECT_EQ(q.x0, 0);
+            EXPECT_EQ(q.x1, 256);
+        }
     }
     EXPECT_EQ(plan.tile_light_pairs, 64 * 64);
 }

@@ -267,17 +267,31 @@ long long TilePlanner::plan_batch(int b, std::vector<TileDraw>& out) {
     for (int first = 0; first < most; first += n) {
         TileDraw d;
         d.batch = b;
-        for (int y = 0; y < ty; ++y)
+        for (int y = 0; y < ty; ++y) {
+            const size_t row = d.quads.size();  // this row's quads start here
             for (int x = 0; x < tx; ++x) {
                 const size_t t = size_t(y) * tx + x;
                 const int count = m.start[t + 1] - m.start[t];
                 if (count <= first) continue;
-                TileQuad q{x * ts, y * ts, std::min(m.width, (x + 1) * ts), std::min(m.height, (y + 1) * ts), {}};
                 const int* bin = m.sorted.data() + m.start[t];
-                q.slots.assign(bin + first, bin + std::min(count, first + n));
-                pairs += long(q.slots.size());
+                const int* lo = bin + first;
+                const int* hi = bin + std::min(count, first + n);
+                pairs += long(hi - lo);
+                // A run of tiles along the row with the same lights is one quad: the same pixels
+                // shade the same lights in the same order, with fewer quads to set up (lights as
+                // large as 32-large's give most tiles of a row the same list).
+                if (d.quads.size() > row) {
+                    TileQuad& last = d.quads.back();
+                    if (last.x1 == x * ts && std::equal(lo, hi, last.slots.begin(), last.slots.end())) {
+                        last.x1 = std::min(m.width, (x + 1) * ts);
+                        continue;
+                    }
+                }
+                TileQuad q{x * ts, y * ts, std::min(m.width, (x + 1) * ts), std::min(m.height, (y + 1) * ts), {}};
+                q.slots.assign(lo, hi);
                 d.quads.push_back(q);
             }
+        }
         out.push_back(std::move(d));
     }
     return pairs;
