@@ -56,21 +56,24 @@ void check_plan(const std::vector<ScissorRect>& rects, int w, int h, int ts, int
         for (const TileQuad& q : d.quads) {
             EXPECT_LE(int(q.slots.size()), n);
             EXPECT_FALSE(q.slots.empty());
-            // One tile high, a run of whole tiles wide (the last may end at the screen's edge).
+            // Whole tiles (merged neighbours with the same lights; the last row and column may end
+            // at the screen's edge).
             EXPECT_EQ(q.x0 % ts, 0);
             EXPECT_EQ(q.y0 % ts, 0);
             EXPECT_GT(q.x1, q.x0);
+            EXPECT_GT(q.y1, q.y0);
             EXPECT_TRUE(q.x1 == w || (q.x1 % ts == 0 && q.x1 < w)) << q.x1;
-            EXPECT_EQ(q.y1, std::min(h, q.y0 + ts));
-            for (int tx = q.x0 / ts; tx * ts < q.x1; ++tx) {
-                EXPECT_TRUE(tiles_of_draw.insert({tx, q.y0 / ts}).second) << "a tile twice in one draw";
-                for (int s : q.slots) {
-                    ASSERT_GE(s, 0);
-                    ASSERT_LT(s, int(batch.size()));
-                    shaded[{tx, q.y0 / ts}].insert(batch[size_t(s)]);
-                    ++pairs;
+            EXPECT_TRUE(q.y1 == h || (q.y1 % ts == 0 && q.y1 < h)) << q.y1;
+            for (int ty = q.y0 / ts; ty * ts < q.y1; ++ty)
+                for (int tx = q.x0 / ts; tx * ts < q.x1; ++tx) {
+                    EXPECT_TRUE(tiles_of_draw.insert({tx, ty}).second) << "a tile twice in one draw";
+                    for (int s : q.slots) {
+                        ASSERT_GE(s, 0);
+                        ASSERT_LT(s, int(batch.size()));
+                        shaded[{tx, ty}].insert(batch[size_t(s)]);
+                        ++pairs;
+                    }
                 }
-            }
         }
     }
     EXPECT_EQ(pairs, plan.tile_light_pairs);
@@ -190,18 +193,19 @@ TEST(TilePlan, SphereMeetsBoxAgainstSampling) {
 
 TEST(TilePlan, OneDrawPerLayerNotPerTile) {
     // 64 lights over the whole 256x256 screen, 8 per pass, one batch: 8 draws of 64 tiles each,
-    // every tile of a row with the same lights, so one quad a row.
+    // every tile with the same lights, so one quad a draw.
     std::vector<ScissorRect> rects(64, ScissorRect{0, 0, 256, 256});
     const TilePlan plan = plan_tiles(rects, 256, 256, 32, 8, 128);
     ASSERT_EQ(plan.batches.size(), 1u);
     ASSERT_EQ(plan.draws.size(), 8u);
     for (const TileDraw& d : plan.draws) {
-        EXPECT_EQ(d.quads.size(), 8u);
-        for (const TileQuad& q : d.quads) {
-            EXPECT_EQ(q.slots.size(), 8u);
-            EXPECT_EQ(q.x0, 0);
-            EXPECT_EQ(q.x1, 256);
-        }
+        ASSERT_EQ(d.quads.size(), 1u);
+        const TileQuad& q = d.quads[0];
+        EXPECT_EQ(q.slots.size(), 8u);
+        EXPECT_EQ(q.x0, 0);
+        EXPECT_EQ(q.x1, 256);
+        EXPECT_EQ(q.y0, 0);
+        EXPECT_EQ(q.y1, 256);
     }
     EXPECT_EQ(plan.tile_light_pairs, 64 * 64);
 }

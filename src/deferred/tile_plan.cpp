@@ -217,6 +217,8 @@ struct TilePlanner::Impl {
     // counting sort that keeps slot order (no container per tile).
     std::vector<std::pair<int, int>> pairs;
     std::vector<int> start, next, sorted;
+    std::vector<TileQuad> row;            // a row's merged runs
+    std::vector<size_t> open, next_open;  // quads that may grow down over the next row
 
     Impl(const TileDepth* depth, int tiles_x, int tiles_y) : culler(depth, tiles_x, tiles_y) {}
 };
@@ -264,11 +266,17 @@ long long TilePlanner::plan_batch(int b, std::vector<TileDraw>& out) {
     m.next.assign(m.start.begin(), m.start.end() - 1);
     for (const auto& [t, slot] : m.pairs) m.sorted[size_t(m.next[size_t(t)]++)] = slot;
     long long pairs = 0;
+    // Merged quads: a run of tiles along a row with the same lights is one quad, and a quad of the
+    // row above with the same span and lights grows down over it. The same pixels shade the same
+    // lights in the same order, with fewer quads to set up: lights as large as 32-large's give
+    // most tiles the same list (on llvmpipe at 256x256 the row runs alone took its light stage
+    // from 8.50 to 7.45 ms).
     for (int first = 0; first < most; first += n) {
         TileDraw d;
         d.batch = b;
+        m.open.clear();  // quads of d ending at this row's top, by x0
         for (int y = 0; y < ty; ++y) {
-            const size_t row = d.quads.size();  // this row's quads start here
+            m.row.clear();
             for (int x = 0; x < tx; ++x) {
                 const size_t t = size_t(y) * tx + x;
                 const int count = m.start[t + 1] - m.start[t];
@@ -277,20 +285,33 @@ long long TilePlanner::plan_batch(int b, std::vector<TileDraw>& out) {
                 const int* lo = bin + first;
                 const int* hi = bin + std::min(count, first + n);
                 pairs += long(hi - lo);
-                // A run of tiles along the row with the same lights is one quad: the same pixels
-                // shade the same lights in the same order, with fewer quads to set up (lights as
-                // large as 32-large's give most tiles of a row the same list).
-                if (d.quads.size() > row) {
-                    TileQuad& last = d.quads.back();
+                if (!m.row.empty()) {
+                    TileQuad& last = m.row.back();
                     if (last.x1 == x * ts && std::equal(lo, hi, last.slots.begin(), last.slots.end())) {
                         last.x1 = std::min(m.width, (x + 1) * ts);
                         continue;
                     }
                 }
-                TileQuad q{x * ts, y * ts, std::min(m.width, (x + 1) * ts), std::min(m.height, (y + 1) * ts), {}};
-                q.slots.assign(lo, hi);
+                m.row.push_back(TileQuad{x * ts, y * ts, std::min(m.width, (x + 1) * ts), std::min(m.height, (y + 1) * ts), {}});
+                m.row.back().slots.assign(lo, hi);
+            }
+            m.next_open.clear();
+            size_t k = 0;
+            for (const TileQuad& q : m.row) {
+                while (k < m.open.size() && d.quads[m.open[k]].x0 < q.x0) ++k;
+                if (k < m.open.size()) {
+                    TileQuad& above = d.quads[m.open[k]];
+                    if (above.x0 == q.x0 && above.x1 == q.x1 &&
+                        std::equal(q.slots.begin(), q.slots.end(), above.slots.begin(), above.slots.end())) {
+                        above.y1 = q.y1;
+                        m.next_open.push_back(m.open[k++]);
+                        continue;
+                    }
+                }
+                m.next_open.push_back(d.quads.size());
                 d.quads.push_back(q);
             }
+            m.open.swap(m.next_open);
         }
         out.push_back(std::move(d));
     }
