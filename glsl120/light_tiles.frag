@@ -94,7 +94,7 @@ void main()
     // own iteration) made the light stage 1.6x slower on llvmpipe (1024-overlap, 32 lights a pass).
     // The pairs pass through q0..q3, shifted one float an iteration, so each is read from q0.x:
     // indexing the varying array with the loop counter (ids[k / 4][k % 4]) cost llvmpipe an indexed
-    // load per iteration (the light stage 4-8% slower on 1024-overlap and 32-large). 65535 is an
+    // load per iteration (the light stage 5-8% slower on 1024-overlap and 32-large). 65535 is an
     // empty pair (hi = 255).
     vec4 q0 = ids[0];
 #if ID_VECS > 1

@@ -12,9 +12,12 @@ struct ForwardResult {
     int lights_per_pass = 0;
 };
 
-inline ForwardResult render_forward(const Scene& scene, int w, int h, const ForwardOptions& opts) {
+// as_gpu: the capabilities as probed, but not a CPU rasteriser, so the renderer takes the shader
+// forms it picks for GPUs (forward.frag's VIEW_PER_LIGHT).
+inline ForwardResult render_forward(const Scene& scene, int w, int h, const ForwardOptions& opts, bool as_gpu = false) {
     auto ctx = create_context(ContextDesc{"osmesa", w, h});
     Caps caps = probe_caps();
+    if (as_gpu) caps.software_rasterizer = false;
     ForwardRenderer fr(caps, w, h, opts, resource_dir("glsl120"));
     fr.set_scene(scene);
     ForwardResult r;

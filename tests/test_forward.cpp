@@ -2,6 +2,7 @@
 // the deferred renderer, under OSMesa. Every measured number is printed ([ image    ] lines).
 #include <gtest/gtest.h>
 
+#include "analysis/bench_scenes.h"
 #include "forward_fixture.h"
 
 using namespace dsr;
@@ -35,6 +36,23 @@ TEST(Forward, SingleAndMultiPassAgree) {
     EXPECT_EQ(single.stats.light_object_pairs, multi.stats.light_object_pairs);
     EXPECT_EQ(multi.stats.passes, 1 + int(s.objects.size()) + multi.stats.light_object_pairs);
     EXPECT_LT(multi.stats.light_object_pairs, int(s.objects.size() * s.lights.size()));  // culling did cull
+}
+
+// The general light shader's two forms of the view vector (lighting.glsl): once per pixel (what a
+// CPU rasteriser gets) and per light (VIEW_PER_LIGHT, what a GPU gets) are the same arithmetic, so
+// the same image; this runs the GPU's form here, where it would otherwise never be compiled.
+TEST(Forward, ViewVectorPerLightIsTheSameImage) {
+    Scene s = large_lights_scene(32);  // attenuation-law lights: the general shader
+    ASSERT_FALSE(s.lights.empty());
+    for (ForwardMode m : {ForwardMode::single, ForwardMode::multi}) {
+        auto cpu = render_forward(s, 96, 96, forward_mode(m));
+        auto gpu = render_forward(s, 96, 96, forward_mode(m), true);
+        ImageDiff d = compare_logged(m == ForwardMode::single ? "forward single: v per pixel vs per light"
+                                                              : "forward multi: v per pixel vs per light",
+                                     gpu.image, cpu.image, kLsb);
+        EXPECT_LE(d.max_lsb(), 1.0);
+        EXPECT_EQ(d.failing, 0);
+    }
 }
 
 // More lights than one pass holds: the rest go to additive GL_EQUAL passes over the same
