@@ -396,6 +396,31 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     InvocationProbe exact;
     exact.pixels = 4096;
     EXPECT_EQ(bench::geometry_goals(rows, "default", 3, exact)[0], g[0]);
+
+    // 32-large: the fastest deferred row against the faster forward single-pass; with the scene
+    // without lights in the run (0-large), what 1.5x leaves the deferred row for its light work.
+    auto large = [](bench::Row r, const char* label) {
+        r.scene = "large";
+        r.lights_label = label;
+        return r;
+    };
+    bench::Row fwd = large(forward_row("large", 32, "forward-single", 6.0), "32-large");
+    fwd.accum = "rgba8";
+    bench::Row slow = large(geo(deferred_row("large", 32, 9.0, 500, 500), "quad", 2000, 0), "32-large");
+    bench::Row fast = large(geo(deferred_row("large", 32, 5.0, 500, 500), "tiles", 100, 0), "32-large");
+    fast.tile_size = 16, fast.tile_lights = 32;
+    rows.insert(rows.end(), {fwd, slow, fast});
+    const std::string l = bench::geometry_goals(rows, "default", 3)[3];
+    EXPECT_EQ(l, "best deferred >= 1.5x faster than forward single-pass on 32-large: forward-single rgba8 6.00 ms / "
+                 "deferred texture sc tiles 16/32 5.00 ms = 1.20x -> NOT met") << l;
+    bench::Row fwd0 = large(forward_row("large", 0, "forward-single", 0.5), "0-large");
+    fwd0.accum = "rgba8";
+    bench::Row fast0 = large(geo(deferred_row("large", 0, 1.5, 0, 0), "tiles", 0, 0), "0-large");
+    fast0.tile_size = 16, fast0.tile_lights = 32;
+    rows.insert(rows.end(), {fwd0, fast0});
+    const std::string b = bench::geometry_goals(rows, "default", 3)[3];
+    EXPECT_EQ(b, l + "; without lights (0-large) 0.50 and 1.50 ms, so forward's light work takes 5.50 ms and 1.5x "
+                     "leaves the deferred row 2.50 ms for 500 ideal pixel-light pairs (information)") << b;
 }
 
 // Where the GL cannot count (no ARB_pipeline_statistics_query, no occlusion queries), the rows say
