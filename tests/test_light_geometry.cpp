@@ -225,6 +225,18 @@ TEST(LightGeometry, TilesOverSeveralBatchesMatchQuad) {
     EXPECT_LT(culled.stats.tile_light_pairs, groups.stats.tile_light_pairs);
 }
 
+// The tiles shader rounds each light's term as the GL rounds a pass's colour into RGBA8, exact
+// ties included: llvmpipe takes a tie (t x 255 = k + 0.5 exactly) to the even byte, and with
+// floor(t x 255 + 0.5) taking every tie up, 1024-overlap at 384x384 came out 2 LSB from quad at one
+// pixel and 1 LSB at another (0 LSB at 128x128 and 256x256, where no term happened to tie).
+TEST(LightGeometry, TilesRoundTiesAsTheGlDoes) {
+    const Scene s = with_overlapping_lights(default_scene(), 1024);
+    constexpr int W = 384, H = 384;
+    const RenderResult quad = render_scene(s, W, H, with_geometry(LightGeometry::quad));
+    const RenderResult tiles = render_scene(s, W, H, with_geometry(LightGeometry::tiles));
+    expect_same("tiles_1024_overlap_384", tiles, quad);
+}
+
 }  // namespace dsr::test
 
 namespace dsr::test {

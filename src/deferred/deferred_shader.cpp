@@ -94,13 +94,14 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
         if (!opts.float_accum && opts_.tile_lights > 1) {
             tdefs.push_back("QUANTIZE_8BIT");
             // Rounded as this GL rounds into RGBA8, measured once (gl/rounding_probe.h): llvmpipe
-            // rounds t x 255 to nearest; the H200 truncates t to 12 bits first, which rounds up
-            // later than the half by as much as 0.06 of a step, and over the dozens of lights a
-            // pixel of 1024-overlap gets the difference reached 16 LSB.
+            // rounds t x 255 to nearest, an exact tie to even; the H200 truncates t to 12 bits
+            // first, which rounds up later than the half by as much as 0.06 of a step, and over the
+            // dozens of lights a pixel of 1024-overlap gets the difference reached 16 LSB.
             if (paths_.fbo) {
                 const Unorm8Rounding& r = unorm8_rounding();
                 const int bits = unorm8_truncate_bits(r);
                 if (bits > 0) tdefs.push_back("QUANTIZE_TRUNCATE " + std::to_string(1 << bits) + ".0");
+                if (bits == 0) tdefs.push_back("QUANTIZE_TIES_EVEN");  // the model that fits (predicted_threshold)
                 tile_round_ = bits >= 0 ? 0.5f : unorm8_round_offset(r);
             }
         }
