@@ -102,7 +102,7 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
                 const int bits = unorm8_truncate_bits(r);
                 if (bits > 0) tdefs.push_back("QUANTIZE_TRUNCATE " + std::to_string(1 << bits) + ".0");
                 if (bits == 0) tdefs.push_back("QUANTIZE_TIES_EVEN");  // the model that fits (predicted_threshold)
-                tile_round_ = bits >= 0 ? 0.5f : unorm8_round_offset(r);
+                if (bits < 0) tile_round_ = unorm8_round_offset(r);  // the fallback's quantize_round
             }
         }
         light_tiles_any_prog_ = Program(shader_dir, "light.vert", "light_tiles.frag", tdefs);

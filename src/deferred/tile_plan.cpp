@@ -101,13 +101,13 @@ class TileCuller {
 public:
     static constexpr int kBlock = 4;
 
-    TileCuller(const TileDepth* depth, int tiles_x, int tiles_y) : depth_(depth), tx_(tiles_x), ty_(tiles_y) {
+    TileCuller(const TileDepth* depth, int tiles_x, int tiles_y) : depth_(depth), tx_(tiles_x) {
         if (!depth_) return;
         bx_ = (tx_ + kBlock - 1) / kBlock;
-        const int by = (ty_ + kBlock - 1) / kBlock;
+        const int by = (tiles_y + kBlock - 1) / kBlock;
         tiles_.resize(depth_->tiles.size());
         std::vector<TileBox> blocks(size_t(bx_) * by, TileBox{});
-        for (int y = 0; y < ty_; ++y)
+        for (int y = 0; y < tiles_y; ++y)
             for (int x = 0; x < tx_; ++x) {
                 const TileBox& t = depth_->tiles[size_t(y) * tx_ + x];
                 tiles_[size_t(y) * tx_ + x] = cull_box(t);
@@ -144,7 +144,7 @@ public:
 
 private:
     const TileDepth* depth_;
-    int tx_, ty_, bx_ = 0;
+    int tx_, bx_ = 0;
     std::vector<CullBox> tiles_, blocks_;
     std::vector<CullLight> lights_;
 };

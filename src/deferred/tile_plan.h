@@ -47,9 +47,9 @@ private:
 };
 
 struct TileQuad {
-    // Window pixels, x1/y1 exclusive: whole tiles (the last row and column may end at the screen's edge).
+    // Window pixels, x1/y1 exclusive: whole tiles (the last row and column may end at the edge).
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    SlotList slots;                      // indices into the batch's lights, at most lights_per_pass
+    SlotList slots;  // indices into the batch's lights, at most lights_per_pass
 };
 
 struct TileDraw {

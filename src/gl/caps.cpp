@@ -121,7 +121,7 @@ std::string describe(const Caps& c) {
       << "  " << yn(c.depth_bounds) << " depth bounds test        (EXT_depth_bounds_test)\n"
       << "  " << yn(c.framebuffer_blit) << " framebuffer blit         (EXT_framebuffer_blit)\n"
       << "  " << yn(c.pbuffer_surfaces) << " pbuffer surfaces         (EGL pbuffers for --render-target pbuffer)\n"
-      << "  " << yn(c.software_rasterizer) << " CPU rasteriser           (llvmpipe, softpipe or swrast: the tiles defaults)\n";
+      << "  " << yn(c.software_rasterizer) << " CPU rasteriser           (llvmpipe, softpipe or swrast: the tiles defaults, forward's view vector)\n";
     if (!c.forced_off.empty()) {
         o << "forced off:";
         for (auto& f : c.forced_off) o << " " << f;

@@ -31,7 +31,7 @@ struct Caps {
     bool framebuffer_blit = false;   // EXT_framebuffer_blit (core in 3.0): the depth hand-off by blit (issue 13)
     bool pbuffer_surfaces = false;   // the context offers pbuffer surfaces (gl/surfaces.h: EGL)
     // A CPU rasteriser (Mesa's llvmpipe, softpipe or swrast, by GL_RENDERER): the tiles geometry's
-    // defaults differ there (options.h).
+    // defaults (options.h) and forward.frag's view vector form (forward_renderer.cpp) differ there.
     bool software_rasterizer = false;
     std::vector<std::string> forced_off;  // names hidden by --caps / DSR_CAPS
 };
