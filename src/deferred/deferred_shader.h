@@ -24,6 +24,7 @@
 #include "deferred/light_volume.h"
 #include "deferred/scissor.h"
 #include "deferred/tile_plan.h"
+#include "deferred/view.h"
 #include "gl/caps.h"
 #include "gl/frame_timer.h"
 #include "gl/pbuffer.h"
@@ -86,16 +87,6 @@ struct FrameStats {
     StageTimes ms;
     TimingSource timing = TimingSource::wall;
 };
-
-// What `--view` shows (the same names in every interface): the final image, a G-buffer
-// target (Figure 4), the anti-alias blur factor (Figure 8), the bloom blur (Figure 10c) or the
-// blurred ambient-occlusion buffer (issue 13).
-enum class View { final, normal, diffuse, specular, depth, blur_factor, bloom, ssao };
-// "final", "normal", …, "blur-factor", "bloom"; throws dsr::Error listing the names otherwise.
-View view_from_name(const std::string& name);
-const char* view_name(View v);
-// Every view's name, in View order (what `--view` accepts).
-const std::vector<std::string>& view_names();
 
 // One material program of the shader table (Listing 9's variants).
 struct MaterialKey {

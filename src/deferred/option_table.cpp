@@ -2,6 +2,8 @@
 // the values and their spelling are exactly those `dsr render` has always taken.
 #include "deferred/option_table.h"
 
+#include "scene/scene.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>

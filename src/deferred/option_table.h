@@ -7,10 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "deferred/deferred_shader.h"
 #include "deferred/options.h"
+#include "deferred/view.h"
 
 namespace dsr {
+
+struct Scene;
 
 // What the renderer flags of `dsr render` (and `dsr view`) set.
 struct RenderOptions {
