@@ -115,7 +115,7 @@ ASAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-s
 # The OBJ loader: obj_loader.cpp and the internal files it is split into.
 OBJ_LOADER_SRC := src/scene/obj_loader.cpp src/scene/obj_text.cpp src/scene/obj_check.cpp src/scene/mtl_check.cpp \
                   src/scene/obj_geometry.cpp src/scene/height_map.cpp
-ASAN_SRC := src/scene/light_law.cpp $(OBJ_LOADER_SRC) src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/shapes.cpp \
+ASAN_SRC := src/scene/light_law.cpp $(OBJ_LOADER_SRC) src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/framing.cpp src/scene/shapes.cpp \
             src/scene/camera.cpp src/scene/image_io.cpp src/scene/image_extension.cpp tests/fuzz/tinyobj_impl.cpp tests/test_obj.cpp
 ASAN_OBJ := $(ASAN_SRC:%.cpp=$(BUILD)/asan/obj/%.o)
 
@@ -148,7 +148,7 @@ FUZZ_CXX := clang++
 FUZZ_PACKAGES := clang libclang-rt-14-dev
 FUZZ_FLAGS := -std=c++17 -O1 -g -fno-omit-frame-pointer -Isrc -DDSR_SOURCE_DIR=\"$(CURDIR)\" \
               -fsanitize=address,undefined -fno-sanitize-recover=undefined
-FUZZ_LIB_SRC := src/scene/light_law.cpp $(OBJ_LOADER_SRC) src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/shapes.cpp \
+FUZZ_LIB_SRC := src/scene/light_law.cpp $(OBJ_LOADER_SRC) src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/framing.cpp src/scene/shapes.cpp \
                 src/scene/camera.cpp src/scene/image_io.cpp src/scene/image_extension.cpp tests/fuzz/tinyobj_impl.cpp
 FUZZ_LIB_OBJ := $(FUZZ_LIB_SRC:%.cpp=$(BUILD)/fuzz/obj/%.o)
 FUZZ_TARGETS := obj scene_file

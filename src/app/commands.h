@@ -9,6 +9,7 @@ int cmd_render(const std::vector<std::string>& args);
 int cmd_info(const std::vector<std::string>& args);
 int cmd_figures(const std::vector<std::string>& args);
 int cmd_gen_textures(const std::vector<std::string>& args);
+int cmd_gen_model(const std::vector<std::string>& args);
 int cmd_stress(const std::vector<std::string>& args);
 int cmd_bench(const std::vector<std::string>& args);
 int cmd_compare(const std::vector<std::string>& args);

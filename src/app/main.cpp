@@ -19,6 +19,7 @@ const Command kCommands[] = {
     {"render", dsr::cmd_render}, {"figures", dsr::cmd_figures}, {"bench", dsr::cmd_bench},
     {"stress", dsr::cmd_stress}, {"info", dsr::cmd_info},       {"gen-textures", dsr::cmd_gen_textures},
     {"compare", dsr::cmd_compare},      {"view", dsr::cmd_view},
+    {"gen-model", dsr::cmd_gen_model},
 };
 
 }  // namespace

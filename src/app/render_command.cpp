@@ -22,6 +22,7 @@
 #include "gl/readback.h"
 #include "platform/context.h"
 #include "platform/resources.h"
+#include "scene/framing.h"
 #include "scene/scene.h"
 
 namespace dsr {
@@ -161,6 +162,12 @@ int cmd_render(const std::vector<std::string>& argv) {
         const FrameIdeal ideal = frame_ideal_fragments(ds, scene);
         j["ideal_fragments"] = ideal.fragments ? nlohmann::json(*ideal.fragments) : nlohmann::json(nullptr);
         j["ideal_source"] = ideal.source;
+        // World-space bounds of what is drawn (scene/framing.h: what `camera fit` frames).
+        const SceneBounds b = scene_bounds(scene);
+        auto v3 = [](const glm::dvec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); };
+        j["bounds"] = b.vertices && b.finite ? nlohmann::json{{"min", v3(b.min)}, {"max", v3(b.max)},
+                                                              {"centre", v3(b.centre)}, {"radius", b.radius}}
+                                             : nlohmann::json(nullptr);
     }
     j["ms"] = {{"geometry", med(&StageTimes::geometry)}, {"ambient", med(&StageTimes::ambient)},
                {"lights", med(&StageTimes::lights)},     {"bloom", med(&StageTimes::bloom)},

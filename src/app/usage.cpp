@@ -110,7 +110,7 @@ std::vector<CommandUsage> make_table() {
                      std::string(kContextOption) + kEglDeviceOption + kStateOptions});
     t.push_back({"figures",
                  {"[SCENE] [-o DIR] [--size NxN] [--context NAME]"},
-                 "the tutorial's figures 4, 6, 8-11 as PNGs (and the windmill model beside Figure 6 when ../shared/assets has it)",
+                 "the tutorial's figures 4, 6, 8-11 as PNGs, and beside Figure 6 the windmill gen-model writes",
                  "  SCENE                   scene file (default data/default.scene)\n"
                  "  -o DIR                  folder to write the PNGs into (default docs/figures)\n"
                  "  --size NxN              square size, at least 64x64 (default 512x512)\n" +
@@ -159,6 +159,10 @@ std::vector<CommandUsage> make_table() {
                  {"DIR"},
                  "write the default scene's procedural textures",
                  "  DIR                     folder to write the textures into\n"});
+    t.push_back({"gen-model",
+                 {"DIR"},
+                 "write a windmill dsr makes itself: OBJ + MTL + diffuse, normal and specular PNG maps",
+                 "  DIR                     folder to write the model into (created when missing)\n"});
     t.push_back({"compare",
                  {"A B [--threshold LSB] [--max-lsb LSB]"},
                  "compare two image files (RGB, 8-bit LSB) as the image tests do: one line on stdout",
@@ -182,6 +186,8 @@ std::vector<CommandUsage> make_table() {
                      "  W A S D, Q E            move; Q/E down/up; shift: 4x faster; scroll: speed\n"
                      "  right mouse button      hold and drag to look around\n"
                      "  R                       back to the scene's camera\n"
+                     "  F                       frame the scene: look at its centre along the current view\n"
+                     "                          direction, its bounding sphere 70% of the window\n"
                      "  F1 or Tab               show or hide the panel\n"
                      "  1..7, V (shift+V)       buffer shown: final, normal, diffuse, specular, depth,\n"
                      "                          blur-factor, bloom (next, previous)\n"

@@ -185,7 +185,58 @@ Sample metal(double x, double y) {
     return {height, c, (0.02 + 0.88 * face) * (0.85 + 0.15 * brush) + 0.1 * dome};
 }
 
+// Vertical boards, 32 px wide (8 per tile), 2 px dark gaps, each board its own tone and
+// length offset for its end joint; grain runs along the board (noise stretched along y).
+Sample wood(double x, double y) {
+    const double bw = 32, half_gap = 1.0, bevel = 2.0;
+    const int col = int(std::floor(x / bw));
+    const double lx = x - col * bw;
+    // One end joint per board per tile, at a height of its own.
+    const double joint_y = 32 + 192 * rand01(col, 0, 61);
+    const double ly = y - joint_y, dy = std::abs(ly - std::floor(ly / N + 0.5) * N);
+    const double edge = std::min(std::min(lx, bw - lx), dy);
+    const double face = smoothstep(half_gap, half_gap + bevel, edge);
+    const double tone = rand01(col, 1, 67);
+    const double grain = fbm(x + 11 * tone * bw, y, 32, 2, 4, 71);
+    const double rings = value_noise(x * 4 + 17 * col, y, 64, 8, 73);
+    const double height = mix(0.1, 0.75 + 0.1 * grain + 0.05 * tone, face);
+    const double v = (0.8 + 0.3 * tone) * (0.75 + 0.35 * grain) * (0.9 + 0.15 * rings);
+    const Rgb board{0.46 * v, 0.30 * v, 0.17 * v};
+    const Rgb gap{0.08, 0.05, 0.03};
+    const Rgb c{mix(gap.r, board.r, face), mix(gap.g, board.g, face), mix(gap.b, board.b, face)};
+    return {height, c, face * (0.15 + 0.15 * grain)};
+}
+
+// Slate roof shingles: rows 32 px high (8 per tile), each of 32 px tiles offset half a tile from the
+// row below, 2 px gaps between tiles; a tile's lower edge stands proud of the row it covers
+// and its surface slopes back up under the next row.
+Sample shingle(double x, double y) {
+    const double th = 32, tw = 32, half_gap = 1.0, bevel = 1.5;
+    const int row = int(std::floor(y / th));
+    const double sx = x + (row % 2 ? tw / 2 : 0);
+    const int col = wrap(int(std::floor(sx / tw)), N / int(tw));
+    const double lx = sx - std::floor(sx / tw) * tw, ly = y - row * th;  // ly = 0: the lower edge
+    const double side = std::min(lx, tw - lx);
+    const double face = smoothstep(half_gap, half_gap + bevel, side);
+    const double lip = smoothstep(0, 2.5, ly);  // the exposed lower edge, rounded
+    const double per_tile = rand01(col, row, 79);
+    const double grain = fbm(x, y, 32, 32, 3, 83);
+    const double height = mix(0.05, (0.35 + 0.55 * (1 - ly / th)) * lip + 0.05 * grain, face);
+    const double v = (0.7 + 0.4 * per_tile) * (0.8 + 0.3 * grain) * (0.75 + 0.25 * (1 - ly / th));
+    const Rgb slate{0.30 * v, 0.32 * v, 0.37 * v};
+    const Rgb gap{0.06, 0.04, 0.04};
+    const Rgb c{mix(gap.r, slate.r, face * lip), mix(gap.g, slate.g, face * lip), mix(gap.b, slate.b, face * lip)};
+    return {height, c, face * lip * (0.3 + 0.3 * per_tile)};
+}
+
 }  // namespace
+
+std::vector<std::pair<std::string, Image>> model_textures() {
+    std::vector<std::pair<std::string, Image>> out;
+    build_family("wood", 3.0, wood, out);
+    build_family("shingle", 4.0, shingle, out);
+    return out;
+}
 
 std::vector<std::pair<std::string, Image>> default_textures() {
     std::vector<std::pair<std::string, Image>> out;

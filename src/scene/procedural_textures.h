@@ -22,4 +22,8 @@ constexpr int kProceduralTextureSize = 256;
 // noise, and only + - * / sqrt touch the floats.
 std::vector<std::pair<std::string, Image>> default_textures();
 
+// The same for the generated model's own materials (scene/generated_model.h): wood_ (vertical
+// boards) and shingle_ (roof shingles), each _diffuse, _normal and _specular, made the same way.
+std::vector<std::pair<std::string, Image>> model_textures();
+
 }  // namespace dsr

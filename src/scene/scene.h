@@ -147,7 +147,8 @@ struct Scene {
 // object (camera-relative, so far-from-origin scenes keep their precision).
 glm::mat4 camera_relative(const glm::dmat4& view, const glm::dmat4& model);
 
-// Parses a scene file (format in README.md). Throws dsr::Error whose message is
+// Parses a scene file (format in README.md); a path ending .obj is a model, framed by
+// model_scene (scene/framing.h). Throws dsr::Error whose message is
 // "FILE:LINE: expected ..., got ..." for any mistake; textures are loaded here.
 // Warnings (statements of OBJ/MTL files dsr ignores) are in Scene::warnings and printed to stderr.
 Scene load_scene(const std::string& path);

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -18,6 +19,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "dsr_error.h"
+#include "scene/framing.h"
 #include "scene/light_law.h"
 #include "scene/obj_loader.h"
 #include "scene/scene.h"
@@ -44,6 +46,13 @@ public:
     }
     [[noreturn]] void expected_here(const std::string& what) const { expected(what, pos_); }
     [[noreturn]] void expected_last(const std::string& what) const { expected(what, pos_ - 1); }
+
+    // Consumes the next token when it is `w`.
+    bool accept(const std::string& w) {
+        if (done() || tokens_[pos_] != w) return false;
+        ++pos_;
+        return true;
+    }
 
     const std::string& word(const std::string& what) {
         if (done()) expected_here(what);
@@ -167,6 +176,7 @@ private:
 
     Scene finish() {
         if (camera_line_ == 0) throw Error(path_ + ": no camera line");
+        if (fit_) apply_camera_fit(scene_, *fit_);  // `camera fit`: once every object is placed
         return std::move(scene_);
     }
 
@@ -190,6 +200,7 @@ private:
         if (camera_line_ != 0)
             line.expected_last("one camera line (the first is line " + std::to_string(camera_line_) + ")");
         camera_line_ = line.number();
+        if (line.accept("fit")) return camera_fit(line);
         Camera& c = scene_.camera;
         const std::vector<std::string> keys = {"pos", "target", "up", "fov", "near", "far"};
         std::set<std::string> seen;
@@ -216,6 +227,23 @@ private:
         if (!(glm::length(c.up) > 0) || !(cross_len > 1e-4f * glm::length(c.up)))
             line.fail("expected camera up not parallel to target - pos, got '" + fmt(c.up.x) + " " +
                       fmt(c.up.y) + " " + fmt(c.up.z) + "'");
+    }
+
+    // camera fit [from X Y Z] [fov DEG] (scene/framing.h): recorded here, resolved in finish().
+    void camera_fit(Line& line) {
+        CameraFit f;
+        f.where = line.where();
+        std::set<std::string> seen;
+        while (!line.done()) {
+            if (line.key({"from", "fov"}, seen) == "from") {
+                f.from = line.vec3("camera fit from");
+                if (!(glm::length(f.from) > 0)) line.expected_last("a non-zero direction for camera fit from");
+            } else {
+                f.fov_deg = line.number("fov");
+                if (!(f.fov_deg > 0 && f.fov_deg < 180)) line.expected_last("fov in (0, 180) degrees");
+            }
+        }
+        fit_ = f;
     }
 
     void material(Line& line) {
@@ -486,6 +514,7 @@ private:
     std::filesystem::path dir_;
     Scene scene_;
     int camera_line_ = 0;
+    std::optional<CameraFit> fit_;
     std::vector<int> material_lines_;  // parallel to scene_.materials
     std::map<std::string, int> model_index_;  // resolved OBJ path -> scene_.models
 };
@@ -499,7 +528,7 @@ glm::dmat4 MeshInstance::model_matrix() const {
 }
 
 Scene load_scene(const std::string& path) {
-    Scene s = Parser(path).run();
+    Scene s = is_model_path(path) ? model_scene(path) : Parser(path).run();  // a model is a scene
     for (const std::string& w : s.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     return s;
 }

@@ -24,6 +24,7 @@
 #include "gl/state.h"
 #include "platform/glfw_context.h"
 #include "platform/resources.h"
+#include "scene/framing.h"
 #include "viewer/script.h"
 #include "viewer/viewer.h"
 #include "viewer/viewer_state.h"
@@ -267,7 +268,7 @@ void Viewer::update_camera(float dt) {
     if (glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS && (dragging_ || mouse_free)) {
         if (dragging_) {
             st_.fly.look(float(-(x - last_x_) * 0.004), float(-(y - last_y_) * 0.004));
-            camera_ = st_.fly.apply(scene_.camera);
+            camera_ = st_.fly.apply(camera_);  // keeps camera_'s fov, near and far
         }
         dragging_ = true;
     } else {
@@ -286,7 +287,7 @@ void Viewer::update_camera(float dt) {
     if (d != glm::vec3(0)) {
         const bool fast = down(GLFW_KEY_LEFT_SHIFT) || down(GLFW_KEY_RIGHT_SHIFT);
         st_.fly.move(d, dt, fast ? 4.0f : 1.0f);
-        camera_ = st_.fly.apply(scene_.camera);
+        camera_ = st_.fly.apply(camera_);  // keeps camera_'s fov, near and far
     }
 }
 
@@ -303,6 +304,10 @@ void Viewer::on_key(int key, int mods) {
         case GLFW_KEY_TAB: st_.panel = !st_.panel; break;
         case GLFW_KEY_R:
             camera_ = scene_.camera;
+            st_.fly = FlyCamera::from(camera_);
+            break;
+        case GLFW_KEY_F:  // frame the scene from where the camera looks (scene/framing.h)
+            camera_ = reframe(scene_, camera_, fb_height() > 0 ? float(fb_width()) / float(fb_height()) : 1.0f);
             st_.fly = FlyCamera::from(camera_);
             break;
         case GLFW_KEY_L: st_.animate = !st_.animate; break;
