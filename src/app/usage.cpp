@@ -98,7 +98,8 @@ std::vector<CommandUsage> make_table() {
                   "[--show-lights|--no-show-lights] [--depth-handoff auto|blit|pass]",
                   "[--context NAME] [--egl-device N] [--gl-state-cache on|off] [--debug-gl]"},
                  "render SCENE (default data/default.scene) with the deferred shader into one image",
-                 "  SCENE                   scene file (default data/default.scene)\n"
+                 "  SCENE                   scene file (default data/default.scene), or a model FILE.obj\n"
+                 "                          framed with a ground and three lights\n"
                  "  -o, --output FILE       image to write: .png, .exr, .tif, .jpg or .ppm (default out.png)\n"
                  "  --size WxH              G-buffer and P-buffer size (default 512x512)\n"
                  "  --out-size WxH          main frame buffer the final stage scales to (default: --size)\n"
@@ -174,7 +175,8 @@ std::vector<CommandUsage> make_table() {
                   "--depth, --depth-encoding, --gbuffer, --scissor, --lighting, --no-skip, --view,",
                   "--bloom|--no-bloom, --bloom-*, --aa|--no-aa, --aa-*] [--gl-state-cache on|off] [--debug-gl]"},
                  "the renderer in a window (GLFW, GL 2.1) with a panel of every option, buffer and cost",
-                 "  SCENE                   scene file (default data/default.scene)\n"
+                 "  SCENE                   scene file (default data/default.scene), or a model FILE.obj\n"
+                 "                          framed with a ground and three lights\n"
                  "  --size WxH              the window's size at start (default 512x512)\n"
                  "  --script FILE           run FILE's commands, one a line: size W H (0 0 minimises),\n"
                  "                          camera pos X Y Z target X Y Z up X Y Z, set NAME VALUE (an\n"
