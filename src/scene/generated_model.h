@@ -36,10 +36,10 @@ struct GeneratedModel {
 
 GeneratedModel windmill_model();
 
-// Writes every file of `model` into `dir` (created when missing): all of them first to
-// temporaries in a fresh folder inside `dir`, then each renamed into place, so a failure leaves
-// no file half-written and none of the new set beside the old. Returns the OBJ's path. Throws
-// dsr::Error naming the path that failed.
+// Writes every file of `model` into `dir` (created when missing): all of them first into a fresh
+// temporary folder inside `dir`, then each renamed into place, so no file is ever half-written
+// and a failure while writing (a full disk) leaves `dir` as it was. Returns the OBJ's path.
+// Throws dsr::Error naming the path that failed.
 std::string write_model(const GeneratedModel& model, const std::string& dir);
 
 }  // namespace dsr
