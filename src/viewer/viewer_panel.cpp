@@ -63,10 +63,12 @@ void option_widget(ViewerState& st, const RenderOption& o) {
             const bool has_word = !o.values.empty();
             const bool is_word = has_word && std::find(o.values.begin(), o.values.end(), value) != o.values.end();
             if (has_word) {
+                const float width = ImGui::CalcItemWidth(), x0 = ImGui::GetCursorPosX();
                 bool word = is_word;
                 if (ImGui::Checkbox((o.values.front() + "##" + o.name).c_str(), &word))
                     request(word ? o.values.front() : std::to_string(int(o.lo)));
                 ImGui::SameLine();
+                ImGui::SetNextItemWidth(std::max(40.0f, width - (ImGui::GetCursorPosX() - x0)));  // the column stays
             }
             static std::map<std::string, int> editing;
             const auto it = editing.find(o.name);
