@@ -101,12 +101,12 @@ Flag list_flag(std::string name, std::string arg, const std::vector<std::string>
                 }};
 }
 
-Flag option_flag(const std::string& option, RenderOptions& into, const std::string& help_prefix) {
+Flag option_flag(const std::string& option, RenderOptions& into) {
     const RenderOption* o = find_render_option(option);
     if (!o) throw Error("option_flag: '" + option + "' is not in the option table");  // a slip in a command table
     std::vector<std::string> names = {"--" + o->name};
     if (o->kind == OptionKind::toggle) names.push_back("--no-" + o->name);
-    return Flag{names, option_arg(*o), option_range(*o), option_default(*o), help_prefix + o->help, {},
+    return Flag{names, option_arg(*o), option_range(*o), option_default(*o), o->help, {},
                 [&into](Args& a, const std::string& flag) {
                     if (!parse_render_flag(a, flag, into)) a.fail("unknown option '" + flag + "'");
                 }};

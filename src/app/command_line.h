@@ -58,8 +58,8 @@ Flag on_off_flag(std::string name, bool& field, std::string help);
 Flag list_flag(std::string name, std::string arg, const std::vector<std::string>& values, std::vector<std::string>& field,
                std::string help, std::string def = "");
 // An entry of the option table as a command's own flag, writing into `into` (bench's --tile-size):
-// its values, range, default and help from the table, `help_prefix` before the help.
-Flag option_flag(const std::string& option, RenderOptions& into, const std::string& help_prefix = "");
+// its values, range, default and help from the table.
+Flag option_flag(const std::string& option, RenderOptions& into);
 
 // The flag among `c.flags` written `word`; null when none is.
 const Flag* find_flag(const Command& c, const std::string& word);

@@ -151,11 +151,12 @@ Command bench_command(BenchSettings& s) {
     Command c{"bench", "depth path x scissor x skips x encodings x lights vs forward: times, fragments, error",
               {scene_operand("scene to measure (default: data/default.scene, tests/data/analytic.scene and, "
                              "without --quick, a generated 1-million-triangle mesh)")},
-              one_scene(s.scene), {}, nullptr, ""};
+              one_scene(s.scene), {}, nullptr,
+              "--tile-size, --tile-lights, --tile-plan and --tile-depth set the tiles rows, as render takes them.\n"};
     const bench::Config full;
     const std::vector<std::string>& geometries = find_render_option("light-geometry")->values;
     Flag lights{{"--lights"}, "LIST", "own, N, N-overlap or N-large, comma-separated",
-                std::string(BenchSettings::kBenchLights) + " (--quick: " + BenchSettings::kQuickLights + ")",
+                std::string(BenchSettings::kBenchLights) + "; --quick " + BenchSettings::kQuickLights,
                 "light counts of the sweep: own, the scene's own lights; N lights spread over the floor; N-overlap, "
                 "N lights (a multiple of 8) in clusters of 8, every lit pixel inside at least 8; N-large, 9 boxes "
                 "and N lights covering most of the screen, as LearnOpenGL's demo",
@@ -177,15 +178,15 @@ Command bench_command(BenchSettings& s) {
         file_flag({"--json"}, "FILE.json", s.json, {".json"}, "every row, the goals and the machine (docs/benchmarks.json)"),
         file_flag({"--report"}, "FILE.md", s.report, {".md"}, "markdown report, with the plot beside it as FILE_plot.png"),
         size_flag("--size", s.width, s.height, "frame size",
-                  std::to_string(full.w) + "x" + std::to_string(full.h) + " (--quick: " + qsize + ")"),
+                  std::to_string(full.w) + "x" + std::to_string(full.h) + "; --quick " + qsize),
         int_flag("--frames", "N", 1, 1000, s.frames, "timed frames per row",
-                 std::to_string(full.frames) + " (--quick: " + std::to_string(BenchSettings::kQuickFrames) + ")"),
+                 std::to_string(full.frames) + "; --quick " + std::to_string(BenchSettings::kQuickFrames)),
         lights,
         list_flag("--light-geometry", "LIST", geometries, s.geometries, "light geometries with rows of their own"),
-        option_flag("tile-size", s.tiles, "the tiles rows: "),
-        option_flag("tile-lights", s.tiles, "the tiles rows: "),
-        option_flag("tile-plan", s.tiles, "the tiles rows: "),
-        option_flag("tile-depth", s.tiles, "the tiles rows: "),
+        option_flag("tile-size", s.tiles),
+        option_flag("tile-lights", s.tiles),
+        option_flag("tile-plan", s.tiles),
+        option_flag("tile-depth", s.tiles),
         context_flag(s.context),
     };
     return c;

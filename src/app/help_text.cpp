@@ -127,7 +127,7 @@ std::string top_help() {
     for (const Command& c : command_table()) {
         s += "  " + c.name;
         for (const Operand& o : c.operands) s += " " + operand_word(o);
-        s += " [options]\n      " + c.summary + "\n";
+        s += std::string(c.flags.empty() && !c.renderer ? "" : " [options]") + "\n      " + c.summary + "\n";
     }
     return s + "dsr help --markdown: every command's options as markdown (docs/cli.md)\n";
 }
