@@ -156,7 +156,8 @@ std::string cli_markdown() {
         for (const Operand& o : c.operands) s += "| " + code(o.name) + " | | | " + cell(o.help) + " |\n";
         for (const Flag& f : c.flags) s += markdown_flag_row(f);
         if (c.renderer) s += "\nIt also takes every [renderer option](#renderer-options).\n";
-        if (!c.notes.empty()) s += "\n```\n" + c.notes + "```\n";
+        if (!c.notes.empty())  // a table in columns (view's keys) as it prints, prose as prose
+            s += c.notes.find("\n  ") != std::string::npos ? "\n```\n" + c.notes + "```\n" : "\n" + c.notes;
     }
     s += "\n## Renderer options\n\n"
          "`render` and `view` take each as a flag; the viewer's panel shows each, and its script's\n"
