@@ -147,6 +147,7 @@ TEST(Cli, EveryCommandHasHelpListingItsTable) {
 // choice or a range refuses another value with one error line that names the flag and what it
 // accepts.
 TEST(Cli, EveryTableFlagParsesAndRefusesInOneLine) {
+    const bool debug = dsr::debug_gl(), cache = dsr::gl_state().cache();  // --debug-gl, --gl-state-cache set them here
     for (const dsr::Command& c : dsr::command_table()) {
         for (const dsr::Flag& f : c.flags) {
             const std::string name = f.names.back();
@@ -174,8 +175,8 @@ TEST(Cli, EveryTableFlagParsesAndRefusesInOneLine) {
         for (const dsr::Operand& o : c.operands) EXPECT_FALSE(o.help.empty()) << c.name << " " << o.name;
         EXPECT_NE(parse(c.name, {"--frobnicate"}).find("unknown option '--frobnicate'"), std::string::npos) << c.name;
     }
-    dsr::set_debug_gl(false);  // --debug-gl above set it for this process
-    dsr::gl_state().set_cache(true);
+    dsr::set_debug_gl(debug);
+    dsr::gl_state().set_cache(cache);
     for (const char* command : {"render", "view"})
         for (const dsr::RenderOption& o : dsr::render_options()) {
             std::vector<std::vector<std::string>> lines;

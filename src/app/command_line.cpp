@@ -36,11 +36,17 @@ void parse_command_line(const Command& c, const std::vector<std::string>& argv) 
     Args args(c.name, argv);
     while (!args.done()) {
         const std::string a = args.next();
-        if (const Flag* f = find_flag(c, a)) f->parse(args, a);
-        else if (c.renderer && parse_render_flag(args, a, *c.renderer)) continue;
-        else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "' (dsr " + c.name + " --help lists them)");
-        else if (!c.operand) args.fail("expected options only, got '" + a + "'");
-        else c.operand(args, a);
+        if (const Flag* f = find_flag(c, a)) {
+            f->parse(args, a);
+        } else if (c.renderer && parse_render_flag(args, a, *c.renderer)) {
+            // an option table flag, set in *c.renderer
+        } else if (!a.empty() && a[0] == '-') {
+            args.fail("unknown option '" + a + "' (dsr " + c.name + " --help lists them)");
+        } else if (!c.operand) {
+            args.fail("expected options only, got '" + a + "'");
+        } else {
+            c.operand(args, a);
+        }
     }
 }
 
