@@ -32,17 +32,20 @@ CORE_SRC := $(filter-out src/platform/glfw_%.cpp $(HEADLESS_BACKEND_SRC) src/sce
             $(IMAGE_IO_SRC)
 # src/app/viewer_main.cpp is dsr_view's main (the `view` command's flags); `dsr view` execs it.
 APP_SRC  := $(filter-out src/app/viewer_%.cpp,$(sort $(wildcard src/app/*.cpp)))
+# The command-line tables and what prints them (src/app/command_table.h, help_text.h): linked into
+# all three executables, so `dsr view --help` and the tests' docs/cli.md check read the same tables.
+APP_TABLE_SRC := src/app/args.cpp src/app/command_line.cpp src/app/command_table.cpp src/app/help_text.cpp \
+                 src/app/render_flags.cpp
 TEST_SRC := $(sort $(wildcard tests/*.cpp))
 
-# The viewer (issue 14): its own executable, because it links the system libGL (through GLFW)
+# The viewer (docs/viewer.md): its own executable, because it links the system libGL (through GLFW)
 # and the headless ones link libOSMesa. src/viewer/ files that use GLFW or Dear ImGui are named
 # viewer_*.cpp; the others are pure logic (script parsing, the fly camera, the plot history),
 # linked into dsr_tests too. Dear ImGui's GLFW and OpenGL2 backends are compiled from the
 # sources Debian's libimgui-dev ships among its examples.
 IMGUI_BACKENDS := /usr/share/doc/libimgui-dev/examples/backends
 VIEWER_GUI_SRC := $(sort $(wildcard src/viewer/viewer_*.cpp)) src/platform/glfw_context.cpp \
-                  src/platform/glfw_backends.cpp src/app/viewer_main.cpp src/app/args.cpp \
-                  src/app/render_flags.cpp src/app/usage.cpp
+                  src/platform/glfw_backends.cpp src/app/viewer_main.cpp $(APP_TABLE_SRC)
 VIEWER_LOGIC_SRC := $(filter-out src/viewer/viewer_%.cpp,$(sort $(wildcard src/viewer/*.cpp)))
 VIEWER_OBJ := $(VIEWER_GUI_SRC:%.cpp=$(BUILD)/obj/%.o) $(VIEWER_LOGIC_SRC:%.cpp=$(BUILD)/obj/%.o)
 IMGUI_OBJ := $(BUILD)/obj/imgui/imgui_impl_glfw.o $(BUILD)/obj/imgui/imgui_impl_opengl2.o
@@ -51,12 +54,12 @@ VIEWER_LIBS := -lglfw -lGL -limgui -lstb $(IMAGE_IO_LIBS) -ltinyobjloader -pthre
 CORE_OBJ := $(CORE_SRC:%.cpp=$(BUILD)/obj/%.o)
 HEADLESS_BACKEND_OBJ := $(HEADLESS_BACKEND_SRC:%.cpp=$(BUILD)/obj/%.o)
 APP_OBJ  := $(APP_SRC:%.cpp=$(BUILD)/obj/%.o)
-TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o) $(VIEWER_LOGIC_SRC:%.cpp=$(BUILD)/obj/%.o)
+TEST_OBJ := $(TEST_SRC:%.cpp=$(BUILD)/obj/%.o) $(VIEWER_LOGIC_SRC:%.cpp=$(BUILD)/obj/%.o) $(APP_TABLE_SRC:%.cpp=$(BUILD)/obj/%.o)
 
 # tinyobjloader: Debian's shared library (float build), as its tinyobjloader.pc says.
 LIBS := -lOSMesa -lEGL $(IMAGE_IO_LIBS) -ltinyobjloader -pthread
 
-.PHONY: all run test test-legacy test-sanitizers deps fuzz fuzz-deps clean figures bench stress viewer-docs
+.PHONY: all run test test-legacy test-sanitizers deps fuzz fuzz-deps clean figures bench stress viewer-docs docs-cli
 all: $(BUILD)/dsr $(BUILD)/dsr_view $(BUILD)/dsr_tests
 
 $(BUILD)/obj/%.o: %.cpp
@@ -191,7 +194,7 @@ bench: deps
 	$(MAKE) -j$(JOBS) $(BUILD)/dsr
 	$(BUILD)/dsr bench --json docs/benchmarks.json --report docs/benchmarks.md
 
-# The numerical stress sweep (issue 6): every case's invariants as tests (DSR_STRESS=full; `make
+# The numerical stress sweep (docs/accuracy.md): every case's invariants as tests (DSR_STRESS=full; `make
 # test` runs the quick subset), then `dsr stress`, which exits non-zero if an invariant fails and
 # writes docs/stress.json, the generated tables of docs/accuracy.md and docs/accuracy.png.
 stress: deps
@@ -203,6 +206,12 @@ stress: deps
 figures: deps
 	$(MAKE) -j$(JOBS) $(BUILD)/dsr
 	$(BUILD)/dsr figures -o docs/figures
+
+# docs/cli.md, printed from the command tables (`dsr help --markdown`); the CliDocs test fails
+# when the committed file differs.
+docs-cli: deps
+	$(MAKE) -j$(JOBS) $(BUILD)/dsr
+	$(BUILD)/dsr help --markdown > docs/cli.md.tmp && mv docs/cli.md.tmp docs/cli.md
 
 # docs/viewer.md's frame times under Xvfb and docs/viewer.png, the window with its panel, taken
 # from Xvfb's root window with ImageMagick (installed by this target only).

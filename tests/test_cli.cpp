@@ -3,16 +3,22 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
-#include <regex>
-#include <set>
 #include <sstream>
 #include <string>
 
 #include "analysis/image_metrics.h"
-#include "deferred/option_table.h"
+#include "app/command_table.h"
+#include "app/help_text.h"
 #include "cli_fixture.h"
+#include "deferred/option_table.h"
+#include "dsr_error.h"
+#include "gl/cap_names.h"
+#include "gl/check.h"
+#include "gl/state.h"
 #include "scene/image.h"
 
 using namespace dsr::test;
@@ -21,80 +27,237 @@ using dsr::Image;
 namespace {
 void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
-// The flags a usage text lists in its options section: the first word of each item of an
-// option line ("  -o, --output FILE  ..." gives -o and --output).
-std::set<std::string> usage_flags(const std::string& usage) {
-    std::set<std::string> out;
-    std::stringstream ss(usage.substr(usage.find("\noptions:\n")));
-    for (std::string line; std::getline(ss, line);) {
-        if (line.rfind("  -", 0) != 0) continue;
-        std::string head = line.substr(2, line.find("  ", 2) - 2);
-        std::stringstream items(head);
-        for (std::string item; std::getline(items, item, ',');) {
-            item = item.substr(item.find_first_not_of(' '));
-            out.insert(item.substr(0, item.find(' ')));
-        }
-    }
-    return out;
+// How help writes a flag's head: "-o, --output FILE", "--bloom, --no-bloom", "--depth auto|...".
+std::string head(const dsr::Flag& f) {
+    std::string s;
+    for (const std::string& n : f.names) s += (s.empty() ? "" : ", ") + n;
+    return f.arg.empty() ? s : s + " " + f.arg;
+}
+std::string head(const dsr::RenderOption& o) {
+    return o.kind == dsr::OptionKind::toggle ? "--" + o.name + ", --no-" + o.name : "--" + o.name + " " + dsr::option_arg(o);
 }
 
-// The flags a command file's parser compares against (`a == "--flag"`).
-std::set<std::string> parsed_flags(const std::string& source_file) {
-    std::ifstream in(std::string(DSR_SOURCE_DIR) + "/src/app/" + source_file);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    const std::string src = ss.str();
-    std::set<std::string> out;
-    const std::regex flag("a == \"(-[^\"]*)\"");
-    for (auto it = std::sregex_iterator(src.begin(), src.end(), flag); it != std::sregex_iterator(); ++it)
-        out.insert((*it)[1]);
-    return out;
+// A value a flag takes, from how its table writes it: the first of a|b, the low end of lo..hi, a
+// size, or a file with the extension its argument names.
+std::string good_value(const dsr::Flag& f) {
+    static const std::map<std::string, std::string> by_arg = {
+        {"WxH", "64x48"}, {"NxN", "64x64"},        {"FILE", "a.png"},     {"FILE.json", "a.json"},
+        {"FILE.md", "a.md"}, {"FILE.png", "a.png"}, {"DIR", "d"},          {"TEXT", "depth"},
+        {"NAME", "osmesa"},  {"LIST", "no-mrt"},    {"SPEC", "32-overlap"}};
+    if (f.arg.find('|') != std::string::npos) return f.arg.substr(0, f.arg.find('|'));  // auto|N: auto
+    if (f.names.front() == "--lights" && f.arg == "LIST") return "own,32";  // bench's
+    if (f.range.find("(comma-separated)") != std::string::npos) return f.range.substr(0, f.range.find(','));
+    const auto it = by_arg.find(f.arg);
+    if (it != by_arg.end()) return it->second;
+    if (f.range.find("..") != std::string::npos && isdigit(f.range[0])) return f.range.substr(0, f.range.find(".."));
+    return "";
 }
 
-std::string joined(const std::set<std::string>& s) {
+// `s` with every run of white space one space: help wraps its text anywhere between words.
+std::string flat(const std::string& s) {
     std::string out;
-    for (const std::string& x : s) out += x + " ";
+    for (char ch : s)
+        if (!isspace(static_cast<unsigned char>(ch))) out += ch;
+        else if (!out.empty() && out.back() != ' ') out += ' ';
     return out;
+}
+
+// True when `help` has a line that starts with `head` (its text after it, or on the next line).
+bool lists(const std::string& help, const std::string& head) {
+    return help.find("\n  " + head + " ") != std::string::npos || help.find("\n  " + head + "\n") != std::string::npos;
+}
+
+// Parses `argv` by a fresh copy of command `name`'s table; the error's text, or "" when it parsed.
+std::string parse(const std::string& name, const std::vector<std::string>& argv) {
+    try {
+        dsr::RenderSettings render;
+        dsr::FiguresSettings figures;
+        dsr::BenchSettings bench;
+        dsr::StressSettings stress;
+        dsr::InfoSettings info;
+        dsr::GenTexturesSettings gen;
+        dsr::GenModelSettings gen_model;
+        dsr::CompareSettings compare;
+        dsr::ViewerConfig view;
+        const dsr::Command c = name == "render"    ? dsr::render_command(render)
+                               : name == "figures" ? dsr::figures_command(figures)
+                               : name == "bench"   ? dsr::bench_command(bench)
+                               : name == "stress"  ? dsr::stress_command(stress)
+                               : name == "info"    ? dsr::info_command(info)
+                               : name == "compare" ? dsr::compare_command(compare)
+                               : name == "view"    ? dsr::view_command(view)
+                               : name == "gen-model" ? dsr::gen_model_command(gen_model)
+                                                   : dsr::gen_textures_command(gen);
+        dsr::parse_command_line(c, argv);
+        return "";
+    } catch (const dsr::Error& e) {
+        return e.what();
+    }
 }
 }  // namespace
 
-// `dsr COMMAND --help` (and -h): that command's usage on stdout, exit 0, nothing run; the
-// usage lists exactly the flags its command file parses (`a == "--flag"` in src/app/).
-TEST(Cli, EveryCommandHasHelpListingItsFlags) {
-    const std::pair<const char*, const char*> files[] = {
-        {"render", "render_command.cpp"}, {"figures", "figures_command.cpp"}, {"bench", "bench_command.cpp"},
-        {"stress", "stress_command.cpp"}, {"info", "info_command.cpp"},       {"gen-textures", nullptr},
-        {"compare", nullptr},             {"view", "viewer_main.cpp"},     {"gen-model", nullptr}};
-    for (auto [c, file] : files) {
-        RunResult r = run(std::string(c) + " --help");
-        EXPECT_EQ(r.status, 0) << c << ": " << r.output;
-        EXPECT_EQ(r.output.rfind(std::string("usage: dsr ") + c + " ", 0), 0u) << c << ": " << r.output;
-        EXPECT_NE(r.output.find("\noptions:\n"), std::string::npos) << c << ": " << r.output;
-        if (!file) continue;
-        const bool windowed = std::string(c) == "view";  // the viewer's context is its window
-        if (!windowed) {
-            EXPECT_NE(r.output.find("--context NAME"), std::string::npos) << c << ": " << r.output;
+// `dsr COMMAND --help` (and -h): that command's usage on stdout, exit 0, nothing run; it is the
+// command's table printed (help_text.h), so it lists every flag of the table, and for `render`
+// and `view` every renderer option.
+TEST(Cli, EveryCommandHasHelpListingItsTable) {
+    ASSERT_EQ(dsr::command_table().size(), 9u);
+    for (const dsr::Command& c : dsr::command_table()) {
+        RunResult r = run(c.name + " --help");
+        EXPECT_EQ(r.status, 0) << c.name << ": " << r.output;
+        EXPECT_EQ(r.output, dsr::command_help(c)) << c.name << ": the binary prints its table";
+        EXPECT_EQ(r.output.rfind("usage: dsr " + c.name + " ", 0), 0u) << c.name << ": " << r.output;
+        EXPECT_NE(r.output.find("\noptions:\n"), std::string::npos) << c.name << ": " << r.output;
+        if (c.name != "view" && c.name != "compare" && c.name != "gen-textures" &&
+            c.name != "gen-model") {
+            EXPECT_NE(r.output.find("--context NAME"), std::string::npos) << c.name << ": " << r.output;
         }
-        std::set<std::string> parsed = parsed_flags(file);
-        const std::set<std::string> listed = usage_flags(r.output);
-        // render and view take the option table's flags too (parse_render_flag).
-        if (std::string(c) == "render" || windowed) {
-            for (const std::string& f : dsr::render_option_flags()) parsed.insert(f);
+        for (const dsr::Flag& f : c.flags) {
+            EXPECT_TRUE(lists(r.output, head(f))) << c.name << ": " << head(f);
+            if (!f.def.empty()) {
+                EXPECT_NE(flat(r.output).find("default " + flat(f.def)), std::string::npos) << c.name << ": " << head(f);
+            }
+            for (const auto& item : f.items) EXPECT_NE(r.output.find("\n    " + item.first + " "), std::string::npos) << item.first;
         }
-        EXPECT_GT(parsed.size(), 0u) << file;
-        EXPECT_EQ(parsed, listed) << c << ": parsed " << joined(parsed) << "\nlisted " << joined(listed);
+        for (const dsr::Operand& o : c.operands) EXPECT_TRUE(lists(r.output, o.name)) << o.name;
+        const bool takes_renderer = c.name == "render" || c.name == "view";
+        EXPECT_EQ(c.renderer != nullptr, takes_renderer) << c.name;
+        EXPECT_EQ(r.output.find("\nrenderer options") != std::string::npos, takes_renderer) << c.name;
+        for (const dsr::RenderOption& o : dsr::render_options()) {
+            if (takes_renderer) {
+                EXPECT_TRUE(lists(r.output, head(o))) << c.name << ": " << head(o);
+            }
+            EXPECT_FALSE(o.help.empty()) << o.name;
+        }
     }
     RunResult render = run("render --size 32x32 -h");  // -h too, anywhere among the flags
     EXPECT_EQ(render.status, 0);
     EXPECT_EQ(render.output.rfind("usage: dsr render ", 0), 0u) << render.output;
     for (const char* k : {"--gl-state-cache on|off", "--debug-gl", "--context NAME"})
         EXPECT_NE(render.output.find(k), std::string::npos) << k;
-    // compare takes no GL context; its flags are still exactly the usage's.
-    RunResult cmp = run("compare --help");
-    EXPECT_EQ(parsed_flags("compare_command.cpp"), usage_flags(cmp.output)) << cmp.output;
+    // The --caps names come from gl/cap_names.h: every one in the help of each command taking --caps.
+    for (const char* c : {"render", "info", "view"}) {
+        const std::string help = run(std::string(c) + " --help").output;
+        for (const dsr::CapName& n : dsr::cap_names()) EXPECT_NE(help.find(n.name), std::string::npos) << c << ": " << n.name;
+    }
     RunResult top = run("--help");
     EXPECT_EQ(top.status, 0);
-    for (auto [c, file] : files) EXPECT_NE(top.output.find(std::string("\n  ") + c + " "), std::string::npos) << c;
+    EXPECT_EQ(top.output, dsr::top_help());
+    for (const dsr::Command& c : dsr::command_table()) EXPECT_NE(top.output.find("\n  " + c.name + " "), std::string::npos) << c.name;
+}
+
+// Every flag of every table parses a value of the kind its table says it takes, and every
+// renderer option parses each of its values through both commands that take them; a flag with a
+// choice or a range refuses another value with one error line that names the flag and what it
+// accepts.
+TEST(Cli, EveryTableFlagParsesAndRefusesInOneLine) {
+    const bool debug = dsr::debug_gl(), cache = dsr::gl_state().cache();  // --debug-gl, --gl-state-cache set them here
+    for (const dsr::Command& c : dsr::command_table()) {
+        for (const dsr::Flag& f : c.flags) {
+            const std::string name = f.names.back();
+            std::vector<std::string> argv = {name};
+            if (!f.arg.empty()) argv.push_back(good_value(f));
+            ASSERT_FALSE(!f.arg.empty() && argv[1].empty()) << c.name << " " << name << ": no sample for " << f.arg;
+            EXPECT_EQ(parse(c.name, argv), "") << c.name << " " << name << " " << (argv.size() > 1 ? argv[1] : "");
+            const bool checked = f.arg.find('|') != std::string::npos || !f.range.empty();
+            if (f.arg.empty() || !checked) continue;
+            const std::string err = parse(c.name, {name, "bogus"});
+            EXPECT_EQ(err.rfind("dsr " + c.name + ": " + name + ": expected ", 0), 0u) << c.name << " " << name << ": " << err;
+            EXPECT_EQ(err.find('\n'), std::string::npos) << err;
+            std::stringstream alternatives(f.arg);  // each word of a|b|N the error names (N: the range below)
+            for (std::string w; std::getline(alternatives, w, '|');)
+                if (islower(static_cast<unsigned char>(w[0]))) {
+                    EXPECT_NE(err.find(w), std::string::npos) << w << ": " << err;
+                }
+            if (f.range.find("..") != std::string::npos && isdigit(f.range[0])) {
+                const std::string lo = f.range.substr(0, f.range.find("..")), hi = f.range.substr(f.range.find("..") + 2);
+                EXPECT_NE(err.find("[" + lo + ", " + hi.substr(0, hi.find_first_not_of("0123456789")) + "]"),
+                          std::string::npos) << err;
+            }
+            EXPECT_NE(parse(c.name, {name}).find(name + ": expected a value, got nothing"), std::string::npos) << name;
+        }
+        for (const dsr::Operand& o : c.operands) EXPECT_FALSE(o.help.empty()) << c.name << " " << o.name;
+        EXPECT_NE(parse(c.name, {"--frobnicate"}).find("unknown option '--frobnicate'"), std::string::npos) << c.name;
+    }
+    dsr::set_debug_gl(debug);
+    dsr::gl_state().set_cache(cache);
+    for (const char* command : {"render", "view"})
+        for (const dsr::RenderOption& o : dsr::render_options()) {
+            std::vector<std::vector<std::string>> lines;
+            if (o.kind == dsr::OptionKind::toggle) lines = {{"--" + o.name}, {"--no-" + o.name}};
+            else if (o.kind == dsr::OptionKind::number || o.kind == dsr::OptionKind::integer)
+                lines = {{"--" + o.name, dsr::option_range(o).substr(0, dsr::option_range(o).find(".."))}};
+            else
+                for (const std::string& v : o.values) lines.push_back({"--" + o.name, v});
+            for (const auto& argv : lines) EXPECT_EQ(parse(command, argv), "") << command << " " << argv[0];
+            if (o.kind == dsr::OptionKind::toggle) continue;
+            const std::string err = parse(command, {"--" + o.name, "bogus"});
+            EXPECT_EQ(err.rfind(std::string("dsr ") + command + ": --" + o.name + ": expected ", 0), 0u) << err;
+            EXPECT_EQ(err.find('\n'), std::string::npos) << err;
+        }
+    // What a parse stores: the table's default where no flag is given, the value where one is.
+    dsr::RenderSettings r;
+    dsr::parse_command_line(dsr::render_command(r), {"s.scene", "--tile-size", "24", "--no-bloom", "--lights", "64-overlap"});
+    EXPECT_EQ(r.scene, "s.scene");
+    EXPECT_EQ(r.options.shader.tile_size, 24);
+    EXPECT_EQ(r.options.bloom, 0);
+    ASSERT_TRUE(r.lights.has_value());
+    EXPECT_EQ(r.lights->count, 64);
+    EXPECT_EQ(r.out, "out.png");
+    EXPECT_EQ(r.width, 512);
+    dsr::BenchSettings b;
+    dsr::parse_command_line(dsr::bench_command(b), {"--tile-size", "32", "--tile-plan", "groups", "--light-geometry", "tiles,quad"});
+    EXPECT_EQ(b.tiles.shader.tile_size, 32);
+    EXPECT_EQ(b.tiles.shader.tile_lights, 0) << "auto, as render's default";
+    EXPECT_EQ(b.tiles.shader.tile_plan, dsr::TileGrouping::groups);
+    EXPECT_EQ(b.geometries, (std::vector<std::string>{"tiles", "quad"}));
+    dsr::ViewerConfig v;  // `view --lights`, as render takes it
+    dsr::parse_command_line(dsr::view_command(v), {"--lights", "32-large", "--size", "640x360"});
+    ASSERT_TRUE(v.lights.has_value());
+    EXPECT_EQ(v.lights->set, dsr::LightSet::large);
+    EXPECT_EQ(v.width, 640);
+}
+
+// docs/cli.md is the tables printed as markdown (`make docs-cli` writes it): it fails here when a
+// flag, value, default or help changed and the file was not regenerated, or the file was edited.
+TEST(CliDocs, DocsCliMdIsTheTablesPrinted) {
+    const std::string path = std::string(DSR_SOURCE_DIR) + "/docs/cli.md";
+    std::ifstream in(path);
+    ASSERT_TRUE(in) << path << " is missing: make docs-cli writes it";
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string file = ss.str(), tables = dsr::cli_markdown();
+    if (file == tables) return;
+    std::stringstream a(file), b(tables);
+    std::string la, lb;
+    for (int line = 1;; ++line) {
+        const bool more_a = bool(std::getline(a, la)), more_b = bool(std::getline(b, lb));
+        if (!more_a && !more_b) break;
+        if (!more_a || !more_b || la != lb) {
+            ADD_FAILURE() << path << ":" << line << " differs from the tables (make docs-cli rewrites it):\n  file:   "
+                          << (more_a ? la : "(end of file)") << "\n  tables: " << (more_b ? lb : "(end)");
+            return;
+        }
+    }
+    ADD_FAILURE() << path << " differs from the tables (make docs-cli rewrites it)";
+}
+
+// The --caps table is the one list: an unknown name's error names every entry, and `info` hides
+// every entry it is given.
+TEST(Cli, CapsNamesComeFromOneTable) {
+    std::string all;
+    for (const dsr::CapName& n : dsr::cap_names()) all += (all.empty() ? "" : ",") + std::string(n.name);
+    const std::string err = dsr::check_cap_names({"no-mrt", "no-such"});
+    EXPECT_EQ(err.rfind("unknown capability 'no-such' (expected no-mrt, ", 0), 0u) << err;
+    for (const dsr::CapName& n : dsr::cap_names()) EXPECT_NE(err.find(n.name), std::string::npos) << n.name;
+    EXPECT_EQ(dsr::check_cap_names(dsr::split_caps(all)), "");
+    RunResult info = run("info --caps " + all);
+    ASSERT_EQ(info.status, 0) << info.output;
+    std::string forced = "forced off:";
+    for (const dsr::CapName& n : dsr::cap_names()) forced += " " + std::string(n.name);
+    EXPECT_NE(info.output.find(forced + "\n"), std::string::npos) << info.output;
+    RunResult bad = run("info --caps no-mrt,no-such");
+    EXPECT_EQ(bad.status, 1);
+    EXPECT_EQ(bad.output, "dsr info: --caps: " + err + "\n");
 }
 
 // An unknown command is one line on stderr and exit 2; an unknown option one line and exit 1.

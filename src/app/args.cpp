@@ -1,17 +1,26 @@
 #include "app/args.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 
 #include "dsr_error.h"
 
 namespace dsr {
 
-void Args::fail(const std::string& what) const { throw Error("dsr " + cmd_ + ": " + what); }
+void fail_command(const std::string& command, const std::string& what) { throw Error("dsr " + command + ": " + what); }
+
+void Args::fail(const std::string& what) const { fail_command(cmd_, what); }
 
 std::string Args::value(const std::string& flag) {
     if (done()) fail(flag + ": expected a value, got nothing");
     return next();
+}
+
+static std::string format_number(float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", double(v));
+    return buf;
 }
 
 static bool parse_int(const std::string& s, long& out) {
@@ -37,7 +46,7 @@ float Args::float_value(const std::string& flag, float lo, float hi) {
     errno = 0;
     double d = v.empty() ? 0 : std::strtod(v.c_str(), &end);
     if (v.empty() || errno != 0 || *end != '\0' || !(d >= lo && d <= hi))
-        fail(flag + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + v + "'");
+        fail(flag + ": expected a number in [" + format_number(lo) + ", " + format_number(hi) + "], got '" + v + "'");
     return float(d);
 }
 

@@ -1,5 +1,5 @@
-// Command-line parsing helpers: every bad flag or value is one clear dsr::Error naming
-// the flag, what was expected and what was given.
+// Reading a flag's value (command_line.h's tables call these): every bad flag or value is one
+// clear dsr::Error naming the flag, what was expected and what was given.
 #pragma once
 #include <string>
 #include <vector>
@@ -26,5 +26,8 @@ private:
     std::vector<std::string> a_;
     size_t i_ = 0;
 };
+
+// "dsr COMMAND: what" as a dsr::Error: a command's own check after its flags are read.
+[[noreturn]] void fail_command(const std::string& command, const std::string& what);
 
 }  // namespace dsr

@@ -1,4 +1,4 @@
-// `dsr bench`: parses the flags, runs the sweep (src/analysis/bench_run.h) on a context of the
+// `dsr bench`: parses the flags by its table (app/command_table.h), runs the sweep (src/analysis/bench_run.h) on a context of the
 // chosen backend, and prints or writes what src/analysis/bench_report.h makes of the rows: the
 // table on stdout, progress on stderr, optional JSON and a markdown report with a plot.
 #include <sys/stat.h>
@@ -15,7 +15,7 @@
 #include "analysis/bench_report.h"
 #include "analysis/large_mesh.h"
 #include "analysis/bench_run.h"
-#include "app/args.h"
+#include "app/command_table.h"
 #include "app/commands.h"
 #include "app/files.h"
 #include "dsr_error.h"
@@ -34,82 +34,36 @@ std::string dir_of(const std::string& path) {
     return s == std::string::npos ? "" : path.substr(0, s + 1);
 }
 
-bool ends_with(const std::string& s, const std::string& e) {
-    return s.size() >= e.size() && s.compare(s.size() - e.size(), e.size(), e) == 0;
-}
-
 }  // namespace
 
 int cmd_bench(const std::vector<std::string>& argv) {
-    Args args("bench", argv);
-    std::string scene_path, json_path, report_path, lights_arg, geometry_arg, tile_plan;
-    std::string backend = default_context_backend();  // --context, else $DSR_CONTEXT
-    int w = 0, h = 0, frames = 0, tile_size = 0, tile_lights = 0;
-    bool quick = false;
-    int tile_depth = -1;  // --tile-depth; -1: the default
-    while (!args.done()) {
-        std::string a = args.next();
-        if (a == "--quick") quick = true;
-        else if (a == "--json") json_path = args.value(a);
-        else if (a == "--report") report_path = args.value(a);
-        else if (a == "--size") args.size_value(a, w, h);
-        else if (a == "--frames") frames = args.int_value(a, 1, 1000);
-        else if (a == "--lights") lights_arg = args.value(a);
-        else if (a == "--light-geometry") geometry_arg = args.value(a);
-        else if (a == "--tile-size") tile_size = args.int_value(a, 8, 512);
-        else if (a == "--tile-lights") tile_lights = args.int_value(a, 1, 32);
-        else if (a == "--tile-plan") tile_plan = args.value(a);
-        else if (a == "--tile-depth") tile_depth = args.on_off(a) ? 1 : 0;
-        else if (a == "--context") backend = args.value(a);
-        else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
-        else if (scene_path.empty()) scene_path = a;
-        else args.fail("expected one scene file, got also '" + a + "'");
-    }
+    BenchSettings flags;  // the bench command's table (app/command_table.h)
+    parse_command_line(bench_command(flags), argv);
+    const std::string scene_path = flags.scene, json_path = flags.json, report_path = flags.report;
+    const bool quick = flags.quick;
     bench::Config cfg;
     cfg.quick = quick;
-    if (quick) cfg.w = cfg.h = 128, cfg.frames = 3, cfg.warmup = 1;
-    if (w) cfg.w = w, cfg.h = h;
-    if (frames) cfg.frames = frames;
-    if (tile_size) cfg.tile_size = tile_size;
-    if (tile_lights) cfg.tile_lights = tile_lights;
-    if (tile_depth >= 0) cfg.tile_depth = tile_depth == 1;
-    if (!tile_plan.empty()) {
-        if (tile_plan != "lists" && tile_plan != "groups") args.fail("--tile-plan: expected lists or groups, got '" + tile_plan + "'");
-        cfg.tile_plan = tile_plan == "groups" ? TileGrouping::groups : TileGrouping::lists;
-    }
-    // --lights: comma-separated counts; "own" is the scene's own lights; N-overlap and N-large the
-    // generated scenes of bench_scenes.h.
-    cfg.lights_text = !lights_arg.empty() ? lights_arg
-                      : quick             ? "own,32,256"
-                                          : "own,32,256,1024,1024-overlap,32-large";
+    if (quick)
+        cfg.w = cfg.h = BenchSettings::kQuickSize, cfg.frames = BenchSettings::kQuickFrames,
+        cfg.warmup = BenchSettings::kQuickWarmup;
+    if (flags.width) cfg.w = flags.width, cfg.h = flags.height;
+    if (flags.frames) cfg.frames = flags.frames;
+    const ShaderOptions& tiles = flags.tiles.shader;  // --tile-*: the option table's entries, its defaults
+    cfg.tile_size = tiles.tile_size, cfg.tile_lights = tiles.tile_lights;
+    cfg.tile_plan = tiles.tile_plan, cfg.tile_depth = tiles.tile_depth;
+    // --lights: comma-separated counts (checked by the flag); "own" is the scene's own lights;
+    // N-overlap and N-large the generated scenes of bench_scenes.h.
+    cfg.lights_text = !flags.lights.empty() ? flags.lights : quick ? BenchSettings::kQuickLights : BenchSettings::kBenchLights;
     {
         std::stringstream ss(cfg.lights_text);
-        std::string item;
-        while (std::getline(ss, item, ',')) {
-            const std::optional<LightSpec> spec = parse_light_spec(item);
-            if (!spec)
-                args.fail("--lights: expected a comma-separated list of 'own', counts N in [0, 65536], N-overlap "
-                          "(N a multiple of 8) or N-large, got '" + item + "' in '" + cfg.lights_text + "'");
-            cfg.lights.push_back(spec->count);
-            cfg.light_sets.push_back(spec->set);
-        }
-        if (cfg.lights.empty()) args.fail("--lights: expected at least one count, got ''");
-    }
-    if (!geometry_arg.empty()) {  // --light-geometry: which geometries get rows of their own
-        cfg.geometries.clear();
-        std::stringstream ss(geometry_arg);
-        std::string item;
-        while (std::getline(ss, item, ',')) {
-            if (item != "quad" && item != "volume" && item != "stencil" && item != "tiles")
-                args.fail("--light-geometry: expected a comma-separated list of quad, volume, stencil, tiles, got '" +
-                          geometry_arg + "'");
-            cfg.geometries.push_back(light_geometry_from_name(item));
+        for (std::string item; std::getline(ss, item, ',');) {
+            const LightSpec spec = *parse_light_spec(item);
+            cfg.lights.push_back(spec.count);
+            cfg.light_sets.push_back(spec.set);
         }
     }
-    if (!json_path.empty() && !ends_with(json_path, ".json"))
-        args.fail("--json: expected a file ending .json, got '" + json_path + "'");
-    if (!report_path.empty() && !ends_with(report_path, ".md"))
-        args.fail("--report: expected a file ending .md, got '" + report_path + "'");
+    cfg.geometries.clear();  // --light-geometry: which geometries get rows of their own
+    for (const std::string& g : flags.geometries) cfg.geometries.push_back(light_geometry_from_name(g));
 
     // No SCENE: the default scene and the analytic test scene (constant materials, so it also
     // has an analytic reference). Every scene is loaded before any measurement.
@@ -124,7 +78,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
             std::fprintf(stderr, "bench: tests/data/analytic.scene not found; benchmarking the default scene only\n");
         }
     }
-    // A large mesh (issue 11): a generated 1,002,528-triangle OBJ under build/bench/, loaded
+    // A large mesh (docs/benchmarks.md): a generated 1,002,528-triangle OBJ under build/bench/, loaded
     // through the OBJ loader like a user's model; its own lights only (a light sweep over it
     // would measure the lights again). Left out of --quick and of runs given a SCENE.
     std::vector<bool> own_only(scenes.size(), false);
@@ -137,7 +91,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
     std::vector<int> own_counts;
     for (auto& s : scenes) own_counts.push_back(int(load_scene(s).lights.size()));
 
-    auto ctx = create_context(ContextDesc{backend, cfg.w, cfg.h});
+    auto ctx = create_context(ContextDesc{context_backend(flags.context), cfg.w, cfg.h});
     const Caps caps = probe_caps();
     bench::Summary sum;
     sum.machine = bench::machine_name();

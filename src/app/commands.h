@@ -15,6 +15,4 @@ int cmd_bench(const std::vector<std::string>& args);
 int cmd_compare(const std::vector<std::string>& args);
 int cmd_view(const std::vector<std::string>& args);  // runs dsr_view beside dsr
 
-// Capabilities to hide: DSR_CAPS from the environment plus --caps, comma-separated.
-
 }  // namespace dsr

@@ -6,26 +6,21 @@
 
 #include "analysis/image_metrics.h"
 #include "app/args.h"
+#include "app/command_table.h"
 #include "app/commands.h"
 #include "scene/image.h"
 
 namespace dsr {
 
 int cmd_compare(const std::vector<std::string>& argv) {
-    Args args("compare", argv);
-    std::vector<std::string> files;
-    double threshold_lsb = 2.0, max_lsb = -1.0;
-    while (!args.done()) {
-        std::string a = args.next();
-        if (a == "--threshold") threshold_lsb = args.float_value(a, 0.0f, 255.0f);
-        else if (a == "--max-lsb") max_lsb = args.float_value(a, 0.0f, 255.0f);
-        else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
-        else files.push_back(a);
-    }
-    if (files.size() != 2) args.fail("expected two image files, got " + std::to_string(files.size()));
+    CompareSettings flags;  // the compare command's table (app/command_table.h)
+    parse_command_line(compare_command(flags), argv);
+    const std::vector<std::string>& files = flags.files;
+    const double threshold_lsb = flags.threshold_lsb, max_lsb = flags.max_lsb;
+    if (files.size() != 2) fail_command("compare", "expected two image files, got " + std::to_string(files.size()));
     const Image a = load_image(files[0]), b = load_image(files[1]);
     if (a.width != b.width || a.height != b.height)
-        args.fail("sizes differ: " + files[0] + " is " + std::to_string(a.width) + "x" + std::to_string(a.height) +
+        fail_command("compare", "sizes differ: " + files[0] + " is " + std::to_string(a.width) + "x" + std::to_string(a.height) +
                   ", " + files[1] + " is " + std::to_string(b.width) + "x" + std::to_string(b.height));
     const ImageDiff d = compare_images(a, b, threshold_lsb / 255.0);
     std::printf("max_lsb %.2f mean_lsb %.6f over_threshold %lld pixels %lld threshold_lsb %.2f\n", d.max_lsb(),

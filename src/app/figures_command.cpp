@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <functional>
 
-#include "app/args.h"
+#include "app/command_table.h"
 #include "app/commands.h"
 #include "dsr_error.h"
 #include "deferred/deferred_shader.h"
@@ -42,27 +42,16 @@ Image closeup(const Image& src, int x0, int y0, int size, int zoom) {
 }  // namespace
 
 int cmd_figures(const std::vector<std::string>& argv) {
-    Args args("figures", argv);
-    std::string dir = "docs/figures", scene_path;
-    int n = 512, unused = 0;
-    std::string context = default_context_backend();  // --context, else $DSR_CONTEXT
-    while (!args.done()) {
-        std::string a = args.next();
-        if (a == "-o") dir = args.value(a);
-        else if (a == "--context") context = args.value(a);
-        else if (a == "--size") {
-            args.size_value(a, n, unused);
-            if (n != unused || n < 64) args.fail("--size: expected a square size of at least 64x64, got '" +
-                                                 std::to_string(n) + "x" + std::to_string(unused) + "'");
-        } else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
-        else if (scene_path.empty()) scene_path = a;
-        else args.fail("expected one scene file, got also '" + a + "'");
-    }
+    FiguresSettings flags;  // the figures command's table (app/command_table.h)
+    parse_command_line(figures_command(flags), argv);
+    const std::string dir = flags.dir;
+    std::string scene_path = flags.scene;
+    const int n = flags.size;
     const bool default_scene = scene_path.empty();
     if (default_scene) scene_path = resource_dir("data") + "/default.scene";
     Scene scene = load_scene(scene_path);
     mkdir(dir.c_str(), 0755);
-    auto ctx = create_context(ContextDesc{context, n, n});
+    auto ctx = create_context(ContextDesc{context_backend(flags.context), n, n});
     Caps caps = probe_caps();
     const std::string shaders = resource_dir("glsl120");
     std::vector<std::string> written;
@@ -125,7 +114,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
         ds.blur(2, 3, {0, 1}, false);
         save("fig10c_composed_blur.png", ds.read_pbuffer(3));
     });
-    // SSAO (issue 13, Vasilovici §5): the default options, the image with and without and the
+    // SSAO (docs/ssao.md, Vasilovici §5): the default options, the image with and without and the
     // blurred AO buffer the ambient pass (Listing 15, Eq. 6) is multiplied by; without it the
     // image is fig11_without_bloom, saved again as ssao_without beside them.
     ShaderOptions ssao = plain;
@@ -134,7 +123,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
         save("ssao_with.png", view(ds, View::final));
         save("ssao_buffer.png", view(ds, View::ssao));
     });
-    // Transparency (issue 13, the tutorial's §4 answer to its "major limitation"): the panes and
+    // Transparency (docs/forward.md, the tutorial's §4 answer to its "major limitation"): the panes and
     // the glass ball are left out of the G-buffer (its diffuse view shows the wall through them)
     // and blended after the lights by the forward stage, with --show-lights markers that bloom
     // makes glow; only with the default scene (its own scene file is fixed).

@@ -1,7 +1,10 @@
+// `dsr gen-textures DIR`: the default scene's procedural textures (scene/procedural_textures.h)
+// written as files, as data/ holds them.
 #include <cstdio>
 #include <sys/stat.h>
 
 #include "app/args.h"
+#include "app/command_table.h"
 #include "app/commands.h"
 #include "scene/image.h"
 #include "scene/procedural_textures.h"
@@ -9,10 +12,10 @@
 namespace dsr {
 
 int cmd_gen_textures(const std::vector<std::string>& argv) {
-    Args args("gen-textures", argv);
-    if (args.done()) args.fail("expected an output folder, got nothing");
-    std::string dir = args.next();
-    if (!args.done()) args.fail("expected one output folder, got also '" + args.peek() + "'");
+    GenTexturesSettings flags;  // the gen-textures command's table (app/command_table.h)
+    parse_command_line(gen_textures_command(flags), argv);
+    if (flags.dir.empty()) fail_command("gen-textures", "expected an output folder, got nothing");
+    const std::string dir = flags.dir;
     mkdir(dir.c_str(), 0755);
     for (const auto& [name, img] : default_textures()) {
         write_image(dir + "/" + name, img);

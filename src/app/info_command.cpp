@@ -2,7 +2,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "app/args.h"
+#include "app/command_table.h"
 #include "app/commands.h"
 #include "deferred/paths.h"
 #include "gl/caps.h"
@@ -14,23 +14,10 @@
 namespace dsr {
 
 int cmd_info(const std::vector<std::string>& argv) {
-    Args args("info", argv);
-    std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";
-    std::string context = default_context_backend();  // --context, else $DSR_CONTEXT
-    int egl_device = -1;                               // --egl-device, else $DSR_EGL_DEVICE, else 0
-    while (!args.done()) {
-        std::string a = args.next();
-        if (a == "--caps")
-            caps_list += "," + args.value("--caps");
-        else if (a == "--context")
-            context = args.value(a);
-        else if (a == "--egl-device")
-            egl_device = args.int_value(a, 0, 15);
-        else
-            args.fail("unknown option '" + a + "'");
-    }
-    auto ctx = create_context(ContextDesc{context, 512, 512, egl_device});  // big enough to time a pass (timing line)
-    Caps caps = probe_caps(split_caps(caps_list));
+    InfoSettings flags;  // the info command's table (app/command_table.h)
+    parse_command_line(info_command(flags), argv);
+    auto ctx = create_context(ContextDesc{context_backend(flags.context), 512, 512, flags.context.egl_device});  // big enough to time a pass (timing line)
+    Caps caps = probe_caps(split_caps(caps_with_environment(flags.caps)));
     std::printf("context        %s\n%s", ctx->description().c_str(), describe(caps).c_str());
     // The renderer's own chooser with `render`'s defaults (depth auto), so info cannot drift.
     ShaderOptions defaults;

@@ -3,19 +3,20 @@
 #include <string>
 #include <vector>
 
+#include "app/command_table.h"
 #include "app/commands.h"
-#include "app/usage.h"
+#include "app/help_text.h"
 #include "dsr_error.h"
 
 namespace {
 
-struct Command {
+struct Run {
     const char* name;
     int (*run)(const std::vector<std::string>&);
 };
 
-// Every entry of dsr::command_usages() (usage.cpp) has its function here.
-const Command kCommands[] = {
+// Every entry of dsr::command_table() (command_table.cpp) has its function here.
+const Run kRuns[] = {
     {"render", dsr::cmd_render}, {"figures", dsr::cmd_figures}, {"bench", dsr::cmd_bench},
     {"stress", dsr::cmd_stress}, {"info", dsr::cmd_info},       {"gen-textures", dsr::cmd_gen_textures},
     {"compare", dsr::cmd_compare},      {"view", dsr::cmd_view},
@@ -27,24 +28,33 @@ const Command kCommands[] = {
 int main(int argc, char** argv) {
     const std::string first = argc < 2 ? "" : argv[1];
     if (argc < 2 || dsr::is_help_flag(first) || first == "help") {
-        // `dsr help COMMAND`: that command's usage.
-        const dsr::CommandUsage* u = argc > 2 && first == "help" ? dsr::find_command_usage(argv[2]) : nullptr;
-        std::fputs(u ? dsr::command_usage_text(*u).c_str() : dsr::top_usage_text().c_str(), argc < 2 ? stderr : stdout);
+        // `dsr help COMMAND`: that command's usage; `dsr help --markdown`: docs/cli.md.
+        const std::string topic = argc > 2 && first == "help" ? argv[2] : "";
+        if (topic == "--markdown") {
+            std::fputs(dsr::cli_markdown().c_str(), stdout);
+            return 0;
+        }
+        const dsr::Command* c = topic.empty() ? nullptr : dsr::find_command(topic);
+        if (!topic.empty() && !c) {
+            std::fprintf(stderr, "%s\n", dsr::unknown_command_line(topic).c_str());
+            return 2;
+        }
+        std::fputs(c ? dsr::command_help(*c).c_str() : dsr::top_help().c_str(), argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
     }
     const std::string cmd = first;
     const std::vector<std::string> args(argv + 2, argv + argc);
-    const dsr::CommandUsage* usage = dsr::find_command_usage(cmd);
+    const dsr::Command* command = dsr::find_command(cmd);
     int (*run)(const std::vector<std::string>&) = nullptr;
-    for (const Command& c : kCommands)
-        if (cmd == c.name) run = c.run;
-    if (!usage || !run) {
+    for (const Run& r : kRuns)
+        if (cmd == r.name) run = r.run;
+    if (!command || !run) {
         std::fprintf(stderr, "%s\n", dsr::unknown_command_line(cmd).c_str());
         return 2;
     }
     for (const std::string& a : args)
         if (dsr::is_help_flag(a)) {
-            std::fputs(dsr::command_usage_text(*usage).c_str(), stdout);
+            std::fputs(dsr::command_help(*command).c_str(), stdout);
             return 0;
         }
     try {

@@ -9,12 +9,11 @@
 #include <nlohmann/json.hpp>
 
 #include "dsr_clock.h"
-#include "app/args.h"
 #include "analysis/bench_scenes.h"
 #include "app/commands.h"
 #include "analysis/frame_ideal.h"
 #include "app/files.h"
-#include "app/render_flags.h"
+#include "app/command_table.h"
 #include "deferred/deferred_shader.h"
 #include "gl/caps.h"
 #include "gl/check.h"
@@ -27,64 +26,24 @@
 
 namespace dsr {
 
-namespace {
-
-bool has_ext(const std::string& path, const char* ext) {
-    std::string e = ext;
-    if (path.size() < e.size()) return false;
-    std::string tail = path.substr(path.size() - e.size());
-    std::transform(tail.begin(), tail.end(), tail.begin(), ::tolower);
-    return tail == e;
-}
-
-}  // namespace
-
 int cmd_render(const std::vector<std::string>& argv) {
-    Args args("render", argv);
-    std::string scene_path, out = "out.png", stats_path, lights_arg;
-    int w = 512, h = 512, out_w = 0, out_h = 0, frames = 1;
-    RenderOptions ro;  // the option table's flags (deferred/option_table.h)
-    std::string caps_list = std::getenv("DSR_CAPS") ? std::getenv("DSR_CAPS") : "";
-    std::string context = default_context_backend();  // --context, else $DSR_CONTEXT
-    int egl_device = -1;                               // --egl-device, else $DSR_EGL_DEVICE, else 0
-    while (!args.done()) {
-        std::string a = args.next();
-        if (a == "-o" || a == "--output") out = args.value(a);
-        else if (a == "--size") args.size_value(a, w, h);
-        else if (a == "--frames") frames = args.int_value(a, 1, 100000);
-        else if (a == "--stats") stats_path = args.value(a);
-        else if (a == "--lights") lights_arg = args.value(a);
-        else if (a == "--out-size") args.size_value(a, out_w, out_h);
-        else if (parse_render_flag(args, a, ro)) continue;
-        else if (a == "--caps") caps_list += "," + args.value(a);
-        else if (a == "--context") context = args.value(a);
-        else if (a == "--egl-device") egl_device = args.int_value(a, 0, 15);
-        else if (a == "--gl-state-cache") gl_state().set_cache(args.on_off(a));
-        else if (a == "--debug-gl") set_debug_gl(true);
-        else if (!a.empty() && a[0] == '-') args.fail("unknown option '" + a + "'");
-        else if (scene_path.empty()) scene_path = a;
-        else args.fail("expected one scene file, got also '" + a + "'");
-    }
-    if (!has_ext(out, ".png") && !has_ext(out, ".exr") && !has_ext(out, ".tif") && !has_ext(out, ".tiff") &&
-        !has_ext(out, ".jpg") && !has_ext(out, ".ppm"))
-        args.fail("-o: expected a file ending .png, .exr, .tif, .jpg or .ppm, got '" + out + "'");
-    if (!stats_path.empty() && !has_ext(stats_path, ".json"))
-        args.fail("--stats: expected a file ending .json, got '" + stats_path + "'");
-    if (scene_path.empty()) scene_path = resource_dir("data") + "/default.scene";
-    std::optional<LightSpec> light_spec;
-    if (!lights_arg.empty() && !(light_spec = parse_light_spec(lights_arg)))
-        args.fail("--lights: expected 'own', a count N in [0, 65536], N-overlap (N a multiple of 8) or N-large, got '" +
-                  lights_arg + "'");
+    RenderSettings flags;  // the render command's table (app/command_table.h)
+    parse_command_line(render_command(flags), argv);
+    const std::string out = flags.out, stats_path = flags.stats;
+    const std::string scene_path = flags.scene.empty() ? resource_dir("data") + "/default.scene" : flags.scene;
+    const int w = flags.width, h = flags.height, frames = flags.frames;
+    int out_w = flags.out_width, out_h = flags.out_height;
+    const RenderOptions& ro = flags.options;
 
     const double load_start = now_ms();
     Scene scene = load_scene(scene_path);  // every input error surfaces before any output
-    if (light_spec) scene = bench_scene(scene, *light_spec);  // the bench's lights (bench_scenes.h)
+    if (flags.lights) scene = bench_scene(scene, *flags.lights);  // the bench's lights (bench_scenes.h)
     const double load_ms = now_ms() - load_start;
     if (out_w == 0) out_w = w, out_h = h;
     const View view = ro.view;
     // The no-FBO path renders its buffers inside the main frame buffer: make it fit both.
-    auto ctx = create_context(ContextDesc{context, std::max(w, out_w), std::max(h, out_h), egl_device});
-    Caps caps = probe_caps(split_caps(caps_list));
+    auto ctx = create_context(ContextDesc{context_backend(flags.context), std::max(w, out_w), std::max(h, out_h), flags.context.egl_device});
+    Caps caps = probe_caps(split_caps(caps_with_environment(flags.caps)));
     // depth auto: choose_paths decides (the depth texture where ARB_depth_texture exists).
     const ShaderOptions opts = ro.resolved(scene);
     const PostOptions& post = opts.post;
@@ -151,7 +110,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     if (paths.light_geometry == LightGeometry::tiles) j["tiles"] = {{"size", paths.tile_size}, {"lights_per_pass", paths.tile_lights}, {"tile_light_pairs", last.tile_light_pairs}, {"depth_culling", last.tile_depth}, {"depth_ms", last.tile_depth_ms}, {"plan_ms", last.tile_plan_ms}};
     j["depth_bounds"] = paths.depth_bounds;
     j["light_passes"] = last.light_passes;
-    // Issue 13: the depth hand-off as run (null: nothing needed it) and the forward stage's work.
+    // The depth hand-off as run (docs/forward.md) (null: nothing needed it) and the forward stage's work.
     j["depth_handoff"] = paths.accum_depth ? nlohmann::json(depth_handoff_name(paths.depth_handoff)) : nlohmann::json(nullptr);
     j["forward_stage"] = paths.forward_stage;
     j["light_markers"] = last.light_markers;

@@ -1,5 +1,6 @@
-// The renderer flags of the option table (deferred/option_table.h) on a command line, for every
-// command that renders with them (`render`, `view`).
+// The renderer flags of the option table (deferred/option_table.h) on a command line: every
+// flag of `render` and `view` the table has (parse_command_line, command_line.h), and bench's
+// --tile-* (option_flag).
 #pragma once
 #include <string>
 

@@ -1,8 +1,9 @@
-// `dsr stress`: the numerical stress sweep (issue 6). Parses the flags, runs every case of
-// stress_cases.h (src/analysis/stress_run.h) on a context of the chosen backend, prints one row
-// per case on stdout (progress on stderr) and the depth-accuracy tables, and exits non-zero when
-// any invariant fails. --json writes the rows; --report rewrites the generated block of
-// docs/accuracy.md; --plot draws relative z error against far/near (src/analysis/stress_report.h).
+// `dsr stress`: the numerical stress sweep (docs/accuracy.md). Parses the flags by its table
+// (app/command_table.h), runs every case of stress_cases.h (src/analysis/stress_run.h) on a
+// context of the chosen backend, prints one row per case on stdout (progress on stderr) and the
+// depth-accuracy tables, and exits non-zero when any invariant fails. --json writes the rows;
+// --report rewrites the generated block of docs/accuracy.md; --plot draws relative z error
+// against far/near (src/analysis/stress_report.h).
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -11,7 +12,7 @@
 #include "dsr_clock.h"
 #include "analysis/stress_report.h"
 #include "analysis/stress_run.h"
-#include "app/args.h"
+#include "app/command_table.h"
 #include "app/commands.h"
 #include "app/files.h"
 #include "dsr_error.h"
@@ -36,22 +37,11 @@ std::string read_report(const std::string& path) {
 }  // namespace
 
 int cmd_stress(const std::vector<std::string>& argv) {
-    Args args("stress", argv);
-    bool quick = false;
-    std::string json_path, report_path, plot_path, only, geometry;
-    std::string backend = default_context_backend();  // --context, else $DSR_CONTEXT
-    while (!args.done()) {
-        std::string a = args.next();
-        if (a == "--quick") quick = true;
-        else if (a == "--json") json_path = args.value(a);
-        else if (a == "--report") report_path = args.value(a);
-        else if (a == "--plot") plot_path = args.value(a);
-        else if (a == "--only") only = args.value(a);
-        else if (a == "--context") backend = args.value(a);
-        else if (a == "--light-geometry") geometry = args.value(a);
-        else args.fail("unknown option '" + a + "' (expected --quick, --json FILE, --report FILE.md, --plot FILE.png, "
-                       "--only TEXT, --light-geometry NAME, --context NAME)");
-    }
+    StressSettings flags;  // the stress command's table (app/command_table.h)
+    parse_command_line(stress_command(flags), argv);
+    const bool quick = flags.quick;
+    const std::string json_path = flags.json, report_path = flags.report, plot_path = flags.plot, only = flags.only,
+                      geometry = flags.geometry;
     if (!report_path.empty()) read_report(report_path);  // a wrong file fails before the sweep
     std::vector<StressCase> cases = stress_cases(quick);
     if (!only.empty()) {
@@ -59,24 +49,17 @@ int cmd_stress(const std::vector<std::string>& argv) {
         for (StressCase& c : cases)
             if (c.name.find(only) != std::string::npos) kept.push_back(std::move(c));
         cases = std::move(kept);
-        if (cases.empty()) args.fail("--only: no case name contains '" + only + "'");
+        if (cases.empty()) throw Error("dsr stress: --only: no case name contains '" + only + "'");
     }
     // --light-geometry: every case through that geometry instead of the tutorial's quad, so its
     // depth hand-off, meshes and stencil meet the same far/near ratios and coordinates.
-    if (!geometry.empty()) {
-        LightGeometry g = LightGeometry::quad;
-        try {
-            g = light_geometry_from_name(geometry);
-        } catch (const Error& e) {
-            args.fail(std::string("--light-geometry: ") + e.what());
-        }
-        for (StressCase& c : cases) c.opts.light_geometry = g;
-    }
+    if (!geometry.empty())
+        for (StressCase& c : cases) c.opts.light_geometry = light_geometry_from_name(geometry);  // checked by the flag
     int mw = 1, mh = 1;
     for (const StressCase& c : cases) mw = std::max(mw, c.width), mh = std::max(mh, c.height);
 
     const double t0 = now_ms();
-    auto ctx = create_context(ContextDesc{backend, mw, mh});
+    auto ctx = create_context(ContextDesc{context_backend(flags.context), mw, mh});
     StressRunner runner(*ctx, resource_dir("glsl120"));
     std::vector<StressResult> results;
     int failed = 0;

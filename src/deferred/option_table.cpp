@@ -40,14 +40,28 @@ RenderOption choice(std::string name, std::vector<std::string> values, std::func
     return RenderOption{std::move(name), OptionKind::choice, std::move(values), 0, 0, true, std::move(get), std::move(put)};
 }
 
-// A float field of one ShaderOptions group (post, ssao): --NAME X in [lo, hi].
+// A float field of one ShaderOptions group (post, ssao): --NAME X in [lo, hi]; `arg` names X in help.
 template <class Group>
-RenderOption number(std::string name, float lo, float hi, Group ShaderOptions::*group, float Group::*field) {
-    return RenderOption{std::move(name), OptionKind::number, {}, lo, hi, true,
-                        [group, field](const RenderOptions& r) { return format_number(r.shader.*group.*field); },
-                        [group, field](RenderOptions& r, const std::string& v) {
-                            r.shader.*group.*field = std::strtof(v.c_str(), nullptr);
-                        }};
+RenderOption number(std::string name, std::string arg, float lo, float hi, Group ShaderOptions::*group, float Group::*field) {
+    RenderOption o{std::move(name), OptionKind::number, {}, lo, hi, true,
+                   [group, field](const RenderOptions& r) { return format_number(r.shader.*group.*field); },
+                   [group, field](RenderOptions& r, const std::string& v) {
+                       r.shader.*group.*field = std::strtof(v.c_str(), nullptr);
+                   }};
+    o.arg = std::move(arg);
+    return o;
+}
+
+// A switch written --NAME / --no-NAME on a command line.
+RenderOption toggle(std::string name, std::function<bool(const RenderOptions&)> get, std::function<void(RenderOptions&, bool)> put) {
+    return RenderOption{std::move(name), OptionKind::toggle, {"on", "off"}, 0, 0, true,
+                        [get](const RenderOptions& r) { return on_off(get(r)); },
+                        [put](RenderOptions& r, const std::string& v) { put(r, v == "on"); }};
+}
+
+RenderOption with_help(RenderOption o, std::string help) {
+    o.help = std::move(help);
+    return o;
 }
 
 // The skips of --no-skip, by name, and the SkipOptions field each turns off.
@@ -60,119 +74,159 @@ const std::pair<const char*, bool SkipOptions::*> kSkips[] = {
 
 std::vector<RenderOption> make_table() {
     std::vector<RenderOption> t;
-    t.push_back(choice(
-        "depth", {"auto", "texture", "packed", "position16", "position32"},
-        [](const RenderOptions& r) { return std::string(depth_path_name(r.shader.depth)); },
-        [](RenderOptions& r, const std::string& v) { r.shader.depth = depth_path_from_name(v); }));
-    t.push_back(choice(
-        "depth-encoding", {"corrected", "literal", "linear", "log"},
-        [](const RenderOptions& r) { return std::string(encoding_name(r.shader.encoding)); },
-        [](RenderOptions& r, const std::string& v) { r.shader.encoding = encoding_from_name(v); }));
-    t.push_back(choice(
-        "gbuffer", {"rgba8", "half"}, [](const RenderOptions& r) { return r.shader.gbuffer_half ? "half" : "rgba8"; },
-        [](RenderOptions& r, const std::string& v) { r.shader.gbuffer_half = v == "half"; }));
-    t.push_back(switch_option("scissor", &ShaderOptions::scissor));
-    t.push_back(choice(
-        "light-geometry", {"quad", "volume", "stencil", "tiles"},
-        [](const RenderOptions& r) { return std::string(light_geometry_name(r.shader.light_geometry)); },
-        [](RenderOptions& r, const std::string& v) { r.shader.light_geometry = light_geometry_from_name(v); }));
-    t.push_back(switch_option("depth-bounds", &ShaderOptions::depth_bounds));
-    t.push_back(choice(
-        "render-target", {"auto", "fbo", "copy", "pbuffer"},
-        [](const RenderOptions& r) {
-            static const char* names[] = {"auto", "fbo", "copy", "pbuffer"};
-            return std::string(names[int(r.shader.render_target)]);
-        },
-        [](RenderOptions& r, const std::string& v) {
-            r.shader.render_target = v == "fbo" ? RenderTarget::fbo : v == "copy" ? RenderTarget::copy
-                                     : v == "pbuffer" ? RenderTarget::pbuffer : RenderTarget::automatic;
-        }));
-    t.push_back(integer_option("tile-size", 8, 512, &ShaderOptions::tile_size, true));
-    t.push_back(integer_option("tile-lights", 1, 32, &ShaderOptions::tile_lights, true));
-    t.push_back(choice(
-        "tile-plan", {"lists", "groups"},
-        [](const RenderOptions& r) { return std::string(r.shader.tile_plan == TileGrouping::groups ? "groups" : "lists"); },
-        [](RenderOptions& r, const std::string& v) { r.shader.tile_plan = v == "groups" ? TileGrouping::groups : TileGrouping::lists; }));
-    t.push_back(switch_option("tile-depth", &ShaderOptions::tile_depth));
-    t.push_back(choice(
-        "lighting", {"equations", "listing"},
-        [](const RenderOptions& r) { return r.shader.listing2_literal ? "listing" : "equations"; },
-        [](RenderOptions& r, const std::string& v) { r.shader.listing2_literal = v == "listing"; }));
+    auto add = [&t](RenderOption o, std::string help) { t.push_back(with_help(std::move(o), std::move(help))); };
+    add(choice(
+            "depth", {"auto", "texture", "packed", "position16", "position32"},
+            [](const RenderOptions& r) { return std::string(depth_path_name(r.shader.depth)); },
+            [](RenderOptions& r, const std::string& v) { r.shader.depth = depth_path_from_name(v); }),
+        "depth path: texture (the G-buffer's depth texture, §3.3.2) or packed (depth packed into an RGB8 "
+        "target, Listings 11 and 18), both rebuilding eye position from depth; position16 and position32 "
+        "store eye-space position in an RGBA16F or RGBA32F target instead; auto: texture where the GL has "
+        "ARB_depth_texture, else packed (never a position path)");
+    add(choice(
+            "depth-encoding", {"corrected", "literal", "linear", "log"},
+            [](const RenderOptions& r) { return std::string(encoding_name(r.shader.encoding)); },
+            [](RenderOptions& r, const std::string& v) { r.shader.encoding = encoding_from_name(v); }),
+        "what the packed depth target holds: window depth packed so every 24-bit code survives the 8-bit "
+        "target (corrected), window depth as Listings 11 and 18 pack it (literal, docs/errata.md), or "
+        "linear or logarithmic eye depth (docs/accuracy.md)");
+    add(choice(
+            "gbuffer", {"rgba8", "half"}, [](const RenderOptions& r) { return r.shader.gbuffer_half ? "half" : "rgba8"; },
+            [](RenderOptions& r, const std::string& v) { r.shader.gbuffer_half = v == "half"; }),
+        "G-buffer target precision: RGBA8 as the tutorial (Figure 3), or half-float targets");
+    add(switch_option("scissor", &ShaderOptions::scissor), "light scissor rectangles (§3.4.2, Listing 16)");
+    add(choice(
+            "light-geometry", {"quad", "volume", "stencil", "tiles"},
+            [](const RenderOptions& r) { return std::string(light_geometry_name(r.shader.light_geometry)); },
+            [](RenderOptions& r, const std::string& v) { r.shader.light_geometry = light_geometry_from_name(v); }),
+        "how each light reaches its pixels: the tutorial's scissored screen quad, the back faces of the "
+        "light's volume mesh, a stencil-masked volume, or screen tiles with several lights a pass "
+        "(docs/light_geometry.md)");
+    add(switch_option("depth-bounds", &ShaderOptions::depth_bounds),
+        "quad: EXT_depth_bounds_test on each light's depth span (refused where the GL lacks it, as llvmpipe does)");
+    add(choice(
+            "render-target", {"auto", "fbo", "copy", "pbuffer"},
+            [](const RenderOptions& r) {
+                static const char* names[] = {"auto", "fbo", "copy", "pbuffer"};
+                return std::string(names[int(r.shader.render_target)]);
+            },
+            [](RenderOptions& r, const std::string& v) {
+                r.shader.render_target = v == "fbo" ? RenderTarget::fbo : v == "copy" ? RenderTarget::copy
+                                         : v == "pbuffer" ? RenderTarget::pbuffer : RenderTarget::automatic;
+            }),
+        "where the G-buffer and P-buffers are drawn (§3.2's pPBuffer): framebuffer objects, the main "
+        "buffer copied to textures, or EGL pbuffer surfaces copied to textures (needs --context egl); "
+        "auto: fbo, else copy");
+    add(integer_option("tile-size", 8, 512, &ShaderOptions::tile_size, true),
+        "tiles: pixels per tile side; auto: 16 on a CPU rasteriser such as llvmpipe, else 32 (`dsr info` says which)");
+    add(integer_option("tile-lights", 1, 32, &ShaderOptions::tile_lights, true),
+        "tiles: lights per pass; auto: 32 on a CPU rasteriser, else 8");
+    add(choice(
+            "tile-plan", {"lists", "groups"},
+            [](const RenderOptions& r) { return std::string(r.shader.tile_plan == TileGrouping::groups ? "groups" : "lists"); },
+            [](RenderOptions& r, const std::string& v) { r.shader.tile_plan = v == "groups" ? TileGrouping::groups : TileGrouping::lists; }),
+        "tiles: each tile its exact light list, or lights in screen-order groups drawn over the union of their tiles");
+    add(switch_option("tile-depth", &ShaderOptions::tile_depth),
+        "tiles: leave out each tile's lights whose sphere misses the depth span of its surfaces (needs float targets)");
+    add(choice(
+            "lighting", {"equations", "listing"},
+            [](const RenderOptions& r) { return r.shader.listing2_literal ? "listing" : "equations"; },
+            [](RenderOptions& r, const std::string& v) { r.shader.listing2_literal = v == "listing"; }),
+        "Listing 2 as Equations 1-5 say, or with its view and half vectors as printed");
     std::vector<std::string> skips;
     for (const auto& s : kSkips) skips.push_back(s.first);
-    t.push_back(RenderOption{"no-skip", OptionKind::subset, skips, 0, 0, true,
-                             [](const RenderOptions& r) {
-                                 std::vector<std::string> off;
-                                 for (const auto& s : kSkips)
-                                     if (!(r.shader.skip.*s.second)) off.push_back(s.first);
-                                 return off.empty() ? std::string("none") : joined(off, ",");
-                             },
-                             [](RenderOptions& r, const std::string& v) {
-                                 const std::vector<std::string> off = split_commas(v);
-                                 for (const auto& s : kSkips) {
-                                     bool listed = false;
-                                     for (const std::string& k : off) listed |= k == s.first;
-                                     r.shader.skip.*s.second = !listed;
-                                 }
-                             }});
+    add(RenderOption{"no-skip", OptionKind::subset, skips, 0, 0, true,
+                     [](const RenderOptions& r) {
+                         std::vector<std::string> off;
+                         for (const auto& s : kSkips)
+                             if (!(r.shader.skip.*s.second)) off.push_back(s.first);
+                         return off.empty() ? std::string("none") : joined(off, ",");
+                     },
+                     [](RenderOptions& r, const std::string& v) {
+                         const std::vector<std::string> off = split_commas(v);
+                         for (const auto& s : kSkips) {
+                             bool listed = false;
+                             for (const std::string& k : off) listed |= k == s.first;
+                             r.shader.skip.*s.second = !listed;
+                         }
+                     }},
+        "work the renderer skips where a scene does not need it, turned off: the tangent-space work and map "
+        "reads a material lacks (variants), lights of zero colour or an empty scissor rectangle "
+        "(empty-lights), pixels whose surface lies in front of or behind a light's sphere "
+        "(light-depth-test) or outside it (light-sphere-test)");
     RenderOption view = choice(
         "view", view_names(), [](const RenderOptions& r) { return std::string(view_name(r.view)); },
         [](RenderOptions& r, const std::string& v) { r.view = view_from_name(v); });
     view.rebuild = false;  // every view reads buffers the frame already has (the bloom view: see resolved)
-    t.push_back(view);
-    t.push_back(RenderOption{"bloom", OptionKind::toggle, {"on", "off"}, 0, 0, true,
-                             [](const RenderOptions& r) { return on_off(r.bloom == 1); },
-                             [](RenderOptions& r, const std::string& v) { r.bloom = v == "on"; }});
-    t.push_back(choice(
-        "bloom-scale", {"2", "4"}, [](const RenderOptions& r) { return std::to_string(r.shader.post.bloom_scale); },
-        [](RenderOptions& r, const std::string& v) { r.shader.post.bloom_scale = std::atoi(v.c_str()); }));
-    t.push_back(choice(
-        "bloom-taps", {"3", "5", "7", "9", "11", "13", "15"},
-        [](const RenderOptions& r) { return std::to_string(r.shader.post.bloom_taps); },
-        [](RenderOptions& r, const std::string& v) { r.shader.post.bloom_taps = std::atoi(v.c_str()); }));
-    t.push_back(number("bloom-strength", 0.0f, 16.0f, &ShaderOptions::post, &PostOptions::bloom_strength));
-    t.push_back(choice(
-        "bloom-mode", {"color", "listing"}, [](const RenderOptions& r) { return r.shader.post.bloom_listing ? "listing" : "color"; },
-        [](RenderOptions& r, const std::string& v) { r.shader.post.bloom_listing = v == "listing"; }));
-    t.push_back(RenderOption{"aa", OptionKind::toggle, {"on", "off"}, 0, 0, true,
-                             [](const RenderOptions& r) { return on_off(r.aa == 1); },
-                             [](RenderOptions& r, const std::string& v) { r.aa = v == "on"; }});
-    t.push_back(choice(
-        "aa-source", {"normal", "depth", "both"},
-        [](const RenderOptions& r) {
-            const AaSource s = r.shader.post.aa_source;
-            return s == AaSource::normal ? "normal" : s == AaSource::depth ? "depth" : "both";
-        },
-        [](RenderOptions& r, const std::string& v) {
-            r.shader.post.aa_source = v == "normal" ? AaSource::normal : v == "depth" ? AaSource::depth : AaSource::both;
-        }));
-    t.push_back(choice(
-        "aa-kernel", {"text", "listing"},
-        [](const RenderOptions& r) { return r.shader.post.aa_kernel == AaKernel::listing ? "listing" : "text"; },
-        [](RenderOptions& r, const std::string& v) {
-            r.shader.post.aa_kernel = v == "listing" ? AaKernel::listing : AaKernel::text;
-        }));
-    t.push_back(number("aa-weight", 0.0f, 8.0f, &ShaderOptions::post, &PostOptions::aa_weight));
-    // SSAO (issue 13): --ssao / --no-ssao, then its four parameters (ranges: usage.cpp).
-    t.push_back(RenderOption{"ssao", OptionKind::toggle, {"on", "off"}, 0, 0, true,
-                             [](const RenderOptions& r) { return on_off(r.shader.ssao.on); },
-                             [](RenderOptions& r, const std::string& v) { r.shader.ssao.on = v == "on"; }});
-    t.push_back(choice(
-        "ssao-scale", {"1", "2"}, [](const RenderOptions& r) { return std::to_string(r.shader.ssao.scale); },
-        [](RenderOptions& r, const std::string& v) { r.shader.ssao.scale = std::atoi(v.c_str()); }));
-    t.push_back(number("ssao-radius", 0.01f, 100.0f, &ShaderOptions::ssao, &SsaoOptions::radius));
-    t.push_back(number("ssao-strength", 0.0f, 4.0f, &ShaderOptions::ssao, &SsaoOptions::strength));
-    t.push_back(RenderOption{"ssao-samples", OptionKind::integer, {}, 4, 64, true,
-                             [](const RenderOptions& r) { return std::to_string(r.shader.ssao.samples); },
-                             [](RenderOptions& r, const std::string& v) { r.shader.ssao.samples = std::atoi(v.c_str()); }});
-    // The forward stage after the lights (issue 13).
-    t.push_back(RenderOption{"show-lights", OptionKind::toggle, {"on", "off"}, 0, 0, true,
-                             [](const RenderOptions& r) { return on_off(r.shader.show_lights); },
-                             [](RenderOptions& r, const std::string& v) { r.shader.show_lights = v == "on"; }});
-    t.push_back(choice(
-        "depth-handoff", {"auto", "blit", "pass"},
-        [](const RenderOptions& r) { return std::string(depth_handoff_name(r.shader.depth_handoff)); },
-        [](RenderOptions& r, const std::string& v) { r.shader.depth_handoff = depth_handoff_from_name(v); }));
+    add(view, "the buffer written instead of the final image: a G-buffer target (Figure 4), the anti-alias "
+              "blur factor (Figure 8), the bloom blur (Figure 10c) or the AO buffer");
+    RenderOption bloom = toggle("bloom", [](const RenderOptions& r) { return r.bloom == 1; },
+                                [](RenderOptions& r, bool on) { r.bloom = on; });
+    bloom.default_text = "the scene's post line";
+    add(bloom, "bloom (§3.5.2): intense colours blurred at a lower resolution and added to the image");
+    add(choice(
+            "bloom-scale", {"2", "4"}, [](const RenderOptions& r) { return std::to_string(r.shader.post.bloom_scale); },
+            [](RenderOptions& r, const std::string& v) { r.shader.post.bloom_scale = std::atoi(v.c_str()); }),
+        "bloom buffers at 1/2 or 1/4 of the frame");
+    add(choice(
+            "bloom-taps", {"3", "5", "7", "9", "11", "13", "15"},
+            [](const RenderOptions& r) { return std::to_string(r.shader.post.bloom_taps); },
+            [](RenderOptions& r, const std::string& v) { r.shader.post.bloom_taps = std::atoi(v.c_str()); }),
+        "blur taps (Listing 22's NUMPOINTS)");
+    add(number("bloom-strength", "S", 0.0f, 16.0f, &ShaderOptions::post, &PostOptions::bloom_strength),
+        "weight of the bloom added to the image (above 1 it adds what 1 adds: GL clamps the colour it scales)");
+    add(choice(
+            "bloom-mode", {"color", "listing"}, [](const RenderOptions& r) { return r.shader.post.bloom_listing ? "listing" : "color"; },
+            [](RenderOptions& r, const std::string& v) { r.shader.post.bloom_listing = v == "listing"; }),
+        "blur intense colours, or Listing 22 as printed (a grey dot(t,t) in both passes)");
+    RenderOption aa = toggle("aa", [](const RenderOptions& r) { return r.aa == 1; }, [](RenderOptions& r, bool on) { r.aa = on; });
+    aa.default_text = "the scene's post line";
+    add(aa, "anti-alias (§3.5.1): a blur by Equation 7's edge factor");
+    add(choice(
+            "aa-source", {"normal", "depth", "both"},
+            [](const RenderOptions& r) {
+                const AaSource s = r.shader.post.aa_source;
+                return s == AaSource::normal ? "normal" : s == AaSource::depth ? "depth" : "both";
+            },
+            [](RenderOptions& r, const std::string& v) {
+                r.shader.post.aa_source = v == "normal" ? AaSource::normal : v == "depth" ? AaSource::depth : AaSource::both;
+            }),
+        "what the edge factor of Equation 7 measures: the normal target, depth, or both");
+    add(choice(
+            "aa-kernel", {"text", "listing"},
+            [](const RenderOptions& r) { return r.shader.post.aa_kernel == AaKernel::listing ? "listing" : "text"; },
+            [](RenderOptions& r, const std::string& v) {
+                r.shader.post.aa_kernel = v == "listing" ? AaKernel::listing : AaKernel::text;
+            }),
+        "all 8 neighbours as the text says, or Listing 21's table of 4");
+    add(number("aa-weight", "W", 0.0f, 8.0f, &ShaderOptions::post, &PostOptions::aa_weight),
+        "largest anti-alias offset in pixels (Listing 21's weight)");
+    // Screen-space ambient occlusion (docs/ssao.md): --ssao / --no-ssao, then its four parameters.
+    add(toggle("ssao", [](const RenderOptions& r) { return r.shader.ssao.on; }, [](RenderOptions& r, bool on) { r.shader.ssao.on = on; }),
+        "screen-space ambient occlusion scaling the ambient pass only (docs/ssao.md)");
+    add(choice(
+            "ssao-scale", {"1", "2"}, [](const RenderOptions& r) { return std::to_string(r.shader.ssao.scale); },
+            [](RenderOptions& r, const std::string& v) { r.shader.ssao.scale = std::atoi(v.c_str()); }),
+        "AO buffer at full (1) or half (2) resolution");
+    add(number("ssao-radius", "R", 0.01f, 100.0f, &ShaderOptions::ssao, &SsaoOptions::radius),
+        "hemisphere radius in eye-space units");
+    add(number("ssao-strength", "S", 0.0f, 4.0f, &ShaderOptions::ssao, &SsaoOptions::strength),
+        "ao = 1 - S x the occluded fraction");
+    RenderOption samples{"ssao-samples", OptionKind::integer, {}, 4, 64, true,
+                         [](const RenderOptions& r) { return std::to_string(r.shader.ssao.samples); },
+                         [](RenderOptions& r, const std::string& v) { r.shader.ssao.samples = std::atoi(v.c_str()); }};
+    add(samples, "hemisphere samples per pixel");
+    // The forward stage after the lights (docs/forward.md).
+    add(toggle("show-lights", [](const RenderOptions& r) { return r.shader.show_lights; },
+               [](RenderOptions& r, bool on) { r.shader.show_lights = on; }),
+        "an emissive marker at each point and spot light, drawn forward into P-buffer 0 after the lights, "
+        "so bloom makes it glow");
+    add(choice(
+            "depth-handoff", {"auto", "blit", "pass"},
+            [](const RenderOptions& r) { return std::string(depth_handoff_name(r.shader.depth_handoff)); },
+            [](RenderOptions& r, const std::string& v) { r.shader.depth_handoff = depth_handoff_from_name(v); }),
+        "how the G-buffer's depth reaches P-buffer 0 for the passes that test against it: "
+        "EXT_framebuffer_blit or a gl_FragDepth pass; auto: blit where present (docs/forward.md)");
     return t;
 }
 
@@ -265,6 +319,29 @@ std::string set_render_option(RenderOptions& ro, const RenderOption& o, const st
     if (err.empty()) o.put(ro, value);
     return err;
 }
+
+std::string option_arg(const RenderOption& o) {
+    switch (o.kind) {
+        case OptionKind::choice:
+        case OptionKind::on_off: return joined(o.values, "|");
+        case OptionKind::toggle: return "";
+        case OptionKind::number: return o.arg.empty() ? "X" : o.arg;
+        case OptionKind::integer: return (o.values.empty() ? "" : joined(o.values, "|") + "|") + (o.arg.empty() ? "N" : o.arg);
+        case OptionKind::subset: return "LIST";
+    }
+    return "";
+}
+
+std::string option_range(const RenderOption& o) {
+    switch (o.kind) {
+        case OptionKind::number: return format_number(o.lo) + ".." + format_number(o.hi);
+        case OptionKind::integer: return std::to_string(long(o.lo)) + ".." + std::to_string(long(o.hi));
+        case OptionKind::subset: return joined(o.values, ", ") + " (comma-separated) or none";
+        default: return "";
+    }
+}
+
+std::string option_default(const RenderOption& o) { return o.default_text.empty() ? o.get(RenderOptions{}) : o.default_text; }
 
 std::vector<std::string> render_option_flags() {
     std::vector<std::string> f;

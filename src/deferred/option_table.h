@@ -1,7 +1,9 @@
-// The renderer's options by name, in one table: `dsr render` parses its renderer flags from it
-// (`--NAME VALUE`; `--NAME` / `--no-NAME` for the switches), and the viewer's `set NAME VALUE`
-// and its panel are made from it, so the names agree by construction. Adding an option is one
-// entry in option_table.cpp (and its line in app/usage.cpp). Pure data, no GL.
+// The renderer's options by name, in one table: each entry's values, range, default and help.
+// `dsr render`, `dsr view` and `dsr bench` parse their renderer flags from it (`--NAME VALUE`;
+// `--NAME` / `--no-NAME` for the switches), the viewer's `set NAME VALUE` and its panel are
+// made from it, and `--help` and docs/cli.md print it (app/help_text.h), so the names, ranges
+// and help agree by construction. Adding an option is one entry in option_table.cpp.
+// Pure data, no GL.
 #pragma once
 #include <functional>
 #include <string>
@@ -44,6 +46,9 @@ struct RenderOption {
     bool rebuild = true;
     std::function<std::string(const RenderOptions&)> get;  // the value as `set` takes it
     std::function<void(RenderOptions&, const std::string&)> put;  // a value already checked
+    std::string help = "";          // what it does, one sentence or two: --help, docs/cli.md, the panel's tooltip
+    std::string arg = "";           // number and integer: the value's name in help ("S"); the others derive it
+    std::string default_text = "";  // the default where get() of RenderOptions{} would mislead ("the scene's post line")
 };
 
 // Entries for a plain ShaderOptions field, so a new option is one line in make_table:
@@ -61,6 +66,14 @@ const RenderOption* find_render_option(const std::string& name);
 std::string check_render_option(const RenderOption& o, const std::string& value);
 // Checks and sets; returns the error as check_render_option does (nothing set then).
 std::string set_render_option(RenderOptions& ro, const RenderOption& o, const std::string& value);
+// What follows --NAME in help: "auto|texture|...", "on|off", "S", "auto|N", "LIST"; "" for a
+// toggle (written --NAME or --no-NAME).
+std::string option_arg(const RenderOption& o);
+// The range in help's words where option_arg does not show it: "0..16", "8..512",
+// "variants, empty-lights, ... (comma-separated) or none"; "" for the others.
+std::string option_range(const RenderOption& o);
+// The default as help says it: default_text, else get() of RenderOptions{}.
+std::string option_default(const RenderOption& o);
 // The flags `dsr render` takes for the table ("--depth", "--bloom", "--no-bloom", ...).
 std::vector<std::string> render_option_flags();
 

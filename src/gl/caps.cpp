@@ -28,17 +28,12 @@ static std::string gl_string(GLenum e) {
 }
 
 Caps probe_caps(const std::vector<std::string>& force_off) {
-    static const char* known[] = {"no-mrt",   "no-depth-texture",   "no-fbo", "no-arb-fbo", "no-npot",
-                                  "no-float", "no-glsl", "no-occlusion-query", "no-pipeline-stats",
-                                  "no-stencil", "no-packed-depth-stencil", "no-stencil-separate",
-                                  "no-stencil-two-side", "no-depth-bounds", "no-framebuffer-blit"};
-    for (const auto& f : force_off)
-        if (std::none_of(std::begin(known), std::end(known), [&](const char* k) { return f == k; }))
-            throw Error("unknown capability '" + f +
-                        "' (expected no-mrt, no-depth-texture, no-fbo, no-arb-fbo, no-npot, no-float, no-glsl, "
-                        "no-occlusion-query, no-pipeline-stats, no-stencil, no-packed-depth-stencil, "
-                        "no-stencil-separate, no-stencil-two-side, no-depth-bounds or no-framebuffer-blit)");
-    auto off = [&](const char* k) { return std::find(force_off.begin(), force_off.end(), k) != force_off.end(); };
+    const std::string unknown = check_cap_names(force_off);
+    if (!unknown.empty()) throw Error(unknown);
+    auto off = [&](const char* k) {
+        if (!is_cap_name(k)) throw Error(std::string("probe_caps: '") + k + "' is not in cap_names()");  // a slip here, not the user's
+        return std::find(force_off.begin(), force_off.end(), k) != force_off.end();
+    };
 
     Caps c;
     c.vendor = gl_string(GL_VENDOR);
@@ -128,18 +123,6 @@ std::string describe(const Caps& c) {
         o << "\n";
     }
     return o.str();
-}
-
-std::vector<std::string> split_caps(const std::string& list) {
-    std::vector<std::string> out;
-    size_t a = 0;
-    while (a <= list.size()) {
-        size_t b = list.find(',', a);
-        if (b == std::string::npos) b = list.size();
-        if (b > a) out.push_back(list.substr(a, b - a));
-        a = b + 1;
-    }
-    return out;
 }
 
 }  // namespace dsr

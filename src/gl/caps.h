@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "gl/cap_names.h"  // split_caps, the --caps names
+
 namespace dsr {
 
 struct Caps {
@@ -22,13 +24,13 @@ struct Caps {
     bool occlusion_query = false;    // ARB_occlusion_query (core in 1.5): light_fragments
     bool pipeline_statistics = false;  // ARB_pipeline_statistics_query (core in 4.6): light_invocations
     bool timer_query = false;        // ARB_timer_query / EXT_timer_query
-    // Light geometries (issue 12): stencil light volumes and depth bounds.
+    // Light geometries (docs/light_geometry.md): stencil light volumes and depth bounds.
     bool stencil = false;            // an 8-bit stencil buffer in the main frame buffer (GL_STENCIL_BITS)
     bool packed_depth_stencil = false;  // EXT_packed_depth_stencil (core in 3.0): depth-stencil FBO attachment
     bool stencil_separate = false;   // glStencilOpSeparate (GL 2.0): both faces in one stencil pass
     bool stencil_two_side_ext = false;  // EXT_stencil_two_side: the same before GL 2.0
     bool depth_bounds = false;       // EXT_depth_bounds_test (NVIDIA; not llvmpipe)
-    bool framebuffer_blit = false;   // EXT_framebuffer_blit (core in 3.0): the depth hand-off by blit (issue 13)
+    bool framebuffer_blit = false;   // EXT_framebuffer_blit (core in 3.0): the depth hand-off by blit (docs/forward.md)
     bool pbuffer_surfaces = false;   // the context offers pbuffer surfaces (gl/surfaces.h: EGL)
     // A CPU rasteriser (Mesa's llvmpipe, softpipe or swrast, by GL_RENDERER): the tiles geometry's
     // defaults (options.h) and forward.frag's view vector form (forward_renderer.cpp) differ there.
@@ -36,15 +38,9 @@ struct Caps {
     std::vector<std::string> forced_off;  // names hidden by --caps / DSR_CAPS
 };
 
-// Reads the current context. `force_off` lists capabilities to report missing
-// (no-mrt, no-depth-texture, no-fbo, no-arb-fbo, no-npot, no-float, no-glsl, no-occlusion-query,
-// no-pipeline-stats, no-stencil, no-packed-depth-stencil, no-stencil-separate, no-stencil-two-side
-// (both two-sided mechanisms: GL 2.0's and EXT_stencil_two_side), no-depth-bounds,
-// no-framebuffer-blit); unknown names
-// throw dsr::Error.
+// Reads the current context. `force_off` lists capabilities to report missing, by the names of
+// cap_names.h; an unknown name throws dsr::Error (check_cap_names' line).
 Caps probe_caps(const std::vector<std::string>& force_off = {});
-// "no-mrt,,no-fbo" -> {"no-mrt", "no-fbo"}: the --caps / $DSR_CAPS list, empty items dropped.
-std::vector<std::string> split_caps(const std::string& list);
 
 // One line per capability with the extension it comes from, for `dsr info`.
 std::string describe(const Caps& caps);

@@ -1,8 +1,11 @@
 // `dsr view`: the same renderer in a GLFW window, with a Dear ImGui panel (viewer_app.cpp,
-// viewer_panel.cpp). app/viewer_main.cpp parses the command line into a ViewerConfig.
+// viewer_panel.cpp). app/viewer_main.cpp parses the command line into a ViewerConfig by
+// the view command's table (app/command_table.h).
 #pragma once
+#include <optional>
 #include <string>
 
+#include "analysis/bench_scenes.h"
 #include "deferred/option_table.h"
 
 namespace dsr {
@@ -13,6 +16,7 @@ struct ViewerConfig {
     RenderOptions options;          // the option table's flags
     std::string caps_list;          // --caps, added to $DSR_CAPS
     std::string script_path;        // --script FILE; empty: a person drives it
+    std::optional<LightSpec> lights;  // --lights: the bench's generated lights instead of the scene's
 };
 
 // Opens the window and runs until it is closed, Esc, or the script's `quit`. Returns the exit

@@ -72,6 +72,7 @@ private:
 Viewer::Viewer(const ViewerConfig& cfg) : cfg_(cfg) {
     const std::string path = cfg.scene_path.empty() ? resource_dir("data") + "/default.scene" : cfg.scene_path;
     scene_ = load_scene(path);  // input errors before any window opens
+    if (cfg.lights) scene_ = bench_scene(scene_, *cfg.lights);  // as `render --lights` (bench_scenes.h)
     cfg_.scene_path = path;
     camera_ = scene_.camera;
     st_.options = cfg.options;

@@ -1,6 +1,7 @@
 // The viewer's Dear ImGui panel. Its option widgets are made from the option table
-// (deferred/option_table.h), one per entry by kind, so an option added to the table appears
-// here with the name `render` and `set` use, and nothing in this file changes.
+// (deferred/option_table.h), one per entry by kind with the entry's help as its tooltip, so an
+// option added to the table appears here with the name `render` and `set` use, and nothing in
+// this file changes.
 #include <imgui.h>
 
 #include <algorithm>
@@ -57,10 +58,23 @@ void option_widget(ViewerState& st, const RenderOption& o) {
             break;
         }
         case OptionKind::integer: {  // as number: applied when the slider is let go
+            // An entry that also takes a word (tile-size: auto) shows the word, not a number, and a
+            // checkbox to go back to it; dragging the slider sets a number.
+            const bool has_word = !o.values.empty();
+            const bool is_word = has_word && std::find(o.values.begin(), o.values.end(), value) != o.values.end();
+            if (has_word) {
+                const float width = ImGui::CalcItemWidth(), x0 = ImGui::GetCursorPosX();
+                bool word = is_word;
+                if (ImGui::Checkbox((o.values.front() + "##" + o.name).c_str(), &word))
+                    request(word ? o.values.front() : std::to_string(int(o.lo)));
+                ImGui::SameLine();
+                ImGui::SetNextItemWidth(std::max(40.0f, width - (ImGui::GetCursorPosX() - x0)));  // the column stays
+            }
             static std::map<std::string, int> editing;
             const auto it = editing.find(o.name);
-            int n = it != editing.end() ? it->second : std::atoi(value.c_str());
-            ImGui::SliderInt(o.name.c_str(), &n, int(o.lo), int(o.hi));
+            int n = it != editing.end() ? it->second : is_word ? int(o.lo) : std::atoi(value.c_str());
+            const bool shows_word = is_word && it == editing.end();
+            ImGui::SliderInt(o.name.c_str(), &n, int(o.lo), int(o.hi), shows_word ? value.c_str() : "%d");
             if (ImGui::IsItemDeactivatedAfterEdit()) {
                 request(std::to_string(n));
                 editing.erase(o.name);
@@ -171,7 +185,16 @@ void draw_panel(ViewerState& st, const DeferredShader& ds, const Scene& frame_sc
     }
     if (ImGui::CollapsingHeader("options (the render flags)", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::PushItemWidth(150);
-        for (const RenderOption& o : render_options()) option_widget(st, o);
+        for (const RenderOption& o : render_options()) {
+            option_widget(st, o);
+            if (!o.help.empty() && ImGui::IsItemHovered()) {  // the table's help, as --help prints it
+                ImGui::BeginTooltip();
+                ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30);
+                ImGui::TextUnformatted(o.help.c_str());
+                ImGui::PopTextWrapPos();
+                ImGui::EndTooltip();
+            }
+        }
         ImGui::PopItemWidth();
         if (!st.option_error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", st.option_error.c_str());
     }
