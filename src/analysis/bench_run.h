@@ -3,8 +3,9 @@
 // warm-up), light-pass fragments (occlusion queries) and light-shader invocations (pipeline
 // statistics) against the ideal count, the frame against its floor (bench_floor.h), and the
 // image's error against the forward reference (and, for scenes with constant materials,
-// against the analytic one). bench_report.h turns the rows into tables, goals, JSON, a plot and a report;
-// src/app/bench_command.cpp only parses flags, runs this, and prints or writes what comes back.
+// against the analytic one). bench_goals.h judges the goals on the rows; bench_report.h turns them
+// into tables, JSON, a plot and a report; src/app/bench_command.cpp only parses flags, runs this,
+// and prints or writes what comes back.
 #pragma once
 #include <cstdint>
 #include <functional>
