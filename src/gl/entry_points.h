@@ -1,9 +1,10 @@
 // dsr's table of GL entry points beyond GL 1.1, loaded once per context through the address
-// function its creator hands over (platform/context.h hands GLContext::proc_address). Only libOSMesa exports every GL function; a system libGL exports
-// GL 1.1 (and a few 1.2/1.3 ones) and an EGL driver nothing beyond what its loader gives, so
-// everything newer is fetched at run time. gl/gl.h maps each glName to gl_entry.Name, so call
-// sites stay plain GL. Adding a call to a function not listed here fails to compile (glext.h
-// declares no prototypes without GL_GLEXT_PROTOTYPES): add it to a list below and to gl/gl.h.
+// function whoever made the context hands over (the context backends hand their proc_address).
+// Only libOSMesa exports every GL function; a system libGL exports GL 1.1 (and a few 1.2/1.3
+// ones) and an EGL driver nothing beyond what its loader gives, so everything newer is fetched at
+// run time. gl/gl.h maps each glName to gl_entry.Name, so call sites stay plain GL. Adding a call
+// to a function not listed here fails to compile (glext.h declares no prototypes without
+// GL_GLEXT_PROTOTYPES): add it to a list below and to gl/gl.h.
 #pragma once
 #include <GL/gl.h>
 #include <GL/glext.h>
