@@ -12,10 +12,12 @@
 #include <sstream>
 #include <string>
 
+#include "analysis/analytic_reference.h"
 #include "analysis/bench_floor.h"
 #include "analysis/bench_report.h"
 #include "analysis/bench_run.h"
 #include "analysis/bench_scenes.h"
+#include "analysis/frame_ideal.h"
 #include "analysis/ideal_fragments.h"
 #include "analysis/plot.h"
 #include "cli_fixture.h"
@@ -51,7 +53,7 @@ Image random_positions(int w, int h, std::mt19937& rng) {
 }
 
 // Hand-made rows: what the runner would measure for one scene and light count.
-bench::Row forward_row(const std::string& scene, int lights, const std::string& kind, double ms) {
+bench::Row forward_row(const std::string& scene, int lights, bench::Renderer kind, double ms) {
     bench::Row r;
     r.scene = scene;
     r.renderer = kind;
@@ -59,20 +61,27 @@ bench::Row forward_row(const std::string& scene, int lights, const std::string& 
     r.w = r.h = 64;
     r.frames = 3;
     r.ms_median = ms, r.ms_min = ms * 0.9, r.ms_max = ms * 1.2;
-    r.passes = kind == "forward-multi" ? lights : 1;
+    r.passes = kind == bench::Renderer::forward_multi ? lights : 1;
     r.err.psnr_db = INFINITY;  // the reference itself
     r.err.pixels = 64 * 64;
     return r;
 }
 
+// The skips with one turned off.
+SkipOptions without(bool SkipOptions::*off) {
+    SkipOptions s;
+    s.*off = false;
+    return s;
+}
+
 bench::Row deferred_row(const std::string& scene, int lights, double ms, long long frags, long long ideal,
-                        std::vector<std::string> skips_off = {}) {
-    bench::Row r = forward_row(scene, lights, "deferred", ms);
+                        SkipOptions skip = {}) {
+    bench::Row r = forward_row(scene, lights, bench::Renderer::deferred, ms);
     r.passes.reset();
-    r.depth = "texture";
-    r.gbuffer = "rgba8";
+    r.depth = DepthPath::texture;
+    r.gbuffer_half = false;
     r.scissor = true;
-    r.skips_off = std::move(skips_off);
+    r.skip = skip;
     r.light_fragments = frags;
     r.ideal_fragments = ideal;
     r.scissor_pixels = 3 * frags;
@@ -286,12 +295,12 @@ TEST(Bench, BadFlagsAreOneClearError) {
 }
 
 TEST(Bench, ConfigTextNamesEveryChoice) {
-    bench::Row r = deferred_row("default", 3, 1.0, 10, 10, {"empty_lights"});
+    bench::Row r = deferred_row("default", 3, 1.0, 10, 10, without(&SkipOptions::empty_lights));
     EXPECT_EQ(bench::config_text(r), "deferred texture sc no-empty_lights");
-    r.depth = "packed", r.encoding = "log", r.scissor = false, r.gbuffer = "half", r.skips_off.clear();
+    r.depth = DepthPath::packed, r.encoding = DepthEncoding::log, r.scissor = false, r.gbuffer_half = true, r.skip = {};
     EXPECT_EQ(bench::config_text(r), "deferred packed/log - half");
-    EXPECT_EQ(bench::config_text(forward_row("default", 3, "forward-multi", 1.0)), "forward-multi");
-    r.light_geometry = "tiles", r.tile_size = 32, r.tile_lights = 8;  // the tiles settings as run (auto resolved)
+    EXPECT_EQ(bench::config_text(forward_row("default", 3, bench::Renderer::forward_multi, 1.0)), "forward-multi");
+    r.light_geometry = LightGeometry::tiles, r.tile_size = 32, r.tile_lights = 8;  // the tiles settings as run (auto resolved)
     EXPECT_EQ(bench::config_text(r), "deferred packed/log - half tiles 32/8");
 }
 
@@ -304,21 +313,21 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
         r.floor_ratio = r.ms_median / floor_ms;
         return r;
     };
-    bench::Row multi_rgba8 = forward_row("default", 256, "forward-multi", 30.0);
-    multi_rgba8.accum = "rgba8";
-    bench::Row multi_float = forward_row("default", 256, "forward-multi", 40.0);
-    multi_float.accum = "float";
+    bench::Row multi_rgba8 = forward_row("default", 256, bench::Renderer::forward_multi, 30.0);
+    multi_rgba8.float_accum = false;
+    bench::Row multi_float = forward_row("default", 256, bench::Renderer::forward_multi, 40.0);
+    multi_float.float_accum = true;
     std::vector<bench::Row> rows = {
-        forward_row("default", 3, "forward-multi", 5.0),
+        forward_row("default", 3, bench::Renderer::forward_multi, 5.0),
         with(deferred_row("default", 3, 1.0, 100, 100), 120, 0.8),  // 1.20 x ideal, floor ratio 1.25: met
-        with(deferred_row("default", 3, 1.0, 150, 100, {"light_sphere_test"}), 300, 0.8),
+        with(deferred_row("default", 3, 1.0, 150, 100, without(&SkipOptions::light_sphere_test)), 300, 0.8),
         multi_float,
         multi_rgba8,
         with(deferred_row("default", 256, 3.0, 200, 100), 500, 1.0),
     };
     // A non-default deferred row of the same count is never the one judged.
     bench::Row packed = with(deferred_row("default", 3, 1.0, 100, 100), 100, 1.0);
-    packed.depth = "packed", packed.encoding = "corrected";
+    packed.depth = DepthPath::packed, packed.encoding = DepthEncoding::corrected;
     rows.insert(rows.begin(), packed);
     const std::vector<std::string> g = bench::goals(rows, "default", 3);
     ASSERT_EQ(g.size(), 7u + 5u);  // + the light geometries' five, none measured here
@@ -353,10 +362,10 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
               "deferred >= 10x faster than the faster forward multi-pass at 256 lights: not measured in this run");
 }
 
-// Issue 12's goals on hand-made rows: stencil invocations against the ideal, tiles against quad on
+// The light geometries' goals (docs/light_geometry.md) on hand-made rows: stencil invocations against the ideal, tiles against quad on
 // 1024-overlap, the best deferred row against forward single-pass on 32-large, images against quad.
 TEST(Bench, GeometryGoalsJudgeTheirRows) {
-    auto geo = [](bench::Row r, const char* g, long long inv, double lsb_vs_quad) {
+    auto geo = [](bench::Row r, LightGeometry g, long long inv, double lsb_vs_quad) {
         r.light_geometry = g;
         r.light_invocations = inv;
         ImageDiff d;
@@ -365,11 +374,11 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
         return r;
     };
     std::vector<bench::Row> rows = {
-        geo(deferred_row("default", 3, 1.0, 100, 100), "quad", 300, 0),
-        geo(deferred_row("default", 3, 1.0, 100, 100), "stencil", 110, 1),    // 1.10 x ideal: met
-        geo(deferred_row("default", 1024, 9.0, 100, 100), "stencil", 200, 2),  // 2.00 x: NOT met; 2 LSB
-        geo(deferred_row("default-overlap", 1024, 9.0, 100, 100), "quad", 900, 0),
-        geo(deferred_row("default-overlap", 1024, 2.0, 100, 100), "tiles", 100, 0),  // 4.5x: met
+        geo(deferred_row("default", 3, 1.0, 100, 100), LightGeometry::quad, 300, 0),
+        geo(deferred_row("default", 3, 1.0, 100, 100), LightGeometry::stencil, 110, 1),    // 1.10 x ideal: met
+        geo(deferred_row("default", 1024, 9.0, 100, 100), LightGeometry::stencil, 200, 2),  // 2.00 x: NOT met; 2 LSB
+        geo(deferred_row("default-overlap", 1024, 9.0, 100, 100), LightGeometry::quad, 900, 0),
+        geo(deferred_row("default-overlap", 1024, 2.0, 100, 100), LightGeometry::tiles, 100, 0),  // 4.5x: met
     };
     rows[3].lights_label = rows[4].lights_label = "1024-overlap";
     const std::vector<std::string> g = bench::geometry_goals(rows, "default", 3);
@@ -404,18 +413,18 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
         r.lights_label = label;
         return r;
     };
-    bench::Row fwd = large(forward_row("large", 32, "forward-single", 6.0), "32-large");
-    fwd.accum = "rgba8";
-    bench::Row slow = large(geo(deferred_row("large", 32, 9.0, 500, 500), "quad", 2000, 0), "32-large");
-    bench::Row fast = large(geo(deferred_row("large", 32, 5.0, 500, 500), "tiles", 100, 0), "32-large");
+    bench::Row fwd = large(forward_row("large", 32, bench::Renderer::forward_single, 6.0), "32-large");
+    fwd.float_accum = false;
+    bench::Row slow = large(geo(deferred_row("large", 32, 9.0, 500, 500), LightGeometry::quad, 2000, 0), "32-large");
+    bench::Row fast = large(geo(deferred_row("large", 32, 5.0, 500, 500), LightGeometry::tiles, 100, 0), "32-large");
     fast.tile_size = 16, fast.tile_lights = 32;
     rows.insert(rows.end(), {fwd, slow, fast});
     const std::string l = bench::geometry_goals(rows, "default", 3)[3];
     EXPECT_EQ(l, "best deferred >= 1.5x faster than forward single-pass on 32-large: forward-single rgba8 6.00 ms / "
                  "deferred texture sc tiles 16/32 5.00 ms = 1.20x -> NOT met") << l;
-    bench::Row fwd0 = large(forward_row("large", 0, "forward-single", 0.5), "0-large");
-    fwd0.accum = "rgba8";
-    bench::Row fast0 = large(geo(deferred_row("large", 0, 1.5, 0, 0), "tiles", 0, 0), "0-large");
+    bench::Row fwd0 = large(forward_row("large", 0, bench::Renderer::forward_single, 0.5), "0-large");
+    fwd0.float_accum = false;
+    bench::Row fast0 = large(geo(deferred_row("large", 0, 1.5, 0, 0), LightGeometry::tiles, 0, 0), "0-large");
     fast0.tile_size = 16, fast0.tile_lights = 32;
     rows.insert(rows.end(), {fwd0, fast0});
     const std::string b = bench::geometry_goals(rows, "default", 3)[3];
@@ -436,7 +445,7 @@ TEST(Bench, MissingCountsAreNullNotZero) {
     EXPECT_TRUE(j["invocations_ratio"].is_null());
     EXPECT_TRUE(j["floor_ms"].is_null());
     EXPECT_EQ(j["ideal_fragments"], 100);
-    r.gbuffer_bytes_per_pixel = 24;  // issue 16: on every row, from the formats allocated
+    r.gbuffer_bytes_per_pixel = 24;  // on every row, from the formats allocated
     EXPECT_EQ(bench::row_json(r)["gbuffer_bytes_per_pixel"], 24);
     const std::vector<std::string> c = bench::table_cells(r);
     EXPECT_EQ(c[6], "-");
@@ -453,11 +462,11 @@ TEST(Bench, MissingCountsAreNullNotZero) {
     EXPECT_DOUBLE_EQ(k["invocations_ratio"].get<double>(), 2.5);
     EXPECT_EQ(bench::table_cells(r)[15], "250");
     EXPECT_EQ(bench::table_cells(r)[16], "2.50");
-    bench::Row f = forward_row("default", 3, "forward-multi", 1.0);
+    bench::Row f = forward_row("default", 3, bench::Renderer::forward_multi, 1.0);
     f.light_invocations = 7;  // a forward row has no light passes: null whatever the field holds
     EXPECT_TRUE(bench::row_json(f)["light_invocations"].is_null());
     EXPECT_TRUE(bench::row_json(f)["accum"].is_null());
-    f.accum = "rgba8";
+    f.float_accum = false;
     EXPECT_EQ(bench::row_json(f)["accum"], "rgba8");
     EXPECT_EQ(bench::config_text(f), "forward-multi rgba8");
 }
@@ -491,17 +500,17 @@ TEST(Bench, FloorArithmetic) {
 
 // The fair baseline: of the float and RGBA8 forms, the faster one.
 TEST(Bench, FastestRowIsTheFasterForm) {
-    bench::Row a = forward_row("default", 32, "forward-multi", 9.0), b = forward_row("default", 32, "forward-multi", 7.0);
-    a.accum = "float", b.accum = "rgba8";
-    const std::vector<bench::Row> rows = {a, b, forward_row("default", 32, "forward-single", 1.0)};
-    ASSERT_NE(bench::fastest_row(rows, "default", 32, "forward-multi"), nullptr);
-    EXPECT_EQ(bench::fastest_row(rows, "default", 32, "forward-multi")->accum, std::string("rgba8"));
-    EXPECT_EQ(bench::fastest_row(rows, "default", 256, "forward-multi"), nullptr);
+    bench::Row a = forward_row("default", 32, bench::Renderer::forward_multi, 9.0), b = forward_row("default", 32, bench::Renderer::forward_multi, 7.0);
+    a.float_accum = true, b.float_accum = false;
+    const std::vector<bench::Row> rows = {a, b, forward_row("default", 32, bench::Renderer::forward_single, 1.0)};
+    ASSERT_NE(bench::fastest_row(rows, "default", 32, bench::Renderer::forward_multi), nullptr);
+    EXPECT_EQ(bench::fastest_row(rows, "default", 32, bench::Renderer::forward_multi)->float_accum, false);  // rgba8
+    EXPECT_EQ(bench::fastest_row(rows, "default", 256, bench::Renderer::forward_multi), nullptr);
 }
 
 // The JSON keys later tools read, with nulls where a value does not apply.
 TEST(Bench, RowJsonHasEveryKeyAndNulls) {
-    const nlohmann::ordered_json f = bench::row_json(forward_row("default", 3, "forward-single", 2.0));
+    const nlohmann::ordered_json f = bench::row_json(forward_row("default", 3, bench::Renderer::forward_single, 2.0));
     const std::vector<std::string> keys = {
         "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "gbuffer_bytes_per_pixel", "light_geometry", "tile_size", "tile_lights", "scissor", "skips_off",
         "lights", "lights_label", "size", "frames", "ms_median", "ms_min", "ms_max", "cpu_ms_median", "light_fragments",
@@ -546,7 +555,7 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
 
 // The printed table: one column per header, "-" where a value does not apply, columns aligned.
 TEST(Bench, TablesHaveOneCellPerColumn) {
-    const std::vector<bench::Row> rows = {forward_row("default", 3, "forward-single", 2.0),
+    const std::vector<bench::Row> rows = {forward_row("default", 3, bench::Renderer::forward_single, 2.0),
                                           deferred_row("default", 3, 12.3456, 110, 100)};
     const std::vector<std::string> c = bench::table_cells(rows[1]);
     ASSERT_EQ(c.size(), bench::table_header().size());
@@ -559,7 +568,7 @@ TEST(Bench, TablesHaveOneCellPerColumn) {
     const std::vector<std::string> f = bench::table_cells(rows[0]);
     EXPECT_EQ(f[6], "-");
     EXPECT_EQ(f[11], "inf");
-    EXPECT_EQ(bench::table_header().back(), "G-buf B/px");  // issue 16: the G-buffer's bytes per pixel
+    EXPECT_EQ(bench::table_header().back(), "G-buf B/px");  // the G-buffer's bytes per pixel
     EXPECT_EQ(f.back(), "-");                                // forward rows have none
 
     const std::string text = bench::text_table(rows);
@@ -714,4 +723,74 @@ TEST(Bench, LightInvocationsCountWhatEntersTheShader) {
     const RenderResult d = render_scene(s, n, n, defaults, {"no-occlusion-query"});
     EXPECT_FALSE(d.stats.counted_light_fragments().has_value());
     EXPECT_EQ(d.stats.light_invocations, b.stats.light_invocations);
+}
+
+// One ideal count (ideal_fragments.h ideal_count) for `dsr bench`, `render --stats` and the
+// viewer's panel, by each light's volume: on a floor lit by a point light and a narrow spot light,
+// the three count the same pixels from the same depth codes; the count is the brute-force count
+// over the volumes and agrees with light_volume.h's own membership test; and the spot counts only
+// its cone, well below its sphere (the sphere-only count the render and viewer paths once made).
+TEST(Bench, OneIdealCountForSpotLights) {
+    const int w = 96, h = 72;
+    Scene s = floor_with_one_light({1.2f, 0.3f, -1.0f});
+    Light spot;
+    spot.type = Light::Type::spot;
+    spot.pos = {-1.0f, 1.5f, 0.5f};
+    spot.dir = glm::normalize(glm::vec3(0.2f, -1.0f, -0.3f));
+    spot.radius = 3.0f;
+    spot.angle_deg = 25.0f;
+    spot.color = {1.0f, 0.9f, 0.8f};
+    s.lights.push_back(spot);
+    Light dark = spot;  // no colour: no fragment
+    dark.pos.x = 1.0f;
+    dark.color = glm::vec3(0.0f);
+    s.lights.push_back(dark);
+
+    auto ctx = create_context(ContextDesc{"osmesa", w, h});
+    const Caps caps = probe_caps({});
+    DeferredShader ds(caps, w, h, ShaderOptions{}, resource_dir("glsl120"));
+    ds.set_scene(s);
+    ds.render(s, w, h);
+    const std::vector<uint32_t> codes = ds.read_gbuffer_depth_codes();
+
+    const FrameIdeal stats = frame_ideal_fragments(ds, s);                           // render --stats
+    const bench::IdealCount bench_count = bench::ideal_from_depth_codes(s, w, h, codes);  // dsr bench, depth24
+    const long long viewer = ideal_count_from_depth_codes(codes, w, h, s.camera, s.lights);  // the viewer's panel
+    ASSERT_TRUE(stats.fragments.has_value());
+    ASSERT_TRUE(bench_count.fragments.has_value());
+    EXPECT_EQ(stats.source, "depth24");
+    EXPECT_EQ(bench_count.source, std::string("depth24"));
+    EXPECT_EQ(*stats.fragments, *bench_count.fragments);
+    EXPECT_EQ(viewer, *stats.fragments);
+
+    // The definition: every (light, pixel) pair tested, in eye space; and light_volume.h's
+    // inside_volume on the same points taken back to world space (rounding of the inverse view
+    // may move a pixel on a boundary).
+    const SurfacePoints pts = surface_from_depth_codes(codes, w, h, s.camera.near_plane, s.camera.far_plane,
+                                                       projection_scale(s.camera, w, h));
+    EXPECT_EQ(viewer, ideal_fragments_brute(pts, eye_volumes(s)));
+    const glm::dmat4 to_world = glm::inverse(s.camera.view_d());
+    long long world = 0;
+    for (size_t i = 0; i < pts.p.size(); ++i)
+        for (const Light& l : s.lights)
+            world += pts.surface[i] && l.color != glm::vec3(0.0f) &&
+                     inside_volume(light_volume(l), glm::dvec3(to_world * glm::dvec4(pts.p[i], 1.0)));
+    EXPECT_NEAR(double(world), double(viewer), 2.0);
+
+    // The spot lights part of the floor, and only the part inside its cone.
+    const long long spot_alone = ideal_count(pts, {spot}, s.camera.view_d());
+    const long long spot_sphere = ideal_fragments(pts, {glm::dvec4(glm::dvec3(s.camera.to_eye(spot.pos)), 3.0)});
+    const long long point_alone = ideal_count(pts, {s.lights[0]}, s.camera.view_d());
+    std::printf("[ stats    ] ideal: %lld (point %lld + spot %lld; the spot's sphere would hold %lld)\n", viewer,
+                point_alone, spot_alone, spot_sphere);
+    EXPECT_GT(spot_alone, 50);
+    EXPECT_LT(2 * spot_alone, spot_sphere);
+    EXPECT_EQ(viewer, point_alone + spot_alone);
+
+    // The bench's other source, exact eye depth from the analytic trace, counts the same volumes:
+    // equal but for pixels whose 24-bit depth puts them on the other side of a boundary.
+    const bench::IdealCount traced = bench::ideal_from_eye_depth(s, w, h, analytic_trace(s, w, h).eye_depth);
+    ASSERT_TRUE(traced.fragments.has_value());
+    EXPECT_EQ(traced.source, std::string("analytic"));
+    EXPECT_NEAR(double(*traced.fragments), double(viewer), 2.0 + double(viewer) / 200.0);
 }

@@ -1,4 +1,4 @@
-// The bench's generated light sets of issue 12 (src/analysis/bench_scenes.h), checked without GL:
+// The bench's generated light sets (src/analysis/bench_scenes.h, docs/light_geometry.md), checked without GL:
 // in N-overlap every lit point lies inside at least 8 lights; in N-large every light's sphere
 // covers most of the screen; --lights items parse as documented.
 #include <cmath>

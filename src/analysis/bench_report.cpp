@@ -1,4 +1,4 @@
-// The benchmark's tables, goals, JSON, plot and report (bench_report.h).
+// The benchmark's tables, JSON, plot and report (bench_report.h); the goals are bench_goals.cpp's.
 #include "analysis/bench_report.h"
 
 #include <algorithm>
@@ -19,19 +19,20 @@ std::string psnr_text(double db) { return std::isfinite(db) ? format_number("%.1
 }  // namespace
 
 json row_json(const Row& r) {
+    const bool deferred = r.renderer == Renderer::deferred;
     json j;
     j["scene"] = r.scene;
-    j["renderer"] = r.renderer;
-    j["accum"] = r.accum ? json(*r.accum) : json(nullptr);
-    j["depth"] = r.depth ? json(*r.depth) : json(nullptr);
-    j["encoding"] = r.encoding ? json(*r.encoding) : json(nullptr);
-    j["gbuffer"] = r.gbuffer ? json(*r.gbuffer) : json(nullptr);
+    j["renderer"] = renderer_name(r.renderer);
+    j["accum"] = !deferred && r.float_accum ? json(*r.float_accum ? "float" : "rgba8") : json(nullptr);
+    j["depth"] = deferred ? json(depth_path_name(r.depth)) : json(nullptr);
+    j["encoding"] = deferred && r.depth == DepthPath::packed ? json(encoding_name(r.encoding)) : json(nullptr);
+    j["gbuffer"] = deferred ? json(r.gbuffer_half ? "half" : "rgba8") : json(nullptr);
     j["gbuffer_bytes_per_pixel"] = r.gbuffer_bytes_per_pixel;  // 0: forward rows have no G-buffer
-    j["light_geometry"] = r.light_geometry ? json(*r.light_geometry) : json(nullptr);
+    j["light_geometry"] = deferred ? json(light_geometry_name(r.light_geometry)) : json(nullptr);
     j["tile_size"] = r.tile_size ? json(*r.tile_size) : json(nullptr);
     j["tile_lights"] = r.tile_lights ? json(*r.tile_lights) : json(nullptr);
     j["scissor"] = r.scissor;
-    j["skips_off"] = r.skips_off;
+    j["skips_off"] = skips_off(r.skip);
     j["lights"] = r.lights;
     j["lights_label"] = r.lights_label;
     j["size"] = {r.w, r.h};
@@ -40,7 +41,6 @@ json row_json(const Row& r) {
     j["ms_min"] = r.ms_min;
     j["ms_max"] = r.ms_max;
     j["cpu_ms_median"] = r.cpu_ms;
-    const bool deferred = r.renderer == "deferred";
     j["light_fragments"] = deferred && r.light_fragments ? json(*r.light_fragments) : json(nullptr);
     j["ideal_fragments"] = deferred && r.ideal_fragments ? json(*r.ideal_fragments) : json(nullptr);
     j["fragments_ratio"] = deferred && r.light_fragments && r.ideal_fragments && *r.ideal_fragments > 0
@@ -76,7 +76,7 @@ json row_json(const Row& r) {
 // Cells of one row, shared by the text table and the markdown table.
 std::vector<std::string> table_cells(const Row& r) {
     auto ll = [](const std::optional<long long>& v) { return v ? std::to_string(*v) : std::string("-"); };
-    const bool deferred = r.renderer == "deferred";
+    const bool deferred = r.renderer == Renderer::deferred;
     std::string ratio = "-";
     if (deferred && r.light_fragments && r.ideal_fragments && *r.ideal_fragments > 0)
         ratio = format_number("%.2f", double(*r.light_fragments) / double(*r.ideal_fragments));
@@ -106,7 +106,7 @@ std::vector<std::string> table_cells(const Row& r) {
     c.push_back(r.floor_ms ? format_number("%.2f", *r.floor_ms) : "-");
     c.push_back(r.floor_ratio ? format_number("%.2f", *r.floor_ratio) : "-");
     c.push_back(format_number("%.2f", r.cpu_ms));
-    c.push_back(r.renderer == "deferred" ? std::to_string(r.gbuffer_bytes_per_pixel) : "-");  // no G-buffer: forward
+    c.push_back(deferred ? std::to_string(r.gbuffer_bytes_per_pixel) : "-");  // no G-buffer: forward
     return c;
 }
 
@@ -159,213 +159,11 @@ std::string markdown_table(const std::vector<Row>& rows) {
     return out.str();
 }
 
-// The rows a goal is judged on: the default configuration (depth texture, scissor on, every skip on).
-const Row* find_row(const std::vector<Row>& rows, const std::string& scene, int lights, const std::string& renderer,
-                    bool default_config) {
-    for (const Row& r : rows) {
-        if (r.scene != scene || r.lights != lights || r.renderer != renderer) continue;
-        if (renderer == "deferred" && default_config &&
-            !(r.depth == std::string("texture") && r.scissor && r.skips_off.empty() && r.gbuffer == std::string("rgba8") &&
-              (!r.light_geometry || *r.light_geometry == "quad")))
-            continue;
-        return &r;
-    }
-    return nullptr;
-}
-
-const Row* fastest_row(const std::vector<Row>& rows, const std::string& scene, int lights,
-                       const std::string& renderer) {
-    const Row* best = nullptr;
-    for (const Row& r : rows)
-        if (r.scene == scene && r.lights == lights && r.renderer == renderer && (!best || r.ms_median < best->ms_median))
-            best = &r;
-    return best;
-}
-
-namespace {
-
-std::string over(long long a, long long b) {
-    return std::to_string(a) + " / " + std::to_string(b) + " = " + format_number("%.3f", double(a) / double(b));
-}
-
-bool sphere_test_on(const Row& r) {
-    return std::find(r.skips_off.begin(), r.skips_off.end(), "light_sphere_test") == r.skips_off.end();
-}
-
-}  // namespace
-
-// Goals of the issue, judged on the measured rows; each goal line ends "-> met", "-> NOT met" or
-// says it was not measured; lines starting with two spaces are information about the one before.
-std::vector<std::string> goals(const std::vector<Row>& rows, const std::string& scene, int own_lights,
-                               const std::optional<InvocationProbe>& probe) {
-    std::vector<std::string> out;
-    for (int n : {own_lights, 1024}) {
-        const std::string where = scene + " with " + std::to_string(n) + " lights";
-        const Row* d = find_row(rows, scene, n, "deferred");
-        const bool ideal = d && d->ideal_fragments && *d->ideal_fragments > 0;
-        // What the light passes pay: every fragment that entered the light shader.
-        if (!ideal)
-            out.push_back("light_invocations <= 1.25 x ideal, " + where + ": not measured in this run");
-        else if (!d->light_invocations)
-            out.push_back("light_invocations <= 1.25 x ideal, " + where +
-                          ": not measured in this run (the GL lacks ARB_pipeline_statistics_query)");
-        else
-            out.push_back("light_invocations <= 1.25 x ideal, " + where + ": " +
-                          over(*d->light_invocations, *d->ideal_fragments) + " -> " +
-                          (double(*d->light_invocations) <= 1.25 * double(*d->ideal_fragments) ? "met" : "NOT met"));
-        if (ideal && d->light_fragments) {
-            if (sphere_test_on(*d))
-                out.push_back("  (information, not a goal: light_fragments / ideal = " +
-                              over(*d->light_fragments, *d->ideal_fragments) +
-                              "; it holds by construction, since the light sphere test discards every fragment "
-                              "whose surface point lies outside the sphere and the ideal counts the points inside)");
-            else
-                out.push_back("  (information: light_fragments / ideal = " +
-                              over(*d->light_fragments, *d->ideal_fragments) + ")");
-        }
-        if (ideal)
-            for (const Row& r : rows)
-                if (r.scene == scene && r.lights == n && r.renderer == "deferred" && r.skips_off.size() == 1 &&
-                    r.skips_off[0] == "light_sphere_test" && r.light_fragments)
-                    out.push_back("  (information, with the depth-span test only, --no-skip light-sphere-test: "
-                                  "light_fragments / ideal = " + over(*r.light_fragments, *d->ideal_fragments) +
-                                  (r.light_invocations ? "; light_invocations / ideal = " +
-                                                             over(*r.light_invocations, *d->ideal_fragments)
-                                                       : std::string()) +
-                                  ")");
-        // The frame against what the same work could cost at least (bench_floor.h).
-        if (d && d->floor_ratio && d->floor_ms)
-            out.push_back("floor_ratio <= 1.3, " + where + ": " + format_number("%.2f", d->ms_median) + " ms / " +
-                          format_number("%.2f", *d->floor_ms) + " ms = " + format_number("%.2f", *d->floor_ratio) +
-                          " -> " + (*d->floor_ratio <= 1.3 ? "met" : "NOT met"));
-        else
-            out.push_back("floor_ratio <= 1.3, " + where + ": not measured in this run");
-    }
-    const Row* d = find_row(rows, scene, 256, "deferred");
-    const Row* m = fastest_row(rows, scene, 256, "forward-multi");
-    if (d && m) {
-        double ratio = m->ms_median / d->ms_median;
-        out.push_back("deferred >= 10x faster than the faster forward multi-pass at 256 lights, " + scene + ": " +
-                      config_text(*m) + " " + format_number("%.2f", m->ms_median) + " ms / " +
-                      format_number("%.2f", d->ms_median) + " ms = " + format_number("%.1f", ratio) + "x -> " +
-                      (ratio >= 10 ? "met" : "NOT met"));
-    } else {
-        out.push_back("deferred >= 10x faster than the faster forward multi-pass at 256 lights: not measured in this run");
-    }
-    const std::vector<std::string> g = geometry_goals(rows, scene, own_lights, probe);
-    out.insert(out.end(), g.begin(), g.end());
-    return out;
-}
-
-const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& scene, int lights,
-                             const std::string& geometry) {
-    for (const Row& r : rows)
-        if (r.scene == scene && r.lights == lights && r.renderer == "deferred" && r.depth == std::string("texture") &&
-            r.scissor && r.skips_off.empty() && r.gbuffer == std::string("rgba8") &&
-            r.light_geometry.value_or("quad") == geometry)
-            return &r;
-    return nullptr;
-}
-
-// Issue 12's goals for the light geometries.
-std::vector<std::string> geometry_goals(const std::vector<Row>& rows, const std::string& scene, int own_lights,
-                                        const std::optional<InvocationProbe>& probe) {
-    std::vector<std::string> out;
-    for (int n : {own_lights, 1024}) {
-        const std::string where = scene + " with " + std::to_string(n) + " lights";
-        const Row* s = find_geometry_row(rows, scene, n, "stencil");
-        if (!s || !s->ideal_fragments || *s->ideal_fragments <= 0 || !s->light_invocations)
-            out.push_back("stencil light_invocations <= 1.25 x ideal, " + where + ": not measured in this run");
-        else if (probe && probe->counts_rejected())
-            // The counter cannot tell what the stencil let through from what it rejected.
-            out.push_back("stencil light_invocations <= 1.25 x ideal, " + where +
-                          ": cannot be judged on this GL: its fragment-shader invocation counter counts fragments "
-                          "the stencil test rejects (probe: " + std::to_string(probe->invocations) +
-                          " invocations for " + std::to_string(probe->pixels) +
-                          " pixels that all fail the stencil test); invocations " +
-                          over(*s->light_invocations, *s->ideal_fragments) +
-                          (s->light_fragments ? "; what passed the stencil (occlusion query) " +
-                                                    over(*s->light_fragments, *s->ideal_fragments) + " (information)"
-                                              : std::string()));
-        else
-            out.push_back("stencil light_invocations <= 1.25 x ideal, " + where + ": " +
-                          over(*s->light_invocations, *s->ideal_fragments) + " -> " +
-                          (double(*s->light_invocations) <= 1.25 * double(*s->ideal_fragments) ? "met" : "NOT met"));
-    }
-    // Scenes the light generators name by their --lights entry (bench_scenes.h).
-    const Row* tq = nullptr;
-    const Row* tt = nullptr;
-    for (const Row& r : rows)
-        if (r.scene.find("1024-overlap") != std::string::npos || r.lights_label == "1024-overlap") {
-            if (!tq) tq = find_geometry_row(rows, r.scene, r.lights, "quad");
-            if (!tt) tt = find_geometry_row(rows, r.scene, r.lights, "tiles");
-        }
-    if (tq && tt)
-        out.push_back("tiles >= 3x faster than quad on 1024-overlap: " + format_number("%.2f", tq->ms_median) +
-                      " ms / " + format_number("%.2f", tt->ms_median) + " ms = " +
-                      format_number("%.2f", tq->ms_median / tt->ms_median) + "x -> " +
-                      (tq->ms_median >= 3 * tt->ms_median ? "met" : "NOT met"));
-    else
-        out.push_back("tiles >= 3x faster than quad on 1024-overlap: not measured in this run");
-    const Row* best = nullptr;
-    const Row* fwd = nullptr;
-    for (const Row& r : rows)
-        if (r.lights_label == "32-large") {
-            if (r.renderer == "deferred" && r.skips_off.empty() && r.gbuffer == std::string("rgba8") &&
-                (!best || r.ms_median < best->ms_median))
-                best = &r;
-            if (r.renderer == "forward-single" && (!fwd || r.ms_median < fwd->ms_median)) fwd = &r;
-        }
-    if (best && fwd) {
-        // The same rows on the scene without lights (--lights 0-large), where the run has them: what
-        // each frame costs without light work, so what 1.5x leaves the deferred row for its lights.
-        const Row* fwd0 = nullptr;
-        const Row* best0 = nullptr;
-        for (const Row& r : rows)
-            if (r.lights_label == "0-large") {
-                if (r.renderer == fwd->renderer && config_text(r) == config_text(*fwd)) fwd0 = &r;
-                if (r.renderer == best->renderer && config_text(r) == config_text(*best)) best0 = &r;
-            }
-        std::string bound;
-        if (fwd0 && best0 && best->ideal_fragments)
-            bound = "; without lights (0-large) " + format_number("%.2f", fwd0->ms_median) + " and " +
-                    format_number("%.2f", best0->ms_median) + " ms, so forward's light work takes " +
-                    format_number("%.2f", fwd->ms_median - fwd0->ms_median) + " ms and 1.5x leaves the deferred row " +
-                    format_number("%.2f", fwd->ms_median / 1.5 - best0->ms_median) + " ms for " +
-                    std::to_string(*best->ideal_fragments) + " ideal pixel-light pairs (information)";
-        out.push_back("best deferred >= 1.5x faster than forward single-pass on 32-large: " + config_text(*fwd) + " " +
-                      format_number("%.2f", fwd->ms_median) + " ms / " + config_text(*best) + " " +
-                      format_number("%.2f", best->ms_median) + " ms = " +
-                      format_number("%.2f", fwd->ms_median / best->ms_median) + "x -> " +
-                      (fwd->ms_median >= 1.5 * best->ms_median ? "met" : "NOT met") + bound);
-    } else
-        out.push_back("best deferred >= 1.5x faster than forward single-pass on 32-large: not measured in this run");
-    // Every geometry's image against quad's, every scene variant of the run.
-    double worst = -1;
-    std::string worst_row;
-    int compared = 0;
-    for (const Row& r : rows)
-        if (r.renderer == "deferred" && r.err_quad && r.light_geometry &&
-            *r.light_geometry != "quad") {
-            ++compared;
-            if (r.err_quad->max_lsb() > worst) {
-                worst = r.err_quad->max_lsb();
-                worst_row = config_text(r) + ", " + r.scene + " at " + std::to_string(r.lights) + " lights";
-            }
-        }
-    if (compared == 0)
-        out.push_back("every light geometry within 1 LSB of quad's image: not measured in this run");
-    else
-        out.push_back("every light geometry within 1 LSB of quad's image: largest " +
-                      format_number("%.0f", worst) + " LSB (" + worst_row + ", " + std::to_string(compared) +
-                      " rows) -> " + (worst <= 1 ? "met" : "NOT met"));
-    return out;
-}
-
 Image plot_rows(const std::vector<Row>& rows, const std::vector<std::string>& scenes) {
     std::vector<PlotPanel> panels;
-    const std::vector<std::pair<std::string, glm::vec3>> kinds = {
-        {"deferred", {0.1f, 0.35f, 0.85f}}, {"forward-single", {0.1f, 0.65f, 0.2f}}, {"forward-multi", {0.85f, 0.2f, 0.1f}}};
+    const std::vector<std::pair<Renderer, glm::vec3>> kinds = {{Renderer::deferred, {0.1f, 0.35f, 0.85f}},
+                                                                {Renderer::forward_single, {0.1f, 0.65f, 0.2f}},
+                                                                {Renderer::forward_multi, {0.85f, 0.2f, 0.1f}}};
     for (const std::string& scene : scenes) {
         bool analytic = false;
         for (const Row& r : rows)
@@ -375,12 +173,12 @@ Image plot_rows(const std::vector<Row>& rows, const std::vector<std::string>& sc
         p.x_label = "MS PER FRAME (MEDIAN)";
         p.y_label = analytic ? "MEAN ERROR (LSB) VS ANALYTIC" : "MEAN ERROR (LSB) VS FORWARD";
         p.y_floor = 0.01;  // below a hundredth of an LSB on average: a few pixels at most, or none
-        for (auto& [name, color] : kinds) {
+        for (auto& [kind, color] : kinds) {
             PlotSeries s;
-            s.label = name;
+            s.label = renderer_name(kind);
             s.color = color;
             for (const Row& r : rows) {
-                if (r.scene != scene || r.renderer != name) continue;
+                if (r.scene != scene || r.renderer != kind) continue;
                 PlotPoint pt;
                 pt.x = r.ms_median;
                 pt.y = analytic ? r.err_analytic->mean_lsb() : r.err.mean_lsb();
@@ -453,10 +251,9 @@ std::string light_geometry_markdown(const std::vector<Row>& rows) {
           "max LSB vs quad |\n| --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
     auto ll = [](const std::optional<long long>& v) { return v ? std::to_string(*v) : std::string("-"); };
     for (const Row& r : rows) {
-        if (r.renderer != "deferred" || !r.light_geometry || r.depth != std::string("texture") || !r.scissor ||
-            !r.skips_off.empty() || r.gbuffer != std::string("rgba8"))
-            continue;
-        md << "| " << r.scene << " | " << r.lights_label << " (" << r.lights << ") | " << *r.light_geometry << " | "
+        if (!default_configuration(r)) continue;
+        md << "| " << r.scene << " | " << r.lights_label << " (" << r.lights << ") | "
+           << light_geometry_name(r.light_geometry) << " | "
            << format_number("%.2f", r.ms_median) << " | " << ll(r.light_invocations) << " | " << ll(r.ideal_fragments)
            << " | "
            << (r.light_invocations && r.ideal_fragments && *r.ideal_fragments > 0
@@ -511,7 +308,8 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
           "- (c) *post floor*: each post pass's texel reads over its buffer (bloom: two blurs of `bloom_taps` "
           "reads at 1/`bloom_scale`, one add; anti-alias: 9 reads per source and 9 of the colour), each read "
           "costed at (b) / 4. Every row here runs with post off, so (c) = 0 in every row.\n\n"
-          "*floor ms* = (a) + *ideal* x (b) + (c); *floor ratio* = *ms med* / *floor ms* (goal <= 1.3). The "
+          "*floor ms* = (a) + *ideal* x (b) + (c); *floor ratio* = *ms med* / *floor ms* (goal "
+       << goal_bound(goal("floor")) << "). The "
           "floor leaves out what a deferred frame does beyond these (the ambient pass, the copy to the main "
           "buffer, per-light set-up), so it is a lower bound, not a target any renderer is known to reach. The "
           "parts of each row are in the JSON (`floor_fill_ms`, `floor_light_ns`, `floor_post_ms`).\n\n"

@@ -1,5 +1,6 @@
 // The benchmark's runner (bench_run.h): builds every row's renderer, warms up, times the frames
 // interleaved across rows, counts the ideal fragments and compares each image with the references.
+// Runner::run_scene calls one function per job, in that order.
 #include "analysis/bench_run.h"
 
 #include <unistd.h>
@@ -17,7 +18,6 @@
 #include "analysis/bench_scenes.h"
 #include "analysis/ideal_fragments.h"
 #include "deferred/deferred_shader.h"
-#include "deferred/reconstruct.h"
 #include "forward/forward_renderer.h"
 #include "gl/readback.h"
 
@@ -28,6 +28,23 @@ namespace {
 constexpr double kSlowFrameMs = 2000;   // above this, fewer frames (see frames_for)
 constexpr double kSlowRowBudgetMs = 20000;
 
+// The skips by the names the rows print, in SkipOptions' order.
+struct SkipField {
+    const char* name;
+    bool SkipOptions::*on;
+};
+constexpr SkipField kSkipFields[] = {{"material_variants", &SkipOptions::material_variants},
+                                     {"empty_lights", &SkipOptions::empty_lights},
+                                     {"light_depth_test", &SkipOptions::light_depth_test},
+                                     {"light_sphere_test", &SkipOptions::light_sphere_test}};
+
+// What every job of one scene variant reads: the sweep, the GL and the shaders.
+struct Setup {
+    const Config& cfg;
+    const Caps& caps;
+    const std::string& shaders;
+};
+
 // Everything one scene variant (scene, light count, size) shares across its rows.
 struct Variant {
     std::string name;
@@ -36,7 +53,6 @@ struct Variant {
     std::string lights_label;
     std::optional<AnalyticTrace> trace;
     std::vector<uint8_t> interior;
-    std::optional<long long> ideal;
 };
 
 // One row's renderer, alive for the whole variant so that frames can be interleaved.
@@ -61,8 +77,16 @@ struct RowRun {
         return last_forward.ms_frame;
     }
 };
+using Runs = std::vector<std::unique_ptr<RowRun>>;
 
-Row base_row(const Config& cfg, const Variant& v, const std::string& renderer) {
+// The floor (bench_floor.h): one FloorBench per G-buffer layout the deferred rows use, and the
+// fill times measured in the timed rounds.
+struct Floors {
+    std::map<GbufferLayout, std::unique_ptr<FloorBench>> bench;
+    std::map<GbufferLayout, std::vector<double>> fill_ms;
+};
+
+Row base_row(const Config& cfg, const Variant& v, Renderer renderer) {
     Row r;
     r.scene = v.name;
     r.renderer = renderer;
@@ -73,49 +97,47 @@ Row base_row(const Config& cfg, const Variant& v, const std::string& renderer) {
     return r;
 }
 
-std::unique_ptr<RowRun> deferred(const Config& cfg, const Caps& caps, const std::string& shaders, const Variant& v,
-                                 DepthPath depth, DepthEncoding enc, bool scissor, const SkipOptions& skip,
-                                 const std::vector<std::string>& skips_off, bool gbuffer_half,
-                                 LightGeometry geometry) {
+// A deferred row of the configuration `want` names (depth path, encoding, scissor, skips, G-buffer
+// precision, light geometry); the row records what ran (the geometry and tile settings as resolved).
+std::unique_ptr<RowRun> deferred(const Setup& st, const Variant& v, const Row& want) {
     ShaderOptions o;
-    o.light_geometry = geometry;
-    o.tile_size = cfg.tile_size, o.tile_lights = cfg.tile_lights, o.tile_plan = cfg.tile_plan;
-    o.tile_depth = cfg.tile_depth;
-    o.depth = depth;
-    o.encoding = enc;
-    o.scissor = scissor;
-    o.skip = skip;
-    o.gbuffer_half = gbuffer_half;
+    o.light_geometry = want.light_geometry;
+    o.tile_size = st.cfg.tile_size, o.tile_lights = st.cfg.tile_lights, o.tile_plan = st.cfg.tile_plan;
+    o.tile_depth = st.cfg.tile_depth;
+    o.depth = want.depth;
+    o.encoding = want.encoding;
+    o.scissor = want.scissor;
+    o.skip = want.skip;
+    o.gbuffer_half = want.gbuffer_half;
     o.post.bloom = o.post.aa = false;  // the tutorial's core passes only; post costs the same on every row
     auto run = std::make_unique<RowRun>();
-    run->ds = std::make_unique<DeferredShader>(caps, cfg.w, cfg.h, o, shaders);
+    run->ds = std::make_unique<DeferredShader>(st.caps, st.cfg.w, st.cfg.h, o, st.shaders);
     run->ds->set_scene(v.scene);
-    Row& r = run->row = base_row(cfg, v, "deferred");
-    r.depth = depth_path_name(depth);
+    Row& r = run->row = base_row(st.cfg, v, Renderer::deferred);
+    r.depth = want.depth;
+    r.encoding = want.encoding;
+    r.gbuffer_half = want.gbuffer_half;
+    r.scissor = want.scissor;
+    r.skip = want.skip;
     r.gbuffer_bytes_per_pixel = run->ds->paths().gbuffer_bytes_per_pixel;
-    if (depth == DepthPath::packed) r.encoding = encoding_name(enc);
-    r.gbuffer = gbuffer_half ? "half" : "rgba8";
-    r.light_geometry = light_geometry_name(run->ds->paths().light_geometry);
-    if (run->ds->paths().light_geometry == LightGeometry::tiles)
+    r.light_geometry = run->ds->paths().light_geometry;
+    if (r.light_geometry == LightGeometry::tiles)
         r.tile_size = run->ds->paths().tile_size, r.tile_lights = run->ds->paths().tile_lights;
-    r.scissor = scissor;
-    r.skips_off = skips_off;
     return run;
 }
 
 // float_target: an RGBA32F target copied to the main buffer at the end (both forms round once,
 // as the reference does); otherwise straight into the RGBA8 main buffer, every additive pass
 // rounded to 8 bits, as Listing 4 ran in 2005 (framebuffer += light).
-std::unique_ptr<RowRun> forward(const Config& cfg, const Caps& caps, const std::string& shaders, const Variant& v,
-                                ForwardMode mode, bool float_target) {
+std::unique_ptr<RowRun> forward(const Setup& st, const Variant& v, ForwardMode mode, bool float_target) {
     ForwardOptions o;
     o.mode = mode;
     o.float_target = float_target;
     auto run = std::make_unique<RowRun>();
-    run->fr = std::make_unique<ForwardRenderer>(caps, cfg.w, cfg.h, o, shaders);
+    run->fr = std::make_unique<ForwardRenderer>(st.caps, st.cfg.w, st.cfg.h, o, st.shaders);
     run->fr->set_scene(v.scene);
-    run->row = base_row(cfg, v, mode == ForwardMode::single ? "forward-single" : "forward-multi");
-    run->row.accum = float_target ? "float" : "rgba8";
+    run->row = base_row(st.cfg, v, mode == ForwardMode::single ? Renderer::forward_single : Renderer::forward_multi);
+    run->row.float_accum = float_target;
     return run;
 }
 
@@ -136,16 +158,239 @@ std::string printf_line(const char* f, ...) {
     return buf;
 }
 
+// The scene variant: the base scene with the spec's lights, its label, and the analytic trace
+// where every material is constant.
+Variant make_variant(const Setup& st, const std::string& path, const std::string& name, const LightSpec& spec,
+                     int sweep_index, const std::function<void(const std::string&)>& say) {
+    Variant v;
+    v.name = name;
+    v.scene = bench_scene(load_scene(path), spec);
+    v.sweep_index = sweep_index;
+    v.lights_label = spec.count < 0 ? "own"
+                     : std::to_string(spec.count) + (spec.set == LightSet::overlap ? "-overlap"
+                                                     : spec.set == LightSet::large ? "-large"
+                                                                                   : "");
+    if (analytic_capable(v.scene)) {
+        const double t0 = now_ms();
+        v.trace = analytic_trace(v.scene, st.cfg.w, st.cfg.h);
+        v.interior = interior_mask(*v.trace, st.cfg.w, st.cfg.h);
+        say(printf_line("bench: analytic reference of %s with %zu lights traced in %.1f s", v.name.c_str(),
+                        v.scene.lights.size(), (now_ms() - t0) / 1000));
+    }
+    return v;
+}
+
+// Every renderer of the variant, built (shaders compiled) before any frame is timed; runs[0] is
+// the forward reference. Configurations the GL cannot run are noted once (first variant).
+Runs build_runs(const Setup& st, const Variant& v, bool first, std::vector<std::string>& notes) {
+    Runs runs;
+    auto add = [&](const Row& want) { runs.push_back(deferred(st, v, want)); };
+    auto config = [](DepthPath d, bool scissor) {  // the default configuration on depth path d
+        Row r;
+        r.depth = d;
+        r.scissor = scissor;
+        return r;
+    };
+    // runs[0], float single-pass: the forward reference. The RGBA8 forms are the baseline a 2005
+    // user would have run; the speed goal takes the faster of each kind.
+    const bool float_forward = st.caps.fbo && st.caps.texture_float;
+    if (!float_forward && first)
+        notes.push_back("float forward rows left out (no ARB_texture_float or EXT_framebuffer_object): the forward "
+                        "reference is then the RGBA8 single-pass render");
+    for (ForwardMode m : {ForwardMode::single, ForwardMode::multi})
+        for (bool f : {true, false})
+            if (!f || float_forward) runs.push_back(forward(st, v, m, f));
+    for (DepthPath d : {DepthPath::texture, DepthPath::packed})
+        for (bool sc : {false, true}) add(config(d, sc));
+    // Each skip turned off alone, on the default configuration (depth texture, scissor on).
+    for (const SkipField& k : kSkipFields) {
+        Row r = config(DepthPath::texture, true);
+        r.skip.*k.on = false;
+        add(r);
+    }
+    for (DepthEncoding e : {DepthEncoding::literal, DepthEncoding::linear, DepthEncoding::log}) {
+        Row r = config(DepthPath::packed, true);
+        r.encoding = e;
+        add(r);
+    }
+    // Each light geometry on the default configuration (docs/light_geometry.md); quad's is the row above.
+    for (LightGeometry g : st.cfg.geometries)
+        if (g != LightGeometry::quad) {
+            Row r = config(DepthPath::texture, true);
+            r.light_geometry = g;
+            add(r);
+        }
+    // The other documents' G-buffer: eye-space position stored in a float target, where the GL has one.
+    for (DepthPath d : {DepthPath::position16, DepthPath::position32}) {
+        ShaderOptions probe;
+        probe.depth = d;
+        const std::string refused = choose_paths(st.caps, probe).refused;
+        if (refused.empty()) add(config(d, true));
+        else if (first) notes.push_back(std::string(depth_path_name(d)) + " rows left out: " + refused);
+    }
+    // Higher-precision G-buffer targets where the GL has them.
+    if (st.caps.texture_float && st.caps.half_float) {
+        for (DepthPath d : {DepthPath::texture, DepthPath::packed}) {
+            Row r = config(d, true);
+            r.gbuffer_half = true;
+            add(r);
+        }
+    } else if (first) {
+        notes.push_back("half-float G-buffer rows left out: the GL lacks ARB_texture_float or ARB_half_float_pixel");
+    }
+    return runs;
+}
+
+// One FloorBench per G-buffer layout the deferred rows use, where framebuffer objects exist.
+Floors build_floors(const Setup& st, const Variant& v, const Runs& runs, bool first, std::vector<std::string>& notes) {
+    Floors floors;
+    if (!st.caps.fbo) {
+        if (first) notes.push_back("floor not measured: it renders into framebuffer objects (EXT_framebuffer_object)");
+        return floors;
+    }
+    for (auto& run : runs)
+        if (run->ds && !floors.bench.count(layout_of(*run->ds))) {
+            const GbufferLayout l = layout_of(*run->ds);
+            floors.bench[l] = std::make_unique<FloorBench>(st.caps, st.cfg.w, st.cfg.h, l, st.shaders);
+            floors.bench[l]->set_scene(v.scene);
+        }
+    return floors;
+}
+
+// Warm-up, then the timed frames interleaved across rows (one frame of each row per round), so a
+// burst of load from elsewhere on the machine spreads over all rows instead of biasing one; the
+// floor's fill frames in the same rounds. Each row keeps its last frame's image. Then one counted
+// frame per deferred row, whose counts go in the row.
+void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors) {
+    for (auto& [l, fb] : floors.bench)
+        for (int i = 0; i < cfg.warmup; ++i) fb->fill_frame(v.scene);
+    for (auto& run : runs) {
+        double first = 0;
+        for (int i = 0; i < cfg.warmup; ++i) {
+            double ms = run->frame(v.scene, cfg.w, cfg.h);
+            if (i == 0) first = ms;
+            if (ms > kSlowFrameMs) break;  // a slow frame is its own warm-up
+        }
+        run->row.frames = frames_for(first, cfg.frames);
+    }
+    int rounds = 0;
+    for (auto& run : runs) rounds = std::max(rounds, run->row.frames);
+    // The timed frames do not count: the counting queries around every light draw are the
+    // measurement's cost, not the renderer's (on the H200 at 1024 lights most of the CPU's frame).
+    for (auto& run : runs)
+        if (run->ds) run->ds->set_counting(false);
+    for (int f = 0; f < rounds; ++f) {
+        for (auto& run : runs) {
+            if (f >= run->row.frames) continue;
+            run->ms.push_back(run->frame(v.scene, cfg.w, cfg.h));
+            if (f + 1 == run->row.frames) run->image = opaque(read_pixels(cfg.w, cfg.h));
+        }
+        if (f < cfg.frames)  // (a) in the same rounds, as many frames as the fast rows
+            for (auto& [l, fb] : floors.bench) floors.fill_ms[l].push_back(fb->fill_frame(v.scene));
+    }
+    for (auto& run : runs)
+        if (run->ds) {
+            run->ds->set_counting(true);
+            run->last = run->ds->render(v.scene, cfg.w, cfg.h);
+        }
+}
+
+// (a) and (b) of each layout's floor; (c) depends on the row's post options (finish_rows).
+std::map<GbufferLayout, FloorParts> floor_parts(Floors& floors) {
+    std::map<GbufferLayout, FloorParts> parts;
+    for (auto& [l, fb] : floors.bench) {
+        FloorParts p;
+        p.fill_ms = median(floors.fill_ms[l]);
+        p.light_ns_per_fragment = fb->light_ns_per_fragment();
+        parts[l] = p;
+    }
+    return parts;
+}
+
+// The variant's ideal count: the analytic trace's exact eye depth where the scene allows,
+// otherwise the first depth-texture row's 24-bit depth codes.
+IdealCount variant_ideal(const Config& cfg, const Variant& v, const Runs& runs) {
+    if (v.trace) return ideal_from_eye_depth(v.scene, cfg.w, cfg.h, v.trace->eye_depth);
+    for (auto& run : runs)
+        if (run->ds && run->ds->options().depth == DepthPath::texture)
+            return ideal_from_depth_codes(v.scene, cfg.w, cfg.h, run->ds->read_gbuffer_depth_codes());
+    return {};
+}
+
+// The default configuration's quad image: every light geometry is compared with it.
+const Image* quad_image(const Runs& runs) {
+    for (auto& run : runs)
+        if (default_configuration(run->row) && run->row.light_geometry == LightGeometry::quad) return &run->image;
+    return nullptr;
+}
+
+// Each row's figures from its frames: times, counts, the floor, the errors against the references.
+void finish_row(const Config& cfg, const Variant& v, RowRun& run, const IdealCount& ideal,
+                const std::map<GbufferLayout, FloorParts>& parts, const Image& ref, const Image* quad) {
+    Row& r = run.row;
+    r.ms_median = median(run.ms);
+    r.ms_min = *std::min_element(run.ms.begin(), run.ms.end());
+    r.ms_max = *std::max_element(run.ms.begin(), run.ms.end());
+    r.cpu_ms = median(run.cpu_ms);
+    if (run.ds) {
+        r.light_fragments = run.last.counted_light_fragments();
+        r.light_invocations = run.last.light_invocations;
+        r.scissor_pixels = run.last.scissor_pixels;
+        r.lights_drawn = run.last.lights_drawn;
+        r.light_passes = run.last.light_passes;
+        r.depth_copy_ms = median(run.depth_copy_ms);
+        if (quad) r.err_quad = compare_images(run.image, *quad, 1.0 / 255.0);
+        r.ideal_fragments = ideal.fragments;
+        r.ideal_source = ideal.source;
+        auto p = parts.find(layout_of(*run.ds));
+        if (p != parts.end()) {
+            FloorParts fp = p->second;
+            fp.post_ms = post_floor_ms(run.ds->options().post, cfg.w, cfg.h, fp.light_ns_per_fragment);
+            r.floor_fill_ms = fp.fill_ms;
+            r.floor_light_ns = fp.light_ns_per_fragment;
+            r.floor_post_ms = fp.post_ms;
+            r.floor_ms = floor_ms(fp, ideal.fragments);
+            r.floor_ratio = floor_ratio(r.ms_median, r.floor_ms);
+        }
+    } else {
+        r.passes = run.last_forward.passes;
+    }
+    r.err = compare_images(run.image, ref, 1.0 / 255.0);
+    if (v.trace) r.err_analytic = compare_images_masked(run.image, v.trace->image, v.interior, 1.0 / 255.0);
+}
+
 }  // namespace
 
+const char* renderer_name(Renderer r) {
+    switch (r) {
+        case Renderer::deferred: return "deferred";
+        case Renderer::forward_single: return "forward-single";
+        case Renderer::forward_multi: return "forward-multi";
+    }
+    return "?";
+}
+
+std::vector<std::string> skips_off(const SkipOptions& skip) {
+    std::vector<std::string> out;
+    for (const SkipField& k : kSkipFields)
+        if (!(skip.*k.on)) out.push_back(k.name);
+    return out;
+}
+
+bool default_configuration(const Row& r) {
+    return r.renderer == Renderer::deferred && r.depth == DepthPath::texture && r.scissor &&
+           skips_off(r.skip).empty() && !r.gbuffer_half;
+}
+
 std::string config_text(const Row& r) {
-    if (r.renderer != "deferred") return r.accum ? r.renderer + " " + *r.accum : r.renderer;
-    std::string s = "deferred " + *r.depth;
-    if (r.encoding) s += "/" + *r.encoding;
+    const std::string name = renderer_name(r.renderer);
+    if (r.renderer != Renderer::deferred) return r.float_accum ? name + (*r.float_accum ? " float" : " rgba8") : name;
+    std::string s = name + " " + depth_path_name(r.depth);
+    if (r.depth == DepthPath::packed) s += std::string("/") + encoding_name(r.encoding);
     s += r.scissor ? " sc" : " -";
-    if (r.gbuffer == std::string("half")) s += " half";
-    for (auto& k : r.skips_off) s += " no-" + k;
-    if (r.light_geometry && *r.light_geometry != "quad") s += " " + *r.light_geometry;
+    if (r.gbuffer_half) s += " half";
+    for (auto& k : skips_off(r.skip)) s += " no-" + k;
+    if (r.light_geometry != LightGeometry::quad) s += std::string(" ") + light_geometry_name(r.light_geometry);
     if (r.tile_size && r.tile_lights) s += " " + std::to_string(*r.tile_size) + "/" + std::to_string(*r.tile_lights);
     return s;
 }
@@ -178,6 +423,15 @@ std::string file_stem(const std::string& path) {
     return b.substr(0, b.find_last_of('.'));
 }
 
+IdealCount ideal_from_eye_depth(const Scene& scene, int w, int h, const std::vector<double>& eye_depth) {
+    const SurfacePoints s = surface_from_eye_depth(eye_depth, w, h, projection_scale(scene.camera, w, h));
+    return {ideal_count(s, scene.lights, scene.camera.view_d()), std::string("analytic")};
+}
+
+IdealCount ideal_from_depth_codes(const Scene& scene, int w, int h, const std::vector<uint32_t>& codes) {
+    return {ideal_count_from_depth_codes(codes, w, h, scene.camera, scene.lights), std::string("depth24")};
+}
+
 Runner::Runner(const Config& cfg, const Caps& caps, const std::string& shader_dir)
     : cfg_(cfg), caps_(caps), shaders_(shader_dir) {}
 
@@ -187,189 +441,21 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
     };
     const LightSpec spec{light_count, size_t(sweep_index) < cfg_.light_sets.size() ? cfg_.light_sets[size_t(sweep_index)]
                                                                                    : LightSet::spread};
-    Variant v;
-    v.name = bench_scene_name(file_stem(path), spec);
+    const std::string name = bench_scene_name(file_stem(path), spec);
     for (const Row& r : rows_)
-        if (r.scene == v.name && r.lights == light_count) return;  // "large" replaces every base: once
-    Scene base = load_scene(path);
-    v.scene = bench_scene(base, spec);
-    v.sweep_index = sweep_index;
-    v.lights_label = light_count < 0 ? "own"
-                     : std::to_string(light_count) + (spec.set == LightSet::overlap ? "-overlap"
-                                                      : spec.set == LightSet::large ? "-large"
-                                                                                    : "");
-    if (analytic_capable(v.scene)) {
-        double t0 = now_ms();
-        v.trace = analytic_trace(v.scene, cfg_.w, cfg_.h);
-        v.interior = interior_mask(*v.trace, cfg_.w, cfg_.h);
-        say(printf_line("bench: analytic reference of %s with %zu lights traced in %.1f s", v.name.c_str(),
-                        v.scene.lights.size(), (now_ms() - t0) / 1000));
-    }
-
-    // Every renderer of the variant is built (shaders compiled) before any frame is timed.
-    std::vector<std::unique_ptr<RowRun>> runs;
-    auto add_deferred = [&](DepthPath d, DepthEncoding e, bool sc, const SkipOptions& skip,
-                            const std::vector<std::string>& skips_off, bool half,
-                            LightGeometry g = LightGeometry::quad) {
-        runs.push_back(deferred(cfg_, caps_, shaders_, v, d, e, sc, skip, skips_off, half, g));
-    };
-    // runs[0], float single-pass: the forward reference. The RGBA8 forms are the baseline a 2005
-    // user would have run; the speed goal takes the faster of each kind.
-    const bool float_forward = caps_.fbo && caps_.texture_float;
-    if (!float_forward && index == 0)
-        notes_.push_back("float forward rows left out (no ARB_texture_float or EXT_framebuffer_object): the forward "
-                         "reference is then the RGBA8 single-pass render");
-    for (ForwardMode m : {ForwardMode::single, ForwardMode::multi})
-        for (bool f : {true, false})
-            if (!f || float_forward) runs.push_back(forward(cfg_, caps_, shaders_, v, m, f));
-    SkipOptions all;
-    for (DepthPath d : {DepthPath::texture, DepthPath::packed})
-        for (bool sc : {false, true}) add_deferred(d, DepthEncoding::corrected, sc, all, {}, false);
-    // Each skip turned off alone, on the default configuration (depth texture, scissor on).
-    for (int k = 0; k < 4; ++k) {
-        SkipOptions s = all;
-        bool* flag[4] = {&s.material_variants, &s.empty_lights, &s.light_depth_test, &s.light_sphere_test};
-        const char* name[4] = {"material_variants", "empty_lights", "light_depth_test", "light_sphere_test"};
-        *flag[k] = false;
-        add_deferred(DepthPath::texture, DepthEncoding::corrected, true, s, {name[k]}, false);
-    }
-    for (DepthEncoding e : {DepthEncoding::literal, DepthEncoding::linear, DepthEncoding::log})
-        add_deferred(DepthPath::packed, e, true, all, {}, false);
-    // Each light geometry on the default configuration (issue 12); quad's is the row above.
-    for (LightGeometry g : cfg_.geometries)
-        if (g != LightGeometry::quad) add_deferred(DepthPath::texture, DepthEncoding::corrected, true, all, {}, false, g);
-    // The peers' G-buffer (issue 16): eye-space position stored in a float target, where the GL has one.
-    for (DepthPath d : {DepthPath::position16, DepthPath::position32}) {
-        ShaderOptions probe;
-        probe.depth = d;
-        const std::string refused = choose_paths(caps_, probe).refused;
-        if (refused.empty()) add_deferred(d, DepthEncoding::corrected, true, all, {}, false);
-        else if (index == 0) notes_.push_back(std::string(depth_path_name(d)) + " rows left out: " + refused);
-    }
-    // Higher-precision G-buffer targets where the GL has them.
-    if (caps_.texture_float && caps_.half_float) {
-        for (DepthPath d : {DepthPath::texture, DepthPath::packed})
-            add_deferred(d, DepthEncoding::corrected, true, all, {}, true);
-    } else if (index == 0) {
-        notes_.push_back("half-float G-buffer rows left out: the GL lacks ARB_texture_float or ARB_half_float_pixel");
-    }
-
-    // The floor (bench_floor.h): one FloorBench per G-buffer layout the deferred rows use.
-    std::map<GbufferLayout, std::unique_ptr<FloorBench>> floors;
-    std::map<GbufferLayout, std::vector<double>> fill_ms;
-    if (caps_.fbo) {
-        for (auto& run : runs)
-            if (run->ds && !floors.count(layout_of(*run->ds))) {
-                const GbufferLayout l = layout_of(*run->ds);
-                floors[l] = std::make_unique<FloorBench>(caps_, cfg_.w, cfg_.h, l, shaders_);
-                floors[l]->set_scene(v.scene);
-            }
-    } else if (index == 0) {
-        notes_.push_back("floor not measured: it renders into framebuffer objects (EXT_framebuffer_object)");
-    }
-
-    // Warm-up, then the timed frames interleaved across rows (one frame of each row per round), so
-    // a burst of load from elsewhere on the machine spreads over all rows instead of biasing one.
-    for (auto& [l, fb] : floors)
-        for (int i = 0; i < cfg_.warmup; ++i) fb->fill_frame(v.scene);
+        if (r.scene == name && r.lights == light_count) return;  // "large" replaces every base: once
+    const Setup st{cfg_, caps_, shaders_};
+    const bool first = index == 0;
+    const Variant v = make_variant(st, path, name, spec, sweep_index, say);
+    Runs runs = build_runs(st, v, first, notes_);
+    Floors floors = build_floors(st, v, runs, first, notes_);
+    time_frames(cfg_, v, runs, floors);
+    const std::map<GbufferLayout, FloorParts> parts = floor_parts(floors);
+    const IdealCount ideal = variant_ideal(cfg_, v, runs);
+    const Image* quad = quad_image(runs);
     for (auto& run : runs) {
-        double first = 0;
-        for (int i = 0; i < cfg_.warmup; ++i) {
-            double ms = run->frame(v.scene, cfg_.w, cfg_.h);
-            if (i == 0) first = ms;
-            if (ms > kSlowFrameMs) break;  // a slow frame is its own warm-up
-        }
-        run->row.frames = frames_for(first, cfg_.frames);
-    }
-    int rounds = 0;
-    for (auto& run : runs) rounds = std::max(rounds, run->row.frames);
-    // The timed frames do not count: the counting queries around every light draw are the
-    // measurement's cost, not the renderer's (on the H200 at 1024 lights most of the CPU's frame).
-    for (auto& run : runs)
-        if (run->ds) run->ds->set_counting(false);
-    for (int f = 0; f < rounds; ++f) {
-        for (auto& run : runs) {
-            if (f >= run->row.frames) continue;
-            run->ms.push_back(run->frame(v.scene, cfg_.w, cfg_.h));
-            if (f + 1 == run->row.frames) run->image = opaque(read_pixels(cfg_.w, cfg_.h));
-        }
-        if (f < cfg_.frames)  // (a) in the same rounds, as many frames as the fast rows
-            for (auto& [l, fb] : floors) fill_ms[l].push_back(fb->fill_frame(v.scene));
-    }
-    // One counted frame per deferred row after the timed ones: its counts go in the row.
-    for (auto& run : runs)
-        if (run->ds) {
-            run->ds->set_counting(true);
-            run->last = run->ds->render(v.scene, cfg_.w, cfg_.h);
-        }
-    std::map<GbufferLayout, FloorParts> parts;
-    for (auto& [l, fb] : floors) {
-        FloorParts p;
-        p.fill_ms = median(fill_ms[l]);
-        p.light_ns_per_fragment = fb->light_ns_per_fragment();
-        parts[l] = p;
-    }
-
-    // The ideal count from exact surface points, not from the light shader's reconstruction: the
-    // analytic trace's exact eye depth where the scene allows, otherwise the first depth-texture
-    // row's 24-bit depth codes decoded in double. A light with no colour needs no fragment.
-    const glm::dvec2 pscale = projection_scale(v.scene.camera, cfg_.w, cfg_.h);
-    std::optional<std::string> ideal_source;
-    if (v.trace) {
-        v.ideal = ideal_fragments(surface_from_eye_depth(v.trace->eye_depth, cfg_.w, cfg_.h, pscale),
-                                  eye_volumes(v.scene));
-        ideal_source = "analytic";
-    } else {
-        for (auto& run : runs) {
-            if (!run->ds || run->ds->options().depth != DepthPath::texture) continue;
-            const SurfacePoints pts =
-                surface_from_depth_codes(run->ds->read_gbuffer_depth_codes(), cfg_.w, cfg_.h,
-                                         v.scene.camera.near_plane, v.scene.camera.far_plane, pscale);
-            v.ideal = ideal_fragments(pts, eye_volumes(v.scene));
-            ideal_source = "depth24";
-            break;
-        }
-    }
-
-    const Image& ref = runs[0]->image;
-    const Image* quad_image = nullptr;  // the default configuration's image: every geometry against it
-    for (auto& run : runs)
-        if (run->ds && run->row.depth == std::string("texture") && run->row.scissor && run->row.skips_off.empty() &&
-            run->row.gbuffer == std::string("rgba8") && run->row.light_geometry == std::string("quad")) {
-            quad_image = &run->image;
-            break;
-        }
-    for (auto& run : runs) {
-        Row& r = run->row;
-        r.ms_median = median(run->ms);
-        r.ms_min = *std::min_element(run->ms.begin(), run->ms.end());
-        r.ms_max = *std::max_element(run->ms.begin(), run->ms.end());
-        r.cpu_ms = median(run->cpu_ms);
-        if (run->ds) {
-            r.light_fragments = run->last.counted_light_fragments();
-            r.light_invocations = run->last.light_invocations;
-            r.scissor_pixels = run->last.scissor_pixels;
-            r.lights_drawn = run->last.lights_drawn;
-            r.light_passes = run->last.light_passes;
-            r.depth_copy_ms = median(run->depth_copy_ms);
-            if (quad_image) r.err_quad = compare_images(run->image, *quad_image, 1.0 / 255.0);
-            r.ideal_fragments = v.ideal;
-            r.ideal_source = ideal_source;
-            auto p = parts.find(layout_of(*run->ds));
-            if (p != parts.end()) {
-                FloorParts fp = p->second;
-                fp.post_ms = post_floor_ms(run->ds->options().post, cfg_.w, cfg_.h, fp.light_ns_per_fragment);
-                r.floor_fill_ms = fp.fill_ms;
-                r.floor_light_ns = fp.light_ns_per_fragment;
-                r.floor_post_ms = fp.post_ms;
-                r.floor_ms = floor_ms(fp, v.ideal);
-                r.floor_ratio = floor_ratio(r.ms_median, r.floor_ms);
-            }
-        } else {
-            r.passes = run->last_forward.passes;
-        }
-        r.err = compare_images(run->image, ref, 1.0 / 255.0);
-        if (v.trace) r.err_analytic = compare_images_masked(run->image, v.trace->image, v.interior, 1.0 / 255.0);
+        finish_row(cfg_, v, *run, ideal, parts, runs[0]->image, quad);
+        const Row& r = run->row;
         say(printf_line("bench [%d/%d] %s, %d lights: %-46s %9.2f ms (%d frames)", index + 1, total, r.scene.c_str(),
                         r.lights, config_text(r).c_str(), r.ms_median, r.frames));
         rows_.push_back(r);

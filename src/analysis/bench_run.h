@@ -3,9 +3,11 @@
 // warm-up), light-pass fragments (occlusion queries) and light-shader invocations (pipeline
 // statistics) against the ideal count, the frame against its floor (bench_floor.h), and the
 // image's error against the forward reference (and, for scenes with constant materials,
-// against the analytic one). bench_report.h turns the rows into tables, goals, JSON, a plot and a report;
-// src/app/bench_command.cpp only parses flags, runs this, and prints or writes what comes back.
+// against the analytic one). bench_goals.h judges the goals on the rows; bench_report.h turns them
+// into tables, JSON, a plot and a report; src/app/bench_command.cpp only parses flags, runs this,
+// and prints or writes what comes back.
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -19,7 +21,7 @@
 
 namespace dsr::bench {
 
-// What one sweep measures. Defaults: the full sweep; quick() the small one.
+// What one sweep measures. Defaults: the full sweep (`dsr bench --quick` sets the small one).
 struct Config {
     bool quick = false;
     int w = 512, h = 512;
@@ -37,15 +39,33 @@ struct Config {
                                              LightGeometry::tiles};
 };
 
+// Which renderer a row measured: the deferred one, or the forward one in one of its modes
+// (ForwardMode: Listing 3's single pass, Listing 4's pass per light).
+enum class Renderer { deferred, forward_single, forward_multi };
+// "deferred", "forward-single", "forward-multi": the JSON's `renderer` and the tables' names.
+const char* renderer_name(Renderer r);
+
+// The skips a row turned off, by their SkipOptions field names ("empty_lights", ...), in the
+// struct's order: JSON `skips_off`, and "no-NAME" in the configuration text.
+std::vector<std::string> skips_off(const SkipOptions& skip);
+
 // One measured configuration. Optional fields are JSON null where they do not apply.
 struct Row {
-    std::string scene, renderer;            // renderer: deferred | forward-single | forward-multi
-    std::optional<std::string> accum;       // forward rows: "float" (RGBA32F target) | "rgba8" (the main buffer)
-    std::optional<std::string> depth, encoding, gbuffer;  // gbuffer: rgba8 | half
-    std::optional<std::string> light_geometry;  // deferred rows, as run: quad | volume | stencil | tiles
-    std::optional<int> tile_size, tile_lights;  // tiles rows, as run (--tile-size/--tile-lights auto resolved)
+    std::string scene;
+    Renderer renderer = Renderer::deferred;
+    // Forward rows: ForwardOptions::float_target as run. JSON `accum`: "float" (an RGBA32F
+    // target) | "rgba8" (the main buffer); null where not recorded.
+    std::optional<bool> float_accum;
+    // Deferred rows, as run (JSON null on forward rows): the depth path, what the packed target
+    // holds (JSON `encoding`: packed rows only), the G-buffer's precision (JSON `gbuffer`: "half" |
+    // "rgba8"), the light geometry, and the tiles' settings (--tile-size/--tile-lights auto resolved).
+    DepthPath depth = DepthPath::texture;
+    DepthEncoding encoding = DepthEncoding::corrected;
+    bool gbuffer_half = false;
+    LightGeometry light_geometry = LightGeometry::quad;
+    std::optional<int> tile_size, tile_lights;
     bool scissor = false;
-    std::vector<std::string> skips_off;
+    SkipOptions skip;                       // every skip on unless the row turned one off
     int lights = 0, w = 0, h = 0, frames = 0;
     std::string lights_label;               // the --lights entry it came from: "own", "32", "1024-overlap", ...
     int sweep_index = 0;                    // place of its light count in --lights (plot marker size)
@@ -68,6 +88,11 @@ struct Row {
                                             // formats allocated (Paths::gbuffer_bytes_per_pixel); forward rows: 0
 };
 
+// The default configuration, on which the goals are judged and every light geometry's image is
+// compared: a deferred row with the depth texture, scissor on, every skip on and the RGBA8
+// G-buffer, whatever its light geometry.
+bool default_configuration(const Row& r);
+
 // The row's configuration as the tables print it: "forward-multi", "deferred texture sc",
 // "deferred packed/log sc half no-empty_lights", ...
 std::string config_text(const Row& r);
@@ -84,6 +109,18 @@ std::string machine_name();
 
 // A path's file name without folder and extension: a scene's name in the tables.
 std::string file_stem(const std::string& path);
+
+// A scene variant's ideal count (docs/benchmarks.md, "ideal") and where it came from: the one
+// count of ideal_fragments.h (ideal_count, by each light's volume) on exact surface points, not on
+// the light shader's reconstruction. The runner takes the analytic trace's exact eye depth where the
+// scene has one (source "analytic"), else the first depth-texture row's 24-bit depth codes decoded
+// in double ("depth24").
+struct IdealCount {
+    std::optional<long long> fragments;
+    std::optional<std::string> source;
+};
+IdealCount ideal_from_eye_depth(const Scene& scene, int w, int h, const std::vector<double>& eye_depth);
+IdealCount ideal_from_depth_codes(const Scene& scene, int w, int h, const std::vector<uint32_t>& codes);
 
 // Measures the rows of each scene variant on the current GL context, which must be at least
 // cfg.w x cfg.h (the caller creates it with create_context).

@@ -19,7 +19,7 @@ namespace dsr {
 // without meshes or n < 0.
 Scene with_generated_lights(const Scene& scene, int n);
 
-// `--lights` items beyond plain counts (issue 12):
+// `--lights` items beyond plain counts (docs/light_geometry.md measures the geometries on them):
 //   spread   N         with_generated_lights (above)
 //   overlap  N-overlap with_overlapping_lights: every lit pixel inside at least 8 lights
 //   large    N-large   large_lights_scene: LearnOpenGL's demo, the base scene replaced

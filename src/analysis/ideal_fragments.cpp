@@ -1,10 +1,10 @@
+// The ideal fragment count (ideal_fragments.h): surface points from each source, and the one
+// tiled count over the lights' eye-space volumes that every form calls.
 #include "analysis/ideal_fragments.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "deferred/reconstruct.h"
 
@@ -29,65 +29,29 @@ Image positions_from_depth(const Image& depth, glm::vec2 planes, float p00, floa
 
 namespace {
 
-// The one inside test both counts share, so they agree bit for bit.
-inline bool inside(const float* p, const glm::vec4& l) {
-    const float dx = p[0] - l.x, dy = p[1] - l.y, dz = p[2] - l.z;
-    return dx * dx + dy * dy + dz * dz < l.w * l.w;
+std::vector<EyeVolume> spheres(const std::vector<glm::dvec4>& lights) {
+    std::vector<EyeVolume> out;
+    for (const glm::dvec4& l : lights) {
+        EyeVolume v;
+        v.pos = glm::dvec3(l);
+        v.radius = l.w;
+        out.push_back(v);
+    }
+    return out;
 }
 
-struct Tile {
-    int x0, y0, x1, y1;
-    glm::vec3 lo, hi;  // box of the tile's surface positions; empty (lo > hi) when none
-};
+std::vector<glm::dvec4> to_double(const std::vector<glm::vec4>& lights) {
+    return std::vector<glm::dvec4>(lights.begin(), lights.end());
+}
 
 }  // namespace
 
 long long ideal_fragments(const Image& positions, const std::vector<glm::vec4>& lights) {
-    constexpr int kTile = 16;
-    std::vector<Tile> tiles;
-    for (int ty = 0; ty < positions.height; ty += kTile)
-        for (int tx = 0; tx < positions.width; tx += kTile) {
-            Tile t{tx, ty, std::min(tx + kTile, positions.width), std::min(ty + kTile, positions.height),
-                   glm::vec3(std::numeric_limits<float>::infinity()), glm::vec3(-std::numeric_limits<float>::infinity())};
-            for (int y = t.y0; y < t.y1; ++y)
-                for (int x = t.x0; x < t.x1; ++x) {
-                    const float* p = positions.at(x, y);
-                    if (!(p[3] > 0.5f)) continue;
-                    t.lo = glm::min(t.lo, glm::vec3(p[0], p[1], p[2]));
-                    t.hi = glm::max(t.hi, glm::vec3(p[0], p[1], p[2]));
-                }
-            if (t.lo.x <= t.hi.x) tiles.push_back(t);
-        }
-    long long n = 0;
-    for (const glm::vec4& l : lights) {
-        if (!(l.w > 0)) continue;
-        const glm::vec3 c(l);
-        for (const Tile& t : tiles) {
-            // Distance from the centre to the tile's box; a margin keeps float rounding of the
-            // box test from rejecting a pixel the exact per-pixel test below accepts.
-            const glm::vec3 d = glm::max(glm::max(t.lo - c, c - t.hi), glm::vec3(0.0f));
-            if (glm::dot(d, d) > l.w * l.w * 1.0001f + 1e-12f) continue;
-            for (int y = t.y0; y < t.y1; ++y)
-                for (int x = t.x0; x < t.x1; ++x) {
-                    const float* p = positions.at(x, y);
-                    n += p[3] > 0.5f && inside(p, l);
-                }
-        }
-    }
-    return n;
+    return ideal_fragments(surface_from_positions(positions), spheres(to_double(lights)));
 }
 
 long long ideal_fragments_brute(const Image& positions, const std::vector<glm::vec4>& lights) {
-    long long n = 0;
-    for (const glm::vec4& l : lights) {
-        if (!(l.w > 0)) continue;
-        for (int y = 0; y < positions.height; ++y)
-            for (int x = 0; x < positions.width; ++x) {
-                const float* p = positions.at(x, y);
-                n += p[3] > 0.5f && inside(p, l);
-            }
-    }
-    return n;
+    return ideal_fragments_brute(surface_from_positions(positions), spheres(to_double(lights)));
 }
 
 glm::dvec2 projection_scale(const Camera& camera, int width, int height) {
@@ -110,11 +74,6 @@ SurfacePoints empty_points(int w, int h) {
 glm::dvec3 point_at_depth(int x, int y, int w, int h, glm::dvec2 p, double depth) {
     const double xn = 2.0 * (x + 0.5) / w - 1.0, yn = 2.0 * (y + 0.5) / h - 1.0;
     return {xn * depth / p.x, yn * depth / p.y, -depth};
-}
-
-inline bool inside(const glm::dvec3& q, const glm::dvec4& l) {
-    const glm::dvec3 d = q - glm::dvec3(l);
-    return glm::dot(d, d) < l.w * l.w;
 }
 
 }  // namespace
@@ -149,14 +108,17 @@ SurfacePoints surface_from_depth_codes(const std::vector<uint32_t>& codes, int w
     return s;
 }
 
-std::vector<glm::dvec4> eye_lights(const Scene& scene) {
-    const Camera& c = scene.camera;
-    const glm::dmat4 view = glm::lookAt(glm::dvec3(c.pos), glm::dvec3(c.target), glm::dvec3(c.up));
-    std::vector<glm::dvec4> out;
-    for (const Light& l : scene.lights)
-        if (l.color != glm::vec3(0.0f))
-            out.emplace_back(glm::dvec3(view * glm::dvec4(glm::dvec3(l.pos), 1.0)), double(l.radius));
-    return out;
+SurfacePoints surface_from_positions(const Image& positions) {
+    SurfacePoints s = empty_points(positions.width, positions.height);
+    for (int y = 0; y < positions.height; ++y)
+        for (int x = 0; x < positions.width; ++x) {
+            const float* q = positions.at(x, y);
+            if (!(q[3] > 0.5f)) continue;
+            const size_t i = size_t(y) * positions.width + x;
+            s.p[i] = glm::dvec3(q[0], q[1], q[2]);
+            s.surface[i] = 1;
+        }
+    return s;
 }
 
 namespace {
@@ -188,39 +150,9 @@ std::vector<DTile> surface_tiles(const SurfacePoints& s) {
 
 }  // namespace
 
-long long ideal_fragments(const SurfacePoints& s, const std::vector<glm::dvec4>& lights) {
-    const std::vector<DTile> tiles = surface_tiles(s);
-    long long n = 0;
-    for (const glm::dvec4& l : lights) {
-        if (!(l.w > 0)) continue;
-        const glm::dvec3 c(l);
-        for (const DTile& t : tiles) {
-            const glm::dvec3 d = glm::max(glm::max(t.lo - c, c - t.hi), glm::dvec3(0.0));
-            if (glm::dot(d, d) > l.w * l.w) continue;  // exact in double: the box holds every point
-            for (int y = t.y0; y < t.y1; ++y)
-                for (int x = t.x0; x < t.x1; ++x) {
-                    const size_t i = size_t(y) * s.width + x;
-                    n += s.surface[i] && inside(s.p[i], l);
-                }
-        }
-    }
-    return n;
-}
-
-long long ideal_fragments_brute(const SurfacePoints& s, const std::vector<glm::dvec4>& lights) {
-    long long n = 0;
-    for (const glm::dvec4& l : lights) {
-        if (!(l.w > 0)) continue;
-        for (size_t i = 0; i < s.p.size(); ++i) n += s.surface[i] && inside(s.p[i], l);
-    }
-    return n;
-}
-
-std::vector<EyeVolume> eye_volumes(const Scene& scene) {
-    const Camera& c = scene.camera;
-    const glm::dmat4 view = glm::lookAt(glm::dvec3(c.pos), glm::dvec3(c.target), glm::dvec3(c.up));
+std::vector<EyeVolume> eye_volumes(const std::vector<Light>& lights, const glm::dmat4& view) {
     std::vector<EyeVolume> out;
-    for (const Light& l : scene.lights) {
+    for (const Light& l : lights) {
         if (l.color == glm::vec3(0.0f)) continue;
         const LightVolume w = light_volume(l);
         EyeVolume e;
@@ -234,8 +166,11 @@ std::vector<EyeVolume> eye_volumes(const Scene& scene) {
     return out;
 }
 
+std::vector<EyeVolume> eye_volumes(const Scene& scene) { return eye_volumes(scene.lights, scene.camera.view_d()); }
+
 bool inside(const EyeVolume& v, const glm::dvec3& p) {
     if (v.kind == LightVolume::Kind::full_screen) return true;
+    if (!(v.radius > 0)) return false;  // no volume: the tiled count skips it too
     const glm::dvec3 d = p - v.pos;
     const double d2 = glm::dot(d, d);
     if (!(d2 < v.radius * v.radius)) return false;
@@ -268,6 +203,31 @@ long long ideal_fragments_brute(const SurfacePoints& s, const std::vector<EyeVol
     for (const EyeVolume& l : lights)
         for (size_t i = 0; i < s.p.size(); ++i) n += s.surface[i] && inside(l, s.p[i]);
     return n;
+}
+
+long long ideal_count(const SurfacePoints& s, const std::vector<Light>& lights, const glm::dmat4& view) {
+    return ideal_fragments(s, eye_volumes(lights, view));
+}
+
+long long ideal_count_from_depth_codes(const std::vector<uint32_t>& codes, int width, int height,
+                                       const Camera& camera, const std::vector<Light>& lights) {
+    const SurfacePoints s = surface_from_depth_codes(codes, width, height, camera.near_plane, camera.far_plane,
+                                                     projection_scale(camera, width, height));
+    return ideal_count(s, lights, camera.view_d());
+}
+
+std::vector<glm::dvec4> eye_lights(const Scene& scene) {
+    std::vector<glm::dvec4> out;
+    for (const EyeVolume& v : eye_volumes(scene)) out.emplace_back(v.pos, v.radius);
+    return out;
+}
+
+long long ideal_fragments(const SurfacePoints& s, const std::vector<glm::dvec4>& lights) {
+    return ideal_fragments(s, spheres(lights));
+}
+
+long long ideal_fragments_brute(const SurfacePoints& s, const std::vector<glm::dvec4>& lights) {
+    return ideal_fragments_brute(s, spheres(lights));
 }
 
 }  // namespace dsr

@@ -1,7 +1,8 @@
 // The ideal light-pass fragment count of a frame: for each light, the pixels whose surface
-// point lies inside the light's sphere, summed over lights. What a light pass with a perfect
+// point lies inside the light's volume, summed over lights. What a light pass with a perfect
 // per-pixel test would shade; `dsr bench` sets FrameStats::light_fragments (occlusion queries)
-// against it. Pure math, no GL.
+// against it (docs/benchmarks.md, "ideal"). One count (ideal_count) for every caller. Pure math,
+// no GL.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -23,11 +24,10 @@ Image positions_from_depth(const Image& depth, glm::vec2 planes, float p00, floa
 
 // lights: eye-space centre in xyz, radius in w. A pixel counts for a light when its position
 // (alpha > 0.5) lies strictly inside the sphere: Equation 2's attenuation is zero on and beyond
-// it. Lights of radius <= 0 count nothing. Uses 16x16-pixel tiles with eye-space bounding boxes
-// to skip most (light, pixel) pairs; the result equals the brute-force count exactly.
+// it. Lights of radius <= 0 count nothing. The positions and spheres are taken to double and
+// counted by the one count below (ideal_fragments over EyeVolume), so this float form and the
+// double one can never disagree on a pixel; the brute-force form is the definition, for tests.
 long long ideal_fragments(const Image& positions, const std::vector<glm::vec4>& lights);
-
-// The same count by testing every (light, pixel) pair: the definition, for tests.
 long long ideal_fragments_brute(const Image& positions, const std::vector<glm::vec4>& lights);
 
 // The bench's ideal count is made from exact surface points in double, not from the light
@@ -55,29 +55,47 @@ SurfacePoints surface_from_eye_depth(const std::vector<double>& eye_depth, int w
 SurfacePoints surface_from_depth_codes(const std::vector<uint32_t>& codes, int width, int height, double near_plane,
                                        double far_plane, glm::dvec2 p);
 
-// Lights in eye space, in double: the camera's view (glm::lookAt in double) applied to each light
-// with non-zero colour (a light with no colour needs no fragment); w = radius.
-std::vector<glm::dvec4> eye_lights(const Scene& scene);
+// From positions as the light shader reconstructs them (DeferredShader::reconstructed_positions:
+// eye-space xyz, alpha > 0.5 where there is a surface), taken to double as they are.
+SurfacePoints surface_from_positions(const Image& positions);
 
-// The count on exact points: a pixel counts for a light when its point lies strictly inside the
-// sphere (|p - c|^2 < r^2, in double). Tiled like the float count; equal to ideal_fragments_brute's
-// definition applied in double.
-long long ideal_fragments(const SurfacePoints& s, const std::vector<glm::dvec4>& lights);
-long long ideal_fragments_brute(const SurfacePoints& s, const std::vector<glm::dvec4>& lights);
-
-// Any light type (issue 12): its volume in eye space, in double (deferred/light_volume.h's kinds).
-// A pixel counts when its point lies strictly inside: the sphere as above; the cone when also
-// strictly within the half-angle of the axis (the spot adds nothing on or outside it); full screen
-// (directional) at every surface pixel.
+// A light's volume in eye space, in double (deferred/light_volume.h's kinds). A pixel counts when
+// its point lies strictly inside: the sphere (|p - c|^2 < r^2); the cone when also strictly within
+// the half-angle of the axis (the spot adds nothing on or outside it); full screen (directional)
+// at every surface pixel.
 struct EyeVolume {
     LightVolume::Kind kind = LightVolume::Kind::sphere;
     glm::dvec3 pos{0}, axis{0, 0, -1};  // eye space; axis unit
     double radius = 0, cos_angle = 0;
 };
-// The camera's view (glm::lookAt in double) applied to each light with non-zero colour.
+// The volumes of the lights a light pass draws (non-zero colour: a light with no colour needs no
+// fragment), moved to eye space by `view` (the camera's view in double, Camera::view_d).
+std::vector<EyeVolume> eye_volumes(const std::vector<Light>& lights, const glm::dmat4& view);
+// The scene's lights through its camera.
 std::vector<EyeVolume> eye_volumes(const Scene& scene);
 bool inside(const EyeVolume& v, const glm::dvec3& p);
+
+// The count, tiled: 16x16-pixel tiles with eye-space bounding boxes skip most (light, pixel) pairs
+// (a tile is skipped only when its box misses the ball about the centre or apex, which holds the
+// whole volume), so it equals the brute-force count exactly. Every other count here calls it.
 long long ideal_fragments(const SurfacePoints& s, const std::vector<EyeVolume>& lights);
 long long ideal_fragments_brute(const SurfacePoints& s, const std::vector<EyeVolume>& lights);
+
+// THE ideal count of a frame, the one `dsr bench`, `dsr render --stats` (frame_ideal.h) and the
+// viewer's panel report: the pixel-light pairs whose surface point lies strictly inside the volume
+// of a light with non-zero colour (sphere, cone or full screen, by the light's type). `lights` in
+// world space as the frame drew them; `view` the camera's view in double (Camera::view_d).
+long long ideal_count(const SurfacePoints& s, const std::vector<Light>& lights, const glm::dmat4& view);
+// The same on a depth texture's 24-bit codes of a w x h frame seen by `camera` (the surface points
+// of surface_from_depth_codes with the camera's planes and projection_scale).
+long long ideal_count_from_depth_codes(const std::vector<uint32_t>& codes, int width, int height,
+                                       const Camera& camera, const std::vector<Light>& lights);
+
+// Spheres only, in eye space (w = radius): eye_volumes' centres and radii, whatever the kind.
+std::vector<glm::dvec4> eye_lights(const Scene& scene);
+
+// Spheres in eye space (w = radius) counted as EyeVolume spheres.
+long long ideal_fragments(const SurfacePoints& s, const std::vector<glm::dvec4>& lights);
+long long ideal_fragments_brute(const SurfacePoints& s, const std::vector<glm::dvec4>& lights);
 
 }  // namespace dsr

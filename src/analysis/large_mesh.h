@@ -1,4 +1,4 @@
-// A large OBJ for the bench and the tests (issue 11: "a 1-million-triangle OBJ loads and renders
+// A large OBJ for the bench and the tests ("a 1-million-triangle OBJ loads and renders
 // at 512x512"): an n x n grid of quads, gently displaced, with uvs and no normals (the loader
 // computes them), written as text the way exporters write OBJ, and a scene that shows it.
 #pragma once

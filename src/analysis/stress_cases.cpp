@@ -282,7 +282,7 @@ std::vector<StressCase> stress_cases(bool quick) {
             if (quick && o != 0 && o != 1e6) continue;
             out.push_back(make_case("coords", o == 0 ? "0" : sci(o), p, room(1, float(o) * glm::vec3(1, 0.25f, -1))));
         }
-        if (p == special.front())  // the position paths at the origin and 1e6 from it (issue 16)
+        if (p == special.front())  // the position paths at the origin and 1e6 from it (the other documents' G-buffer)
             for (const char* pos : {"position16", "position32"})
                 for (double o : {0.0, 1e6})
                     out.push_back(make_case("coords", o == 0 ? "0" : sci(o), pos,

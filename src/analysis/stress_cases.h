@@ -1,4 +1,4 @@
-// The numerical stress sweep's cases (issue 6, `dsr stress`): scenes built in code, with
+// The numerical stress sweep's cases (`dsr stress`, docs/accuracy.md): scenes built in code, with
 // constant materials so each has an analytic reference, each rendered on one depth path.
 //
 //   ratio/<far/near>/<path>   64 camera-facing tilted tiles whose eye depths run log-spaced from

@@ -1,16 +1,16 @@
+// The entry-point table (entry_points.h), filled through the address function it is handed.
 #include "gl/entry_points.h"
 
 #include "dsr_error.h"
-#include "platform/context.h"
 
 namespace dsr {
 
 GLEntryPoints gl_entry;
 
-void load_gl_entry_points(const GLContext& ctx) {
+void load_gl_entry_points(const GLProcAddress& proc_address, const std::string& source) {
     GLEntryPoints t;  // filled aside, so a failure leaves gl_entry as it was
     std::string missing;
-#define DSR_GL_LOAD(type, name) t.name = reinterpret_cast<type>(ctx.proc_address("gl" #name));
+#define DSR_GL_LOAD(type, name) t.name = reinterpret_cast<type>(proc_address("gl" #name));
 #define DSR_GL_LOAD_REQUIRED(type, name) \
     DSR_GL_LOAD(type, name)              \
     if (!t.name) missing += std::string(missing.empty() ? "" : ", ") + "gl" #name;
@@ -19,7 +19,7 @@ void load_gl_entry_points(const GLContext& ctx) {
 #undef DSR_GL_LOAD_REQUIRED
 #undef DSR_GL_LOAD
     if (!missing.empty())
-        throw Error("GL context '" + ctx.backend() + "' lacks required entry point" +
+        throw Error("GL context '" + source + "' lacks required entry point" +
                     (missing.find(',') == std::string::npos ? " " : "s ") + missing);
     gl_entry = t;
 }

@@ -1,13 +1,15 @@
-// dsr's table of GL entry points beyond GL 1.1, loaded once per context through
-// GLContext::proc_address. Only libOSMesa exports every GL function; a system libGL exports
-// GL 1.1 (and a few 1.2/1.3 ones) and an EGL driver nothing beyond what its loader gives, so
-// everything newer is fetched at run time. gl/gl.h maps each glName to gl_entry.Name, so call
-// sites stay plain GL. Adding a call to a function not listed here fails to compile (glext.h
-// declares no prototypes without GL_GLEXT_PROTOTYPES): add it to a list below and to gl/gl.h.
+// dsr's table of GL entry points beyond GL 1.1, loaded once per context through the address
+// function whoever made the context hands over (the context backends hand their proc_address).
+// Only libOSMesa exports every GL function; a system libGL exports GL 1.1 (and a few 1.2/1.3
+// ones) and an EGL driver nothing beyond what its loader gives, so everything newer is fetched at
+// run time. gl/gl.h maps each glName to gl_entry.Name, so call sites stay plain GL. Adding a call
+// to a function not listed here fails to compile (glext.h declares no prototypes without
+// GL_GLEXT_PROTOTYPES): add it to a list below and to gl/gl.h.
 #pragma once
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,8 +20,9 @@ typedef void(APIENTRYP DSR_PFNGLMULTITEXCOORD2FPROC)(GLenum target, GLfloat s, G
 typedef void(APIENTRYP DSR_PFNGLMULTITEXCOORD3FPROC)(GLenum target, GLfloat s, GLfloat t, GLfloat r);
 
 // X(type, Name): the function is "gl" #Name. A missing required one makes
-// load_gl_entry_points throw; every one here is GL 2.1 core or an extension the DESIGN's
-// conventions name (ARB_draw_buffers, EXT_framebuffer_object).
+// load_gl_entry_points throw; every one here is GL 2.1 core or an extension the tutorial's
+// passes stand on (ARB_draw_buffers for the G-buffer's targets, EXT_framebuffer_object for §3.2's
+// P-buffers).
 #define DSR_GL_REQUIRED_ENTRY_POINTS(X)                              \
     /* GL 1.3 multitexture */                                        \
     X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                         \
@@ -91,8 +94,6 @@ typedef void(APIENTRYP DSR_PFNGLMULTITEXCOORD3FPROC)(GLenum target, GLfloat s, G
 
 namespace dsr {
 
-class GLContext;
-
 struct GLEntryPoints {
 #define DSR_GL_ENTRY_MEMBER(type, name) type name = nullptr;
     DSR_GL_REQUIRED_ENTRY_POINTS(DSR_GL_ENTRY_MEMBER)
@@ -104,10 +105,13 @@ struct GLEntryPoints {
 // (OSMesa, GLX, EGL) an entry point's address is the same for every context.
 extern GLEntryPoints gl_entry;
 
-// Fills gl_entry through ctx.proc_address; ctx must be current (create_context calls this).
-// When a required entry point is missing, throws one dsr::Error naming every missing one and
-// leaves gl_entry as it was.
-void load_gl_entry_points(const GLContext& ctx);
+// Address of a GL entry point by its name ("glUseProgram"); null when absent.
+using GLProcAddress = std::function<void*(const char* name)>;
+
+// Fills gl_entry through proc_address, which answers for the current context; `source` names
+// that context in the error (its backend, "osmesa"). When a required entry point is missing,
+// throws one dsr::Error naming every missing one and leaves gl_entry as it was.
+void load_gl_entry_points(const GLProcAddress& proc_address, const std::string& source);
 
 // Every entry in the table, for tests and `dsr info`: its GL name, whether it is required and
 // whether gl_entry holds an address for it now.

@@ -37,6 +37,11 @@ struct ContextDesc {
 // backend is unknown or not built into this executable, or when no context can be had.
 std::unique_ptr<GLContext> create_context(const ContextDesc& desc);
 
+// Loads dsr's GL entry-point table (src/gl/entry_points.h) through ctx.proc_address, for the
+// context that is current (create_context calls it; so does whoever makes a context of its own).
+// gl/ takes only the address function, so it never includes this layer.
+void load_gl_entry_points(const GLContext& ctx);
+
 // The backends linked into this executable ("osmesa", ...), for help and error messages.
 std::vector<std::string> context_backends();
 

@@ -1,7 +1,6 @@
 // create_context for the viewer (dsr_view): the GLFW window only. The headless executables
 // link headless_backends.cpp instead; never both (one links libOSMesa, this one libGL).
 #include "dsr_error.h"
-#include "gl/entry_points.h"
 #include "gl/state.h"
 #include "platform/glfw_context.h"
 

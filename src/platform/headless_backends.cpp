@@ -3,7 +3,6 @@
 #include <cstdlib>
 
 #include "dsr_error.h"
-#include "gl/entry_points.h"
 #include "gl/state.h"
 #include "platform/context.h"
 

@@ -225,17 +225,12 @@ bool Viewer::frame(const std::string* shot) {
         screenshot(pending_shot_, w, h);
         pending_shot_.clear();
     }
-    // The ideal count (the bench's, from the depth texture's codes in double), once a second
-    // while the panel shows it.
+    // The ideal count (the bench's and `render --stats`' one count, from the depth texture's
+    // codes in double), once a second while the panel shows it.
     if (st_.panel && ds_->paths().depth_path == DepthPath::texture && now - ideal_time_ > 1.0) {
         ideal_time_ = now;
-        const SurfacePoints sp = surface_from_depth_codes(ds_->read_gbuffer_depth_codes(), w, h, camera_.near_plane,
-                                                          camera_.far_plane, projection_scale(camera_, w, h));
-        std::vector<glm::dvec4> lights;
-        for (const Light& l : frame_scene_.lights)  // the lights the pass can draw
-            if (l.color.r > 0 || l.color.g > 0 || l.color.b > 0)
-                lights.push_back(glm::dvec4(glm::dvec3(ds_->view_matrix() * glm::vec4(l.pos, 1)), l.radius));
-        st_.ideal = ideal_fragments(sp, lights);
+        st_.ideal = ideal_count_from_depth_codes(ds_->read_gbuffer_depth_codes(), w, h, frame_scene_.camera,
+                                                 frame_scene_.lights);
     } else if (ds_->paths().depth_path != DepthPath::texture) {
         st_.ideal.reset();
     }
