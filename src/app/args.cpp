@@ -11,6 +11,8 @@ void Args::fail(const std::string& what) const { throw Error("dsr " + cmd_ + ": 
 
 std::string Args::value(const std::string& flag) {
     if (done()) fail(flag + ": expected a value, got nothing");
+    // An empty value never means "off": `--stats ''` from an unset shell variable is a mistake.
+    if (peek().empty()) fail(flag + ": expected a value, got ''");
     return next();
 }
 

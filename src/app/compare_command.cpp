@@ -23,7 +23,7 @@ int cmd_compare(const std::vector<std::string>& argv) {
         else files.push_back(a);
     }
     if (files.size() != 2) args.fail("expected two image files, got " + std::to_string(files.size()));
-    const Image a = load_image(files[0]), b = load_image(files[1]);
+    const Image a = load_image(files[0]), b = load_image(files[1]);  // regular files only (scene/image.h)
     if (a.width != b.width || a.height != b.height)
         args.fail("sizes differ: " + files[0] + " is " + std::to_string(a.width) + "x" + std::to_string(a.height) +
                   ", " + files[1] + " is " + std::to_string(b.width) + "x" + std::to_string(b.height));

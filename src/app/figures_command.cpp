@@ -1,13 +1,13 @@
 // `dsr figures`: the tutorial's raster figures (4, 6, 8, 9, 10, 11) from the default scene,
 // each a plain PNG; docs/figures.md sets them beside the captions.
-#include <sys/stat.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <functional>
 
 #include "app/args.h"
 #include "app/commands.h"
+#include "app/files.h"
+#include "app/stage.h"
 #include "deferred/deferred_shader.h"
 #include "gl/caps.h"
 #include "gl/readback.h"
@@ -58,15 +58,15 @@ int cmd_figures(const std::vector<std::string>& argv) {
     const bool default_scene = scene_path.empty();
     if (default_scene) scene_path = resource_dir("data") + "/default.scene";
     Scene scene = load_scene(scene_path);
-    mkdir(dir.c_str(), 0755);
+    // Every figure to a temporary file, renamed together at the end (scene/output_set.h).
+    OutputSet outputs("dsr figures");
+    add_scene_inputs(outputs, scene.inputs);
+    outputs.make_dir("-o", dir);
+    const Stage stage("rendering the figures of " + scene_path);
     auto ctx = create_context(ContextDesc{context, n, n});
     Caps caps = probe_caps();
     const std::string shaders = resource_dir("glsl120");
-    std::vector<std::string> written;
-    auto save = [&](const std::string& name, const Image& img) {
-        write_image(dir + "/" + name, opaque(img));
-        written.push_back(dir + "/" + name);
-    };
+    auto save = [&](const std::string& name, const Image& img) { outputs.put_image("-o", dir + "/" + name, opaque(img)); };
     // One shader per configuration; `then` reads what it needs after one frame.
     auto frame = [&](ShaderOptions o, const std::function<void(DeferredShader&)>& then) {
         DeferredShader ds(caps, n, n, o, shaders);
@@ -137,6 +137,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
     // makes glow; only with the default scene (its own scene file is fixed).
     if (default_scene) {
         const Scene ts = load_scene(resource_dir("data") + "/transparency.scene");
+        add_scene_inputs(outputs, ts.inputs);
         ShaderOptions o;
         o.post.bloom = o.post.aa = true;  // the scene's `post bloom aa`
         o.show_lights = true;
@@ -156,6 +157,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
             std::fprintf(stderr, "figures: windmill figure skipped: %s is absent\n", obj.c_str());
         } else {
             const Scene wm = load_scene(ws);
+            add_scene_inputs(outputs, wm.inputs);
             ShaderOptions o;
             o.post.aa = true;
             DeferredShader ds(caps, n, n, o, shaders);
@@ -166,7 +168,8 @@ int cmd_figures(const std::vector<std::string>& argv) {
             save("windmill_specular.png", view(ds, View::specular));
         }
     }
-    for (auto& w : written) std::printf("wrote %s\n", w.c_str());
+    outputs.commit();
+    for (auto& w : outputs.written()) std::printf("wrote %s\n", w.c_str());
     return 0;
 }
 

@@ -1,9 +1,9 @@
 #include <cstdio>
-#include <sys/stat.h>
 
 #include "app/args.h"
 #include "app/commands.h"
 #include "scene/image.h"
+#include "scene/output_set.h"
 #include "scene/procedural_textures.h"
 
 namespace dsr {
@@ -13,11 +13,11 @@ int cmd_gen_textures(const std::vector<std::string>& argv) {
     if (args.done()) args.fail("expected an output folder, got nothing");
     std::string dir = args.next();
     if (!args.done()) args.fail("expected one output folder, got also '" + args.peek() + "'");
-    mkdir(dir.c_str(), 0755);
-    for (const auto& [name, img] : default_textures()) {
-        write_image(dir + "/" + name, img);
-        std::printf("wrote %s/%s\n", dir.c_str(), name.c_str());
-    }
+    OutputSet outputs("dsr gen-textures");  // all or none (scene/output_set.h)
+    outputs.make_dir("DIR", dir);
+    for (const auto& [name, img] : default_textures()) outputs.put_image("DIR", dir + "/" + name, img);
+    outputs.commit();
+    for (const std::string& w : outputs.written()) std::printf("wrote %s\n", w.c_str());
     return 0;
 }
 
