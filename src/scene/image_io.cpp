@@ -40,6 +40,17 @@ bool is_damage(const std::string& said) {
     return false;
 }
 
+// A PNG ends with its IEND chunk: length 0, "IEND", CRC AE 42 60 82.
+bool ends_with_png_iend(const std::string& path) {
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) return false;
+    unsigned char tail[12] = {0};
+    const bool ok = std::fseek(f, -12, SEEK_END) == 0 && std::fread(tail, 1, 12, f) == 12;
+    std::fclose(f);
+    static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82};
+    return ok && std::memcmp(tail, iend, 12) == 0;
+}
+
 }  // namespace
 
 Image load_image(const std::string& path, size_t max_texels) {
@@ -92,6 +103,8 @@ Image load_image(const std::string& path, size_t max_texels) {
     if (!stray.empty()) fail(stray);
     const std::string said = chatter.text();
     if (is_damage(said)) fail(said);
+    // OpenImageIO stops reading a PNG after its pixels: a file cut in its last chunk would pass.
+    if (std::strcmp(in->format_name(), "png") == 0 && !ends_with_png_iend(path)) fail("cut short: no IEND chunk at its end");
 
     Image img;
     img.width = w;

@@ -187,6 +187,7 @@ void OutputSet::commit() {
         if (std::rename(o.temp.c_str(), o.path.c_str()) != 0) {
             const int e = errno;
             for (const std::string& r : renamed) ::unlink(r.c_str());  // all or none
+            discard();
             fail(label(o.flag) + "cannot write " + o.path + ": " + std::strerror(e));
         }
         o.temp.clear();
