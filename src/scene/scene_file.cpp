@@ -177,33 +177,47 @@ private:
 
     // Triangles whose edges are very long against the camera's distance to them lose their
     // edges and shading in the rasteriser's float clipping and interpolation (a 1e6 plane seen
-    // from 1 unit above is up to 178 LSB off on llvmpipe, 1e5 within 1 LSB): legal, so a warning
-    // per line, from the scene's camera.
+    // from 1 unit above is up to 178 LSB off on llvmpipe, 1e5 within 1 LSB): legal, so one
+    // warning, naming the first line that has such triangles, from the scene's camera.
     void precision_warnings() {
         const glm::dvec3 eye(scene_.camera.pos);
         const double near_plane = scene_.camera.near_plane;
+        struct Extent {
+            double edge = -1;  // longest edge in object space; -1: not measured yet
+            glm::dvec3 lo{0}, hi{0};
+        };
+        std::vector<Extent> extents(scene_.meshes.size());  // per mesh, shared by its instances
         for (const auto& [line, object] : object_lines_) {
             const Object& o = scene_.objects[object];
-            const Mesh& mesh = scene_.meshes[o.mesh];
-            double edge = 0;
+            Extent& x = extents[o.mesh];
+            if (x.edge < 0) {
+                const Mesh& mesh = scene_.meshes[o.mesh];
+                x.edge = 0;
+                for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+                    for (size_t k = 0; k < 3; ++k) {
+                        const glm::dvec3 a(mesh.vertices[mesh.indices[t + k]].pos);
+                        const glm::dvec3 b(mesh.vertices[mesh.indices[t + (k + 1) % 3]].pos);
+                        x.edge = std::max(x.edge, glm::length(b - a));
+                        x.lo = t + k == 0 ? a : glm::min(x.lo, a);
+                        x.hi = t + k == 0 ? a : glm::max(x.hi, a);
+                    }
+            }
+            // Rigid with a uniform scale (scene.h Object): lengths scale by a column's length.
+            const double edge = x.edge * glm::length(glm::dvec3(o.model[0]));
             glm::dvec3 lo(0), hi(0);
-            bool first = true;
-            for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
-                for (int k = 0; k < 3; ++k) {
-                    const glm::dvec3 a(o.model * glm::dvec4(glm::dvec3(mesh.vertices[mesh.indices[t + size_t(k)]].pos), 1));
-                    const glm::dvec3 b(o.model * glm::dvec4(glm::dvec3(mesh.vertices[mesh.indices[t + size_t(k + 1) % 3]].pos), 1));
-                    edge = std::max(edge, glm::length(b - a));
-                    lo = first ? a : glm::min(lo, a);
-                    hi = first ? a : glm::max(hi, a);
-                    first = false;
-                }
+            for (int c = 0; c < 8; ++c) {
+                const glm::dvec3 corner((c & 1) ? x.hi.x : x.lo.x, (c & 2) ? x.hi.y : x.lo.y, (c & 4) ? x.hi.z : x.lo.z);
+                const glm::dvec3 w(o.model * glm::dvec4(corner, 1.0));
+                lo = c == 0 ? w : glm::min(lo, w);
+                hi = c == 0 ? w : glm::max(hi, w);
+            }
             const double distance = std::max(glm::length(eye - glm::clamp(eye, lo, hi)), near_plane);
             if (edge > kMaxEdgeOverDistance * distance) {
                 scene_.warnings.push_back(path_ + ":" + std::to_string(line) + ": triangles " + fmt(float(edge)) +
                                           " long, " + fmt(float(edge / distance)) +
                                           " times the camera's distance to them: past 1e5 their edges and shading "
                                           "lose precision (docs/scene-format.md)");
-                return;  // one line is enough to say why an image looks wrong
+                return;
             }
         }
     }
