@@ -49,7 +49,7 @@ Image load_image(const std::string& path, size_t max_texels = kMaxImageTexels);
 
 // Encodes img into the file `file` (created or replaced), in the format `name`'s extension
 // picks (.png 8-bit, .exr half float, anything else the backend knows). Errors name `name`, the
-// user's path, and never `file`: "cannot write NAME: WHY". OutputSet (app/output_set.h) writes
+// user's path, and never `file`: "cannot write NAME: WHY". OutputSet (scene/output_set.h) writes
 // every output through it to a temporary file and renames them all at the end.
 void encode_image(const std::string& file, const std::string& name, const Image& img);
 

@@ -10,8 +10,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include <OpenImageIO/imageio.h>
 
 #include "dsr_error.h"

@@ -2,18 +2,14 @@
 #include "scene/obj_text.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 
 #include "scene/obj_loader.h"
 
 namespace dsr::obj {
 
-namespace fs = std::filesystem;
 using std::string;
 using std::string_view;
 

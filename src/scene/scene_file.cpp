@@ -5,13 +5,10 @@
 // projection, the culling planes, the depth codecs) ever meets a value it cannot represent; the
 // scene's triangles and texels are counted against their budgets before anything is allocated.
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
 #include <iomanip>
