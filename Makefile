@@ -36,7 +36,7 @@ APP_SRC  := $(filter-out src/app/viewer_%.cpp,$(sort $(wildcard src/app/*.cpp)))
 # all three executables, so `dsr view --help` and the tests' docs/cli.md check read the same tables.
 APP_TABLE_SRC := src/app/args.cpp src/app/command_line.cpp src/app/command_table.cpp src/app/help_text.cpp \
                  src/app/render_flags.cpp
-TEST_SRC := $(sort $(wildcard tests/*.cpp))
+TEST_SRC := $(sort $(wildcard tests/*.cpp tests/hostile/*.cpp))
 
 # The viewer (docs/viewer.md): its own executable, because it links the system libGL (through GLFW)
 # and the headless ones link libOSMesa. src/viewer/ files that use GLFW or Dear ImGui are named
@@ -118,8 +118,12 @@ ASAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-s
 # The OBJ loader: obj_loader.cpp and the internal files it is split into.
 OBJ_LOADER_SRC := src/scene/obj_loader.cpp src/scene/obj_text.cpp src/scene/obj_check.cpp src/scene/mtl_check.cpp \
                   src/scene/obj_geometry.cpp src/scene/height_map.cpp
+# The readers every user file goes through (user_file), image output (output_set) and the
+# decoders' stderr (stderr_capture), which the loaders need.
+USER_FILE_SRC := src/scene/user_file.cpp src/scene/output_set.cpp src/scene/stderr_capture.cpp
 ASAN_SRC := src/scene/light_law.cpp $(OBJ_LOADER_SRC) src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/framing.cpp src/scene/shapes.cpp \
-            src/scene/camera.cpp src/scene/image_io.cpp src/scene/image_extension.cpp tests/fuzz/tinyobj_impl.cpp tests/test_obj.cpp
+            src/scene/camera.cpp src/scene/image_io.cpp src/scene/image_extension.cpp $(USER_FILE_SRC) \
+            tests/fuzz/tinyobj_impl.cpp tests/test_obj.cpp
 ASAN_OBJ := $(ASAN_SRC:%.cpp=$(BUILD)/asan/obj/%.o)
 
 $(BUILD)/asan/obj/%.o: %.cpp
@@ -141,20 +145,26 @@ test-sanitizers: $(BUILD)/asan/dsr_obj_tests $(BUILD)/asan/dsr_lsan
 	  $(BUILD)/asan/dsr_lsan render data/mesh.scene --size 128x128 -o $(BUILD)/asan/out/mesh.png
 	@echo "test-sanitizers: loader tests clean under ASan + UBSan; mesh render leak-free under LeakSanitizer"
 
-# `make fuzz`: the scene-file and OBJ/MTL loaders under libFuzzer + ASan + UBSan (clang from
-# Debian), each for FUZZ_SECONDS from its seed corpus in tests/fuzz/<target>/ with the keyword
-# dictionary tests/fuzz/<target>.dict. New inputs go to $(BUILD)/fuzz/corpus/<target>/ (the seeds
-# in tests/ are never written), findings to $(BUILD)/fuzz/<target>-crash-* (make fails); each
-# finding becomes a case in tests/test_obj.cpp.
+# `make fuzz`: the scene-file and OBJ/MTL loaders, the viewer's script parser and the command
+# line's flag parsing under libFuzzer + ASan + UBSan (clang from Debian), each for FUZZ_SECONDS
+# from its seed corpus in tests/fuzz/<target>/ with the keyword dictionary
+# tests/fuzz/<target>.dict. New inputs go to $(BUILD)/fuzz/corpus/<target>/ (the seeds in tests/
+# are never written), findings to $(BUILD)/fuzz/<target>-crash-* (make fails); each finding
+# becomes a case in tests/test_obj.cpp, tests/test_scene_file.cpp or tests/hostile/.
 FUZZ_SECONDS ?= 60
 FUZZ_CXX := clang++
 FUZZ_PACKAGES := clang libclang-rt-14-dev
 FUZZ_FLAGS := -std=c++17 -O1 -g -fno-omit-frame-pointer -Isrc -DDSR_SOURCE_DIR=\"$(CURDIR)\" \
               -fsanitize=address,undefined -fno-sanitize-recover=undefined
+# The script and command-line targets add the option table (and the names it uses) and the
+# command line's value helpers.
 FUZZ_LIB_SRC := src/scene/light_law.cpp $(OBJ_LOADER_SRC) src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/framing.cpp src/scene/shapes.cpp \
-                src/scene/camera.cpp src/scene/image_io.cpp src/scene/image_extension.cpp tests/fuzz/tinyobj_impl.cpp
+                src/scene/camera.cpp src/scene/image_io.cpp src/scene/image_extension.cpp $(USER_FILE_SRC) \
+                tests/fuzz/tinyobj_impl.cpp \
+                src/viewer/script.cpp src/deferred/option_table.cpp src/deferred/paths.cpp src/deferred/depth_codec.cpp \
+                src/deferred/view.cpp src/app/args.cpp src/app/render_flags.cpp
 FUZZ_LIB_OBJ := $(FUZZ_LIB_SRC:%.cpp=$(BUILD)/fuzz/obj/%.o)
-FUZZ_TARGETS := obj scene_file
+FUZZ_TARGETS := obj scene_file script cli
 .SECONDARY: $(FUZZ_LIB_OBJ)  # kept between runs (make would delete them as intermediates)
 
 $(BUILD)/fuzz/obj/%.o: %.cpp

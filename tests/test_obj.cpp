@@ -363,7 +363,7 @@ TEST_F(ObjFiles, GreyBumpIsConvertedColouredNormIsKept) {
 TEST_F(ObjFiles, MissingFile) {
     const std::string e = obj_error(path("nope.obj"));
     EXPECT_HAS(e, path("nope.obj"));
-    EXPECT_HAS(e, "no such file");
+    EXPECT_HAS(e, "No such file or directory");
 }
 
 TEST_F(ObjFiles, DirectoryWhereTheObjShouldBe) {
@@ -376,7 +376,7 @@ TEST_F(ObjFiles, DirectoryWhereTheObjShouldBe) {
 TEST_F(ObjFiles, MissingMtl) {
     const std::string e = bad_obj(std::string(kQuad) + "mtllib gone.mtl\nf 1 2 3\n");
     EXPECT_HAS(e, "bad.obj:9: expected a readable MTL file for mtllib, got 'gone.mtl'");
-    EXPECT_HAS(e, "no such file");
+    EXPECT_HAS(e, "No such file or directory");
 }
 
 TEST_F(ObjFiles, DirectoryWhereTheMtlShouldBe) {
@@ -595,7 +595,10 @@ TEST_F(ObjFiles, MeshDirectiveErrors) {
     EXPECT_HAS(scene_error("mesh ok.obj scale -1"), "s.scene:2: expected mesh scale > 0, got '-1'");
     EXPECT_HAS(scene_error("mesh ok.obj spin 3"), "s.scene:2: expected one of scale, at, rotate_y, material, got 'spin'");
     EXPECT_HAS(scene_error("mesh ok.obj material nope"), "s.scene:2: expected a material defined on an earlier line");
-    EXPECT_HAS(scene_error("mesh ok.obj scale 3e38 at 3e38 0 0"), "s.scene:2: expected scale and at that keep 'ok.obj' within float range");
+    // Scale and at are bounded like OBJ coordinates, and so is every world-space vertex.
+    EXPECT_HAS(scene_error("mesh ok.obj scale 3e38 at 3e38 0 0"), "s.scene:2: expected a number for mesh scale within +-1e12, got '3e38'");
+    EXPECT_HAS(scene_error("mesh ok.obj scale 1e12 at 1e12 0 0"),
+               "s.scene:2: expected scale and at that keep 'ok.obj' within +-1e12 in world space, got a vertex at 2e+12 0 0");
 }
 
 #ifndef DSR_OBJ_LOADER_ONLY

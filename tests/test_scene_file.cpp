@@ -266,6 +266,74 @@ TEST_F(SceneFileTest, TexturesDeduplicatedByResolvedPath) {
     EXPECT_EQ(s.materials[1].diffuse_map, 0);
 }
 
+// What the file is made of: a byte-order mark is skipped, a lone CR ends a line as LF does, a
+// control byte is refused with its line and column, and a long token is echoed cut.
+TEST_F(SceneFileTest, TextRulesOfTheUserFileReader) {
+    const std::string plain = header() + "sphere radius 1 at 0 0 0 material grey\n";
+    const dsr::Scene a = dsr::load_scene(write("plain.scene", plain));
+    const dsr::Scene b = dsr::load_scene(write("bom.scene", "\xEF\xBB\xBF" + plain));
+    std::string cr = plain;
+    for (char& c : cr)
+        if (c == '\n') c = '\r';
+    const dsr::Scene c = dsr::load_scene(write("cr.scene", cr));
+    EXPECT_EQ(a.objects.size(), b.objects.size());
+    EXPECT_EQ(a.objects.size(), c.objects.size());
+    EXPECT_EQ(b.materials[0].name, "grey");
+    expect_error(header() + "ambient 0.1 0.\x1b 0.1\n", 3, {"expected text, got the control byte 0x1B at column 15"});
+    expect_error(header() + std::string("ambient 0.1 0.1 0.1 #\0\n", 23), 3, {"expected text, got a NUL byte at column 22"});
+    std::string path;
+    const std::string msg = error_of(header() + "ambient " + std::string(100000, '7') + " 0 0\n", &path);
+    EXPECT_EQ(msg, path + ":3: expected a number for ambient, got '" + std::string(60, '7') + "...'");
+    // The same rules for text given in memory.
+    EXPECT_THROW(dsr::parse_scene("mem.scene", header() + std::string("\0", 1)), dsr::Error);
+    EXPECT_EQ(dsr::parse_scene("mem.scene", "\xEF\xBB\xBF" + plain).objects.size(), a.objects.size());
+}
+
+// Every number within +-1e12, far/near at most 1e7, world-space extents within +-1e12: the
+// values that failed later inside the renderer ("frustum_planes: degenerate far plane") or drew
+// nothing are refused on their line.
+TEST_F(SceneFileTest, NumbersWithinTheirDocumentedRanges) {
+    const std::string cam = "camera pos 0 1 5 target 0 0 0 up 0 1 0 fov 60 ";
+    expect_error(cam + "near 1e-45 far 100\n", 1, {"expected far / near at most 1e7, got 100 / 1.4013e-45"});
+    expect_error(cam + "near 1e-30 far 100\n", 1, {"expected far / near at most 1e7, got 100 / 1e-30 = 1e+32"});
+    expect_error(cam + "near 0.1 far 1e30\n", 1, {"expected a number for far within +-1e12, got '1e30'"});
+    EXPECT_NO_THROW(dsr::parse_scene("ok.scene", cam + "near 0.125 far 1250000\n"));  // 1e7 exactly
+    expect_error(cam + "near 0.125 far 1250001\n", 1, {"expected far / near at most 1e7"});
+    expect_error(header() + "sphere radius 2e12 at 0 0 0 material grey\n", 3, {"expected a number for sphere radius within +-1e12, got '2e12'"});
+    expect_error(header() + "box size 1 1 1 at 0 0 -1e13 material grey\n", 3, {"expected a number for box at within +-1e12, got '-1e13'"});
+    expect_error(header() + "box size 1e12 1 1 at 6e11 0 0 material grey\n", 3, {"expected box within +-1e12 in world space, got a vertex at 1.1e+12"});
+    expect_error(header() + "light point pos 0 1 0 color 1 1 1 attenuation 1e-6 0 1e-24\n", 3, {"expected attenuation whose radius"});
+    expect_error(header() + "light spot pos 0 1 0 dir 0 -1e-20 0 color 1 1 1 radius 2 angle 30\n", 3, {"expected a non-zero light dir"});
+    EXPECT_NO_THROW(dsr::parse_scene("ok.scene", header() + "sphere radius 1e12 at 0 0 0 material grey\n"));
+}
+
+// The files a scene was read from, for the commands to keep their outputs off them.
+TEST_F(SceneFileTest, InputsListEveryFileRead) {
+    write("m.mtl", "newmtl a\nmap_Kd t.png\n");
+    dsr::Image img;
+    img.width = img.height = 2;
+    img.rgba.assign(16, 0.5f);
+    dsr::write_image(dir_ + "/t.png", img);
+    files_.push_back(dir_ + "/t.png");
+    write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl a\nf 1/1 2/1 3/1\n");
+    const std::string scene = write("s.scene", header() + "mesh m.obj\nmaterial t diffuse 1 1 1 specular 0 0 0 shininess 2 diffuse_map t.png\n");
+    const dsr::Scene s = dsr::load_scene(scene);
+    EXPECT_EQ(s.inputs, (std::vector<std::string>{scene, dir_ + "/m.obj", dir_ + "/m.mtl", dir_ + "/t.png"}));
+    EXPECT_EQ(s.textures.size(), 1u) << "one file, one texture";
+}
+
+// A triangle far larger than the camera's distance to it loses precision in the rasteriser: legal,
+// one warning naming the line; the shipped scenes have none.
+TEST_F(SceneFileTest, HugeTrianglesNearTheCameraAreWarnedAbout) {
+    const dsr::Scene s = dsr::parse_scene("w.scene", header() + "plane size 1e6 at 0 0 0 material grey\n");
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_EQ(s.warnings[0].rfind("w.scene:3: triangles 1.41421e+06 long, ", 0), 0u) << s.warnings[0];
+    EXPECT_TRUE(dsr::parse_scene("w.scene", header() + "plane size 1e4 at 0 0 0 material grey\n").warnings.empty());
+    for (const char* f : {"/data/default.scene", "/data/lights.scene", "/data/mesh.scene", "/data/transparency.scene",
+                          "/tests/data/analytic.scene"})
+        EXPECT_TRUE(dsr::load_scene(std::string(DSR_SOURCE_DIR) + f).warnings.empty()) << f;
+}
+
 }  // namespace
 
 namespace {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 
@@ -240,6 +241,99 @@ TEST_F(ImageIoTest, ErrorsNameThePathAndLeaveNothing) {
         EXPECT_NE(std::string(e.what()).find("cannot write "), std::string::npos) << e.what();
     }
     EXPECT_TRUE(entries().empty());
+}
+
+}  // namespace
+
+namespace {
+
+class ImageDamage : public ImageIoTest {};
+
+// Cut short at any point, every format dsr (OpenImageIO) writes is refused with one line naming
+// the file, whatever the decoder printed, and so is a header alone or a file of another kind;
+// where libjpeg used to fill the missing half with grey and say nothing to dsr.
+TEST_F(ImageDamage, CutShortIsAnErrorInEveryFormat) {
+    const dsr::Image img = gradient(64, 64);
+    int formats = 0;
+    for (const std::string ext : {".png", ".jpg", ".tif", ".exr", ".ppm", ".bmp", ".tga", ".hdr", ".sgi", ".pnm", ".dpx"}) {
+        const std::string full = dir_ + "/full" + ext;
+        try {
+            dsr::write_image(full, img);
+        } catch (const dsr::Error&) {
+            continue;  // this OpenImageIO has no writer for it
+        }
+        ++formats;
+        std::ifstream in(full, std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        ASSERT_NO_THROW(dsr::load_image(full)) << ext;
+        // TGA ends in optional metadata (a 495-byte extension area and a 26-byte footer, no pixels):
+        // cut inside them the picture is whole and reads as one; its cuts stay in the pixels.
+        const bool tga = ext == ".tga";
+        for (const size_t keep : {size_t(20), bytes.size() / 2, tga ? bytes.size() * 3 / 4 : bytes.size() - 30,
+                                  tga ? bytes.size() * 9 / 10 : bytes.size() - 1}) {
+            const std::string cut = dir_ + "/cut" + ext;
+            std::ofstream(cut, std::ios::binary) << bytes.substr(0, keep);
+            try {
+                dsr::load_image(cut);
+                ADD_FAILURE() << ext << " cut to " << keep << " of " << bytes.size() << " bytes was read";
+            } catch (const dsr::Error& e) {
+                const std::string m = e.what();
+                EXPECT_EQ(m.rfind("cannot read image " + cut + ": ", 0), 0u) << m;
+                EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+            }
+            std::remove(cut.c_str());
+        }
+        std::remove(full.c_str());
+    }
+    EXPECT_GE(formats, 5);
+}
+
+// The decoders' own lines (libpng's "IDAT: invalid distance too far back" printed twice) are in
+// the error and not on stderr.
+TEST_F(ImageDamage, DamagedPngIsOneLineAndStderrStaysQuiet) {
+    const std::string full = dir_ + "/full.png";
+    dsr::write_image(full, gradient(64, 64));
+    std::ifstream in(full, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    bytes.replace(200, 8, "XXXXXXXX");
+    const std::string bad = dir_ + "/bad.png";
+    std::ofstream(bad, std::ios::binary) << bytes;
+    ::testing::internal::CaptureStderr();
+    std::string m;
+    try {
+        dsr::load_image(bad);
+    } catch (const dsr::Error& e) {
+        m = e.what();
+    }
+    const std::string printed = ::testing::internal::GetCapturedStderr();
+    EXPECT_EQ(m.rfind("cannot read image " + bad + ": ", 0), 0u) << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    EXPECT_EQ(printed, "");
+}
+
+// A header claims a size: over the caller's budget is ImageTooLarge (with the size), over the
+// per-image limits a plain error; nothing is allocated for either.
+TEST_F(ImageDamage, SizeLimitsAreCheckedOnTheHeader) {
+    const std::string p = dir_ + "/a.png";
+    dsr::write_image(p, gradient(64, 32));
+    try {
+        dsr::load_image(p, 1000);
+        ADD_FAILURE() << "no error";
+    } catch (const dsr::ImageTooLarge& e) {
+        EXPECT_EQ(e.width, 64);
+        EXPECT_EQ(e.height, 32);
+    }
+    EXPECT_EQ(dsr::load_image(p, 2048).width, 64);
+    const std::string pnm = dir_ + "/big.ppm";
+    std::ofstream(pnm, std::ios::binary) << "P6\n20000 20000\n255\n";
+    try {
+        dsr::load_image(pnm);
+        ADD_FAILURE() << "no error";
+    } catch (const dsr::ImageTooLarge&) {
+        ADD_FAILURE() << "an absurd size is not a budget";
+    } catch (const dsr::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("20000 x 20000 pixels, expected at most 16384 a side"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace

@@ -93,7 +93,7 @@ TEST(ViewerScript, BadLineIsOneErrorNamingFileAndLine) {
         load_script("/nonexistent/dsr.script");
         ADD_FAILURE() << "no error for a missing script";
     } catch (const Error& e) {
-        EXPECT_STREQ(e.what(), "/nonexistent/dsr.script: cannot read the script");
+        EXPECT_STREQ(e.what(), "cannot open viewer script /nonexistent/dsr.script: No such file or directory");
     }
 }
 

@@ -14,6 +14,8 @@ void Args::fail(const std::string& what) const { fail_command(cmd_, what); }
 
 std::string Args::value(const std::string& flag) {
     if (done()) fail(flag + ": expected a value, got nothing");
+    // An empty value never means "off": `--stats ''` from an unset shell variable is a mistake.
+    if (peek().empty()) fail(flag + ": expected a value, got ''");
     return next();
 }
 

@@ -11,7 +11,11 @@ public:
     Args(std::string command, std::vector<std::string> args) : cmd_(std::move(command)), a_(std::move(args)) {}
     bool done() const { return i_ >= a_.size(); }
     const std::string& peek() const { return a_[i_]; }
-    std::string next() { return a_[i_++]; }
+    // An empty argument is never meant: a shell variable that was not set (never "the default").
+    std::string next() {
+        if (a_[i_].empty()) fail("expected an argument, got ''");
+        return a_[i_++];
+    }
     // The value after flag `flag`; throws if missing.
     std::string value(const std::string& flag);
     int int_value(const std::string& flag, int lo, int hi);

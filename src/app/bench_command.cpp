@@ -1,8 +1,6 @@
 // `dsr bench`: parses the flags by its table (app/command_table.h), runs the sweep (src/analysis/bench_run.h) on a context of the
 // chosen backend, and prints or writes what src/analysis/bench_report.h makes of the rows: the
 // table on stdout, progress on stderr, optional JSON and a markdown report with a plot.
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +16,7 @@
 #include "app/command_table.h"
 #include "app/commands.h"
 #include "app/files.h"
+#include "app/stage.h"
 #include "dsr_error.h"
 #include "gl/caps.h"
 #include "platform/context.h"
@@ -88,8 +87,20 @@ int cmd_bench(const std::vector<std::string>& argv) {
         scenes.push_back(write_grid_scene(dir, 708));
         own_only.push_back(true);
     }
+    // The outputs, refused now if one is an input (scene/output_set.h), written together at the end.
+    OutputSet outputs("dsr bench");
     std::vector<int> own_counts;
-    for (auto& s : scenes) own_counts.push_back(int(load_scene(s).lights.size()));
+    for (auto& s : scenes) {
+        const Scene loaded = load_scene(s);
+        own_counts.push_back(int(loaded.lights.size()));
+        if (s == scene_path) add_scene_inputs(outputs, loaded.inputs);
+    }
+    const std::string plot_path = report_path.empty() ? "" : dir_of(report_path) + bench::file_stem(report_path) + "_plot.png";
+    for (const std::string& p : {json_path, report_path})  // one level, like `figures -o`
+        if (!dir_of(p).empty()) outputs.make_dir(p == json_path ? "--json" : "--report", dir_of(p));
+    if (!json_path.empty()) outputs.add("--json", json_path);
+    if (!report_path.empty()) outputs.add("--report", report_path), outputs.add("--report's plot", plot_path);
+    const Stage stage("benchmarking");
 
     auto ctx = create_context(ContextDesc{context_backend(flags.context), cfg.w, cfg.h});
     const Caps caps = probe_caps();
@@ -129,19 +140,16 @@ int cmd_bench(const std::vector<std::string>& argv) {
     std::fputs(bench::text_report(sum).c_str(), stdout);
     std::fflush(stdout);  // the table before the stderr lines that follow
 
-    for (const std::string& p : {json_path, report_path})  // one level, like `figures -o`
-        if (!dir_of(p).empty()) mkdir(dir_of(p).c_str(), 0755);
-    if (!json_path.empty()) {
-        write_file_atomic(json_path, bench::to_json(sum).dump(2) + "\n");
-        std::fprintf(stderr, "bench: wrote %s\n", json_path.c_str());
-    }
+    if (!json_path.empty())
+        outputs.put_text("--json", json_path,
+                         bench::to_json(sum).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     if (!report_path.empty()) {
         // The plot beside the report: <stem>_plot.png, linked relatively.
-        const std::string plot_name = bench::file_stem(report_path) + "_plot.png";
-        write_image(dir_of(report_path) + plot_name, bench::plot_rows(sum.rows, sum.scenes));
-        write_file_atomic(report_path, bench::markdown_report(sum, plot_name));
-        std::fprintf(stderr, "bench: wrote %s and %s\n", report_path.c_str(), (dir_of(report_path) + plot_name).c_str());
+        outputs.put_image("--report's plot", plot_path, bench::plot_rows(sum.rows, sum.scenes));
+        outputs.put_text("--report", report_path, bench::markdown_report(sum, bench::file_stem(report_path) + "_plot.png"));
     }
+    outputs.commit();
+    for (const std::string& w : outputs.written()) std::fprintf(stderr, "bench: wrote %s\n", w.c_str());
     return 0;
 }
 

@@ -18,7 +18,7 @@ int cmd_compare(const std::vector<std::string>& argv) {
     const std::vector<std::string>& files = flags.files;
     const double threshold_lsb = flags.threshold_lsb, max_lsb = flags.max_lsb;
     if (files.size() != 2) fail_command("compare", "expected two image files, got " + std::to_string(files.size()));
-    const Image a = load_image(files[0]), b = load_image(files[1]);
+    const Image a = load_image(files[0]), b = load_image(files[1]);  // regular files only (scene/image.h)
     if (a.width != b.width || a.height != b.height)
         fail_command("compare", "sizes differ: " + files[0] + " is " + std::to_string(a.width) + "x" + std::to_string(a.height) +
                   ", " + files[1] + " is " + std::to_string(b.width) + "x" + std::to_string(b.height));

@@ -1,7 +1,6 @@
 // `dsr figures`: the tutorial's raster figures (4, 6, 8, 9, 10, 11) from the default scene,
 // each a plain PNG; docs/figures.md sets them beside the captions.
 #include <stdlib.h>
-#include <sys/stat.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +9,8 @@
 #include "app/command_table.h"
 #include "app/commands.h"
 #include "dsr_error.h"
+#include "app/files.h"
+#include "app/stage.h"
 #include "deferred/deferred_shader.h"
 #include "gl/caps.h"
 #include "gl/readback.h"
@@ -50,15 +51,15 @@ int cmd_figures(const std::vector<std::string>& argv) {
     const bool default_scene = scene_path.empty();
     if (default_scene) scene_path = resource_dir("data") + "/default.scene";
     Scene scene = load_scene(scene_path);
-    mkdir(dir.c_str(), 0755);
+    // Every figure to a temporary file, renamed together at the end (scene/output_set.h).
+    OutputSet outputs("dsr figures");
+    add_scene_inputs(outputs, scene.inputs);
+    outputs.make_dir("-o", dir);
+    const Stage stage("rendering the figures of " + scene_path);
     auto ctx = create_context(ContextDesc{context_backend(flags.context), n, n});
     Caps caps = probe_caps();
     const std::string shaders = resource_dir("glsl120");
-    std::vector<std::string> written;
-    auto save = [&](const std::string& name, const Image& img) {
-        write_image(dir + "/" + name, opaque(img));
-        written.push_back(dir + "/" + name);
-    };
+    auto save = [&](const std::string& name, const Image& img) { outputs.put_image("-o", dir + "/" + name, opaque(img)); };
     // One shader per configuration; `then` reads what it needs after one frame.
     auto frame = [&](ShaderOptions o, const std::function<void(DeferredShader&)>& then) {
         DeferredShader ds(caps, n, n, o, shaders);
@@ -129,6 +130,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
     // makes glow; only with the default scene (its own scene file is fixed).
     if (default_scene) {
         const Scene ts = load_scene(resource_dir("data") + "/transparency.scene");
+        add_scene_inputs(outputs, ts.inputs);
         ShaderOptions o;
         o.post.bloom = o.post.aa = true;  // the scene's `post bloom aa`
         o.show_lights = true;
@@ -162,7 +164,8 @@ int cmd_figures(const std::vector<std::string>& argv) {
         save("windmill_normal.png", view(ds, View::normal));
         save("windmill_specular.png", view(ds, View::specular));
     }
-    for (auto& w : written) std::printf("wrote %s\n", w.c_str());
+    outputs.commit();
+    for (auto& w : outputs.written()) std::printf("wrote %s\n", w.c_str());
     return 0;
 }
 

@@ -1,10 +1,16 @@
-// Whole-file output that is never half-written: write a temporary beside the target, rename.
+// Whole-file output that is never half-written, and never one of the run's inputs: an
+// OutputSet of one (scene/output_set.h), for a command with a single text output.
 #pragma once
 #include <string>
 
+#include "scene/output_set.h"
+
 namespace dsr {
 
-// Throws dsr::Error naming the path on failure.
+// Throws dsr::Error naming the path and the system's reason on failure.
 void write_file_atomic(const std::string& path, const std::string& contents);
+
+// The scene's files (Scene::inputs: the scene file first, then what it reads) as inputs of `out`.
+void add_scene_inputs(OutputSet& out, const std::vector<std::string>& scene_inputs);
 
 }  // namespace dsr

@@ -6,7 +6,9 @@
 #include "app/command_table.h"
 #include "app/commands.h"
 #include "app/help_text.h"
+#include "app/stage.h"
 #include "dsr_error.h"
+#include "scene/user_file.h"
 
 namespace {
 
@@ -49,7 +51,7 @@ int main(int argc, char** argv) {
     for (const Run& r : kRuns)
         if (cmd == r.name) run = r.run;
     if (!command || !run) {
-        std::fprintf(stderr, "%s\n", dsr::unknown_command_line(cmd).c_str());
+        std::fprintf(stderr, "%s\n", dsr::one_line(dsr::unknown_command_line(cmd)).c_str());
         return 2;
     }
     for (const std::string& a : args)
@@ -57,13 +59,21 @@ int main(int argc, char** argv) {
             std::fputs(dsr::command_help(*command).c_str(), stdout);
             return 0;
         }
+    // Every error is one line (dsr::one_line), with the stage it left when it came from inside
+    // the renderer (app/stage.h).
     try {
         return run(args);
     } catch (const dsr::Error& e) {
-        std::fprintf(stderr, "%s\n", e.what());
+        // A message that names the command already is the command's own, not the renderer's.
+        const std::string stage = dsr::take_failed_stage(), what = e.what();
+        const bool own = what.rfind("dsr ", 0) == 0;
+        const std::string msg = stage.empty() || own ? what : "dsr " + cmd + ": " + stage + ": " + what;
+        std::fprintf(stderr, "%s\n", dsr::one_line(msg).c_str());
         return 1;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "dsr %s: %s\n", cmd.c_str(), e.what());
+        const std::string stage = dsr::take_failed_stage();
+        const std::string msg = "dsr " + cmd + ": " + (stage.empty() ? "" : stage + ": ") + e.what();
+        std::fprintf(stderr, "%s\n", dsr::one_line(msg).c_str());
         return 1;
     }
 }

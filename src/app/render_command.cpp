@@ -14,6 +14,7 @@
 #include "analysis/frame_ideal.h"
 #include "app/files.h"
 #include "app/command_table.h"
+#include "app/stage.h"
 #include "deferred/deferred_shader.h"
 #include "gl/caps.h"
 #include "gl/check.h"
@@ -35,10 +36,17 @@ int cmd_render(const std::vector<std::string>& argv) {
     int out_w = flags.out_width, out_h = flags.out_height;
     const RenderOptions& ro = flags.options;
 
+    // Outputs: whole or none, never an input (scene/output_set.h); refused before the work.
+    OutputSet outputs("dsr render");
+    outputs.add("-o", out);
+    if (!stats_path.empty()) outputs.add("--stats", stats_path);
+
     const double load_start = now_ms();
     Scene scene = load_scene(scene_path);  // every input error surfaces before any output
+    add_scene_inputs(outputs, scene.inputs);
     if (flags.lights) scene = bench_scene(scene, *flags.lights);  // the bench's lights (bench_scenes.h)
     const double load_ms = now_ms() - load_start;
+    const Stage stage("rendering " + scene_path);
     if (out_w == 0) out_w = w, out_h = h;
     const View view = ro.view;
     // The no-FBO path renders its buffers inside the main frame buffer: make it fit both.
@@ -143,8 +151,11 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["frame_ms"] = nlohmann::json::array();  // each frame's wall time, in order: ms.frame is their median
     for (const FrameStats& s : all) j["frame_ms"].push_back(s.ms.frame);
 
-    write_image(out, img);
-    if (!stats_path.empty()) write_file_atomic(stats_path, j.dump(2) + "\n");
+    outputs.put_image("-o", out, img);
+    // A path that is not UTF-8 (the scene's, given by the user) is written with U+FFFD, not refused.
+    if (!stats_path.empty())
+        outputs.put_text("--stats", stats_path, j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+    outputs.commit();
     std::printf("wrote %s (%dx%d, view %s, depth %s, %d/%d lights drawn, %lld light fragments, frame %.2f ms median of %d)\n",
                 out.c_str(), out_w, out_h, view_name(view), j["depth_path"].get<std::string>().c_str(), last.lights_drawn, last.lights_total,
                 last.light_fragments, med(&StageTimes::frame), frames);

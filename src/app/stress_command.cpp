@@ -6,8 +6,6 @@
 // against far/near (src/analysis/stress_report.h).
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "dsr_clock.h"
 #include "analysis/stress_report.h"
@@ -19,6 +17,7 @@
 #include "platform/context.h"
 #include "platform/resources.h"
 #include "scene/image.h"
+#include "scene/user_file.h"
 
 namespace dsr {
 
@@ -26,12 +25,14 @@ namespace {
 
 // The report file's text, checked for its generated block.
 std::string read_report(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw Error("dsr stress: --report: cannot read " + path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    check_report_block(ss.str(), path);
-    return ss.str();
+    std::string text;
+    try {
+        text = read_user_text(path, "report", kMaxSceneBytes);  // a regular file, never a FIFO
+    } catch (const Error& e) {
+        throw Error(std::string("dsr stress: --report: ") + e.what());
+    }
+    check_report_block(text, path);
+    return text;
 }
 
 }  // namespace
@@ -43,6 +44,11 @@ int cmd_stress(const std::vector<std::string>& argv) {
     const std::string json_path = flags.json, report_path = flags.report, plot_path = flags.plot, only = flags.only,
                       geometry = flags.geometry;
     if (!report_path.empty()) read_report(report_path);  // a wrong file fails before the sweep
+    // The report is rewritten in place (its generated block); no other output may be it.
+    OutputSet outputs("dsr stress");
+    if (!json_path.empty()) outputs.add("--json", json_path);
+    if (!report_path.empty()) outputs.add("--report", report_path);
+    if (!plot_path.empty()) outputs.add("--plot", plot_path);
     std::vector<StressCase> cases = stress_cases(quick);
     if (!only.empty()) {
         std::vector<StressCase> kept;
@@ -83,12 +89,16 @@ int cmd_stress(const std::vector<std::string>& argv) {
         const std::string command =
             std::string("dsr stress") + (quick ? " --quick" : "") + (only.empty() ? "" : " --only " + only) +
             (geometry.empty() ? "" : " --light-geometry " + geometry);
-        write_file_atomic(json_path, stress_json(results, command, runner.renderer(), seconds).dump(2) + "\n");
+        outputs.put_text("--json", json_path,
+                         stress_json(results, command, runner.renderer(), seconds)
+                                 .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     }
     if (!report_path.empty())
-        write_file_atomic(report_path, splice_report_block(read_report(report_path), report_path,
-                                                          stress_report_block(results, quick, runner.renderer())));
-    if (!plot_path.empty()) write_image(plot_path, stress_accuracy_plot(results));
+        outputs.put_text("--report", report_path,
+                         splice_report_block(read_report(report_path), report_path,
+                                             stress_report_block(results, quick, runner.renderer())));
+    if (!plot_path.empty()) outputs.put_image("--plot", plot_path, stress_accuracy_plot(results));
+    outputs.commit();
     return failed ? 1 : 0;
 }
 

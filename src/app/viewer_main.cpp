@@ -8,6 +8,9 @@
 #include "app/command_table.h"
 #include "app/help_text.h"
 #include "dsr_error.h"
+#include "scene/user_file.h"
+#include "gl/check.h"
+#include "gl/state.h"
 #include "viewer/viewer.h"
 
 namespace dsr {
@@ -30,10 +33,10 @@ int main(int argc, char** argv) {
     try {
         return dsr::cmd_view(args);
     } catch (const dsr::Error& e) {
-        std::fprintf(stderr, "%s\n", e.what());
+        std::fprintf(stderr, "%s\n", dsr::one_line(e.what()).c_str());
         return 1;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "dsr view: %s\n", e.what());
+        std::fprintf(stderr, "%s\n", dsr::one_line(std::string("dsr view: ") + e.what()).c_str());
         return 1;
     }
 }

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "dsr_error.h"
+
 namespace dsr {
 
 // RGBA, 32-bit float per channel, rows stored bottom row first (OpenGL order:
@@ -28,13 +30,31 @@ inline Image opaque(Image img) {
 // (both image backends pick the format by it).
 std::string image_extension(const std::string& path);
 
-// Reads any format OpenImageIO reads. Grey becomes RGB, a missing alpha is 1.
-// Throws dsr::Error naming the path and what went wrong.
-Image load_image(const std::string& path);
+// The most texels (and pixels per side) load_image accepts from any file, whatever it claims.
+constexpr size_t kMaxImageTexels = size_t(1) << 26;
+constexpr int kMaxImageSide = 16384;
 
-// Writes by extension (.png 8-bit, .exr half float, anything else OIIO knows).
-// Writes to a temporary file beside the target, then renames: never half-written.
-// Throws dsr::Error naming the path on failure.
+// load_image's refusal of an image over its max_texels, before anything is allocated, so the
+// caller can name the budget it was checking.
+struct ImageTooLarge : Error {
+    ImageTooLarge(const std::string& what, int w, int h) : Error(what), width(w), height(h) {}
+    int width, height;
+};
+
+// Reads any format OpenImageIO reads, from a regular file only (user_file.h). Grey becomes
+// RGB, a missing alpha is 1. A truncated or damaged file is an error, and whatever the decoders
+// print is caught into the one line: throws dsr::Error "cannot read image PATH: WHY" (one line).
+// Over max_texels (or kMaxImageSide a side): ImageTooLarge.
+Image load_image(const std::string& path, size_t max_texels = kMaxImageTexels);
+
+// Encodes img into the file `file` (created or replaced), in the format `name`'s extension
+// picks (.png 8-bit, .exr half float, anything else the backend knows). Errors name `name`, the
+// user's path, and never `file`: "cannot write NAME: WHY". OutputSet (scene/output_set.h) writes
+// every output through it to a temporary file and renames them all at the end.
+void encode_image(const std::string& file, const std::string& name, const Image& img);
+
+// One image as a whole output: encode_image to a temporary file beside `path`, then renamed.
+// Never half-written; throws dsr::Error naming the path on failure.
 void write_image(const std::string& path, const Image& img);
 
 }  // namespace dsr

@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include <OpenImageIO/imageio.h>
 
 #include "dsr_error.h"
 #include "scene/image.h"
+#include "scene/stderr_capture.h"
+#include "scene/user_file.h"
 
 namespace dsr {
 
@@ -29,36 +29,80 @@ std::string oiio_message(const std::string& fallback) {
     return m;
 }
 
+// What the decoders print for a file that is cut short or damaged although the read "worked"
+// (libjpeg fills the missing rows with grey and says so): an error, not a warning.
+bool is_damage(const std::string& said) {
+    for (const char* sign : {"Premature end", "Corrupt", "corrupt", "truncated", "Truncated", "bad ", "Bad ", "error",
+                             "Error", "invalid", "Invalid"})
+        if (said.find(sign) != std::string::npos) return true;
+    return false;
+}
+
+// A PNG ends with its IEND chunk: length 0, "IEND", CRC AE 42 60 82.
+bool ends_with_png_iend(const std::string& path) {
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) return false;
+    unsigned char tail[12] = {0};
+    const bool ok = std::fseek(f, -12, SEEK_END) == 0 && std::fread(tail, 1, 12, f) == 12;
+    std::fclose(f);
+    static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82};
+    return ok && std::memcmp(tail, iend, 12) == 0;
+}
+
 }  // namespace
 
-Image load_image(const std::string& path) {
+Image load_image(const std::string& path, size_t max_texels) {
+    check_user_file(path, "image", kMaxImageFileBytes);
+    // The decoders' own words (libpng's warnings, libjpeg's "Premature end of JPEG file") go
+    // into the one error line, not onto the terminal.
+    StderrCapture chatter;
+    auto fail = [&](std::string why) {
+        const std::string said = chatter.text();
+        if (why.empty()) why = said.empty() ? "read failed" : said;
+        else if (!said.empty() && why.find(said) == std::string::npos) why += " (" + said + ")";
+        for (size_t at; (at = why.find('\n')) != std::string::npos;) why.replace(at, 1, "; ");
+        throw Error("cannot read image " + path + ": " + one_line(why));
+    };
     // Ask for the stored (unassociated) alpha: OIIO would otherwise premultiply PNG colour.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
+    (void)OIIO::geterror();  // an earlier call's error would read as this file's
     auto in = OIIO::ImageInput::open(path, &config);
-    if (!in) throw Error("cannot read image " + path + ": " + oiio_message("unknown format"));
-    const OIIO::ImageSpec& spec = in->spec();
+    if (!in) fail(oiio_message(""));
+    const OIIO::ImageSpec spec = in->spec();
     const int w = spec.width, h = spec.height, nc = spec.nchannels;
-    if (w <= 0 || h <= 0 || nc <= 0 || spec.depth > 1)
-        throw Error("cannot read image " + path + ": unsupported size or channel layout");
+    if (w <= 0 || h <= 0 || nc <= 0 || spec.depth > 1) fail("unsupported size or channel layout");
     // Refused before anything is allocated: a header can claim any size.
-    if (w > 16384 || h > 16384 || size_t(w) * size_t(h) > (size_t(1) << 26) || nc > 64)
-        throw Error("cannot read image " + path + ": " + std::to_string(w) + " x " + std::to_string(h) + " pixels, " +
-                    std::to_string(nc) + " channels; expected at most 16384 per side, 67108864 pixels and 64 channels "
-                    "(an absurd size)");
+    if (nc > 64) fail(std::to_string(nc) + " channels, expected at most 64 (an absurd size)");
+    if (w > kMaxImageSide || h > kMaxImageSide || size_t(w) * size_t(h) > kMaxImageTexels)
+        fail(std::to_string(w) + " x " + std::to_string(h) + " pixels, expected at most " +
+             std::to_string(kMaxImageSide) + " a side and " + std::to_string(kMaxImageTexels) + " in all (an absurd size)");
+    if (size_t(w) * size_t(h) > max_texels)
+        throw ImageTooLarge("cannot read image " + path + ": " + std::to_string(w) + " x " + std::to_string(h) +
+                                " pixels, expected at most " + std::to_string(max_texels) + " (the caller's budget)",
+                            w, h);
 
-    std::vector<float> raw(size_t(w) * h * nc);
-    if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, raw.data())) {
-        std::string m = in->geterror();
-        if (m.empty()) m = oiio_message("read failed");
-        throw Error("cannot read image " + path + ": " + m);
-    }
-    in->close();
-
-    // Grey (and grey+alpha) become RGB; a missing alpha is opaque.
+    // Only the channels dsr uses: the first four, and alpha where the file puts it later.
     int alpha = spec.alpha_channel;
     if (alpha < 0 && (nc == 2 || nc >= 4)) alpha = nc == 2 ? 1 : 3;
+    const int colour = std::min(nc, 4);
     const bool grey = nc <= 2;
+    std::vector<float> raw(size_t(w) * h * size_t(colour)), alpha_raw;
+    bool ok = in->read_image(0, 0, 0, colour, OIIO::TypeDesc::FLOAT, raw.data());
+    if (ok && alpha >= colour) {
+        alpha_raw.resize(size_t(w) * h);
+        ok = in->read_image(0, 0, alpha, alpha + 1, OIIO::TypeDesc::FLOAT, alpha_raw.data());
+    }
+    // A truncated file can leave read_image true with an error recorded (and the missing rows
+    // grey): the error state, not the return value alone, decides.
+    if (!ok || in->has_error()) fail(in->geterror());
+    if (!in->close() || in->has_error()) fail(in->geterror());
+    const std::string stray = OIIO::geterror();
+    if (!stray.empty()) fail(stray);
+    const std::string said = chatter.text();
+    if (is_damage(said)) fail(said);
+    // OpenImageIO stops reading a PNG after its pixels: a file cut in its last chunk would pass.
+    if (std::strcmp(in->format_name(), "png") == 0 && !ends_with_png_iend(path)) fail("cut short: no IEND chunk at its end");
 
     Image img;
     img.width = w;
@@ -66,27 +110,32 @@ Image load_image(const std::string& path) {
     img.rgba.resize(size_t(w) * h * 4);
     for (int y = 0; y < h; ++y) {
         // File row y (top first) lands in Image row h-1-y (bottom first).
-        const float* src = &raw[size_t(y) * w * nc];
-        for (int x = 0; x < w; ++x, src += nc) {
+        const float* src = &raw[size_t(y) * w * colour];
+        for (int x = 0; x < w; ++x, src += colour) {
             float* d = img.at(x, h - 1 - y);
             d[0] = src[0];
             d[1] = grey ? src[0] : src[1];
             d[2] = grey ? src[0] : src[2];
-            d[3] = alpha >= 0 ? src[alpha] : 1.0f;
+            d[3] = alpha < 0 ? 1.0f : alpha < colour ? src[alpha] : alpha_raw[size_t(y) * w + x];
         }
     }
     return img;
 }
 
-void write_image(const std::string& path, const Image& img) {
+void encode_image(const std::string& file, const std::string& name, const Image& img) {
+    // Messages name the user's path: OIIO's would name the temporary file it wrote.
+    auto fail = [&](std::string why) {
+        for (size_t at; (at = why.find(file)) != std::string::npos;) why.replace(at, file.size(), name);
+        throw Error("cannot write " + name + ": " + one_line(why));
+    };
     if (img.width <= 0 || img.height <= 0 || img.rgba.size() != size_t(img.width) * img.height * 4)
-        throw Error("cannot write " + path + ": image has no pixels or the wrong buffer size");
+        fail("image has no pixels or the wrong buffer size");
 
-    const std::string ext = image_extension(path);
-    // The output plugin is chosen by the target's name; the temp name keeps the extension too.
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) throw Error("cannot write " + path + ": " + oiio_message("no writer for this extension"));
-
+    const std::string ext = image_extension(name);
+    StderrCapture chatter;
+    // The output plugin is chosen by the user's name; it writes into `file`.
+    auto out = OIIO::ImageOutput::create(name);
+    if (!out) fail(oiio_message("no writer for this extension"));
     const bool png = ext == ".png";
     const bool exr = ext == ".exr";
     OIIO::TypeDesc file_type = png ? OIIO::TypeDesc::UINT8 : exr ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT;
@@ -119,24 +168,20 @@ void write_image(const std::string& path, const Image& img) {
             std::copy_n(img.at(0, h - 1 - y), size_t(w) * 4, &flipped[size_t(y) * w * 4]);
     }
 
-    const std::string tmp = path + ".tmp-" + std::to_string(long(getpid())) + ext;
-    auto fail = [&](const std::string& why) {
-        std::remove(tmp.c_str());
-        throw Error("cannot write " + path + ": " + why);
-    };
-    if (!out->open(tmp, spec)) {
+    if (!out->open(file, spec)) {
         std::string m = out->geterror();
         fail(m.empty() ? oiio_message("open failed") : m);
     }
     bool ok = png ? out->write_image(OIIO::TypeDesc::UINT8, bytes.data(), 4 * sizeof(uint8_t))
                   : out->write_image(OIIO::TypeDesc::FLOAT, flipped.data(), 4 * sizeof(float));
+    // The return values decide: OIIO's TIFF writer records an error about its Exif block on
+    // files it writes whole.
     ok = out->close() && ok;
     if (!ok) {
         std::string m = out->geterror();
+        if (m.empty()) m = chatter.text();
         fail(m.empty() ? oiio_message("write failed") : m);
     }
-    out.reset();
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) fail(std::string("rename failed: ") + std::strerror(errno));
 }
 
 }  // namespace dsr

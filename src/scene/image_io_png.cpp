@@ -8,7 +8,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +19,7 @@
 
 #include "dsr_error.h"
 #include "scene/image.h"
+#include "scene/user_file.h"
 
 namespace dsr {
 
@@ -38,23 +41,42 @@ uint8_t to_byte(float v) {
     throw Error(std::string(msg ? msg : "libpng error"));
 }
 
+// libpng's warnings, kept for the error line instead of printed (its default).
+void png_warn(png_structp png, png_const_charp msg) {
+    auto* said = static_cast<std::string*>(png_get_error_ptr(png));
+    if (said && msg && said->size() < 1024) *said += (said->empty() ? "" : "; ") + std::string(msg);
+}
+
 }  // namespace
 
-Image load_image(const std::string& path) {
+Image load_image(const std::string& path, size_t max_texels) {
     const std::string ext = image_extension(path);
     if (ext != ".png") throw Error("cannot read image " + path + ": this build reads PNG only (libpng backend)");
+    const int fd = open_user_file(path, "image", kMaxImageFileBytes);
     File in;
-    in.f = std::fopen(path.c_str(), "rb");
-    if (!in.f) throw Error("cannot read image " + path + ": cannot open it");
-    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, png_fail, nullptr);
+    in.f = fdopen(fd, "rb");
+    if (!in.f) {
+        close(fd);
+        throw Error("cannot read image " + path + ": " + std::strerror(errno));
+    }
+    std::string warnings;
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &warnings, png_fail, png_warn);
     png_infop info = png_create_info_struct(png);
     Image img;
     try {
         png_init_io(png, in.f);
         png_read_info(png, info);
         const png_uint_32 w = png_get_image_width(png, info), h = png_get_image_height(png, info);
-        if (w == 0 || h == 0 || w > 16384 || h > 16384 || size_t(w) * h > (size_t(1) << 26))
-            throw Error(std::to_string(w) + " x " + std::to_string(h) + " pixels (an absurd size)");
+        const size_t limit = std::min(max_texels, kMaxImageTexels);
+        if (w == 0 || h == 0) throw Error(std::to_string(w) + " x " + std::to_string(h) + " pixels (no pixels)");
+        if (w > png_uint_32(kMaxImageSide) || h > png_uint_32(kMaxImageSide) || size_t(w) * h > kMaxImageTexels)
+            throw Error(std::to_string(w) + " x " + std::to_string(h) + " pixels, expected at most " +
+                        std::to_string(kMaxImageSide) + " a side and " + std::to_string(kMaxImageTexels) +
+                        " in all (an absurd size)");
+        if (size_t(w) * h > limit)
+            throw ImageTooLarge("cannot read image " + path + ": " + std::to_string(w) + " x " + std::to_string(h) +
+                                    " pixels, expected at most " + std::to_string(limit) + " (the caller's budget)",
+                                int(w), int(h));
         // Everything to 8-bit RGBA: palette and grey expanded, 16-bit stripped, alpha 255 added.
         png_set_expand(png);
         png_set_strip_16(png);
@@ -72,20 +94,25 @@ Image load_image(const std::string& path) {
         for (png_uint_32 y = 0; y < h; ++y)  // file row y (top first) -> Image row h-1-y
             for (size_t i = 0; i < size_t(w) * 4; ++i)
                 img.rgba[size_t(h - 1 - y) * w * 4 + i] = bytes[size_t(y) * w * 4 + i] / 255.0f;
+    } catch (const ImageTooLarge&) {
+        png_destroy_read_struct(&png, &info, nullptr);
+        throw;
     } catch (const Error& e) {
         png_destroy_read_struct(&png, &info, nullptr);
-        throw Error("cannot read image " + path + ": " + e.what());
+        std::string why = e.what();
+        if (!warnings.empty()) why += " (" + warnings + ")";
+        throw Error("cannot read image " + path + ": " + one_line(why));
     }
     png_destroy_read_struct(&png, &info, nullptr);
     return img;
 }
 
-void write_image(const std::string& path, const Image& img) {
+void encode_image(const std::string& file, const std::string& name, const Image& img) {
+    auto fail = [&](const std::string& why) { throw Error("cannot write " + name + ": " + one_line(why)); };
     if (img.width <= 0 || img.height <= 0 || img.rgba.size() != size_t(img.width) * img.height * 4)
-        throw Error("cannot write " + path + ": image has no pixels or the wrong buffer size");
-    const std::string ext = image_extension(path);
-    if (ext != ".png" && ext != ".ppm")
-        throw Error("cannot write " + path + ": this build writes .png and .ppm only (libpng backend)");
+        fail("image has no pixels or the wrong buffer size");
+    const std::string ext = image_extension(name);
+    if (ext != ".png" && ext != ".ppm") fail("this build writes .png and .ppm only (libpng backend)");
     const int w = img.width, h = img.height;
     const int nc = ext == ".png" ? 4 : 3;
     std::vector<uint8_t> bytes(size_t(w) * h * nc);
@@ -93,37 +120,30 @@ void write_image(const std::string& path, const Image& img) {
         for (int x = 0; x < w; ++x)
             for (int c = 0; c < nc; ++c) bytes[(size_t(y) * w + x) * nc + c] = to_byte(img.at(x, h - 1 - y)[c]);
 
-    const std::string tmp = path + ".tmp-" + std::to_string(long(getpid())) + ext;
-    auto fail = [&](const std::string& why) {
-        std::remove(tmp.c_str());
-        throw Error("cannot write " + path + ": " + why);
-    };
-    {
-        File out;
-        out.f = std::fopen(tmp.c_str(), "wb");
-        if (!out.f) fail("cannot create " + tmp);
-        if (nc == 3) {
-            std::fprintf(out.f, "P6\n%d %d\n255\n", w, h);
-            if (std::fwrite(bytes.data(), 1, bytes.size(), out.f) != bytes.size()) fail("write failed");
-        } else {
-            png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, png_fail, nullptr);
-            png_infop info = png_create_info_struct(png);
-            try {
-                png_init_io(png, out.f);
-                png_set_IHDR(png, info, png_uint_32(w), png_uint_32(h), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
-                             PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-                png_write_info(png, info);
-                for (int y = 0; y < h; ++y) png_write_row(png, &bytes[size_t(y) * w * 4]);
-                png_write_end(png, nullptr);
-            } catch (const Error& e) {
-                png_destroy_write_struct(&png, &info);
-                fail(e.what());
-            }
+    File out;
+    out.f = std::fopen(file.c_str(), "wb");
+    if (!out.f) fail(std::strerror(errno));
+    if (nc == 3) {
+        std::fprintf(out.f, "P6\n%d %d\n255\n", w, h);
+        if (std::fwrite(bytes.data(), 1, bytes.size(), out.f) != bytes.size()) fail(std::strerror(errno));
+    } else {
+        std::string warnings;
+        png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &warnings, png_fail, png_warn);
+        png_infop info = png_create_info_struct(png);
+        try {
+            png_init_io(png, out.f);
+            png_set_IHDR(png, info, png_uint_32(w), png_uint_32(h), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+                         PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+            png_write_info(png, info);
+            for (int y = 0; y < h; ++y) png_write_row(png, &bytes[size_t(y) * w * 4]);
+            png_write_end(png, nullptr);
+        } catch (const Error& e) {
             png_destroy_write_struct(&png, &info);
+            fail(e.what());
         }
-        if (std::fflush(out.f) != 0) fail("write failed");
+        png_destroy_write_struct(&png, &info);
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) fail("cannot rename " + tmp);
+    if (std::fflush(out.f) != 0 || std::ferror(out.f)) fail(std::strerror(errno));
 }
 
 }  // namespace dsr

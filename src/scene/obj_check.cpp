@@ -25,7 +25,8 @@ std::vector<string> split_escaped(string_view s) {
     return out;
 }
 
-ObjCheck check_obj(const string& path, string& text, std::vector<string>& warnings) {
+ObjCheck check_obj(const string& path, string& text, std::vector<string>& warnings, size_t max_triangles,
+                   const string& budget_note) {
     ObjCheck c;
     LineScanner s(path, text);
     Ignored skipped_lines, skipped_free;
@@ -90,7 +91,10 @@ ObjCheck check_obj(const string& path, string& text, std::vector<string>& warnin
             }
             ++c.faces;
             c.triangles += corners - 2;
-            if (c.triangles > kMaxObjElements) too_many("triangles");
+            if (c.triangles > std::min(max_triangles, kMaxObjElements)) {
+                if (budget_note.empty() || max_triangles >= kMaxObjElements) too_many("triangles");
+                s.fail("more than " + std::to_string(max_triangles) + " triangles (" + budget_note + ")");
+            }
         } else if (k == "o" || k == "g" || k == "s") {
             // names and smoothing groups: nothing to check (smoothing comes from the angle)
         } else if (k == "mtllib") {

@@ -18,6 +18,9 @@ struct ObjCheck {
 std::vector<std::string> split_escaped(std::string_view s);
 
 // Checks the OBJ text line by line (comments blanked in place); warns about skipped statements.
-ObjCheck check_obj(const std::string& path, std::string& text, std::vector<std::string>& warnings);
+// More than max_triangles triangles is an error; `budget_note` says whose budget that is ("" for
+// the file's own limit, kMaxObjElements).
+ObjCheck check_obj(const std::string& path, std::string& text, std::vector<std::string>& warnings,
+                   size_t max_triangles, const std::string& budget_note);
 
 }  // namespace dsr::obj

@@ -20,6 +20,7 @@
 #include "scene/obj_check.h"
 #include "scene/obj_geometry.h"
 #include "scene/obj_text.h"
+#include "scene/user_file.h"
 
 namespace dsr {
 
@@ -63,6 +64,7 @@ private:
 void add_materials(const string& path, const string& obj_name, const std::vector<tinyobj::material_t>& mats,
                    const std::map<string, MtlMaterialInfo>& mtl_info, const ObjOptions& options, ObjModel& model) {
     std::map<string, int> texture_index;  // texture_paths entry -> model.textures
+    size_t texels = 0;                     // of model.textures, against options.max_texels
     auto texture = [&](const MtlMaterialInfo& info, const string& key, const string& line_key, string name,
                        bool normal_map, double bm) -> int {
         while (!name.empty() && (name.back() == ' ' || name.back() == '\t')) name.pop_back();
@@ -76,19 +78,32 @@ void add_materials(const string& path, const string& obj_name, const std::vector
         if (it != texture_index.end() && !(normal_map && is_greyscale(model.textures[size_t(it->second)])))
             return it->second;
         Image img;
+        const size_t left = options.max_texels > texels ? options.max_texels - texels : 0;
+        auto over_budget = [&](size_t w, size_t h) {
+            throw Error(where + ": expected textures within " +
+                        (options.budget_note.empty() ? std::to_string(options.max_texels) + " texels"
+                                                     : options.budget_note) +
+                        ", got " + key + " " + quote(name) + " of " + std::to_string(w * h) + " (" + std::to_string(w) +
+                        " x " + std::to_string(h) + ") after " + std::to_string(texels));
+        };
         if (it != texture_index.end()) {
             img = model.textures[size_t(it->second)];  // a greyscale map used as colour and as height
         } else {
             try {
-                img = options.read_image ? options.read_image(resolved) : read_regular_image(resolved);
+                img = options.read_image ? options.read_image(resolved) : read_regular_image(resolved, left);
+            } catch (const ImageTooLarge& e) {
+                over_budget(size_t(e.width), size_t(e.height));
             } catch (const Error& e) {
                 throw Error(where + ": expected a readable image for " + key + ", got " + quote(name) + ": " + e.what());
             }
+            model.inputs.push_back(resolved);
             if (img.width <= 0 || img.height <= 0 || img.rgba.size() != size_t(img.width) * size_t(img.height) * 4)
                 throw Error(where + ": expected a readable image for " + key + ", got " + quote(name) + ": no pixels");
             for (float f : img.rgba)
                 if (!std::isfinite(f)) throw Error(where + ": expected finite texel values in " + quote(name) + " for " + key);
         }
+        if (size_t(img.width) * size_t(img.height) > left) over_budget(size_t(img.width), size_t(img.height));
+        texels += size_t(img.width) * size_t(img.height);
         string stored = resolved;
         if (normal_map && is_greyscale(img)) {
             if (!std::isfinite(bm)) throw Error(where + ": expected a finite -bm for " + key);
@@ -145,7 +160,9 @@ void add_materials(const string& path, const string& obj_name, const std::vector
 
 ObjModel load_obj(const string& path, const ObjOptions& options) {
     string text = options.read_text ? options.read_text(path) : read_regular_file(path, "OBJ file");
-    return parse_obj(path, std::move(text), options);
+    ObjModel model = parse_obj(path, std::move(text), options);
+    model.inputs.insert(model.inputs.begin(), path);
+    return model;
 }
 
 ObjModel parse_obj(const string& path, string text, const ObjOptions& options) {
@@ -157,8 +174,9 @@ ObjModel parse_obj(const string& path, string text, const ObjOptions& options) {
         return options.read_text ? options.read_text(p) : read_regular_file(p, what);
     };
 
-    // 1. Check the OBJ, then every MTL it names, line by line.
-    ObjCheck check = check_obj(path, text, model.warnings);
+    // 1. Check the OBJ, then every MTL it names, line by line (text from a hook too).
+    check_user_text(path, text);
+    ObjCheck check = check_obj(path, text, model.warnings, options.max_triangles, options.budget_note);
     std::map<string, MtlFile> mtls;  // keyed by the name in mtllib
     std::map<string, MtlMaterialInfo> mtl_info;
     for (const auto& [name, line] : check.mtllibs) {
@@ -173,6 +191,8 @@ ObjModel parse_obj(const string& path, string text, const ObjOptions& options) {
             throw Error(path + ":" + std::to_string(line) + ": expected a readable MTL file for mtllib, got " +
                         quote(name) + ": " + e.what());
         }
+        check_user_text(f.path, f.text);
+        model.inputs.push_back(f.path);
         check_mtl(f, mtl_info, model.warnings);
         for (auto& [mname, info] : mtl_info)
             if (info.mtllib_line == 0) info.mtllib_line = line;

@@ -43,6 +43,12 @@ struct ObjOptions {
     // The fuzzer and tests replace them; both throw dsr::Error.
     std::function<std::string(const std::string& path)> read_text;
     std::function<Image(const std::string& path)> read_image;
+    // Budgets: at most this many triangles (checked line by line, before tinyobjloader
+    // allocates) and texels of textures (checked on each image's header); `budget_note` says
+    // whose budget they are in messages (a scene's), "" for the file's own limits.
+    size_t max_triangles = kMaxObjElements;
+    size_t max_texels = kMaxImageTexels;
+    std::string budget_note;
 };
 
 // A parsed model in object space. groups[i].material indexes materials; materials' maps index
@@ -56,6 +62,7 @@ struct ObjModel {
     std::vector<Mesh> groups;
     size_t triangles = 0, vertices = 0;
     std::vector<std::string> warnings;  // "FILE:LINE: ..." for statements dsr ignores
+    std::vector<std::string> inputs;    // every file read: the OBJ, its MTLs and images
 };
 
 // Reads and parses an OBJ file, its MTL files and their textures.

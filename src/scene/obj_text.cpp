@@ -2,57 +2,20 @@
 #include "scene/obj_text.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 
 #include "scene/obj_loader.h"
 
 namespace dsr::obj {
 
-namespace fs = std::filesystem;
 using std::string;
 using std::string_view;
 
-string quote(string_view s) {
-    const size_t max = 60;
-    string out(s.substr(0, max));
-    if (s.size() > max) out += "...";
-    for (char& c : out)
-        if ((unsigned char)c < 32 || (unsigned char)c == 127) c = '?';
-    return "'" + out + "'";
-}
+string read_regular_file(const string& path, const string& what) { return read_user_text(path, what, kMaxObjBytes); }
 
-string read_regular_file(const string& path, const string& what) {
-    std::error_code ec;
-    const fs::file_status st = fs::status(path, ec);
-    if (ec || !fs::exists(st)) throw Error("cannot open " + what + " " + path + ": no such file");
-    if (fs::is_directory(st)) throw Error("cannot open " + what + " " + path + ": expected a file, got a directory");
-    if (!fs::is_regular_file(st)) throw Error("cannot open " + what + " " + path + ": expected a regular file");
-    const uintmax_t size = fs::file_size(path, ec);
-    if (ec) throw Error("cannot read " + what + " " + path + ": " + ec.message());
-    if (size > kMaxObjBytes)
-        throw Error("cannot read " + what + " " + path + ": " + std::to_string(size) + " bytes, expected at most " +
-                    std::to_string(kMaxObjBytes));
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("cannot open " + what + " " + path + ": " + std::strerror(errno));
-    string text(size_t(size), '\0');
-    in.read(text.data(), std::streamsize(size));
-    if (in.gcount() != std::streamsize(size)) throw Error("cannot read " + what + " " + path + ": short read");
-    return text;
-}
-
-Image read_regular_image(const string& path) {
-    std::error_code ec;
-    const fs::file_status st = fs::status(path, ec);
-    if (ec || !fs::exists(st)) throw Error("cannot read image " + path + ": no such file");
-    if (fs::is_directory(st)) throw Error("cannot read image " + path + ": expected a file, got a directory");
-    if (!fs::is_regular_file(st)) throw Error("cannot read image " + path + ": expected a regular file");
-    return load_image(path);
-}
+Image read_regular_image(const string& path, size_t max_texels) { return load_image(path, max_texels); }
 
 // ---- line scanning -------------------------------------------------------------------------
 

@@ -10,18 +10,20 @@
 
 #include "dsr_error.h"
 #include "scene/image.h"
+#include "scene/user_file.h"
 
 namespace dsr::obj {
 
-// `s` in single quotes, at most 60 characters, control characters as '?'.
-std::string quote(std::string_view s);
+// `s` in single quotes, at most 60 characters (scene/user_file.h).
+using dsr::quote;
 
-// Reads a whole regular file; a directory, device, missing file or one over kMaxObjBytes is an
-// error naming `what` (e.g. "OBJ file") and the path.
+// Reads a whole OBJ or MTL file through the user-file reader (scene/user_file.h): a directory,
+// device, missing file or one over kMaxObjBytes is an error naming `what` (e.g. "OBJ file") and
+// the path; a byte-order mark is dropped and control bytes refused.
 std::string read_regular_file(const std::string& path, const std::string& what);
 
-// load_image on a regular file; a directory, device or missing file is an error naming the path.
-Image read_regular_image(const std::string& path);
+// load_image under `max_texels` (a regular file only).
+Image read_regular_image(const std::string& path, size_t max_texels);
 
 // A read-only streambuf over a string, so tinyobjloader reads the checked text without a copy.
 struct MemBuf : std::streambuf {

@@ -137,6 +137,9 @@ struct Scene {
     std::vector<MeshModel> models;         // `mesh` lines' OBJ models, object space
     std::vector<MeshInstance> instances;   // one per `mesh` line
     std::vector<std::string> warnings;     // statements the loaders read and ignored
+    // Every file the scene was read from: the scene file, its OBJ and MTL files and images, as
+    // opened (no output of a run may be one of them).
+    std::vector<std::string> inputs;
 
     // Appends `mesh` and one object drawing it with `model`; returns the object's index.
     size_t add(Mesh mesh, const glm::dmat4& model = glm::dmat4(1.0), std::optional<ShapeDesc> shape = {});
@@ -147,7 +150,16 @@ struct Scene {
 // object (camera-relative, so far-from-origin scenes keep their precision).
 glm::mat4 camera_relative(const glm::dmat4& view, const glm::dmat4& model);
 
-// Parses a scene file (format in README.md); a path ending .obj is a model, framed by
+// The scene file's limits (docs/scene-format.md), each checked where the file is read, before
+// anything is allocated for it.
+constexpr double kMaxSceneNumber = 1e12;              // |any number|, and world-space vertices
+constexpr double kMaxFarOverNear = 1e7;               // camera far / near
+constexpr size_t kMaxSceneTriangles = 20'000'000;     // drawn: shapes and every mesh instance
+constexpr size_t kMaxSceneTexels = size_t(1) << 26;   // all textures together: 1 GiB as float RGBA
+// Past this ratio of a triangle's longest edge to the camera's distance, load_scene warns.
+constexpr double kMaxEdgeOverDistance = 1e5;
+
+// Parses a scene file (format in docs/scene-format.md); a path ending .obj is a model, framed by
 // model_scene (scene/framing.h). Throws dsr::Error whose message is
 // "FILE:LINE: expected ..., got ..." for any mistake; textures are loaded here.
 // Warnings (statements of OBJ/MTL files dsr ignores) are in Scene::warnings and printed to stderr.

@@ -1,17 +1,18 @@
-// The scene-file parser (format: README.md "Scene files"). Every mistake is one dsr::Error
+// The scene-file parser (format: docs/scene-format.md). Every mistake is one dsr::Error
 // "FILE:LINE: expected <what>, got '<token>'" so a user can fix the file without guessing.
-// Directives that take keywords accept them in any order, each once.
+// Directives that take keywords accept them in any order, each once. Every number is checked
+// against its documented range here, where the user wrote it, so that nothing downstream (the
+// projection, the culling planes, the depth codecs) ever meets a value it cannot represent; the
+// scene's triangles and texels are counted against their budgets before anything is allocated.
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <set>
+#include <iomanip>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -23,6 +24,7 @@
 #include "scene/light_law.h"
 #include "scene/obj_loader.h"
 #include "scene/scene.h"
+#include "scene/user_file.h"
 
 namespace dsr {
 
@@ -41,7 +43,7 @@ public:
     [[noreturn]] void fail(const std::string& problem) const { throw Error(where() + ": " + problem); }
     // "expected X, got 'tok'", or "got end of line" when the tokens ran out.
     [[noreturn]] void expected(const std::string& what, size_t at) const {
-        if (at < tokens_.size()) fail("expected " + what + ", got '" + tokens_[at] + "'");
+        if (at < tokens_.size()) fail("expected " + what + ", got " + quote(tokens_[at]));
         fail("expected " + what + ", got end of line");
     }
     [[noreturn]] void expected_here(const std::string& what) const { expected(what, pos_); }
@@ -59,16 +61,20 @@ public:
         return tokens_[pos_++];
     }
 
-    // Strict full-token conversion: "1.5x", "nan", "inf" and "1e999" are all refused.
-    // `subject` names the value, e.g. "fov" gives "expected a number for fov".
+    // Strict full-token conversion: "1.5x", "nan", "inf" and "1e999" are all refused, and so is
+    // anything beyond +-kMaxSceneNumber (the OBJ reader's bound). `subject` names the value, e.g.
+    // "fov" gives "expected a number for fov". Tokens longer than 64 characters are not numbers
+    // (strtod's time grows with the digits).
     float number(const std::string& subject) {
         if (done()) expected_here("a number for " + subject);
         const std::string& tok = tokens_[pos_];
+        if (tok.size() > 64) expected_here("a number for " + subject);
         char* end = nullptr;
         const double d = std::strtod(tok.c_str(), &end);
         if (end == tok.c_str() || *end != '\0') expected_here("a number for " + subject);
         const float f = float(d);
         if (!std::isfinite(d) || !std::isfinite(f)) expected_here("a finite number for " + subject);
+        if (std::fabs(d) > kMaxSceneNumber) expected_here("a number for " + subject + " within +-1e12");
         ++pos_;
         return f;
     }
@@ -129,14 +135,14 @@ private:
     size_t pos_ = 0;
 };
 
-std::vector<std::string> tokenize(std::string text) {
-    const size_t hash = text.find('#');
-    if (hash != std::string::npos) text.erase(hash);
-    std::istringstream in(text);
-    std::vector<std::string> out;
-    for (std::string t; in >> t;) out.push_back(t);
-    return out;
+// Drawn triangles of the built-in shapes (shapes.cpp), counted before one is made.
+size_t shape_triangles(const std::string& kind) {
+    if (kind == "plane") return 2;
+    if (kind == "box") return 12;
+    return 48 * (2 * 24 - 2);  // make_sphere's default slices x stacks, less the poles' halves
 }
+
+std::string count(size_t n) { return std::to_string(n); }
 
 class Parser {
 public:
@@ -146,30 +152,25 @@ public:
     }
 
     Scene run() {
-        std::error_code ec;
-        if (std::filesystem::is_directory(path_, ec))
-            throw Error("cannot open scene file " + path_ + ": expected a file, got a directory");
-        std::ifstream in(path_);
-        if (!in) throw Error("cannot open scene file " + path_ + ": " + std::strerror(errno));
-        run(in);
-        if (in.bad()) throw Error("cannot read scene file " + path_ + ": " + std::strerror(errno));
+        std::string text = read_user_text(path_, "scene file", kMaxSceneBytes);
+        scene_.inputs.push_back(path_);
+        run_lines(text);
         return finish();
     }
 
-    Scene run_text(const std::string& text) {
-        std::istringstream in(text);
-        run(in);
+    Scene run_text(std::string text) {
+        check_user_text(path_, text);
+        run_lines(text);
         return finish();
     }
 
 private:
-    void run(std::istream& in) {
-        std::string text;
-        for (int number = 1; std::getline(in, text); ++number) {
-            if (!text.empty() && text.back() == '\r') text.pop_back();  // CRLF files
-            std::vector<std::string> tokens = tokenize(text);
-            if (tokens.empty()) continue;
-            Line line(path_, number, std::move(tokens));
+    void run_lines(const std::string& text) {
+        TextLines lines(text);
+        for (std::string_view l; lines.next(l);) {
+            const std::vector<std::string_view> views = split_tokens(l);
+            if (views.empty()) continue;
+            Line line(path_, lines.number(), std::vector<std::string>(views.begin(), views.end()));
             directive(line);
         }
     }
@@ -177,9 +178,56 @@ private:
     Scene finish() {
         if (camera_line_ == 0) throw Error(path_ + ": no camera line");
         if (fit_) apply_camera_fit(scene_, *fit_);  // `camera fit`: once every object is placed
+        precision_warnings();
         return std::move(scene_);
     }
 
+    // Triangles whose edges are very long against the camera's distance to them lose their
+    // edges and shading in the rasteriser's float clipping and interpolation (a 1e6 plane seen
+    // from 1 unit above is up to 178 LSB off on llvmpipe, 1e5 within 1 LSB): legal, so one
+    // warning, naming the first line that has such triangles, from the scene's camera.
+    void precision_warnings() {
+        const glm::dvec3 eye(scene_.camera.pos);
+        const double near_plane = scene_.camera.near_plane;
+        struct Extent {
+            double edge = -1;  // longest edge in object space; -1: not measured yet
+            glm::dvec3 lo{0}, hi{0};
+        };
+        std::vector<Extent> extents(scene_.meshes.size());  // per mesh, shared by its instances
+        for (const auto& [line, object] : object_lines_) {
+            const Object& o = scene_.objects[object];
+            Extent& x = extents[o.mesh];
+            if (x.edge < 0) {
+                const Mesh& mesh = scene_.meshes[o.mesh];
+                x.edge = 0;
+                for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+                    for (size_t k = 0; k < 3; ++k) {
+                        const glm::dvec3 a(mesh.vertices[mesh.indices[t + k]].pos);
+                        const glm::dvec3 b(mesh.vertices[mesh.indices[t + (k + 1) % 3]].pos);
+                        x.edge = std::max(x.edge, glm::length(b - a));
+                        x.lo = t + k == 0 ? a : glm::min(x.lo, a);
+                        x.hi = t + k == 0 ? a : glm::max(x.hi, a);
+                    }
+            }
+            // Rigid with a uniform scale (scene.h Object): lengths scale by a column's length.
+            const double edge = x.edge * glm::length(glm::dvec3(o.model[0]));
+            glm::dvec3 lo(0), hi(0);
+            for (int c = 0; c < 8; ++c) {
+                const glm::dvec3 corner((c & 1) ? x.hi.x : x.lo.x, (c & 2) ? x.hi.y : x.lo.y, (c & 4) ? x.hi.z : x.lo.z);
+                const glm::dvec3 w(o.model * glm::dvec4(corner, 1.0));
+                lo = c == 0 ? w : glm::min(lo, w);
+                hi = c == 0 ? w : glm::max(hi, w);
+            }
+            const double distance = std::max(glm::length(eye - glm::clamp(eye, lo, hi)), near_plane);
+            if (edge > kMaxEdgeOverDistance * distance) {
+                scene_.warnings.push_back(path_ + ":" + std::to_string(line) + ": triangles " + fmt(float(edge)) +
+                                          " long, " + fmt(float(edge / distance)) +
+                                          " times the camera's distance to them: past 1e5 their edges and shading "
+                                          "lose precision (docs/scene-format.md)");
+                return;
+            }
+        }
+    }
 
     void directive(Line& line) {
         const std::string kinds =
@@ -221,6 +269,11 @@ private:
             }
         }
         line.require(keys, seen);
+        // Past 1e7 the projection's far row rounds to the near row's (docs/accuracy.md: at 1e8
+        // every path loses its far plane).
+        if (!(double(c.far_plane) <= kMaxFarOverNear * double(c.near_plane)))
+            line.fail("expected far / near at most 1e7, got " + fmt(c.far_plane) + " / " + fmt(c.near_plane) + " = " +
+                      fmt(double(c.far_plane) / double(c.near_plane)));
         const glm::vec3 dir = c.target - c.pos;
         if (!(glm::length(dir) > 0)) line.fail("camera target equals camera pos");
         const float cross_len = glm::length(glm::cross(glm::normalize(dir), c.up));
@@ -289,17 +342,35 @@ private:
             if (scene_.texture_paths[i] == resolved) return int(i);
         Image img;
         try {
-            std::error_code ec;
-            if (std::filesystem::is_directory(resolved, ec)) throw Error("expected a file, got a directory");
-            if (std::filesystem::exists(resolved, ec) && !std::filesystem::is_regular_file(resolved, ec))
-                throw Error("expected a regular file");
-            img = load_image(resolved);
+            img = load_image(resolved, kMaxSceneTexels - texels_);
+        } catch (const ImageTooLarge& e) {
+            line.fail("expected textures within the scene's budget of " + count(kMaxSceneTexels) + " texels, got " +
+                      key + " " + quote(file) + " of " + count(size_t(e.width) * size_t(e.height)) + " (" +
+                      std::to_string(e.width) + " x " + std::to_string(e.height) + ") after " + count(texels_));
         } catch (const Error& e) {
-            line.fail("expected a readable image for " + key + ", got '" + file + "': " + e.what());
+            line.fail("expected a readable image for " + key + ", got " + quote(file) + ": " + e.what());
         }
+        texels_ += size_t(img.width) * size_t(img.height);
+        scene_.inputs.push_back(resolved);
         scene_.textures.push_back(std::move(img));
         scene_.texture_paths.push_back(resolved);
         return int(scene_.textures.size() - 1);
+    }
+
+    // Before a shape or mesh instance adds `n` drawn triangles.
+    void spend_triangles(const Line& line, const std::string& what, size_t n) {
+        if (n > kMaxSceneTriangles - triangles_)
+            line.fail("expected at most " + count(kMaxSceneTriangles) + " triangles in the scene, got " + what + " of " +
+                      count(n) + " after " + count(triangles_));
+        triangles_ += n;
+    }
+
+    // A world-space point of `what` beyond +-kMaxSceneNumber (as OBJ coordinates are bounded).
+    void check_world(const Line& line, const std::string& what, const glm::dvec3& p) {
+        for (int i = 0; i < 3; ++i)
+            if (!(std::fabs(p[i]) <= kMaxSceneNumber))
+                line.fail("expected " + what + " within +-1e12 in world space, got a vertex at " + fmt(float(p.x)) +
+                          " " + fmt(float(p.y)) + " " + fmt(float(p.z)));
     }
 
     void shape(Line& line, const std::string& kind) {
@@ -325,9 +396,14 @@ private:
             }
         }
         line.require(keys, seen);
-        if (kind == "plane") add_plane(scene_, size.x, at, material);
-        else if (kind == "box") add_box(scene_, size, at, material);
-        else add_sphere(scene_, size.x, at, material);
+        const glm::dvec3 half = glm::dvec3(size) * 0.5;
+        check_world(line, kind, glm::abs(glm::dvec3(at)) + half);
+        spend_triangles(line, "a " + kind, shape_triangles(kind));
+        size_t object;
+        if (kind == "plane") object = add_plane(scene_, size.x, at, material);
+        else if (kind == "box") object = add_box(scene_, size, at, material);
+        else object = add_sphere(scene_, size.x, at, material);
+        object_lines_.push_back({line.number(), object});
     }
 
     // mesh FILE.obj [scale S] [at X Y Z] [rotate_y DEGREES] [material NAME]
@@ -352,17 +428,26 @@ private:
         auto cached = model_index_.find(resolved);
         if (cached == model_index_.end()) {
             ObjModel obj;
+            ObjOptions options;
+            // What is left of the scene's budgets, checked by the OBJ reader before it allocates.
+            options.max_triangles = kMaxSceneTriangles - triangles_;
+            options.max_texels = kMaxSceneTexels - texels_;
+            options.budget_note = "the scene's budget of " + count(kMaxSceneTriangles) + " triangles and " +
+                                  count(kMaxSceneTexels) + " texels has " + count(options.max_triangles) + " and " +
+                                  count(options.max_texels) + " left";
             try {
-                obj = load_obj(resolved);
+                obj = load_obj(resolved, options);
             } catch (const Error& e) {
-                line.fail("expected a readable OBJ file for mesh, got '" + file + "': " + e.what());
+                line.fail("expected a readable OBJ file for mesh, got " + quote(file) + ": " + e.what());
             }
+            for (const std::string& f : obj.inputs) scene_.inputs.push_back(f);
             std::vector<int> tex(obj.textures.size());
             for (size_t i = 0; i < obj.textures.size(); ++i) {
                 tex[i] = -1;
                 for (size_t j = 0; j < scene_.texture_paths.size() && tex[i] < 0; ++j)
                     if (scene_.texture_paths[j] == obj.texture_paths[i]) tex[i] = int(j);
                 if (tex[i] < 0) {
+                    texels_ += size_t(obj.textures[i].width) * size_t(obj.textures[i].height);
                     scene_.textures.push_back(std::move(obj.textures[i]));
                     scene_.texture_paths.push_back(obj.texture_paths[i]);
                     tex[i] = int(scene_.textures.size() - 1);
@@ -393,8 +478,9 @@ private:
         // drawn with model_matrix() (composed with the view in double by the renderers).
         const glm::dmat4 m = inst.model_matrix();
         const MeshModel& model = scene_.models[size_t(inst.model)];
-        // Every vertex must stay finite in world space (the analytic reference and the bounds
-        // the renderers cull with are world-space): checked on the model's bounding box corners.
+        // Every vertex must stay within +-1e12 in world space, as OBJ coordinates and the scene's
+        // own numbers do (the analytic reference and the bounds the renderers cull with are
+        // world-space): checked on the model's bounding box corners.
         for (size_t g = model.first_mesh; g < model.first_mesh + model.mesh_count; ++g) {
             glm::vec3 lo(0), hi(0);
             bool first = true;
@@ -405,19 +491,17 @@ private:
             }
             for (int c = 0; c < 8; ++c) {
                 const glm::dvec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
-                const glm::dvec3 pos = glm::dvec3(m * glm::dvec4(corner, 1.0));
-                const glm::vec3 f(pos);
-                if (!std::isfinite(f.x) || !std::isfinite(f.y) || !std::isfinite(f.z))
-                    line.fail("expected scale and at that keep '" + file + "' within float range, got a vertex at " +
-                              fmt(f.x) + " " + fmt(f.y) + " " + fmt(f.z));
+                check_world(line, "scale and at that keep " + quote(file), glm::dvec3(m * glm::dvec4(corner, 1.0)));
             }
         }
+        spend_triangles(line, "mesh " + quote(file), model.triangles);
         inst.first_object = scene_.objects.size();
         for (size_t g = model.first_mesh; g < model.first_mesh + model.mesh_count; ++g) {
             Object o;
             o.mesh = g;
             o.model = m;
             o.material = inst.material >= 0 ? inst.material : scene_.meshes[g].material;
+            object_lines_.push_back({line.number(), scene_.objects.size()});
             scene_.objects.push_back(o);
         }
         inst.object_count = scene_.objects.size() - inst.first_object;
@@ -469,7 +553,8 @@ private:
                 l.threshold = line.positive("attenuation threshold");
             } else if (k == "dir") {
                 l.dir = line.vec3("light dir");
-                if (!(glm::length(l.dir) > 0)) line.expected_last("a non-zero light dir");
+                // 1e-12: its squared length stays a normal float, so normalising it is exact enough.
+                if (!(glm::length(glm::dvec3(l.dir)) >= 1e-12)) line.expected_last("a non-zero light dir (length >= 1e-12)");
                 l.dir = glm::normalize(l.dir);
             } else if (k == "angle") {
                 l.angle_deg = line.number("spot angle");
@@ -490,7 +575,9 @@ private:
             if (i_max > 0 && !(l.radius > 0))
                 line.fail("expected attenuation under which the light reaches threshold " + fmt(l.threshold) +
                           " somewhere (KC < largest colour / threshold), got KC " + fmt(l.kc));
-            if (!std::isfinite(l.radius)) line.fail("expected an attenuation radius below 3.4e38");
+            if (!(l.radius <= kMaxSceneNumber))
+                line.fail("expected attenuation whose radius (where it reaches threshold " + fmt(l.threshold) +
+                          ") is within 1e12, got " + fmt(l.radius));
         }
         scene_.lights.push_back(l);
     }
@@ -504,9 +591,9 @@ private:
         }
     }
 
-    static std::string fmt(float f) {
+    static std::string fmt(double f) {
         std::ostringstream s;
-        s << f;
+        s << std::setprecision(6) << f;
         return s.str();
     }
 
@@ -517,6 +604,8 @@ private:
     std::optional<CameraFit> fit_;
     std::vector<int> material_lines_;  // parallel to scene_.materials
     std::map<std::string, int> model_index_;  // resolved OBJ path -> scene_.models
+    size_t triangles_ = 0, texels_ = 0;       // spent of kMaxSceneTriangles, kMaxSceneTexels
+    std::vector<std::pair<int, size_t>> object_lines_;  // (line, index into scene_.objects)
 };
 
 }  // namespace

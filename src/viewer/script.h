@@ -38,8 +38,9 @@ struct Script {
 const std::vector<std::string>& viewer_settings();
 
 // Throws dsr::Error "FILE:LINE: expected ..., got '...'" on the first bad line, or when the file
-// cannot be read.
-Script parse_script(const std::string& text, const std::string& path);
+// cannot be read. The file goes through the user-file reader (scene/user_file.h): regular files
+// of at most kMaxScriptBytes, a byte-order mark skipped, control bytes refused.
+Script parse_script(std::string text, const std::string& path);
 Script load_script(const std::string& path);
 
 }  // namespace dsr

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <map>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -25,6 +26,7 @@
 #include "platform/glfw_context.h"
 #include "platform/resources.h"
 #include "scene/framing.h"
+#include "scene/output_set.h"
 #include "viewer/script.h"
 #include "viewer/viewer.h"
 #include "viewer/viewer_state.h"
@@ -62,6 +64,9 @@ private:
     bool minimised_ = false;   // `size 0 0`: treated as a 0x0 framebuffer whatever the X server does
     bool quit_ = false;
     std::string pending_shot_;  // F12
+    OutputSet shots_{""};        // the script's screenshots, renamed together when it ends
+    std::map<std::string, std::string> shot_flags_;  // script screenshot path -> "FILE:LINE: screenshot"
+    std::vector<std::string> shot_lines_;            // their "wrote" lines, printed once renamed
     double start_ = 0, last_time_ = 0, anim_angle_ = 0, ideal_time_ = -1e9;
     double last_x_ = 0, last_y_ = 0;
     bool dragging_ = false;
@@ -72,6 +77,8 @@ private:
 Viewer::Viewer(const ViewerConfig& cfg) : cfg_(cfg) {
     const std::string path = cfg.scene_path.empty() ? resource_dir("data") + "/default.scene" : cfg.scene_path;
     scene_ = load_scene(path);  // input errors before any window opens
+    for (size_t i = 0; i < scene_.inputs.size(); ++i)
+        shots_.add_input(scene_.inputs[i], i == 0 ? "the scene file" : "a file the scene reads,");
     if (cfg.lights) scene_ = bench_scene(scene_, *cfg.lights);  // as `render --lights` (bench_scenes.h)
     cfg_.scene_path = path;
     camera_ = scene_.camera;
@@ -181,14 +188,25 @@ void Viewer::resize_window(int w, int h, const std::string& where) {
     }
 }
 
+// A script's screenshot goes to a temporary file, renamed with the others when the script's
+// run ends (scene/output_set.h: a failure leaves none); F12's is written at once.
 void Viewer::screenshot(const std::string& path, int w, int h) {
-    write_image(path, opaque(read_pixels(w, h)));
+    const Image img = opaque(read_pixels(w, h));
     const FrameStats& s = st_.last;
     // "panel on": it is drawn over the window after this read-back, so never in the file.
-    std::printf("wrote %s (%dx%d, view %s, scissor %s, panel %s, %d/%d lights drawn, scissor_pixels %lld)\n",
-                path.c_str(), w, h, view_name(st_.options.view), st_.options.shader.scissor ? "on" : "off",
-                st_.panel ? "on" : "off", s.lights_drawn, s.lights_total, s.scissor_pixels);
-    std::fflush(stdout);
+    char line[512];
+    std::snprintf(line, sizeof line, " (%dx%d, view %s, scissor %s, panel %s, %d/%d lights drawn, scissor_pixels %lld)",
+                  w, h, view_name(st_.options.view), st_.options.shader.scissor ? "on" : "off",
+                  st_.panel ? "on" : "off", s.lights_drawn, s.lights_total, s.scissor_pixels);
+    auto flag = shot_flags_.find(path);
+    if (flag == shot_flags_.end()) {
+        write_image(path, img);
+        std::printf("wrote %s%s\n", path.c_str(), line);
+        std::fflush(stdout);
+        return;
+    }
+    shots_.put_image(flag->second, path, img);
+    shot_lines_.push_back("wrote " + path + line);
 }
 
 // One frame; false (after a short wait, so a minimised window does not spin) when there is
@@ -348,6 +366,13 @@ void Viewer::print_summary() const {
 
 int Viewer::run(const Script* script) {
     if (script) {
+        // Every screenshot path is checked against the inputs before the first frame.
+        shots_.add_input(script->path, "the script");
+        for (const ScriptCommand& c : script->commands)
+            if (c.kind == ScriptCommand::screenshot && !shot_flags_.count(c.value)) {
+                shots_.add(script->where(c) + "screenshot", c.value);
+                shot_flags_[c.value] = script->where(c) + "screenshot";
+            }
         for (const ScriptCommand& c : script->commands) {
             const std::string where = script->where(c);
             switch (c.kind) {
@@ -371,7 +396,12 @@ int Viewer::run(const Script* script) {
                 case ScriptCommand::screenshot:
                     if (fb_width() <= 0 || fb_height() <= 0)
                         throw Error(where + "screenshot: the window is minimised (0x0): nothing to capture");
-                    frame(&c.value);
+                    try {
+                        frame(&c.value);
+                    } catch (const Error& e) {
+                        const std::string what = e.what();  // add() named the line already
+                        throw Error(what.rfind(where, 0) == 0 ? what : where + "screenshot: " + what);
+                    }
                     break;
                 case ScriptCommand::quit: quit_ = true; break;
             }
@@ -379,6 +409,8 @@ int Viewer::run(const Script* script) {
         }
     }
     while (!quit_ && !glfwWindowShouldClose(ctx_->window())) frame(nullptr);
+    shots_.commit();
+    for (const std::string& l : shot_lines_) std::printf("%s\n", l.c_str());
     print_summary();
     return 0;
 }
