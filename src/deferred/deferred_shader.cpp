@@ -14,6 +14,16 @@
 
 namespace dsr {
 
+namespace {
+// f() as stage `slot` of the frame timer.
+template <class F>
+void timed(FrameTimer& timer, int slot, F&& f) {
+    timer.begin(slot);
+    f();
+    timer.end();
+}
+}  // namespace
+
 DeferredShader::DeferredShader(const Caps& caps, int width, int height, const ShaderOptions& opts,
                                const std::string& shader_dir)
     : config_(shader_config(caps, opts)), shader_dir_(shader_dir), final_(config_.paths.fbo) {
@@ -66,6 +76,8 @@ FrameDef DeferredShader::frame_of(const Camera& camera, const std::vector<Light>
     return make_frame(camera, lights, s);
 }
 
+FrameDef DeferredShader::last_frame() const { return frame_of(camera_, {}, true); }
+
 FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     if (!gpu_) throw Error("DeferredShader::render before set_scene");
     FrameStats st;
@@ -73,10 +85,10 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     timer_.begin_frame(S_COUNT);
     const FrameDef f = frame_of(scene.camera, scene.lights, config_.opts.scissor);
     camera_ = scene.camera;
-    timed(S_GEOMETRY, [&] { geometry_->draw(f, *gpu_, *targets_); });  // 1. geometry stage
+    timed(timer_, S_GEOMETRY, [&] { geometry_->draw(f, *gpu_, *targets_); });  // 1. geometry stage
     draw_lights(f, scene, st);                                          // 2. lighting stage
     post_stage(f);                                                      // 3. post-processing
-    timed(S_FINAL, [&] { final_.draw(*targets_, out_w, out_h); });       // 4. final stage
+    timed(timer_, S_FINAL, [&] { final_.draw(*targets_, out_w, out_h); });       // 4. final stage
     std::vector<double> ms;
     st.ms.cpu = thread_cpu_ms() - cpu0;
     st.ms.frame = timer_.end_frame(ms);
@@ -97,7 +109,7 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
 // Listing 14, with SSAO before the ambient pass it scales, the depth hand-off before the light
 // passes that test against it, and the forward stage after them, all into P-buffer 0.
 void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameStats& st) {
-    if (ssao_) timed(S_SSAO, [&] { ssao_->draw(f, *targets_); });
+    if (ssao_) timed(timer_, S_SSAO, [&] { ssao_->draw(f, *targets_); });
     timer_.begin(S_AMBIENT);
     fb_bind_render(P_ACCUM);
     lighting_->draw_ambient(f, scene, *targets_, ssao_.get());
@@ -107,7 +119,7 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
     const int gbuffer[4] = {G_NORMAL, G_DIFFUSE, G_SPECULAR, depth_target(config_.opts.depth)};
     for (int i = 0; i < 4; ++i) mrt_bind_texture(gbuffer[i], units[i]);  // mrt_bind_texture(ALL)
     if (config_.paths.accum_depth) {
-        timed(S_DEPTH_COPY, [&] { lighting_->hand_off_depth(f, *targets_); });
+        timed(timer_, S_DEPTH_COPY, [&] { lighting_->hand_off_depth(f, *targets_); });
         check_gl_stage("lighting stage: depth hand-off");
     }
     timer_.begin(S_LIGHTS);
@@ -125,8 +137,8 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
 }
 
 void DeferredShader::post_stage(const FrameDef& f) {
-    if (post_->bloom()) timed(S_BLOOM, [&] { post_->draw_bloom(*targets_); });
-    if (post_->anti_alias()) timed(S_AA, [&] { post_->draw_anti_alias(f, *targets_); });
+    if (post_->bloom()) timed(timer_, S_BLOOM, [&] { post_->draw_bloom(*targets_); });
+    if (post_->anti_alias()) timed(timer_, S_AA, [&] { post_->draw_anti_alias(f, *targets_); });
 }
 
 // --- one stage at a time -------------------------------------------------------------------

@@ -15,9 +15,9 @@
 
 #include <glm/glm.hpp>
 
+#include "deferred/final_stage.h"
 #include "deferred/frame.h"
 #include "deferred/frame_stats.h"
-#include "deferred/final_stage.h"
 #include "deferred/render_targets.h"
 #include "deferred/shader_table.h"
 #include "deferred/view.h"
@@ -72,13 +72,11 @@ public:
     Image read_pbuffer(int fb);
     int pbuffer_width(int fb) const { return targets_->pbuffer(fb).width(); }
     int pbuffer_height(int fb) const { return targets_->pbuffer(fb).height(); }
-    GLuint pbuffer_texture(int fb) const { return targets_->pbuffer(fb).texture(0); }
     int width() const { return targets_->width(); }
     int height() const { return targets_->height(); }
     // The options as run: depth `automatic` resolved by choose_paths.
     const ShaderOptions& options() const { return config_.opts; }
     const Paths& paths() const { return config_.paths; }
-    TimingSource timing() const { return timer_.source(); }
     // Eye-space camera of the last frame drawn.
     glm::mat4 view_matrix() const { return camera_.view(); }
     glm::mat4 proj_matrix() const { return camera_.projection(float(width()) / float(height())); }
@@ -97,11 +95,9 @@ private:
     // Stage slots of the frame timer, in StageTimes order.
     enum Slot { S_GEOMETRY, S_AMBIENT, S_LIGHTS, S_BLOOM, S_AA, S_FINAL, S_DEPTH_COPY, S_SSAO, S_FORWARD, S_COUNT };
     FrameDef frame_of(const Camera& camera, const std::vector<Light>& lights, bool scissors) const;
-    FrameDef last_frame() const { return frame_of(camera_, {}, true); }  // its camera, no lights
+    FrameDef last_frame() const;  // camera_'s, no lights
     void draw_lights(const FrameDef& f, const Scene& scene, FrameStats& stats);
     void post_stage(const FrameDef& f);
-    template <class F>
-    void timed(Slot s, F&& f) { timer_.begin(s), f(), timer_.end(); }
 
     ShaderConfig config_;  // capabilities, options as run, paths chosen
     std::string shader_dir_;

@@ -211,6 +211,10 @@ std::string describe_programs(const ShaderConfig& c) {
         s << line;
         if (!d.empty()) s << "  " << std::string(26, ' ') << " " << d << "\n";
     }
+    std::string rest;
+    for (const ShaderRow& r : shader_rows())
+        if (!r.used(c)) rest += (rest.empty() ? "" : ", ") + std::string(r.name);
+    if (!rest.empty()) s << "  the table's other rows (other options): " << rest << "\n";
     return s.str();
 }
 
