@@ -56,8 +56,15 @@ public:
     }
 
     void draw(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats) override {
+        // The spans' passes draw into buffers of their own: P-buffer 0 unbound around them (it
+        // keeps its contents: the spans need framebuffer objects).
         std::vector<DepthSpan> spans;
-        stats.tile_depth_ms = depth_ ? wall_ms([&] { spans = depth_->spans(f, targets); }) : 0.0;
+        if (depth_)
+            stats.tile_depth_ms = wall_ms([&] {
+                targets.fb_unbind_render(P_ACCUM);
+                spans = depth_->spans(f);
+                targets.fb_bind_render(P_ACCUM);
+            });
         double plan_ms = 0;
         TileDepth depth;
         const TileDepth* cull = nullptr;

@@ -29,9 +29,8 @@ void TileDepthPass::resize(int w, int h) {
     tiles_ = std::make_unique<PBuffer>("tile depth", d);
 }
 
-std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f, RenderTargets& t) {
+std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f) {
     const int tx = tiles_->width(), ty = tiles_->height(), rows = rows_->height();
-    t.fb_unbind_render(P_ACCUM);
     RenderState s = fixed_function_2d();  // spans written, not blended
     // Pass 1: each tile column's span over each window row.
     rows_->bind_render();
@@ -63,7 +62,6 @@ std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f, RenderTargets& t)
     rows_->unbind_texture(0, 4);
     tiles_->unbind_render();
     glActiveTexture(GL_TEXTURE0);
-    t.fb_bind_render(P_ACCUM);  // framebuffer objects keep its contents
     check_gl("tile depth spans");
     std::vector<DepthSpan> out(size_t(tx) * ty);
     for (size_t i = 0; i < out.size(); ++i) out[i] = DepthSpan{px[4 * i], px[4 * i + 1]};

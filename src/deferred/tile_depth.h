@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "deferred/frame.h"
-#include "deferred/render_targets.h"
 #include "deferred/shader_table.h"
 #include "deferred/tile_plan.h"
 #include "gl/pbuffer.h"
@@ -24,9 +23,9 @@ public:
     // textures would disturb the G-buffer's texture bindings.
     TileDepthPass(const ShaderConfig& c, ProgramSet& programs, int width, int height);
     void resize(int width, int height);
-    // Each tile's span, row by row. Called with P-buffer 0 bound for rendering and the G-buffer's
-    // targets bound on units 0..3; leaves them so.
-    std::vector<DepthSpan> spans(const FrameDef& f, RenderTargets& targets);
+    // Each tile's span, row by row: its two passes into its own buffers and the read-back. Reads
+    // the G-buffer's normal and depth targets on units 0 and 3; P-buffer 0 must not be bound.
+    std::vector<DepthSpan> spans(const FrameDef& f);
 
 private:
     Program rows_prog_, reduce_prog_;
