@@ -6,7 +6,8 @@
 //   tiles    light_geometry_tiles.cpp    screen tiles, several lights a pass (§3.4.3's closing remark)
 // A geometry draws; whether the frame is counted, and how long it took, is decided outside it
 // (LightingStage::draw_lighting, DeferredShader's timer). A fifth geometry is a new file, a line
-// in make_light_geometry and its name in the options (options.h, option_table.cpp).
+// in make_light_geometry and its name in the options (options.h, option_table.cpp), with the rows
+// of any program of its own in shader_table.cpp (docs/architecture.md has the recipe).
 #pragma once
 #include <memory>
 
