@@ -6,8 +6,8 @@
 //   ambient  Factor_amb of Equation 6 on the pass that lays a surface down, 0 on additive passes
 //   nlights  lights in this pass, <= MAX_LIGHTS (Listing 3: many per pass; Listing 4: one)
 // Variants: NORMAL_MAP (tangent space, as glsl120/material.frag), LISTING2_LITERAL,
-// MAX_LIGHTS n (set by the renderer from GL_MAX_FRAGMENT_UNIFORM_COMPONENTS), OPACITY (issue 13:
-// the transparent pass, src/forward/transparent_pass.cpp, blends with alpha = the material's
+// MAX_LIGHTS n (set by the renderer from GL_MAX_FRAGMENT_UNIFORM_COMPONENTS), OPACITY (docs/forward.md:
+// the transparent pass, src/deferred/transparent_pass.cpp, blends with alpha = the material's
 // opacity; without it alpha is 1 as before).
 #include "lighting.glsl"
 

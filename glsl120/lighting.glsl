@@ -44,7 +44,7 @@ vec3 lighting(vec3 Scolor, vec3 Spos, float Sradius, vec3 p, vec3 v, vec3 n, vec
     return att * brdf(Scolor, l, dist, p, v, n, Mdiff, Mspec, Mshi);
 }
 
-// One light of any type (issue 12) at eye-space point p, seen along v = view_vector(p);
+// One light of any type (point, spot, directional) at eye-space point p, seen along v = view_vector(p);
 // scene/light_law.h is its CPU twin and documents the laws. Five vec4s per light, so multi-light shaders can hold them in uniform arrays:
 //   Lpos   = (eye-space position, radius)               directional: unused
 //   Lcolor = (S_diff = S_spec, type)                    type 0 point, 1 spot, 2 directional

@@ -1,5 +1,5 @@
 #version 120
-// Screen-space ambient occlusion (issue 13; Vasilovici §5, after Crytek's depth comparison):
+// Screen-space ambient occlusion (docs/ssao.md; Vasilovici §5, after Crytek's depth comparison):
 // SAMPLES points of a hemisphere about the surface normal (ssao_kernel.h), in eye space around the
 // reconstructed position, each projected back to the screen and compared with the depth there.
 // The kernel turns about the normal by one of a 4x4 tile of rotations (gl_FragCoord mod 4):

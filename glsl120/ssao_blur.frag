@@ -1,5 +1,5 @@
 #version 120
-// Depth-aware blur of the SSAO buffer (issue 13): the 4x4 texels that cover one tile of
+// Depth-aware blur of the SSAO buffer (docs/ssao.md): the 4x4 texels that cover one tile of
 // ssao.frag's rotation pattern, each weighted by how close its surface's eye depth is to this
 // pixel's, so occlusion does not bleed across silhouettes. Drawn with post.vert over the screen
 // quad of the light passes: texcoord is the G-buffer's, to_ao maps it to the AO buffer's (their

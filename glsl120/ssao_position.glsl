@@ -1,4 +1,4 @@
-// The SSAO passes' one position fetch (issue 13): the eye-space position the G-buffer's depth at
+// The SSAO passes' one position fetch (docs/ssao.md): the eye-space position the G-buffer's depth at
 // uv reconstructs to along the view ray (x, y, -1), exactly as light.frag does (Listings 19-20,
 // §3.4.3; depth_codec.glsl surface_eye_z, so both --depth texture and --depth packed work).
 // A G-buffer that stores eye positions swaps this function alone.

@@ -13,7 +13,7 @@
 #include "deferred/light_marker.h"
 #include "dsr_error.h"
 #include "deferred/paths.h"
-#include "forward/transparent_order.h"
+#include "deferred/transparent_order.h"
 #include "forward_fixture.h"
 #include "render_fixture.h"
 

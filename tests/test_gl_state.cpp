@@ -128,6 +128,52 @@ TEST(GlState, NoStageReliesOnWhatThePreviousLeft) {
     }
 }
 
+// The matrices go through the same door (GlState::set_camera): each pass states its camera, so
+// garbage in both matrices, and GL_PROJECTION left the current mode, between stages change no
+// pixel. Light markers and the volume geometry draw with the frame's projection and a modelview
+// per draw; the other passes with their pixel camera.
+void scramble_matrices() {
+    const float garbage[16] = {3, 1, 0, 0, -1, 2, 0, 0, 0, 0, 5, 1, 7, -9, 2, 4};
+    glMatrixMode(GL_MODELVIEW);
+    glLoadMatrixf(garbage);
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixf(garbage);
+}
+
+Image stages_with_matrices(const Scene& scene, int w, int h, const ShaderOptions& opts, bool scramble) {
+    auto ctx = create_context(ContextDesc{"osmesa", w, h});
+    DeferredShader ds(probe_caps(), w, h, opts, resource_dir("glsl120"));
+    ds.set_scene(scene);
+    FrameStats st;
+    if (scramble) scramble_matrices();
+    ds.geometry_stage(scene);
+    if (scramble) scramble_matrices();
+    ds.draw_lights(scene, true, st);
+    if (scramble) scramble_matrices();
+    ds.post_stage(st);
+    if (scramble) scramble_matrices();
+    ds.final_stage(w, h);
+    return read_pixels(w, h);
+}
+
+TEST(GlState, EveryPassStatesItsCamera) {
+    const Scene scene = test::default_scene();
+    for (bool ssao : {false, true})  // the lighting stage's first pass: the ambient pass, or SSAO's
+        for (LightGeometry g : {LightGeometry::quad, LightGeometry::volume, LightGeometry::tiles}) {
+            ShaderOptions o = with_post();
+            o.show_lights = true;
+            o.ssao.on = ssao;
+            o.ssao.scale = 2;  // its camera is moved by half a pixel: not the ambient pass's
+            o.light_geometry = g;
+            const Image clean = stages_with_matrices(scene, 96, 64, o, false);
+            const Image scrambled = stages_with_matrices(scene, 96, 64, o, true);
+            ImageDiff d = compare_images(scrambled, clean, 0.5 / 255.0);
+            EXPECT_EQ(d.failing, 0) << light_geometry_name(g) << (ssao ? ", ssao" : "")
+                                    << ": garbage matrices between stages changed " << d.failing << " pixels (max "
+                                    << d.max_lsb() << " LSB)";
+        }
+}
+
 TEST(GlState, CacheOffSetsEverythingAndChangesNoPixel) {
     const Scene scene = test::default_scene();
     const ShaderOptions o = with_post();

@@ -5,11 +5,13 @@
 #include "app/command_table.h"
 #include "app/commands.h"
 #include "deferred/paths.h"
+#include "deferred/shader_table.h"
 #include "gl/caps.h"
 #include "gl/rounding_probe.h"
 #include "gl/surfaces.h"
 #include "gl/frame_timer.h"
 #include "platform/context.h"
+#include "platform/resources.h"
 
 namespace dsr {
 
@@ -55,6 +57,11 @@ int cmd_info(const std::vector<std::string>& argv) {
     std::printf("  timing         %s (%s", timing_name(t.source), t.reason.c_str());
     if (t.query_ms >= 0) std::printf("; same passes: %.3f ms by timer query, %.3f ms by wall clock", t.query_ms, t.wall_ms);
     std::printf(")\n");
+    // The shader table's programs for those defaults, built here as the renderer builds them.
+    const ShaderConfig programs = shader_config(caps, defaults);
+    const ProgramSet built(resource_dir("glsl120"), programs);
+    std::printf("programs (render's defaults, %zu compiled and linked):\n%s", built.size(),
+                describe_programs(programs).c_str());
     return 0;
 }
 

@@ -4,9 +4,8 @@
 #include <cmath>
 #include <cstddef>
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include "gl/check.h"
+#include "gl/state.h"
 
 namespace dsr {
 
@@ -154,8 +153,7 @@ void GpuScene::set_view(const glm::dmat4& view) {
 }
 
 void GpuScene::draw(const DrawRange& r) const {
-    glMatrixMode(GL_MODELVIEW);
-    glLoadMatrixf(glm::value_ptr(modelviews_[r.object]));
+    gl_state().set_modelview(modelviews_[r.object]);
     glDrawElements(GL_TRIANGLES, r.count, GL_UNSIGNED_INT, reinterpret_cast<void*>(r.first * sizeof(uint32_t)));
 }
 

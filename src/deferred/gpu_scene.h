@@ -20,7 +20,7 @@ struct GpuMaterial {
     GLuint diffuse_tex = 0, normal_tex = 0, specular_tex = 0;
     bool normal_map = false;
     bool has_specular = true;  // false: M_spec is zero, the specular target is zero
-    float opacity = 1;         // below 1: transparent, drawn by the forward pass (issue 13)
+    float opacity = 1;         // below 1: transparent, drawn by the forward stage (docs/forward.md)
 };
 
 struct DrawRange {

@@ -5,14 +5,12 @@
 // non-zero is exactly where the surface lies inside the volume, also with the camera inside it
 // (its clipped front faces would have passed the depth test anyway). Then the light pass over
 // the back faces, only where the stencil is non-zero, zeroing it for the next light; its shader
-// has no discard (light_stencil_prog_), so the GPU can test the stencil before running it.
+// has no discard (the table's "light_stencil"), so the GPU can test the stencil before running it.
 // The two faces in one pass with glStencilOpSeparate (GL 2.0) or EXT_stencil_two_side; with
 // neither, two one-sided passes (back faces, then front faces).
-#include <glm/gtc/type_ptr.hpp>
-
-#include "deferred/deferred_shader.h"
-#include "deferred/light_queries.h"
-#include "gl/state.h"
+#include "deferred/light_geometry.h"
+#include "deferred/light_mesh.h"
+#include "deferred/light_pass.h"
 
 namespace dsr {
 
@@ -25,61 +23,78 @@ StencilFace counting_face(GLenum zfail) {
     return f;
 }
 
+class StencilGeometry final : public LightGeometryPass {
+public:
+    StencilGeometry(const ShaderConfig& c, ProgramSet& programs)
+        : quads_(programs, false), prog_(programs.take("light_stencil")), faces_(c.paths.stencil_faces) {
+        // The stencil pass: no colour, no shader, depth tested (GL_LESS: a face on or behind the
+        // surface fails), nothing written but the stencil.
+        mark_.color_write = false;
+        mark_.depth_test = true;
+        mark_.depth_func = GL_LESS;
+        mark_.depth_write = false;
+        mark_.stencil_test = true;
+        mark_.stencil_two_side_ext = faces_ == Paths::StencilFaces::two_side_ext;
+        mark_.stencil_front = counting_face(GL_DECR_WRAP);
+        mark_.stencil_back = counting_face(GL_INCR_WRAP);
+        // One-sided: the same op on both faces, each pass culling the other face.
+        mark_back_ = mark_front_ = mark_;
+        mark_back_.stencil_front = mark_back_.stencil_back = counting_face(GL_INCR_WRAP);
+        mark_back_.cull = true;
+        mark_back_.cull_face = GL_FRONT;
+        mark_front_.stencil_front = mark_front_.stencil_back = counting_face(GL_DECR_WRAP);
+        mark_front_.cull = true;
+        mark_front_.cull_face = GL_BACK;
+        // The light pass: back faces (each pixel of the volume's outline once), where the stencil
+        // is non-zero; the pass zeroes what it passes, so every light starts from a clear stencil.
+        light_ = light_pass_state(prog_.id(), false);
+        light_.cull = true;
+        light_.cull_face = GL_FRONT;
+        light_.stencil_test = true;
+        StencilFace lit;
+        lit.func = GL_NOTEQUAL;
+        lit.ref = 0;
+        lit.zpass = GL_ZERO;
+        light_.stencil_front = light_.stencil_back = lit;
+        light_.stencil_two_side_ext = mark_.stencil_two_side_ext;
+    }
+
+    void draw(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats) override {
+        meshes_.draw_quads_past_far(f, quads_, q, stats);
+        set_light_uniforms(prog_, f);
+        meshes_.begin(f);
+        for (const LightDraw& l : f.lights) {
+            if (meshes_.past_far(f, l)) continue;
+            if (faces_ == Paths::StencilFaces::one_sided) {
+                gl_state().apply(mark_back_);
+                meshes_.draw(l);
+                gl_state().apply(mark_front_);
+                meshes_.draw(l);
+            } else {
+                gl_state().apply(mark_);
+                meshes_.draw(l);
+            }
+            gl_state().apply(light_);
+            set_light_params(prog_, l.params);
+            q.begin();
+            meshes_.draw(l);
+            q.end();
+            ++stats.light_passes;
+        }
+    }
+
+private:
+    LightQuads quads_;
+    LightMeshes meshes_;
+    Program prog_;
+    Paths::StencilFaces faces_;
+    RenderState mark_, mark_back_, mark_front_, light_;
+};
+
 }  // namespace
 
-void DeferredShader::draw_lights_stencil(const std::vector<LightDraw>& lights, FrameStats& stats) {
-    LightQueries q(counting_ && paths_.count_fragments, counting_ && caps_.pipeline_statistics);
-    begin_light_meshes(lights, q, stats);  // light_geometry_volume.cpp
-
-    // The stencil pass: no colour, no shader, depth tested (GL_LESS: a face on or behind the
-    // surface fails), nothing written but the stencil.
-    RenderState mark;
-    mark.color_write = false;
-    mark.depth_test = true;
-    mark.depth_func = GL_LESS;
-    mark.depth_write = false;
-    mark.stencil_test = true;
-    const Paths::StencilFaces faces = paths_.stencil_faces;
-    mark.stencil_two_side_ext = faces == Paths::StencilFaces::two_side_ext;
-    mark.stencil_front = counting_face(GL_DECR_WRAP);
-    mark.stencil_back = counting_face(GL_INCR_WRAP);
-    // One-sided: the same op on both faces, each pass culling the other face.
-    RenderState mark_back = mark, mark_front = mark;
-    mark_back.stencil_front = mark_back.stencil_back = counting_face(GL_INCR_WRAP);
-    mark_back.cull = true;
-    mark_back.cull_face = GL_FRONT;
-    mark_front.stencil_front = mark_front.stencil_back = counting_face(GL_DECR_WRAP);
-    mark_front.cull = true;
-    mark_front.cull_face = GL_BACK;
-
-    // The light pass: back faces (each pixel of the volume's outline once), where the stencil is
-    // non-zero; the pass zeroes what it passes, so every light starts from a clear stencil.
-    RenderState light = light_pass_state(light_stencil_prog_.id(), false);
-    light.cull = true;
-    light.cull_face = GL_FRONT;
-    light.stencil_test = true;
-    StencilFace lit;
-    lit.func = GL_NOTEQUAL;
-    lit.ref = 0;
-    lit.zpass = GL_ZERO;
-    light.stencil_front = light.stencil_back = lit;
-    light.stencil_two_side_ext = mark.stencil_two_side_ext;
-
-    for (const LightDraw& l : lights) {
-        if (mesh_past_far(l)) continue;
-        if (faces == Paths::StencilFaces::one_sided) {
-            gl_state().apply(mark_back);
-            draw_light_mesh(l);
-            gl_state().apply(mark_front);
-            draw_light_mesh(l);
-        } else {
-            gl_state().apply(mark);
-            draw_light_mesh(l);
-        }
-        gl_state().apply(light);
-        draw_light_mesh_pass(l, q, light_stencil_prog_);  // light_geometry_volume.cpp
-    }
-    end_light_meshes(q, stats);
+std::unique_ptr<LightGeometryPass> make_stencil_geometry(const ShaderConfig& c, ProgramSet& programs) {
+    return std::make_unique<StencilGeometry>(c, programs);
 }
 
 }  // namespace dsr

@@ -5,15 +5,16 @@
 // once. The plan (tile_plan.h, pure) batches the work: a batch of lights sits in the shader's
 // uniform arrays, and one draw per batch and layer covers every tile with lights in that layer,
 // each quad's vertices carrying its lights' indices (two per float, in texture coordinates 2..5).
-// With --tile-depth on, each tile's span of surface depth (tile_depth.cpp: a small pass read back,
+// With --tile-depth on, each tile's span of surface depth (tile_depth.h: a small pass read back,
 // a stall on a GPU) drops the tile's lights whose sphere misses its surfaces.
+// A frame is: cull (the depth spans and the tiles' boxes), then per batch plan, upload and draw.
 #include <algorithm>
 
-#include "deferred/deferred_shader.h"
+#include "deferred/light_geometry.h"
+#include "deferred/light_pass.h"
+#include "deferred/tile_depth.h"
 #include "dsr_clock.h"
-#include "deferred/light_queries.h"
-#include "deferred/tile_plan.h"
-#include "gl/state.h"
+#include "gl/stream_buffer.h"
 
 namespace dsr {
 
@@ -26,149 +27,216 @@ constexpr float kNoLight = 255.0f;  // an empty slot; batch indices stay below i
 // coordinates and the view ray from gl_FragCoord (the ray as light.frag does).
 constexpr int kFixedFloats = 2;
 
-}  // namespace
+// Wall-clock milliseconds of f(): the tiles' two timings (FrameStats::tile_depth_ms, tile_plan_ms).
+template <class F>
+double wall_ms(F&& f) {
+    const double t = now_ms();
+    f();
+    return now_ms() - t;
+}
 
-void DeferredShader::draw_lights_tiles(const std::vector<LightDraw>& lights, FrameStats& stats) {
-    std::vector<ScissorRect> rects(lights.size());
-    for (size_t i = 0; i < lights.size(); ++i) rects[i] = lights[i].rect;
-    const bool groups = opts_.tile_plan == TileGrouping::groups;
-    // Depth culling (tile_depth.cpp): most of a tile's rectangle-overlapping lights lie in front of
-    // or behind all of its surfaces (1024-overlap at 256x256: 6.6M tile-pixel-light pairs from the
-    // rectangles, 0.6M pixel-light pairs inside a sphere).
-    TileDepth depth;
-    const double t0 = now_ms();
-    const std::vector<DepthSpan> spans = opts_.tile_depth ? tile_depth_spans() : std::vector<DepthSpan>{};
-    const double t1 = now_ms();
-    stats.tile_depth_ms = t1 - t0;
-    const TileDepth* cull = spans.empty() ? nullptr : &depth;
-    if (cull) {
-        const int ts = opts_.tile_size, tx = (w_ + ts - 1) / ts;
-        const glm::vec4 rays = ray_map();  // light.frag's
-        // position16 stores x and y as half floats, up to 2^-11 off the ray, relative: two such steps.
-        const float slack = opts_.depth == DepthPath::position16 ? 1.0f / 1024.0f : 0.0f;
+class TilesGeometry final : public LightGeometryPass {
+public:
+    TilesGeometry(const ShaderConfig& c, ProgramSet& programs, int width, int height)
+        : prog_(programs.take("light_tiles")),
+          point_prog_(programs.take("light_tiles_point")),
+          tile_size_(c.opts.tile_size),
+          tile_lights_(c.opts.tile_lights),
+          batch_(c.tile_batch),
+          groups_(c.opts.tile_plan == TileGrouping::groups),
+          id_vecs_(groups_ ? 0 : tile_id_vecs(c.opts.tile_lights)),
+          stride_(kFixedFloats + 4 * id_vecs_),
+          xy_slack_(c.opts.depth == DepthPath::position16 ? 1.0f / 1024.0f : 0.0f),
+          round_(c.tile_round) {
+        if (programs.has("tile_depth")) depth_ = std::make_unique<TileDepthPass>(c, programs, width, height);
+    }
+
+    void resize(int width, int height) override {
+        if (depth_) depth_->resize(width, height);
+    }
+
+    void draw(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats) override {
+        // The spans' passes draw into buffers of their own: P-buffer 0 unbound around them (it
+        // keeps its contents: the spans need framebuffer objects).
+        std::vector<DepthSpan> spans;
+        if (depth_)
+            stats.tile_depth_ms = wall_ms([&] {
+                targets.fb_unbind_render(P_ACCUM);
+                spans = depth_->spans(f);
+                targets.fb_bind_render(P_ACCUM);
+            });
+        double plan_ms = 0;
+        TileDepth depth;
+        const TileDepth* cull = nullptr;
+        plan_ms += wall_ms([&] { cull = tile_boxes(f, spans, depth); });
+        stats.tile_depth = cull != nullptr;
+        std::vector<ScissorRect> rects(f.lights.size());
+        for (size_t i = 0; i < f.lights.size(); ++i) rects[i] = f.lights[i].rect;
+
+        Program& prog = begin_draws(f);
+        uploads_ = 0;
+        stats.light_passes = 0;
+        stats.tile_light_pairs = 0;
+        if (groups_) {
+            TilePlan plan;
+            plan_ms += wall_ms([&] { plan = plan_tile_groups(rects, f.width, f.height, tile_size_, tile_lights_, cull); });
+            for (const TileDraw& d : plan.draws) {
+                plan_ms += wall_ms([&] { upload(&d, 1); });
+                draw_batch(f, prog, plan.batches[size_t(d.batch)], q, stats);
+            }
+            stats.tile_light_pairs = plan.tile_light_pairs;
+        } else {
+            // Batch by batch (tile_plan.h TilePlanner): the GL shades a batch while the CPU plans
+            // the next; the flush after each hands the batch over instead of holding it until the
+            // buffer fills.
+            std::unique_ptr<TilePlanner> planner;
+            plan_ms += wall_ms([&] {
+                planner = std::make_unique<TilePlanner>(rects, f.width, f.height, tile_size_, tile_lights_, batch_, cull);
+            });
+            for (int b = 0; b < int(planner->batches().size()); ++b) {
+                plan_ms += wall_ms([&] {
+                    draws_.clear();
+                    stats.tile_light_pairs += planner->plan_batch(b, draws_);
+                    upload(draws_.data(), draws_.size());
+                });
+                draw_batch(f, prog, planner->batches()[size_t(b)], q, stats);
+                glFlush();
+            }
+        }
+        end_draws();
+        stats.tile_plan_ms = plan_ms;
+    }
+
+private:
+    // Depth culling: most of a tile's rectangle-overlapping lights lie in front of or behind all of
+    // its surfaces (1024-overlap at 256x256: 6.6M tile-pixel-light pairs from the rectangles, 0.6M
+    // pixel-light pairs inside a sphere). Null without spans.
+    const TileDepth* tile_boxes(const FrameDef& f, const std::vector<DepthSpan>& spans, TileDepth& depth) const {
+        if (spans.empty()) return nullptr;
+        const int ts = tile_size_, tx = (f.width + ts - 1) / ts;
         for (size_t t = 0; t < spans.size(); ++t) {
             const int x = int(t) % tx, y = int(t) / tx;
-            depth.tiles.push_back(tile_box(spans[t], float(x * ts), float(y * ts), float(std::min(w_, (x + 1) * ts)),
-                                           float(std::min(h_, (y + 1) * ts)), rays, slack));
+            depth.tiles.push_back(tile_box(spans[t], float(x * ts), float(y * ts), float(std::min(f.width, (x + 1) * ts)),
+                                           float(std::min(f.height, (y + 1) * ts)), f.ray_map, xy_slack_));
         }
-        depth.lights.resize(lights.size());
-        for (size_t i = 0; i < lights.size(); ++i) {
-            const LightParams& p = lights[i].params;
+        depth.lights.resize(f.lights.size());
+        for (size_t i = 0; i < f.lights.size(); ++i) {
+            const LightParams& p = f.lights[i].params;
             if (p.color.w < 1.5f) depth.lights[i] = LightBound{glm::vec3(p.pos), p.pos.w};  // directional: unbounded
         }
+        return &depth;
     }
-    stats.tile_depth = cull != nullptr;
 
-    // The tutorial's cheaper point-light shader where every light of the frame allows it (as quad
-    // picks per light): the general one evaluates every type's terms for every light.
-    const bool point_only = std::all_of(lights.begin(), lights.end(), [](const LightDraw& l) { return tutorial_light(*l.light); });
-    Program& prog = point_only ? light_tiles_prog_ : light_tiles_any_prog_;
-    set_light_uniforms(prog);
-    prog.set("quantize_round", tile_round_);  // ignored (optimised away) without QUANTIZE_8BIT
-    gl_state().apply(light_pass_state(prog.id(), false));
-    LightQueries q(counting_ && paths_.count_fragments, counting_ && caps_.pipeline_statistics);
-    const int id_vecs = groups ? 0 : tile_id_vecs(opts_.tile_lights);
-    const int stride = kFixedFloats + 4 * id_vecs;
-    glEnableClientState(GL_VERTEX_ARRAY);
-    for (int k = 0; k < id_vecs; ++k) {
-        glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
-        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    // The program, its frame uniforms, state, pixel camera and client arrays for the draws. The
+    // tutorial's cheaper point-light shader where every light of the frame allows it (as quad picks
+    // per light): the general one evaluates every type's terms for every light.
+    Program& begin_draws(const FrameDef& f) {
+        const bool point_only = std::all_of(f.lights.begin(), f.lights.end(), [](const LightDraw& l) { return l.tutorial(); });
+        Program& prog = point_only ? point_prog_ : prog_;
+        gl_state().set_camera(f.pixels());
+        set_light_uniforms(prog, f);
+        prog.set("quantize_round", round_);  // ignored (optimised away) without QUANTIZE_8BIT
+        gl_state().apply(light_pass_state(prog.id(), false));
+        glEnableClientState(GL_VERTEX_ARRAY);
+        for (int k = 0; k < id_vecs_; ++k) {
+            glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
+            glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        }
+        return prog;
     }
-    std::vector<glm::vec4> pos, color, dir, spot, att;
-    double plan_ms = now_ms() - t1;  // the tile boxes; then each batch's plan, vertices and upload
 
-    // One batch: its lights into the uniform arrays, its draws' vertices into the stream buffer
-    // (uploaded once for the batch; each draw points at its own range), one draw per layer.
-    int uploads = 0;
-    auto draw_batch = [&](const std::vector<int>& batch, const TileDraw* draws, size_t n_draws) {
-        const double t = now_ms();
+    void end_draws() {
+        for (int k = id_vecs_ - 1; k >= 0; --k) {
+            glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
+            glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+        }
+        glClientActiveTexture(GL_TEXTURE0);
+        glDisableClientState(GL_VERTEX_ARRAY);
+        StreamBuffer::unbind();
+    }
+
+    // A batch's draws as vertices (first_[d]: draw d's first vertex) into a buffer object of its
+    // own, left bound: refilling the one the previous batch's draws still read made llvmpipe finish
+    // them first (the plan's time went from 0.4 to 3 ms).
+    void upload(const TileDraw* draws, size_t n_draws) {
         size_t quads = 0;
         for (size_t di = 0; di < n_draws; ++di) quads += draws[di].quads.size();
         // A member, so its storage is reused: a fresh multi-megabyte vector each frame cost page
         // faults (at 1920x1080 on llvmpipe, building these vertices took 1.5-2.9 ms a frame that way).
-        std::vector<float>& verts = tile_verts_;
-        verts.resize(quads * 4 * size_t(stride));
-        std::vector<size_t> first(n_draws + 1, 0);
-        float* out = verts.data();
+        verts_.resize(quads * 4 * size_t(stride_));
+        first_.assign(n_draws + 1, 0);
+        float* out = verts_.data();
         for (size_t di = 0; di < n_draws; ++di) {
             for (const TileQuad& tq : draws[di].quads) {
                 float ids[16];
                 auto slot = [&](size_t k) { return k < tq.slots.size() ? float(tq.slots[k]) : kNoLight; };
-                for (int j = 0; j < 4 * id_vecs; ++j) ids[j] = slot(2 * size_t(j)) * 256.0f + slot(2 * size_t(j) + 1);
+                for (int j = 0; j < 4 * id_vecs_; ++j) ids[j] = slot(2 * size_t(j)) * 256.0f + slot(2 * size_t(j) + 1);
                 const float xs[4] = {float(tq.x0), float(tq.x1), float(tq.x1), float(tq.x0)};
                 const float ys[4] = {float(tq.y0), float(tq.y0), float(tq.y1), float(tq.y1)};
                 for (int c = 0; c < 4; ++c) {
                     *out++ = xs[c], *out++ = ys[c];
-                    out = std::copy(ids, ids + 4 * id_vecs, out);
+                    out = std::copy(ids, ids + 4 * id_vecs_, out);
                 }
             }
-            first[di + 1] = size_t(out - verts.data()) / size_t(stride);
+            first_[di + 1] = size_t(out - verts_.data()) / size_t(stride_);
         }
-        // A buffer object per batch of the frame: refilling the one the previous batch's draws
-        // still read made llvmpipe finish them first (the plan's time went from 0.4 to 3 ms).
-        if (size_t(uploads) == tile_vertices_.size()) tile_vertices_.push_back(std::make_unique<StreamBuffer>());
-        tile_vertices_[size_t(uploads++)]->upload(verts.data(), verts.size() * sizeof(float));
-        plan_ms += now_ms() - t;
-        const GLsizei bytes = GLsizei(stride * sizeof(float));
-        auto at = [](int f) { return reinterpret_cast<const void*>(size_t(f) * sizeof(float)); };  // buffer offsets
+        if (size_t(uploads_) == buffers_.size()) buffers_.push_back(std::make_unique<StreamBuffer>());
+        buffers_[size_t(uploads_++)]->upload(verts_.data(), verts_.size() * sizeof(float));
+    }
+
+    // The uploaded draws: the batch's lights into the uniform arrays (lighting.glsl's five vec4s
+    // per light, one array each), then one draw per layer, each counted.
+    void draw_batch(const FrameDef& f, Program& prog, const std::vector<int>& batch, LightQueries& q, FrameStats& stats) {
+        const GLsizei bytes = GLsizei(stride_ * sizeof(float));
+        auto at = [](int fl) { return reinterpret_cast<const void*>(size_t(fl) * sizeof(float)); };  // buffer offsets
         glVertexPointer(2, GL_FLOAT, bytes, at(0));
-        for (int k = 0; k < id_vecs; ++k) {
+        for (int k = 0; k < id_vecs_; ++k) {
             glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
             glTexCoordPointer(4, GL_FLOAT, bytes, at(kFixedFloats + 4 * k));
         }
-        pos.clear(), color.clear(), dir.clear(), spot.clear(), att.clear();
-        for (int l : batch) {  // lighting.glsl's five vec4s per light, one uniform array each
-            const LightParams& p = lights[size_t(l)].params;
-            pos.push_back(p.pos), color.push_back(p.color), dir.push_back(p.dir);
-            spot.push_back(p.spot), att.push_back(p.att);
+        pos_.clear(), color_.clear(), dir_.clear(), spot_.clear(), att_.clear();
+        for (int l : batch) {
+            const LightParams& p = f.lights[size_t(l)].params;
+            pos_.push_back(p.pos), color_.push_back(p.color), dir_.push_back(p.dir);
+            spot_.push_back(p.spot), att_.push_back(p.att);
         }
         const int count = int(batch.size());
-        prog.set_array("lightpos", pos.data(), count);
-        prog.set_array("lightcolor", color.data(), count);
-        prog.set_array("lightdir", dir.data(), count);
-        prog.set_array("lightspot", spot.data(), count);
-        prog.set_array("lightatt", att.data(), count);
-        if (groups) prog.set("light_count", count);
+        prog.set_array("lightpos", pos_.data(), count);
+        prog.set_array("lightcolor", color_.data(), count);
+        prog.set_array("lightdir", dir_.data(), count);
+        prog.set_array("lightspot", spot_.data(), count);
+        prog.set_array("lightatt", att_.data(), count);
+        if (groups_) prog.set("light_count", count);
+        const size_t n_draws = first_.size() - 1;
         for (size_t di = 0; di < n_draws; ++di) {
             q.begin();
-            glDrawArrays(GL_QUADS, GLint(first[di]), GLsizei(first[di + 1] - first[di]));
+            glDrawArrays(GL_QUADS, GLint(first_[di]), GLsizei(first_[di + 1] - first_[di]));
             q.end();
         }
         stats.light_passes += int(n_draws);
-    };
+    }
 
-    stats.light_passes = 0;
-    stats.tile_light_pairs = 0;
-    if (groups) {
-        const double t = now_ms();
-        const TilePlan plan = plan_tile_groups(rects, w_, h_, opts_.tile_size, opts_.tile_lights, cull);
-        plan_ms += now_ms() - t;
-        for (const TileDraw& d : plan.draws) draw_batch(plan.batches[size_t(d.batch)], &d, 1);
-        stats.tile_light_pairs = plan.tile_light_pairs;
-    } else {
-        // Batch by batch (tile_plan.h TilePlanner): the GL shades a batch while the CPU plans the
-        // next; the flush after each hands the batch over instead of holding it until the buffer fills.
-        double t = now_ms();
-        TilePlanner planner(rects, w_, h_, opts_.tile_size, opts_.tile_lights, tile_batch_, cull);
-        std::vector<TileDraw> draws;
-        for (int b = 0; b < int(planner.batches().size()); ++b) {
-            if (b) t = now_ms();
-            draws.clear();
-            stats.tile_light_pairs += planner.plan_batch(b, draws);
-            plan_ms += now_ms() - t;
-            draw_batch(planner.batches()[size_t(b)], draws.data(), draws.size());
-            glFlush();
-        }
-    }
-    for (int k = id_vecs - 1; k >= 0; --k) {
-        glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
-        glDisableClientState(GL_TEXTURE_COORD_ARRAY);
-    }
-    glClientActiveTexture(GL_TEXTURE0);
-    glDisableClientState(GL_VERTEX_ARRAY);
-    StreamBuffer::unbind();
-    q.collect(stats);
-    stats.tile_plan_ms = plan_ms;
+    Program prog_, point_prog_;
+    int tile_size_, tile_lights_, batch_;
+    bool groups_;
+    int id_vecs_, stride_;
+    float xy_slack_;  // position16 stores x and y as half floats, up to 2^-11 off the ray, relative: two such steps
+    float round_;     // light_tiles.frag's quantize_round (gl/rounding_probe.h)
+    std::unique_ptr<TileDepthPass> depth_;  // null without depth culling
+    // Kept between frames for their storage only.
+    std::vector<std::unique_ptr<StreamBuffer>> buffers_;  // one per batch of a frame
+    int uploads_ = 0;                                       // this frame's, so far
+    std::vector<float> verts_;
+    std::vector<size_t> first_;
+    std::vector<TileDraw> draws_;
+    std::vector<glm::vec4> pos_, color_, dir_, spot_, att_;
+};
+
+}  // namespace
+
+std::unique_ptr<LightGeometryPass> make_tiles_geometry(const ShaderConfig& c, ProgramSet& programs, int width,
+                                                       int height) {
+    return std::make_unique<TilesGeometry>(c, programs, width, height);
 }
 
 }  // namespace dsr

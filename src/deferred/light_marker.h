@@ -1,4 +1,4 @@
-// `--show-lights` (issue 13): the size of a light's marker. Pure, no GL.
+// `--show-lights` (forward_stage.h): the size of a light's marker. Pure, no GL.
 #pragma once
 
 namespace dsr {

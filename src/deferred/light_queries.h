@@ -1,11 +1,12 @@
-// The counters around the light-shader draws (DESIGN "Counting"): an occlusion query
+// The counters around the light-shader draws (docs/benchmarks.md reads them): an occlusion query
 // (light_fragments: samples that passed) and a pipeline-statistics query (light_invocations:
 // fragments that entered the light shader) per draw, read after the last draw so no light waits
-// on the one before it. Only the light shader's draws are counted, never a stencil pass.
+// on the one before it. Only the light shader's draws are counted, never a stencil pass. Whether
+// a frame counts at all is decided once, by the lighting stage (LightingStage::draw_lighting).
 #pragma once
 #include <vector>
 
-#include "deferred/deferred_shader.h"
+#include "deferred/frame_stats.h"
 #include "gl/gl.h"
 
 namespace dsr {

@@ -1,6 +1,6 @@
-// Light volumes (issue 12): sphere, cone (spherical sector), full screen. The cone's rectangle and
+// Light volumes (docs/light_geometry.md): sphere, cone (spherical sector), full screen. The cone's rectangle and
 // culling come from a convex mesh that encloses it, because the bounding sphere of a narrow cone is
-// far larger than the cone (TRAPS.md "Spot lights"); the sphere keeps the exact tangent-plane
+// far larger than the cone; the sphere keeps the exact tangent-plane
 // rectangle of scissor.cpp.
 #include "deferred/light_volume.h"
 

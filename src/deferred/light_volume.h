@@ -1,4 +1,4 @@
-// A light is its volume (issue 12; DESIGN.md "Light volumes"): the region of space a light can
+// A light is its volume (docs/light_geometry.md): the region of space a light can
 // reach, as one pure description (no GL) that feeds frustum culling, the scissor rectangle, the
 // ideal fragment counts and the meshes the volume / stencil light passes draw.
 //   sphere       point light: every point within `radius` of the centre (Equation 2's S_radius,

@@ -27,7 +27,7 @@ enum class TargetFormat { rgba8, rgba16f, rgba32f };
 int target_format_bytes(TargetFormat f);   // 4, 8, 16
 const char* target_format_name(TargetFormat f);  // "RGBA8", "RGBA16F", "RGBA32F"
 
-// How each light reaches its pixels (issue 12; docs/benchmarks.md has one section per geometry):
+// How each light reaches its pixels (docs/light_geometry.md; docs/benchmarks.md has one section per geometry):
 //  quad     the tutorial's scissored screen-aligned quad per light (§3.4.2, Listing 16)
 //  volume   the back faces of the light's volume mesh, depth test GL_GREATER against the scene
 //  stencil  per light a two-sided stencil pass over the volume, then the light pass where it marks
@@ -74,7 +74,7 @@ struct SkipOptions {
                                     // rejected after one depth fetch, before the G-buffer reads
 };
 
-// Screen-space ambient occlusion (issue 13, Vasilovici §5): its own pass from the G-buffer's
+// Screen-space ambient occlusion (Vasilovici §5, docs/ssao.md): its own pass from the G-buffer's
 // depth and normals, then a depth-aware blur; it scales the ambient pass (Listing 15, Eq. 6)
 // only. Off by default: the ambient pass is then exactly the tutorial's.
 struct SsaoOptions {
@@ -109,9 +109,9 @@ struct ShaderOptions {
     int tile_lights = 0;
     RenderTarget render_target = RenderTarget::automatic;
     TileGrouping tile_plan = TileGrouping::lists;
-    bool tile_depth = true;         // tiles: leave out a tile's lights that miss its surfaces' depth span (tile_depth.cpp)
+    bool tile_depth = true;         // tiles: leave out a tile's lights that miss its surfaces' depth span (tile_depth.h)
     SsaoOptions ssao;
-    // Issue 13: the forward stage after the light passes (forward_stage.cpp).
+    // The forward stage after the light passes (forward_stage.h, docs/forward.md).
     bool show_lights = false;       // --show-lights: an emissive marker at each point and spot light
     // Set by DeferredShader::set_scene when the scene has transparent materials (opacity < 1): the
     // forward stage draws them, so P-buffer 0 needs the scene's depth. Not a user option.

@@ -62,7 +62,7 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     p.render_target = p.fbo ? "fbo" : p.pbuffer ? "pbuffer" : "copy";
     p.textures = p.pow2 ? "pow2" : "npot";
 
-    // Light geometry (issue 12). Stencil needs a stencil buffer where P-buffer 0 is drawn: with
+    // Light geometry (docs/light_geometry.md). Stencil needs a stencil buffer where P-buffer 0 is drawn: with
     // framebuffer objects a packed depth-stencil attachment, without them the main buffer's.
     p.light_geometry = opts.light_geometry;
     p.tile_size = opts.tile_size ? opts.tile_size : caps.software_rasterizer ? 16 : 32;

@@ -1,4 +1,4 @@
-// The one path chooser (STYLE "a pure choose_paths"): probed capabilities and asked-for options
+// The one path chooser: probed capabilities and asked-for options
 // in, the path taken at each decision out. No GL inside, so every capability combination is
 // unit-tested; DeferredShader, `dsr info`, `render --depth auto` and the tests all ask it.
 #pragma once

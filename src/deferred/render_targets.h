@@ -4,6 +4,8 @@
 #pragma once
 #include <memory>
 
+#include <glm/glm.hpp>
+
 #include "deferred/options.h"
 #include "deferred/paths.h"
 #include "gl/pbuffer.h"
@@ -12,6 +14,10 @@ namespace dsr {
 
 // G-buffer targets (Figure 3); the position paths' eye-space position takes the packed depth's slot.
 enum GTarget { G_NORMAL = 0, G_DIFFUSE = 1, G_SPECULAR = 2, G_DEPTH_PACKED = 3, G_POSITION = 3 };
+
+// The G-buffer target the image-space passes read eye z or position from: the depth texture on the
+// texture path, else the packed depth (or position) target.
+inline int depth_target(DepthPath d) { return d == DepthPath::texture ? PBuffer::DEPTH : G_DEPTH_PACKED; }
 
 // The GL internal format of a G-buffer target format (GL_RGBA8, GL_RGBA16F_ARB, GL_RGBA32F_ARB).
 GLenum gl_format(TargetFormat f);
@@ -24,7 +30,7 @@ enum PRole {
     P_BLOOM_V = 3,  // P-buffer 3: bloom's vertical blur, added back to 0
 };
 
-// The ambient-occlusion buffers (issue 13), only with --ssao: at 1/ssao.scale of the frame.
+// The ambient-occlusion buffers (docs/ssao.md), only with --ssao: at 1/ssao.scale of the frame.
 enum SsaoBuffer { SSAO_RAW = 0, SSAO_BLURRED = 1 };
 
 class RenderTargets {
@@ -39,12 +45,24 @@ public:
     const PBuffer& gbuffer() const { return *g_; }
     PBuffer& pbuffer(int role) { return *p_[role]; }
     const PBuffer& pbuffer(int role) const { return *p_[role]; }
-    // After the anti-alias pass: P-buffer 1 holds the result and becomes P-buffer 0.
     // The SSAO buffers; throws when --ssao is off (they are not allocated then).
     PBuffer& ssao(int which);
+    // After the anti-alias pass: P-buffer 1 holds the result and becomes P-buffer 0.
     void swap_accumulation() { std::swap(p_[P_ACCUM], p_[P_AA]); }
     int width() const { return w_; }
     int height() const { return h_; }
+    // The G-buffer's content extent in texture coordinates (below 1 where padded to powers of two).
+    glm::vec2 gbuffer_extent() const { return {g_->tex_scale_x(), g_->tex_scale_y()}; }
+
+    // Listing 6: the tutorial's names for binding them; mrt_ the G-buffer, fb_ P-buffer `b`.
+    void mrt_bind_render() { g_->bind_render(); }
+    void mrt_unbind_render() { g_->unbind_render(); }
+    void mrt_bind_texture(int target, int unit) { g_->bind_texture(target, unit); }
+    void mrt_unbind_texture(int target, int unit) { g_->unbind_texture(target, unit); }
+    void fb_bind_render(int b) { p_[b]->bind_render(); }
+    void fb_unbind_render(int b) { p_[b]->unbind_render(); }
+    void fb_bind_texture(int b, int unit) { p_[b]->bind_texture(0, unit); }
+    void fb_unbind_texture(int b, int unit) { p_[b]->unbind_texture(0, unit); }
 
 private:
     void allocate();

@@ -5,6 +5,23 @@
 
 namespace dsr {
 
+void draw_rect(const FrameDef& f, float x0, float y0, float x1, float y1, bool rays) {
+    const float xs[4] = {x0, x1, x1, x0}, ys[4] = {y0, y0, y1, y1};
+    const float sx = f.uv_scale.x, sy = f.uv_scale.y;  // into the G-buffer's (maybe padded) extent
+    glBegin(GL_QUADS);
+    for (int i = 0; i < 4; ++i) {
+        glMultiTexCoord2f(GL_TEXTURE0, xs[i] * sx, ys[i] * sy);
+        if (rays) {
+            // Bilinear in the screen's corner rays: exactly the corner's ray at a screen corner,
+            // a tile's corner otherwise.
+            const glm::vec3 r = f.view_ray_at(xs[i], ys[i]);
+            glMultiTexCoord3f(GL_TEXTURE1, r.x, r.y, r.z);
+        }
+        glVertex2f(xs[i], ys[i]);
+    }
+    glEnd();
+}
+
 // [0,w]x[0,h] in the current ortho camera, texture coordinates 0..(sx,sy): the source's
 // content extent (less than 1 when padded to powers of two).
 void draw_quad(float w, float h, float sx, float sy) {

@@ -1,16 +1,10 @@
-// SSAO stage (issue 13; Vasilovici §5): ambient occlusion from the G-buffer's depth and normals
-// in a pass of its own, then a depth-aware blur, both into the SSAO buffers (render_targets.h)
-// at 1/ssao.scale of the frame. Unlike Vasilovici, who writes it into the final target's alpha
-// after the light pass, it scales the ambient pass only (Listing 15, Eq. 6): lights stay as the
-// tutorial adds them. With --ssao off none of this runs and the ambient pass is the tutorial's.
-#include <string>
-#include <vector>
+// The SSAO stage (ssao_stage.h).
+#include "deferred/ssao_stage.h"
 
-#include "deferred/deferred_shader.h"
-#include "deferred/reconstruct.h"
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "deferred/screen_quad.h"
 #include "deferred/ssao_kernel.h"
-#include "dsr_error.h"
 #include "gl/check.h"
 #include "gl/state.h"
 
@@ -42,89 +36,71 @@ RenderState ssao_modulate_state() {
 }
 }  // namespace
 
-void DeferredShader::build_ssao_programs() {
-    const SsaoOptions& o = opts_.ssao;
-    if (o.scale != 1 && o.scale != 2) throw Error("ssao scale must be 1 or 2, got " + std::to_string(o.scale));
-    if (o.samples < 4 || o.samples > 64) throw Error("ssao samples must be 4..64, got " + std::to_string(o.samples));
-    if (!(o.radius > 0)) throw Error("ssao radius must be positive, got " + std::to_string(o.radius));
-    if (!(o.strength >= 0)) throw Error("ssao strength must be 0 or more, got " + std::to_string(o.strength));
-    std::vector<std::string> defs = depth_defines();
-    defs.push_back("SAMPLES " + std::to_string(o.samples));
-    ssao_prog_ = Program(shader_dir_, "light.vert", "ssao.frag", defs);
-    defs.pop_back();
-    ssao_blur_prog_ = Program(shader_dir_, "post.vert", "ssao_blur.frag", defs);
-}
+SsaoStage::SsaoStage(const ShaderConfig& c, ProgramSet& programs)
+    : o_(c.opts.ssao),
+      depth_target_(depth_target(c.opts.depth)),
+      occlusion_(programs.take("ssao")),
+      blur_(programs.take("ssao_blur")) {}
 
-// The frame's ortho camera (set_ortho), moved by half a frame pixel at half scale: an AO pixel's
+// Both SSAO passes: `target` bound, the uniforms of ssao_position.glsl (the G-buffer's depth on
+// unit 1), and the frame's pixel camera moved by half a frame pixel at half scale: an AO pixel's
 // centre (frame x = 2i + 1) then takes the texture coordinates and view ray of G-buffer pixel
 // 2i's centre, the texel its nearest fetch reads; unshifted it would pair that texel's depth with
 // the ray of a pixel corner, and at grazing angles the floor would occlude itself.
-void DeferredShader::set_ssao_ortho() {
-    set_ortho(w_, h_);
-    if (opts_.ssao.scale == 2) glTranslatef(0.5f, 0.5f, 0.0f);
-}
-
-// Both SSAO passes: `target` bound, the camera above, `prog` with its state, and the uniforms of
-// ssao_position.glsl (the G-buffer's depth on unit 1).
-void DeferredShader::begin_ssao_pass(PBuffer& target, Program& prog) {
+void SsaoStage::begin_pass(const FrameDef& f, PBuffer& target, Program& prog) const {
     target.bind_render();
-    set_ssao_ortho();
+    const glm::mat4 shift = o_.scale == 2 ? glm::translate(glm::mat4(1), glm::vec3(0.5f, 0.5f, 0.0f)) : glm::mat4(1);
+    gl_state().set_camera(f.pixels(), shift);
     gl_state().apply(ssao_pass_state(prog.id()));
     prog.set("depth_map", 1);
-    prog.set("planes", planes_);
-    prog.set("zrange", zrange_);
+    prog.set("planes", f.planes);
+    prog.set("zrange", f.zrange);
 }
 
-void DeferredShader::draw_ssao() {
-    // The view rays the light passes' quads carry (Listing 19), for this frame's camera.
-    const auto rays = corner_rays(proj_[0][0], proj_[1][1]);
-    for (int i = 0; i < 4; ++i) corner_rays_[i] = rays[i];
-    const SsaoOptions& o = opts_.ssao;
-    const glm::vec2 gscale(gbuf().tex_scale_x(), gbuf().tex_scale_y());
-
+void SsaoStage::draw(const FrameDef& f, RenderTargets& t) {
     // Occlusion: the quad is laid out in frame pixels; the viewport is the AO buffer's.
-    PBuffer& raw = targets_->ssao(SSAO_RAW);
-    begin_ssao_pass(raw, ssao_prog_);
-    ssao_prog_.set("normal_map", 0);
-    ssao_prog_.set("proj", glm::vec2(proj_[0][0], proj_[1][1]));
-    ssao_prog_.set("gtex_scale", gscale);
-    ssao_prog_.set("gsize", glm::vec2(float(w_), float(h_)));
-    ssao_prog_.set("radius", o.radius);
-    ssao_prog_.set("strength", o.strength);
-    ssao_prog_.set("bias", kBiasOfRadius * o.radius);
-    const std::vector<glm::vec3> kernel = ssao_kernel(o.samples);
+    PBuffer& raw = t.ssao(SSAO_RAW);
+    begin_pass(f, raw, occlusion_);
+    occlusion_.set("normal_map", 0);
+    occlusion_.set("proj", glm::vec2(f.proj[0][0], f.proj[1][1]));
+    occlusion_.set("gtex_scale", f.gbuffer_extent);
+    occlusion_.set("gsize", glm::vec2(float(f.width), float(f.height)));
+    occlusion_.set("radius", o_.radius);
+    occlusion_.set("strength", o_.strength);
+    occlusion_.set("bias", kBiasOfRadius * o_.radius);
+    const std::vector<glm::vec3> kernel = ssao_kernel(o_.samples);
     const std::vector<glm::vec3> rot = ssao_rotations();
-    glUniform3fv(glGetUniformLocation(ssao_prog_.id(), "kernel"), GLsizei(kernel.size()), &kernel[0].x);
-    glUniform3fv(glGetUniformLocation(ssao_prog_.id(), "rotations"), GLsizei(rot.size()), &rot[0].x);
-    mrt_bind_texture(G_NORMAL, 0);
-    mrt_bind_texture(depth_target(), 1);
-    draw_rect(0, 0, float(w_), float(h_), true);
+    occlusion_.set_array("kernel", kernel.data(), int(kernel.size()));
+    occlusion_.set_array("rotations", rot.data(), int(rot.size()));
+    t.mrt_bind_texture(G_NORMAL, 0);
+    t.mrt_bind_texture(depth_target_, 1);
+    draw_rect(f, 0, 0, float(f.width), float(f.height), true);
     raw.unbind_render();
     check_gl_stage("ssao: occlusion");
 
     // Depth-aware blur, raw -> blurred, the G-buffer's depth still on unit 1.
-    PBuffer& blurred = targets_->ssao(SSAO_BLURRED);
-    begin_ssao_pass(blurred, ssao_blur_prog_);
-    ssao_blur_prog_.set("ao_map", 0);
-    ssao_blur_prog_.set("texel", glm::vec2(1.0f / float(raw.texture_width()), 1.0f / float(raw.texture_height())));
-    ssao_blur_prog_.set("uv_clamp", uv_clamp(raw));
-    ssao_blur_prog_.set("to_ao", glm::vec2(raw.tex_scale_x(), raw.tex_scale_y()) / gscale);
-    ssao_blur_prog_.set("depth_tolerance", kBlurDepthTolerance);
-    mrt_unbind_texture(G_NORMAL, 0);
+    PBuffer& blurred = t.ssao(SSAO_BLURRED);
+    begin_pass(f, blurred, blur_);
+    blur_.set("ao_map", 0);
+    blur_.set("texel", glm::vec2(1.0f / float(raw.texture_width()), 1.0f / float(raw.texture_height())));
+    blur_.set("uv_clamp", uv_clamp(raw));
+    blur_.set("to_ao", glm::vec2(raw.tex_scale_x(), raw.tex_scale_y()) / f.gbuffer_extent);
+    blur_.set("depth_tolerance", kBlurDepthTolerance);
+    t.mrt_unbind_texture(G_NORMAL, 0);
     raw.bind_texture(0, 0);
-    draw_rect(0, 0, float(w_), float(h_), false);
+    draw_rect(f, 0, 0, float(f.width), float(f.height), false);
     raw.unbind_texture(0, 0);
-    mrt_unbind_texture(depth_target(), 1);
+    t.mrt_unbind_texture(depth_target_, 1);
     blurred.unbind_render();
     check_gl_stage("ssao: blur");
 }
 
-// Inside the ambient pass, P-buffer 0 bound: Eq. 6's ambient term times ao, before any light adds.
-void DeferredShader::modulate_ambient_by_ssao() {
+void SsaoStage::modulate_ambient(const FrameDef& f, RenderTargets& t) const {
+    gl_state().set_camera(f.pixels());
     gl_state().apply(ssao_modulate_state());
-    PBuffer& ao = targets_->ssao(SSAO_BLURRED);
+    PBuffer& ao = t.ssao(SSAO_BLURRED);
     ao.bind_texture(0, 0);
-    draw_quad_clamped(float(w_), float(h_), ao);  // bilinear: the half-size buffer scaled up
+    draw_quad_clamped(float(f.width), float(f.height), ao);  // bilinear: the half-size buffer scaled up
     ao.unbind_texture(0, 0);
 }
 

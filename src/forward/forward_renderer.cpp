@@ -12,8 +12,8 @@
 #include "dsr_error.h"
 #include "gl/blit.h"
 #include "gl/check.h"
-#include "forward/forward_material.h"
-#include "forward/transparent_pass.h"
+#include "deferred/forward_material.h"
+#include "deferred/transparent_pass.h"
 #include "gl/state.h"
 #include "scene/bounds.h"
 
@@ -168,10 +168,7 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
         glDrawBuffer(GL_BACK);
         glViewport(0, 0, w_, h_);
     }
-    glMatrixMode(GL_PROJECTION);
-    glLoadMatrixf(glm::value_ptr(proj));
-    glMatrixMode(GL_MODELVIEW);
-    glLoadMatrixf(glm::value_ptr(view_));
+    gl_state().set_camera(proj, view_);
     gpu_->set_view(cam.view_d());  // each draw loads view * model, composed in double
     glColor4f(1, 1, 1, 1);
     gl_state().apply(surface_state());  // before the clear: depth and colour writes on
@@ -187,7 +184,7 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
         draw_multi(scene, st);
     }
     gpu_->unbind();
-    if (transparent_) {  // issue 13: blended over the opaque surfaces, as the deferred renderer's forward stage
+    if (transparent_) {  // blended over the opaque surfaces, as the deferred renderer's forward stage
         const TransparentStats ts = transparent_->draw(scene, *gpu_, bounds_, light_params_, light_visible_);
         st.passes += ts.passes;
         st.light_object_pairs += int(ts.light_object_pairs);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "gl/check.h"
 #include "gl/state.h"
 
@@ -11,11 +13,7 @@ void draw_texture_to_framebuffer0(GLuint texture, int out_w, int out_h, glm::vec
     if (has_fbo) glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);  // no-FBO path: already there
     glDrawBuffer(GL_BACK);
     glViewport(0, 0, out_w, out_h);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, 1, 0, 1, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    gl_state().set_camera(glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f));  // the unit square
     gl_state().apply(textured_2d(GL_REPLACE));  // fixed function, every test off
     glColor4f(1, 1, 1, 1);
     glBindTexture(GL_TEXTURE_2D, texture);

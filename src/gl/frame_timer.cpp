@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "dsr_clock.h"
 #include "dsr_error.h"
 #include "gl/check.h"
@@ -75,11 +77,7 @@ void draw_passes(int w, int h, int passes) {
     s.blend_src = s.blend_dst = GL_ONE;
     gl_state().apply(s);
     glViewport(0, 0, w, h);
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, 1, 0, 1, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
+    gl_state().set_camera(glm::ortho(0.0f, 1.0f, 0.0f, 1.0f, -1.0f, 1.0f));  // the unit square
     glColor4f(0.001f, 0.001f, 0.001f, 1.0f);
     for (int i = 0; i < passes; ++i) {
         glBegin(GL_QUADS);

@@ -1,4 +1,4 @@
-// Per-stage timing that does not serialise a GPU (DESIGN "Timing"). Two sources:
+// Per-stage timing that does not serialise a GPU (docs/gpu.md measures both sources). Two sources:
 //   gpu-timer  GL_TIME_ELAPSED queries (ARB_timer_query) around each stage, read once after
 //              the frame: the GPU's own time per stage, one wait per frame.
 //   wall       glFinish after each stage and the wall clock: what a software rasteriser needs,

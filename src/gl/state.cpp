@@ -1,5 +1,7 @@
 #include "gl/state.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "gl/caps.h"
 
 #include <cstdlib>
@@ -55,6 +57,17 @@ void GlState::use_program(GLuint program) {
     glUseProgram(program);
     cur_.program = program;
     ++calls_;
+}
+
+void GlState::set_camera(const glm::mat4& projection, const glm::mat4& modelview) {
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixf(glm::value_ptr(projection));
+    set_modelview(modelview);
+}
+
+void GlState::set_modelview(const glm::mat4& modelview) {
+    glMatrixMode(GL_MODELVIEW);
+    glLoadMatrixf(glm::value_ptr(modelview));
 }
 
 void GlState::apply(const RenderState& s) {

@@ -1,11 +1,14 @@
-// GL state through one door (STYLE lesson 2; Doom 3's GL_State, sokol_gfx's state cache).
+// GL state through one door (Doom 3's GL_State, sokol_gfx's state cache).
 // Every pass states the fixed-function state it needs as a RenderState and hands it to
 // GlState::apply, which touches only what differs from what it last set. No pass relies on
 // what the previous one left, and no pass restores anything on its way out.
 //
 // Each field's default is GL's own initial value, so a RenderState{} describes a fresh
-// context; a pass changes only the fields it cares about.
+// context; a pass changes only the fields it cares about. The fixed-function matrices go through
+// the same door (GlState::set_camera): each pass states its camera, none inherits one.
 #pragma once
+#include <glm/glm.hpp>
+
 #include "gl/gl.h"
 
 namespace dsr {
@@ -71,6 +74,14 @@ public:
     void apply(const RenderState& s);
     // Binds a program inside a pass (the material pass changes program per material).
     void use_program(GLuint program);
+    // The camera a pass draws with: GL_PROJECTION and GL_MODELVIEW loaded, GL_MODELVIEW left the
+    // current matrix mode. Each pass states its own at its start (an image-space pass its pixel
+    // ortho, a pass of 3D geometry the frame's projection), so no pass repairs what the last left.
+    // Always loaded, not cached: code outside the door (the bench's floor passes, the probes)
+    // loads matrices of its own, and it is two loads a pass.
+    void set_camera(const glm::mat4& projection, const glm::mat4& modelview = glm::mat4(1));
+    // One draw's modelview inside a pass that set its camera (an object, a light's mesh, a marker).
+    void set_modelview(const glm::mat4& modelview);
     // Forgets the cache: the next apply sets every field. Call after foreign GL code (a viewer
     // overlay) and whenever a context is created or made current.
     void reset() { valid_ = false; }

@@ -1,4 +1,4 @@
-#include "forward/transparent_order.h"
+#include "deferred/transparent_order.h"
 
 #include <algorithm>
 

@@ -1,11 +1,11 @@
-#include "forward/transparent_pass.h"
+#include "deferred/transparent_pass.h"
 
 #include <algorithm>
 
 #include "deferred/gpu_scene.h"
 #include "deferred/light_volume.h"
-#include "forward/forward_material.h"
-#include "forward/transparent_order.h"
+#include "deferred/forward_material.h"
+#include "deferred/transparent_order.h"
 #include "gl/check.h"
 #include "gl/state.h"
 

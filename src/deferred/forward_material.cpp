@@ -1,4 +1,4 @@
-#include "forward/forward_material.h"
+#include "deferred/forward_material.h"
 
 namespace dsr {
 

@@ -1,4 +1,4 @@
-// The order transparent objects are blended in (issue 13): back to front by object, the
+// The order transparent objects are blended in (docs/forward.md): back to front by object, the
 // distance from the eye to each object's bounding-sphere centre, farthest first (LearnOpenGL's
 // "Blending": sort by distance, draw the farthest first). Per object, not per triangle: two
 // objects that interpenetrate, or one object that overlaps itself, blend in a fixed order that

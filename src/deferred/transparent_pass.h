@@ -1,4 +1,4 @@
-// Transparent surfaces (issue 13): the tutorial's answer to deferred shading's "major
+// Transparent surfaces (docs/forward.md): the tutorial's answer to deferred shading's "major
 // limitation" (§4): "fall-back to a non deferred shading approach for transparent surfaces and
 // blend them". Objects whose material has opacity < 1 are kept out of the G-buffer
 // (GpuScene::ranges) and drawn here, after the opaque surfaces are in the target and its depth
@@ -6,8 +6,8 @@
 // whose volume reaches its bounding sphere with lighting.glsl (the light passes' function, through
 // forward.frag, ambient included), blended GL_SRC_ALPHA / GL_ONE_MINUS_SRC_ALPHA, depth tested
 // against the opaque surfaces (GL_LEQUAL) and not written. Used by the deferred renderer's forward
-// stage (deferred/forward_stage.cpp) and by the forward renderers, so both draw a transparent
-// object the same way.
+// stage (forward_stage.h) and by the forward renderers (src/forward/), so both draw a transparent
+// object the same way: it lives here, beside the scene upload and light volumes both use.
 //
 // What is approximate (README "Transparent surfaces"): the order is per object, not per pixel;
 // back faces are culled (a closed object shows its near side only); transparent surfaces cast no

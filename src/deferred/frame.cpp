@@ -1,0 +1,87 @@
+// make_frame: the per-frame values every stage reads (frame.h).
+#include "deferred/frame.h"
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "deferred/culling.h"
+#include "deferred/reconstruct.h"
+
+namespace dsr {
+
+glm::mat4 pixel_ortho(float w, float h) { return glm::ortho(0.0f, w, 0.0f, h, -1.0f, 1.0f); }
+
+glm::mat4 FrameDef::pixels() const { return pixel_ortho(float(width), float(height)); }
+
+glm::vec3 FrameDef::view_ray_at(float x, float y) const {
+    const float u = x / float(width), v = y / float(height);
+    return (1 - v) * ((1 - u) * corner_rays[0] + u * corner_rays[1]) +
+           v * ((1 - u) * corner_rays[3] + u * corner_rays[2]);
+}
+
+namespace {
+
+// Listing 17 lines 11-31: frustum culling, the empty-light skip and each light's scissor
+// rectangle (Listing 16), whatever geometry then draws the light. Culling and the rectangle come
+// from the light's volume (light_volume.h): a sphere as in the tutorial, a spot's cone, or a
+// directional light's full screen (never culled, never scissored).
+void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_empty) {
+    const auto frustum = frustum_planes(f.proj * f.view);
+    const int w = f.width, h = f.height;
+    f.lights.reserve(lights.size());
+    f.lights_total = int(lights.size());
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const Light& light = lights[i];
+        const LightVolume volume = light_volume(light);
+        if (volume_outside(frustum, volume)) {
+            ++f.lights_culled;
+            continue;
+        }
+        if (skip_empty && light.color.r <= 0 && light.color.g <= 0 && light.color.b <= 0) {
+            ++f.lights_culled;  // adds nothing
+            continue;
+        }
+        // In double, rounded once (Camera::to_eye): far from the origin, view * pos in float would
+        // lose the light's position to the world coordinates' rounding (stress case coords).
+        const LightVolume eye = to_eye(volume, f.camera);
+        ScissorRect r = volume_scissor(eye, f.proj[0][0], f.proj[1][1], f.camera.near_plane, w, h);
+        long long n = r.area();
+        if (n <= 0) {
+            if (skip_empty) {  // the volume reaches no visible pixel: Listing 17 line 31
+                ++f.lights_culled;
+                continue;
+            }
+            r = ScissorRect{0, 0, w, h};  // without the skip: shade the screen for nothing
+            n = (long long)w * h;
+        }
+        const bool full = !f.scissors || n == (long long)w * h;
+        if (full) r = ScissorRect{0, 0, w, h};
+        f.scissor_pixels += r.area();
+        f.lights.push_back(LightDraw{&light, i, light_params(light, f.camera), eye, r, full});
+    }
+}
+
+}  // namespace
+
+FrameDef make_frame(const Camera& camera, const std::vector<Light>& lights, const FrameSetup& s) {
+    FrameDef f;
+    f.width = s.width;
+    f.height = s.height;
+    f.camera = camera;
+    f.view = camera.view();
+    f.proj = camera.projection(float(s.width) / float(s.height));
+    f.planes = planes_uniform(camera.near_plane, camera.far_plane);
+    f.zrange = glm::vec3(camera.near_plane, camera.far_plane, std::log2(camera.far_plane / camera.near_plane));
+    const auto rays = corner_rays(f.proj[0][0], f.proj[1][1]);
+    for (int i = 0; i < 4; ++i) f.corner_rays[size_t(i)] = rays[size_t(i)];
+    const glm::vec3 lo = f.corner_rays[0], hi = f.corner_rays[2];
+    f.ray_map = glm::vec4((hi.x - lo.x) / float(s.width), (hi.y - lo.y) / float(s.height), lo.x, lo.y);
+    f.gbuffer_extent = s.gbuffer_extent;
+    f.uv_scale = glm::vec2(s.gbuffer_extent.x / float(s.width), s.gbuffer_extent.y / float(s.height));
+    f.scissors = s.scissors;
+    visible_lights(f, lights, s.skip_empty);
+    return f;
+}
+
+}  // namespace dsr

@@ -1,0 +1,71 @@
+// One frame's values, computed once at the top of DeferredShader::render and handed by const
+// reference to every stage (Doom 3's viewDef_t / viewLight_t): the camera's matrices, the depth
+// reconstruction's constants (§3.4.3), the view rays (Listing 19) and the visible lights with
+// their volumes and scissor rectangles (Listings 16-17). Pure: no GL. A stage reads what it needs
+// here and nowhere else, so none depends on what another left behind.
+#pragma once
+#include <array>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "deferred/light_params.h"
+#include "deferred/light_volume.h"
+#include "deferred/scissor.h"
+#include "scene/scene.h"
+
+namespace dsr {
+
+// One visible light of the frame: its shader parameters, eye-space volume and scissor rectangle.
+struct LightDraw {
+    const Light* light = nullptr;  // in the scene the frame was made from
+    size_t index = 0;              // its index in Scene::lights
+    LightParams params;            // light_params.h, in eye space
+    LightVolume eye;               // light_volume.h, in eye space
+    ScissorRect rect;              // the whole viewport when `full`
+    bool full = false;
+    // The tutorial's point light with Equation 2 (no type or law selection): the light shaders'
+    // cheaper LIGHT_POINT_ONLY variant shades it.
+    bool tutorial() const { return light->type == Light::Type::point && !light->attenuation; }
+};
+
+// What make_frame needs besides the scene.
+struct FrameSetup {
+    int width = 0, height = 0;         // the deferred buffers (G-buffer and P-buffer 0)
+    glm::vec2 gbuffer_extent{1, 1};    // the G-buffer's content in texture coordinates (pow2 padding)
+    bool scissors = true;              // §3.4.2's rectangles; off: every light over the whole screen
+    bool skip_empty = true;            // SkipOptions::empty_lights: no pass for a light that adds nothing
+};
+
+struct FrameDef {
+    int width = 0, height = 0;
+    Camera camera;                     // the scene's, as this frame draws it
+    glm::mat4 view{1}, proj{1};        // camera.view(), camera.projection(width / height)
+    glm::vec2 planes{0};               // §3.4.3's `planes` (reconstruct.h planes_uniform)
+    glm::vec3 zrange{0};               // near, far, log2(far / near): the depth codecs' (depth_codec.glsl)
+    std::array<glm::vec3, 4> corner_rays{};  // eye-space view rays at the window corners (Listing 19)
+    // The view ray as an affine map of window coordinates, as the light shaders take it from
+    // gl_FragCoord: (x, y) = window.xy * ray_map.xy + ray_map.zw, z = -1.
+    glm::vec4 ray_map{0};
+    glm::vec2 gbuffer_extent{1, 1};    // FrameSetup's
+    glm::vec2 uv_scale{0};             // G-buffer texture coordinates per window pixel
+    bool scissors = true;
+    // Listing 17's survivors in scene order: frustum-culled, the empty ones skipped.
+    std::vector<LightDraw> lights;
+    int lights_total = 0, lights_culled = 0;
+    long long scissor_pixels = 0;      // the rectangles' area, summed
+
+    // The eye-space view ray (x, y, -1) at window position (x, y): bilinear in the corner rays.
+    glm::vec3 view_ray_at(float x, float y) const;
+    // The image-space passes' camera: an orthographic projection in window pixels (§3.1,
+    // Listing 14 lines 5-9), glOrtho(0, width, 0, height, -1, 1).
+    glm::mat4 pixels() const;
+};
+
+// The frame of `camera` looking at `lights` (pass no lights for a frame that draws none).
+FrameDef make_frame(const Camera& camera, const std::vector<Light>& lights, const FrameSetup& setup);
+
+// glOrtho(0, w, 0, h, -1, 1): window pixels.
+glm::mat4 pixel_ortho(float w, float h);
+
+}  // namespace dsr

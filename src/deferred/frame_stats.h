@@ -1,0 +1,57 @@
+// What one frame of the deferred shader measured: per-stage times and the light passes' counts.
+// Pure data, no GL: render() returns it, `--stats`, the bench and the viewer read it.
+#pragma once
+#include <optional>
+
+#include "gl/frame_timer.h"
+
+namespace dsr {
+
+// Per-stage time of one frame, in milliseconds, from the FrameTimer (gl/frame_timer.h):
+// GPU timer queries or glFinish + wall clock, as `timing` says. `frame` is always the wall
+// time of render() until the GPU finished.
+struct StageTimes {
+    double geometry = 0, ambient = 0, lights = 0, bloom = 0, aa = 0, final = 0, frame = 0;
+    double ssao = 0;        // the SSAO pass and its blur (0 with --ssao off)
+    double depth_copy = 0;  // the depth hand-off: the G-buffer's depth onto P-buffer 0 (0 where not needed)
+    double forward = 0;     // the forward stage: light markers and transparent surfaces (0 where not run)
+    // CPU time of the rendering thread from the start of render() to its end-of-frame wait: the
+    // submission cost (draw calls, state, uniforms). With glFinish-timed stages (llvmpipe) the
+    // waits in between are in it as far as they spin; with timer queries (a GPU) they are not there.
+    double cpu = 0;
+};
+
+struct FrameStats {
+    int lights_total = 0, lights_culled = 0, lights_drawn = 0;
+    long long light_fragments = 0;  // samples that passed the light passes (occlusion queries): what
+                                    // survived the in-shader light tests; 0 and not counted when
+                                    // fragments_counted is false (no occlusion queries)
+    bool fragments_counted = false;
+    // Fragments that entered the light shader, summed over the light passes (ARB_pipeline_
+    // statistics_query, GL_FRAGMENT_SHADER_INVOCATIONS_ARB): what the passes pay, discards
+    // included. Null where the GL lacks the extension, never 0 for "not counted".
+    std::optional<long long> light_invocations;
+    // light_fragments as an optional: null where it was not counted.
+    std::optional<long long> counted_light_fragments() const {
+        return fragments_counted ? std::optional<long long>(light_fragments) : std::nullopt;
+    }
+    long long scissor_pixels = 0;   // sum of the rectangles the light quads were limited to
+    // The light geometry (docs/light_geometry.md): the passes drawn (one per light; tiles: one per
+    // tile and group of lights), the lights the volume and stencil geometries drew as quads because
+    // their mesh reaches past the far plane, where its back faces would be clipped away.
+    int light_passes = 0;
+    int lights_as_quads = 0;
+    long long tile_light_pairs = 0;  // tiles: (tile, light) pairs its plan shaded (tile_plan.h)
+    bool tile_depth = false;         // tiles: the plan culled by the tiles' depth spans (tile_depth.h)
+    // tiles, wall clock inside the light stage: the depth spans' two passes and read-back (which
+    // waits for the G-buffer: on a GPU, a pipeline drain), and the plan with its vertices' upload.
+    double tile_depth_ms = 0, tile_plan_ms = 0;
+    // The forward stage (docs/forward.md): markers drawn, transparent objects blended and their draws.
+    int light_markers = 0;
+    int transparent_objects = 0;
+    int transparent_passes = 0;
+    StageTimes ms;
+    TimingSource timing = TimingSource::wall;
+};
+
+}  // namespace dsr

@@ -1,0 +1,39 @@
+// How each visible light reaches its pixels (`--light-geometry`, docs/light_geometry.md): one
+// class per geometry, each in its own file, behind this interface.
+//   quad     light_geometry_quad.cpp     the tutorial's scissored screen-aligned quad (§3.4.2)
+//   volume   light_geometry_volume.cpp   the back faces of the light's volume mesh
+//   stencil  light_geometry_stencil.cpp  the volume masked by a stencil pass
+//   tiles    light_geometry_tiles.cpp    screen tiles, several lights a pass (§3.4.3's closing remark)
+// A geometry draws; whether the frame is counted, and how long it took, is decided outside it
+// (LightingStage::draw_lighting, DeferredShader's timer). A fifth geometry is a new file, a line
+// in make_light_geometry and its name in the options (options.h, option_table.cpp), with the rows
+// of any program of its own in shader_table.cpp (docs/architecture.md has the recipe).
+#pragma once
+#include <memory>
+
+#include "deferred/frame.h"
+#include "deferred/frame_stats.h"
+#include "deferred/light_queries.h"
+#include "deferred/render_targets.h"
+#include "deferred/shader_table.h"
+
+namespace dsr {
+
+class LightGeometryPass {
+public:
+    virtual ~LightGeometryPass() = default;
+    // Adds every light of f.lights into P-buffer 0, which is bound for rendering, with the
+    // G-buffer's normal, diffuse, specular and depth targets on units 0-3 and, where the paths
+    // need it (Paths::accum_depth), the scene's depth handed to its depth buffer. Each draw of the
+    // light shader sits between q.begin() and q.end(); the passes go into stats (light_passes,
+    // lights_as_quads, the tiles' plan). States every piece of GL state it needs, camera included.
+    virtual void draw(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats) = 0;
+    // The deferred buffers' new size, for what a geometry keeps at that size (the tiles' spans).
+    virtual void resize(int width, int height) {}
+};
+
+// The geometry the paths chose (Paths::light_geometry), its programs taken from `programs`.
+std::unique_ptr<LightGeometryPass> make_light_geometry(const ShaderConfig& config, ProgramSet& programs, int width,
+                                                       int height);
+
+}  // namespace dsr

@@ -1,0 +1,31 @@
+// What the volume and stencil geometries share: each light drawn as a closed mesh enclosing its
+// volume (light_volume.h volume_mesh), in eye space, and the lights that mesh cannot serve.
+#pragma once
+#include "deferred/frame.h"
+#include "deferred/frame_stats.h"
+#include "deferred/light_pass.h"
+#include "deferred/light_volume.h"
+
+namespace dsr {
+
+class LightMeshes {
+public:
+    LightMeshes();
+    // Lights a mesh geometry draws as its quad instead (LightQuads): directional lights (full
+    // screen, no mesh) and volumes whose mesh reaches past the far plane, where its back faces
+    // would be clipped away.
+    bool past_far(const FrameDef& f, const LightDraw& l) const;
+    // Those lights, first: each its counted quad (stats.lights_as_quads).
+    void draw_quads_past_far(const FrameDef& f, LightQuads& quads, LightQueries& q, FrameStats& stats) const;
+    // The frame's perspective camera for the meshes; before the first draw.
+    void begin(const FrameDef& f) const;
+    // The light's mesh: spheres as the unit sphere's mesh scaled and moved by the modelview,
+    // cones as their own mesh (already in eye space).
+    void draw(const LightDraw& l) const;
+
+private:
+    VolumeMesh unit_sphere_;  // volume_mesh of the unit sphere at the origin
+    float reach_ = 1;         // its farthest vertex from the centre
+};
+
+}  // namespace dsr

@@ -1,0 +1,80 @@
+// The light pass every geometry shares (light_pass.h).
+#include "deferred/light_pass.h"
+
+#include <algorithm>
+
+#include "deferred/screen_quad.h"
+
+namespace dsr {
+
+RenderState light_pass_state(GLuint program, bool scissor) {
+    RenderState s;
+    s.blend = true;
+    s.blend_src = s.blend_dst = GL_ONE;
+    s.scissor = scissor;
+    s.program = program;
+    return s;
+}
+
+void set_light_uniforms(Program& prog, const FrameDef& f) {
+    gl_state().use_program(prog.id());
+    prog.set("normal_map", 0);
+    prog.set("diffuse_map", 1);
+    prog.set("specular_map", 2);
+    prog.set("depth_map", 3);
+    prog.set("planes", f.planes);
+    prog.set("zrange", f.zrange);
+    // Texture coordinates from gl_FragCoord (the G-buffer may be padded to powers of two).
+    prog.set("uv_scale", f.uv_scale);
+    // The view ray through window point (x, y): the corner rays' bilinear map, which is affine.
+    prog.set("ray_map", f.ray_map);
+}
+
+void set_light_params(Program& prog, const LightParams& lp) {
+    prog.set("lightpos", lp.pos);
+    prog.set("lightcolor", lp.color);
+    prog.set("lightdir", lp.dir);
+    prog.set("lightspot", lp.spot);
+    prog.set("lightatt", lp.att);
+}
+
+namespace {
+
+// Window depth of eye-space z (glm::perspective's mapping, §3.4.3's `planes` inverted).
+float window_depth(float z, glm::vec2 planes) { return (planes.x * z + planes.y) / -z; }
+
+}  // namespace
+
+LightQuads::LightQuads(ProgramSet& programs, bool depth_bounds)
+    : point_(programs.take("light_point")), any_(programs.take("light")), depth_bounds_(depth_bounds) {}
+
+void LightQuads::begin(const FrameDef& f) {
+    gl_state().set_camera(f.pixels());
+    set_light_uniforms(any_, f);
+    set_light_uniforms(point_, f);
+}
+
+void LightQuads::draw(const FrameDef& f, const LightDraw& l, LightQueries& q) {
+    Program& prog = l.tutorial() ? point_ : any_;
+    RenderState s = light_pass_state(prog.id(), !l.full);
+    if (!l.full) glScissor(l.rect.x0, l.rect.y0, l.rect.x1 - l.rect.x0, l.rect.y1 - l.rect.y0);  // set_light_scissor
+    if (depth_bounds_ && l.eye.kind != LightVolume::Kind::full_screen) {
+        // The depth span of the volume's bounding sphere (a cone's lies inside its apex sphere's),
+        // tested against the scene's depth the hand-off put in P-buffer 0, before the shader runs.
+        const BoundingSphere b = bounding_sphere(l.eye);
+        const float n = f.zrange.x, fa = f.zrange.y;
+        const float z_near = std::min(-n, b.centre.z + b.radius), z_far = std::max(-fa, b.centre.z - b.radius);
+        s.depth_bounds_test = true;
+        s.depth_test = true;  // the bounds test reads the depth buffer; GL_ALWAYS keeps the rest as it was
+        s.depth_func = GL_ALWAYS;
+        s.depth_write = false;
+        glDepthBoundsEXT(std::max(0.0f, window_depth(z_near, f.planes)), std::min(1.0f, window_depth(z_far, f.planes)));
+    }
+    gl_state().apply(s);
+    set_light_params(prog, l.params);
+    q.begin();
+    draw_rect(f, 0, 0, float(f.width), float(f.height), true);
+    q.end();
+}
+
+}  // namespace dsr

@@ -1,0 +1,39 @@
+// What every light geometry shares (§3.4.2-3.4.3): the light pass's state, the uniforms every
+// light program takes from the frame (bind_light()), one light's parameters, and the tutorial's
+// scissored quad per light (Listings 16-17), which the quad geometry draws for every light and
+// the volume geometries for the lights their mesh cannot serve.
+#pragma once
+#include "deferred/frame.h"
+#include "deferred/light_queries.h"
+#include "deferred/shader_table.h"
+#include "gl/program.h"
+#include "gl/state.h"
+
+namespace dsr {
+
+// Listings 16-17: additive, through the light shader, limited to the light's scissor rectangle.
+RenderState light_pass_state(GLuint program, bool scissor);
+// Binds `prog` and sets what every light program reads of the frame: the G-buffer's samplers on
+// units 0-3, planes and zrange (§3.4.3), uv_scale and ray_map (gl_FragCoord to G-buffer
+// coordinates and view ray).
+void set_light_uniforms(Program& prog, const FrameDef& f);
+// set_light_params: one light as lighting.glsl's five vec4s (light_params.h).
+void set_light_params(Program& prog, const LightParams& lp);
+
+// The light's quad over its scissor rectangle, through "light_point" for the tutorial's point
+// lights and "light" for the others.
+class LightQuads {
+public:
+    // depth_bounds: EXT_depth_bounds_test on each quad (Paths::depth_bounds).
+    LightQuads(ProgramSet& programs, bool depth_bounds);
+    // Before the first quad of a frame: the pixel camera and both programs' frame uniforms.
+    void begin(const FrameDef& f);
+    // set_light_scissor, then the light shader over the rectangle; one counted pass.
+    void draw(const FrameDef& f, const LightDraw& l, LightQueries& q);
+
+private:
+    Program point_, any_;
+    bool depth_bounds_;
+};
+
+}  // namespace dsr

@@ -1,0 +1,61 @@
+// Lighting stage (§3.4, Listings 14-20): image space, into P-buffer 0. A fixed-function ambient
+// pass (Listing 15, Eq. 6, scaled by SSAO when it is on), the depth hand-off where a later pass
+// tests against the scene's depth, then every visible light of the frame added by the light
+// geometry the options ask for (light_geometry.h). Also the light pass's arithmetic written out as
+// positions, for the accuracy measurements (reconstructed_positions).
+#pragma once
+#include <memory>
+
+#include "deferred/depth_handoff.h"
+#include "deferred/frame.h"
+#include "deferred/frame_stats.h"
+#include "deferred/light_geometry.h"
+#include "deferred/render_targets.h"
+#include "deferred/shader_table.h"
+#include "gl/pbuffer.h"
+#include "gl/program.h"
+#include "scene/image.h"
+#include "scene/scene.h"
+
+namespace dsr {
+
+class SsaoStage;
+
+class LightingStage {
+public:
+    LightingStage(const ShaderConfig& c, ProgramSet& programs, int width, int height);
+    ~LightingStage();
+    void resize(int width, int height);
+    // The depth hand-off again, for paths chosen again (DeferredShader::set_scene).
+    void set_handoff(const ShaderConfig& c, ProgramSet& programs);
+    // Counting (FrameStats light_fragments, light_invocations): two queries around every light
+    // draw. On by default; the bench turns it off for its timed frames (on a GPU at 1024 lights the
+    // queries were most of the CPU's frame) and counts in one more frame after them.
+    void set_counting(bool on) { counting_ = on; }
+
+    // Listing 15, with the background kept: P-buffer 0 (bound) starts as the background colour and
+    // the alpha test keeps it where the G-buffer holds no surface (diffuse alpha 0). `ssao`: the
+    // AO buffer it is multiplied by, or null.
+    void draw_ambient(const FrameDef& f, const Scene& scene, RenderTargets& targets, const SsaoStage* ssao);
+    // hand_off_depth (depth_handoff.h), with the G-buffer bound as textures.
+    void hand_off_depth(const FrameDef& f, RenderTargets& targets);
+    // Listing 17: the frame's visible lights added into P-buffer 0 by the light geometry, with the
+    // G-buffer bound as textures (units 0-3); counted when counting is on and the GL can.
+    void draw_lighting(const FrameDef& f, RenderTargets& targets, FrameStats& stats);
+    // After the geometry stage: the eye-space position each pixel's depth reconstructs to, exactly
+    // as the light pass computes it (same decoder, planes and view rays), in float: rgb = (x, y, z),
+    // alpha 1 where the G-buffer has a surface, 0 elsewhere. Throws without float targets.
+    Image reconstructed_positions(const FrameDef& f, RenderTargets& targets);
+
+private:
+    bool count_samples_, count_invocations_;
+    bool counting_ = true;
+    int depth_target_;
+    bool pow2_;
+    std::unique_ptr<LightGeometryPass> geometry_;
+    std::unique_ptr<DepthHandoffPass> handoff_;  // where Paths::accum_depth
+    Program position_prog_;                      // where the table built it
+    std::unique_ptr<PBuffer> position_buf_;      // on first use
+};
+
+}  // namespace dsr

@@ -1,0 +1,235 @@
+// The shader table's rows (shader_table.h). A row's `used` and `defines` read only the
+// configuration: the option ranges were checked where the options were parsed (option_table.cpp).
+#include "deferred/shader_table.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "deferred/tile_plan.h"
+#include "dsr_error.h"
+#include "gl/rounding_probe.h"
+
+namespace dsr {
+
+ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
+    ShaderConfig c;
+    c.caps = caps;
+    c.paths = choose_paths(caps, asked);
+    if (!c.paths.refused.empty()) throw Error(c.paths.refused);
+    c.opts = asked;
+    c.opts.depth = c.paths.depth_path;
+    c.opts.tile_size = c.paths.tile_size, c.opts.tile_lights = c.paths.tile_lights;  // auto resolved
+    if (c.paths.light_geometry != LightGeometry::tiles) return c;
+    // The batch the uniform arrays hold: five vec4s a light within the fragment stage's uniform
+    // budget (GL 2.0 guarantees 64 vec4s; llvmpipe and NVIDIA give 1024), a few vec4s kept for the
+    // other uniforms, and below tile_plan's empty-slot index 255.
+    GLint comps = 0;
+    glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
+    c.tile_batch = c.opts.tile_plan == TileGrouping::groups ? c.opts.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
+    // P-buffer 0 is RGBA8: several lights summed in one pass are each rounded as their own pass
+    // would be, as this GL rounds into RGBA8, measured once (gl/rounding_probe.h): llvmpipe rounds
+    // t x 255 to nearest, an exact tie to even; the H200 truncates t to 12 bits first, which rounds
+    // up later than the half by as much as 0.06 of a step, and over the dozens of lights a pixel of
+    // 1024-overlap gets the difference reached 16 LSB.
+    if (!c.opts.float_accum && c.opts.tile_lights > 1 && c.paths.fbo) {
+        const Unorm8Rounding& r = unorm8_rounding();
+        c.rounding_measured = true;
+        c.rounding_bits = unorm8_truncate_bits(r);
+        if (c.rounding_bits < 0) c.tile_round = unorm8_round_offset(r);  // the fallback's quantize_round
+    }
+    return c;
+}
+
+namespace {
+
+// The depth path and packed encoding (glsl120/depth_codec.glsl).
+Defines depth_defines(const ShaderConfig& c) {
+    const ShaderOptions& o = c.opts;
+    if (o.depth == DepthPath::position16) return {"POSITION_TARGET", "POSITION16"};
+    if (o.depth == DepthPath::position32) return {"POSITION_TARGET"};
+    if (o.depth != DepthPath::packed) return {};
+    Defines d = {"PACKED_DEPTH"};
+    if (o.encoding == DepthEncoding::literal) d.push_back("ENC_LITERAL");
+    if (o.encoding == DepthEncoding::linear) d.push_back("ENC_LINEAR");
+    if (o.encoding == DepthEncoding::log) d.push_back("ENC_LOG");
+    return d;
+}
+
+Defines with(Defines d, std::initializer_list<std::string> more) {
+    d.insert(d.end(), more.begin(), more.end());
+    return d;
+}
+
+// The light pass (light.frag, §3.4.3): Listing 2 as printed or as the equations say, and the
+// in-shader rejections of the skips.
+Defines light_defines(const ShaderConfig& c, bool rejections = true) {
+    Defines d = depth_defines(c);
+    if (c.opts.listing2_literal) d.push_back("LISTING2_LITERAL");
+    if (rejections && c.opts.skip.light_depth_test) d.push_back("LIGHT_DEPTH_TEST");
+    if (rejections && c.opts.skip.light_sphere_test) d.push_back("LIGHT_SPHERE_TEST");
+    return d;
+}
+
+// light_tiles.frag: up to tile_lights lights a pass out of a batch in uniform arrays.
+Defines tiles_defines(const ShaderConfig& c) {
+    Defines d = light_defines(c);
+    d.push_back("MAX_LIGHTS " + std::to_string(c.opts.tile_lights));
+    if (c.opts.tile_plan == TileGrouping::lists)  // groups: the light count is a uniform instead
+        d.push_back("ID_VECS " + std::to_string(tile_id_vecs(c.opts.tile_lights)));
+    d.push_back("BATCH " + std::to_string(c.tile_batch));
+    // One light a pass needs no emulation: the blend rounds it as quad's does.
+    if (!c.opts.float_accum && c.opts.tile_lights > 1) {
+        d.push_back("QUANTIZE_8BIT");
+        if (c.rounding_measured && c.rounding_bits > 0)
+            d.push_back("QUANTIZE_TRUNCATE " + std::to_string(1 << c.rounding_bits) + ".0");
+        if (c.rounding_measured && c.rounding_bits == 0) d.push_back("QUANTIZE_TIES_EVEN");  // predicted_threshold's model
+    }
+    return d;
+}
+
+Defines blur_defines(const ShaderConfig& c, bool select) {
+    const PostOptions& p = c.opts.post;
+    Defines d = {"NUMPOINTS " + std::to_string(p.bloom_taps)};
+    if (p.bloom_listing) d.push_back("LISTING");
+    else if (select) d.push_back("SELECT");
+    return d;
+}
+
+Defines aa_defines(const ShaderConfig& c) {
+    const PostOptions& p = c.opts.post;
+    Defines d = depth_defines(c);
+    if (p.aa_source != AaSource::depth) d.push_back("SOURCE_NORMAL");
+    if (p.aa_source != AaSource::normal) d.push_back("SOURCE_DEPTH");
+    if (p.aa_kernel == AaKernel::listing) d.push_back("LISTING_KERNEL");
+    return d;
+}
+
+bool always(const ShaderConfig&) { return true; }
+bool material_variants(const ShaderConfig& c) { return c.opts.skip.material_variants; }
+bool geometry_is(const ShaderConfig& c, LightGeometry g) { return c.paths.light_geometry == g; }
+// The tiles' depth spans need a float target behind a framebuffer object; without them the plan
+// runs without depth culling.
+bool tile_depth(const ShaderConfig& c) {
+    return geometry_is(c, LightGeometry::tiles) && c.opts.tile_depth && c.caps.fbo && c.caps.texture_float && c.paths.fbo;
+}
+
+std::string tile_size(const ShaderConfig& c) { return "TILE_SIZE " + std::to_string(c.opts.tile_size); }
+
+}  // namespace
+
+const std::vector<ShaderRow>& shader_rows() {
+    using C = const ShaderConfig&;
+    static const std::vector<ShaderRow> rows = {
+        // Geometry stage (§3.3, Listing 9). Without the variants skip every material takes the
+        // full shader (normal map and specular map read), as a single-shader renderer would.
+        {"material", "material.vert", "material.frag", "G-buffer, normal-mapped material (Listing 9)", always,
+         [](C c) { return with(depth_defines(c), {"NORMAL_MAP"}); }, true},
+        {"material_no_specular", "material.vert", "material.frag", "G-buffer, normal map, no specular",
+         material_variants, [](C c) { return with(depth_defines(c), {"NORMAL_MAP", "NO_SPECULAR"}); }, true},
+        {"material_flat", "material.vert", "material.frag", "G-buffer, no normal map", material_variants,
+         [](C c) { return depth_defines(c); }, true},
+        {"material_flat_no_specular", "material.vert", "material.frag", "G-buffer, no normal map, no specular",
+         material_variants, [](C c) { return with(depth_defines(c), {"NO_SPECULAR"}); }, true},
+        // Lighting stage (§3.4): the light pass for spot, directional and attenuated lights, and the
+        // tutorial's point lights with Equation 2 (LIGHT_POINT_ONLY: no type or law selection).
+        {"light", "light.vert", "light.frag", "light pass, any light (Listing 20)",
+         [](C c) { return !geometry_is(c, LightGeometry::tiles); }, [](C c) { return light_defines(c); }},
+        {"light_point", "light.vert", "light.frag", "light pass, the tutorial's point lights",
+         [](C c) { return !geometry_is(c, LightGeometry::tiles); },
+         [](C c) { return with(light_defines(c), {"LIGHT_POINT_ONLY"}); }},
+        {"light_volume", "light.vert", "light.frag", "light pass over a volume mesh",
+         [](C c) { return geometry_is(c, LightGeometry::volume) || geometry_is(c, LightGeometry::stencil); },
+         [](C c) { return with(light_defines(c), {"VOLUME"}); }},
+        // Behind the stencil test the in-shader rejections are redundant (the stencil marks surfaces
+        // inside the volume) and harmful: a shader that may discard, in a pass that writes the
+        // stencil (zeroing it for the next light), makes the GPU test the stencil after the shader
+        // instead of before it (the H200 ran the shader for 2.40x the ideal count with them).
+        // Without them a pixel just outside the sphere adds att = 0.
+        {"light_stencil", "light.vert", "light.frag", "light pass behind the stencil mask",
+         [](C c) { return geometry_is(c, LightGeometry::stencil); },
+         [](C c) { return with(light_defines(c, false), {"VOLUME"}); }},
+        {"light_tiles", "light.vert", "light_tiles.frag", "tiles: several lights a pass, any type",
+         [](C c) { return geometry_is(c, LightGeometry::tiles); }, tiles_defines},
+        {"light_tiles_point", "light.vert", "light_tiles.frag", "tiles: the tutorial's point lights",
+         [](C c) { return geometry_is(c, LightGeometry::tiles); },
+         [](C c) { return with(tiles_defines(c), {"LIGHT_POINT_ONLY"}); }},
+        {"tile_depth", "post.vert", "tile_depth.frag", "tiles: each tile column's depth span per row", tile_depth,
+         [](C c) { return with(depth_defines(c), {tile_size(c)}); }},
+        {"tile_depth_reduce", "post.vert", "tile_depth_reduce.frag", "tiles: a tile's rows together", tile_depth,
+         [](C c) { return Defines{tile_size(c)}; }},
+        // The depth hand-off's pass (depth_handoff.h), where it is not a blit.
+        {"depth_copy", "post.vert", "depth_copy.frag", "depth hand-off: gl_FragDepth from the G-buffer",
+         [](C c) { return c.paths.accum_depth && c.paths.depth_handoff == DepthHandoff::pass; },
+         [](C c) { return depth_defines(c); }},
+        // SSAO (docs/ssao.md): occlusion, then its depth-aware blur.
+        {"ssao", "light.vert", "ssao.frag", "ambient occlusion", [](C c) { return c.opts.ssao.on; },
+         [](C c) { return with(depth_defines(c), {"SAMPLES " + std::to_string(c.opts.ssao.samples)}); }},
+        {"ssao_blur", "post.vert", "ssao_blur.frag", "ambient occlusion blur", [](C c) { return c.opts.ssao.on; },
+         [](C c) { return depth_defines(c); }},
+        // Post-processing (§3.5): Listing 22's blur, plain and with the bright-pass selection of
+        // bloom's first pass; Listing 21 / Equation 7's anti-alias, and its factor alone (Figure 8,
+        // --view blur-factor, which any configuration may ask for).
+        {"bloom_blur", "post.vert", "blur.frag", "bloom blur (Listing 22)", [](C c) { return c.opts.post.bloom; },
+         [](C c) { return blur_defines(c, false); }},
+        {"bloom_select", "post.vert", "blur.frag", "bloom blur with the bright pass", [](C c) { return c.opts.post.bloom; },
+         [](C c) { return blur_defines(c, true); }},
+        {"anti_alias", "post.vert", "anti_alias.frag", "anti-alias (Listing 21, Equation 7)", always, aa_defines},
+        {"aa_factor", "post.vert", "anti_alias.frag", "anti-alias factor (Figure 8)", always,
+         [](C c) { return with(aa_defines(c), {"FACTOR_ONLY"}); }},
+        // The light pass's arithmetic written out as eye-space positions (reconstructed_positions).
+        {"position", "light.vert", "light.frag", "read-back of the reconstructed positions",
+         [](C c) { return c.caps.fbo && c.caps.texture_float; },
+         [](C c) { return with(depth_defines(c), {"OUTPUT_POSITION"}); }},
+    };
+    return rows;
+}
+
+std::vector<ProgramSpec> shader_programs(const ShaderConfig& c) {
+    std::vector<ProgramSpec> out;
+    for (const ShaderRow& r : shader_rows()) {
+        if (!r.used(c)) continue;
+        const Defines d = r.defines(c);
+        if (!r.per_target || c.paths.mrt) {
+            out.push_back(ProgramSpec{r.name, r.vert, r.frag, r.role, d});
+            continue;
+        }
+        for (int t = 0; t < c.paths.gbuffer_targets; ++t)
+            out.push_back(ProgramSpec{std::string(r.name) + "/" + std::to_string(t), r.vert, r.frag, r.role,
+                                      with(d, {"TARGET_" + std::to_string(t)})});
+    }
+    return out;
+}
+
+std::string describe_programs(const ShaderConfig& c) {
+    std::ostringstream s;
+    for (const ProgramSpec& p : shader_programs(c)) {
+        std::string d;
+        for (const std::string& x : p.defines) d += (d.empty() ? "" : ", ") + x;
+        char line[256];
+        std::snprintf(line, sizeof line, "  %-26s %-34s %s\n", p.name.c_str(), (p.vert + " + " + p.frag).c_str(),
+                      p.role.c_str());
+        s << line;
+        if (!d.empty()) s << "  " << std::string(26, ' ') << " " << d << "\n";
+    }
+    std::string rest;
+    for (const ShaderRow& r : shader_rows())
+        if (!r.used(c)) rest += (rest.empty() ? "" : ", ") + std::string(r.name);
+    if (!rest.empty()) s << "  the table's other rows (other options): " << rest << "\n";
+    return s.str();
+}
+
+ProgramSet::ProgramSet(const std::string& dir, const ShaderConfig& c, const std::vector<std::string>& only) {
+    for (ProgramSpec& p : shader_programs(c))
+        if (only.empty() || std::find(only.begin(), only.end(), p.name) != only.end())
+            programs_[p.name] = Program(dir, p.vert, p.frag, p.defines);
+}
+
+Program ProgramSet::take(const std::string& name) {
+    auto it = programs_.find(name);
+    if (it == programs_.end()) throw Error("shader table: no program '" + name + "' in this configuration");
+    Program p = std::move(it->second);
+    programs_.erase(it);
+    return p;
+}
+
+}  // namespace dsr

@@ -1,0 +1,77 @@
+// The shader table (Doom 3's program table, { type, name, "interaction.vfp" }): one row per
+// program the deferred shader can draw with, its GLSL files and its defines as a function of the
+// configuration. Every program a configuration uses is compiled and linked when the
+// DeferredShader is built, so a shader that does not compile fails at start-up, never mid-frame;
+// each stage then takes its own programs out of the set. `dsr info` prints the table.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "deferred/options.h"
+#include "deferred/paths.h"
+#include "gl/caps.h"
+#include "gl/program.h"
+
+namespace dsr {
+
+// What the rows are a function of: the capabilities, the options as run (choose_paths resolved
+// the depth path and the tiles' sizes) and the paths chosen, and what the tiles geometry measured
+// on this GL.
+struct ShaderConfig {
+    Caps caps;
+    ShaderOptions opts;
+    Paths paths;
+    // tiles only (0 / unmeasured otherwise): the lights light_tiles.frag holds in its uniform
+    // arrays, and how this GL rounds into RGBA8 (gl/rounding_probe.h): the truncation bits of
+    // the model that fits (-1: none does, the shader then adds tile_round before rounding down).
+    int tile_batch = 0;
+    bool rounding_measured = false;
+    int rounding_bits = -1;
+    float tile_round = 0.5f;
+};
+
+// choose_paths and, for the tiles geometry, the two measurements. Needs a current context for
+// tiles; throws dsr::Error with choose_paths' refusal.
+ShaderConfig shader_config(const Caps& caps, const ShaderOptions& opts);
+
+using Defines = std::vector<std::string>;
+
+struct ShaderRow {
+    const char* name;
+    const char* vert;
+    const char* frag;
+    const char* role;                          // what it draws, in a few words (dsr info)
+    bool (*used)(const ShaderConfig&);         // this configuration draws with it
+    Defines (*defines)(const ShaderConfig&);
+    // Without MRT (§3.2, "rendering one pass per buffer"): one program per G-buffer target,
+    // named "name/t", with TARGET_t defined.
+    bool per_target = false;
+};
+
+const std::vector<ShaderRow>& shader_rows();
+
+// One program of the configuration: a used row with its defines, per target where it says so.
+struct ProgramSpec {
+    std::string name, vert, frag, role;
+    Defines defines;
+};
+std::vector<ProgramSpec> shader_programs(const ShaderConfig& config);
+// One line per program: name, files, defines (dsr info).
+std::string describe_programs(const ShaderConfig& config);
+
+// Every program of shader_programs(config), compiled and linked; each stage takes its own.
+class ProgramSet {
+public:
+    // `only`: just these programs (empty: all of them).
+    ProgramSet(const std::string& shader_dir, const ShaderConfig& config, const std::vector<std::string>& only = {});
+    bool has(const std::string& name) const { return programs_.count(name) != 0; }
+    // Moves the program out; throws dsr::Error when the table did not build it here.
+    Program take(const std::string& name);
+    size_t size() const { return programs_.size(); }
+
+private:
+    std::map<std::string, Program> programs_;
+};
+
+}  // namespace dsr

@@ -1,0 +1,38 @@
+// The tiles geometry's depth culling (tile_plan.h TileDepth): a pass of one fragment per tile column
+// and window row (glsl120/tile_depth.frag) into a float target, a second that takes each tile's rows
+// together (tile_depth_reduce.frag), and a read-back of one texel per tile give each tile's span of
+// surface eye z; the plan then leaves out a tile's lights whose sphere lies wholly in front of or
+// behind its surfaces. The read-back waits for the geometry pass, which the light passes wait for
+// anyway; on a GPU it is a pipeline drain, measured with the rest of the light stage (ms.lights).
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "deferred/frame.h"
+#include "deferred/shader_table.h"
+#include "deferred/tile_plan.h"
+#include "gl/pbuffer.h"
+#include "gl/program.h"
+
+namespace dsr {
+
+class TileDepthPass {
+public:
+    // Needs the table's "tile_depth" and "tile_depth_reduce" (a float target behind a framebuffer
+    // object); the buffers are made here and at resize, never inside a frame: creating their
+    // textures would disturb the G-buffer's texture bindings.
+    TileDepthPass(const ShaderConfig& c, ProgramSet& programs, int width, int height);
+    void resize(int width, int height);
+    // Each tile's span, row by row: its two passes into its own buffers and the read-back. Reads
+    // the G-buffer's normal and depth targets on units 0 and 3; P-buffer 0 must not be bound.
+    std::vector<DepthSpan> spans(const FrameDef& f);
+
+private:
+    Program rows_prog_, reduce_prog_;
+    int tile_size_;
+    bool pow2_;
+    std::unique_ptr<PBuffer> rows_;  // RGBA32F: a texel per tile column and window row
+    std::unique_ptr<PBuffer> tiles_;  // RGBA32F: a texel per tile, read back
+};
+
+}  // namespace dsr
