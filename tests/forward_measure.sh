@@ -1,5 +1,5 @@
 #!/bin/bash
-# The forward stage's costs (issue 13, docs/forward.md): the depth hand-off by each method
+# The forward stage's costs (docs/forward.md): the depth hand-off by each method
 # (EXT_framebuffer_blit, the gl_FragDepth pass) on each depth path, and the forward stage on the
 # transparency figure's scene. Medians of FRAMES frames from `render --stats`; one markdown table
 # on stdout.

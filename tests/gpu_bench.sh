@@ -89,7 +89,7 @@ run)
     if part geometry; then
     [ -f "$out/default_1920x1080.png" ] || $dsr render --context egl --size 1920x1080 --no-bloom --no-aa \
         -o "$out/default_1920x1080.png"
-    # Light geometries (issue 12) and the depth-bounds test on the default scene at 1080p, each
+    # Light geometries (docs/light_geometry.md) and the depth-bounds test on the default scene at 1080p, each
     # image against quad's (the 1920x1080 render above).
     for g in volume stencil tiles; do
         $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --light-geometry $g --frames 60 \
@@ -104,7 +104,7 @@ run)
     echo "geometry tiles (1 light a pass) vs quad: $($dsr compare "$out/default_1920x1080.png" "$out/geometry_tiles1.png" 2>&1 | tail -1)" \
         | tee -a "$out/geometry_compare.txt"
     fi
-    # The tutorial's P-buffers as EGL pbuffer surfaces, and the copy path, against fbo (issue 15).
+    # The tutorial's P-buffers as EGL pbuffer surfaces, and the copy path, against fbo.
     if part targets; then
     for rt in pbuffer copy; do
         for extra in "--no-bloom --no-aa" ""; do
@@ -122,14 +122,14 @@ run)
             | tee -a "$out/geometry_compare.txt"
     fi
     fi
-    # SSAO's cost on the GPU (issue 13), full and half resolution.
+    # SSAO's cost on the GPU (docs/ssao.md), full and half resolution.
     if part ssao; then
     for sc in 1 2; do
         $dsr render --context egl --size 1920x1080 --ssao --ssao-scale $sc --frames 30 \
             --stats "$out/ssao_scale$sc.json" -o "$out/ssao_scale$sc.png"
     done
     fi
-    # The forward stage (issue 13): the depth hand-off by blit and by pass on both depth paths,
+    # The forward stage: the depth hand-off by blit and by pass on both depth paths,
     # markers and the transparency figure's scene (docs/forward.md).
     if part forward; then
     FORWARD_FLAGS="--context egl" FORWARD_SIZES="1920x1080 3840x2160" FORWARD_FRAMES=30 \

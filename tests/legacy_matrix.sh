@@ -52,7 +52,7 @@ for SIZE in "${sizes[@]}"; do
       "$max" "$mean" "$(awk -v o="$over" -v p="$pixels" 'BEGIN { printf "%.3f", 100 * o / p }')" "$frame" >> "$out"
   done
   echo '```' >> "$out"
-  # Issue 16: the stored-position paths on the same matrix's old GLs. Where float targets or
+  # The stored-position paths (docs/accuracy.md) on the same matrix's old GLs. Where float targets or
   # render to texture are missing they are refused in one line (recorded, not a failure); with
   # EXT_framebuffer_object alone (no-arb-fbo) every G-buffer target becomes float.
   {

@@ -42,7 +42,7 @@ ImageDiff logged_masked(const std::string& name, const Image& a, const Image& b,
 }
 
 // Where the comparison of a triangle renderer with the exact trace measures the renderer and
-// not the sphere's tessellation (issue 10: the trace now hits exact shapes, and the 48x24
+// not the sphere's tessellation (docs/accuracy.md: the trace now hits exact shapes, and the 48x24
 // sphere's facets lie up to 0.43% of r inside the sphere):
 // `untessellated`: interior pixels on meshes that are exactly their triangles (planes, boxes,
 // meshes without a shape); `same_surface`: pixels where the exact trace and the trace of the
@@ -127,7 +127,7 @@ TEST(Analytic, RejectsTextureMaps) {
     EXPECT_THROW(analytic_reference(default_scene(), 8, 8), Error);
 }
 
-// Transparent materials (issue 13) are blended by the forward stage; the trace has no blending.
+// Transparent materials (docs/forward.md) are blended by the forward stage; the trace has no blending.
 TEST(Analytic, RejectsTransparentMaterials) {
     Scene s = lit_sphere_scene();
     EXPECT_NO_THROW(analytic_reference(s, 8, 8));
@@ -146,7 +146,7 @@ TEST(Analytic, RejectsTransparentMaterials) {
 // output rounding (measured max 0.50 LSB, mean 0.16). All pixels where the exact shapes and the
 // renderer's triangles show the same mesh: a pixel or so on a silhouette where GL's float edge
 // test and the exact one disagree, bounded at 0.1%.
-// Since the trace hits the exact spheres (issue 10) these assertions hold only where that
+// Since the trace hits the exact spheres (docs/accuracy.md) these assertions hold only where that
 // comparison is valid, so they are restricted to those pixels (`untessellated`, `same_surface`;
 // over every interior pixel the forward image is now max 1.46 LSB off, and over all pixels 19 of
 // 16384 are over 2 LSB, on the spheres' silhouettes). On
@@ -185,9 +185,10 @@ TEST(Analytic, ForwardMatchesTrace) {
     }
 }
 
-// Issue 6: "analytic scene within 2 LSB for the depth-texture path". On interior pixels the
-// deferred image is within 2 codes of the correctly rounded reference (measured max 2 at 96,
-// 128 and 256; against the float reference max 2.07 LSB at 128, 1 pixel of 15650 just over 2).
+// The goal: the analytic scene within 2 LSB for the depth-texture path (the analytic reference:
+// docs/accuracy.md). On interior pixels the deferred image is within 2 codes of the correctly
+// rounded reference (measured max 2 at 96, 128 and 256; against the float reference max 2.07
+// LSB at 128, 1 pixel of 15650 just over 2).
 // The error is the deferred path's quantisation (next test), not geometry: the forward renderer
 // on the same triangles is within 0.5 LSB. Silhouette pixels are excluded as above; over all
 // pixels at most 0.1% may be over 2 LSB (measured 2 of 16384).
@@ -203,7 +204,7 @@ TEST(Analytic, DeferredDepthTextureWithinTwoLsb) {
                                 2 * kLsb);
     ImageDiff f = logged_masked("deferred (depth texture) vs trace", def.image, tr.image, mask, 2 * kLsb);
     compare_logged("deferred (depth texture) vs trace, all pixels", def.image, tr.image, 2 * kLsb);
-    // Restricted (issue 10) to the pixels where the exact shapes and the renderer's triangles
+    // Restricted (docs/accuracy.md) to the pixels where the exact shapes and the renderer's triangles
     // show the same mesh, less the spheres' silhouette ring (same_surface): over all pixels 28 of
     // 16384 are now over 2 LSB, on the spheres' silhouettes, where the exact sphere covers pixels
     // its facets do not or meets the ray at grazing incidence.
@@ -233,7 +234,7 @@ TEST(Analytic, DeferredDepthTextureWithinTwoLsb) {
 // on opposite sides of a rounding step (a normal component one code off moves a highlight). So the model accounts for the error: the deferred path's mean error
 // against the model must be well under its mean error against the reference.
 // Those figures were measured against the trace of the renderer's triangles. Against the exact
-// spheres (issue 10) the model leaves out the 48x24 tessellation: 8-bit normals 1.86 / 0.059,
+// spheres the model leaves out the 48x24 tessellation: 8-bit normals 1.86 / 0.059,
 // all three 2.37 / 0.244, the render 2.06 / 0.253, and against the model max 4.00, mean 0.060,
 // 28 of 15650 pixels off by 1.5 LSB or more (0.18%); the assertions below are unchanged.
 TEST(Analytic, DeferredErrorIsGBufferAndPassQuantisation) {
@@ -265,7 +266,7 @@ TEST(Analytic, DeferredErrorIsGBufferAndPassQuantisation) {
     EXPECT_LT(vs_model.mean_lsb(), 0.5 * vs_ref.mean_lsb());
 }
 
-// ---- References that do not share the renderer's code (issue 10) ----
+// ---- References that do not share the renderer's code (docs/accuracy.md) ----
 
 namespace {
 // A plane that fills the view, seen obliquely (about 35 degrees from its normal at the centre
@@ -441,7 +442,7 @@ TEST(Analytic, RefusesMapsWithoutAClosedForm) {
 }
 
 // (ii) A textured plane seen without minification: the reference samples the map bilinearly
-// on the CPU as GL_LINEAR at level 0 does. Goals (issue 10): <= 2 LSB diffuse only, <= 4 LSB
+// on the CPU as GL_LINEAR at level 0 does. Goals (docs/accuracy.md): <= 2 LSB diffuse only, <= 4 LSB
 // with specular, against the correctly rounded trace on interior pixels.
 TEST(Analytic, DeferredTexturedPlaneMatchesBilinearReference) {
     AnalyticOptions o;
@@ -477,7 +478,7 @@ TEST(Analytic, DeferredTexturedPlaneMatchesBilinearReference) {
 
 // (i) A normal-mapped plane whose map is made from a closed form (sinusoidal bumps,
 // make_bump_normal_map); the reference shades with the formula's exact normal at the hit's uv,
-// not the texture. Goal (issue 10): <= 3 LSB against the correctly rounded trace, interior.
+// not the texture. Goal (docs/accuracy.md): <= 3 LSB against the correctly rounded trace, interior.
 TEST(Analytic, DeferredNormalMappedPlaneMatchesClosedForm) {
     const BumpMap bumps{0.04, 2};
     Scene s = mapped_plane(glm::vec3(0.8f), glm::vec3(0.3f), 16);

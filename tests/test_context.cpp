@@ -256,7 +256,7 @@ TEST(Context, EglDeviceOutOfRangeIsOneClearLine) {
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
 }
 
-// --render-target pbuffer (issue 15): every P-buffer and the G-buffer an EGL pbuffer surface of its
+// --render-target pbuffer (docs/gpu.md): every P-buffer and the G-buffer an EGL pbuffer surface of its
 // own, copied to its textures; the fbo image within 2 LSB, on both depth paths and with a light
 // geometry that needs P-buffer 0's depth and stencil. OSMesa has no pbuffer surfaces: refused.
 TEST(Context, PbufferRenderTargetMatchesFbo) {

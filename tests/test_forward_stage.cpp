@@ -1,4 +1,4 @@
-// The forward stage after the lights (issue 13): the depth hand-off (blit or gl_FragDepth pass),
+// The forward stage after the lights (docs/forward.md): the depth hand-off (blit or gl_FragDepth pass),
 // light markers (--show-lights) and transparent surfaces, on both depth paths, through the
 // position path and without framebuffer objects (--caps no-fbo). The pure parts first: the
 // back-to-front order, the marker's size against glm's projection, the path choice.

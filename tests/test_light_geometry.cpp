@@ -1,4 +1,4 @@
-// Light geometries (issue 12): quad, volume, stencil and tiles give the same image on the same
+// Light geometries (docs/light_geometry.md): quad, volume, stencil and tiles give the same image on the same
 // G-buffer, while what enters the light shader falls from quad to stencil; the camera inside a
 // light volume is still lit; every forced fallback renders the same image; both depth paths work
 // with every geometry. Images are small (128x128) to keep `make test` short.

@@ -1,4 +1,4 @@
-// Spot, directional and attenuated lights (issue 12) in the deferred light pass and the forward
+// Spot, directional and attenuated lights (docs/light_geometry.md) in the deferred light pass and the forward
 // renderers, checked by hand-made geometry (which pixels a cone reaches, the plane a directional
 // light gives) and against the analytic trace, which writes the laws again from their
 // definitions (src/analysis/analytic_reference.cpp).

@@ -1,8 +1,8 @@
-// OBJ/MTL loading (issue 11, phase 1): the loader on small files written here, normals and
+// OBJ/MTL loading (docs/scene-format.md): the loader on small files written here, normals and
 // tangent frames against brute force, every kind of bad input as its own case (the message must
 // name the file and line), the `mesh` scene directive, and, unless DSR_OBJ_LOADER_ONLY (the
-// ASan + UBSan build of the loader, `make test`), renders of each ../shared/assets model present
-// and of a generated 1-million-triangle OBJ.
+// ASan + UBSan build of the loader, `make test`), renders of each model of the optional local test
+// assets (not part of the repository) that is present, and of a generated 1-million-triangle OBJ.
 #include <gtest/gtest.h>
 
 #include <sys/resource.h>
@@ -112,7 +112,7 @@ TEST_F(ObjFiles, QuadWithMaterialAndMaps) {
     EXPECT_EQ(mat.specular, vec3(0.2f, 0.3f, 0.4f));
     EXPECT_FLOAT_EQ(mat.shininess, 64);
     EXPECT_FLOAT_EQ(mat.opacity, 0.75f);
-    EXPECT_TRUE(mat.transparent()) << "d below 1: drawn by the forward stage (issue 13)";
+    EXPECT_TRUE(mat.transparent()) << "d below 1: drawn by the forward stage";
     ASSERT_GE(mat.diffuse_map, 0);
     ASSERT_GE(mat.specular_map, 0);
     EXPECT_EQ(m.textures[size_t(mat.diffuse_map)].width, 4);
@@ -639,7 +639,7 @@ const std::string kAssets = std::string(DSR_SOURCE_DIR) + "/../shared/assets";
 // Each asset with its scene in tests/data (paths there are relative to the scene file).
 void render_asset(const std::string& folder, const std::string& scene_name, double min_cover, double max_cover) {
     if (!fs::is_directory(kAssets + "/" + folder))
-        GTEST_SKIP() << "skipped: " << kAssets << "/" << folder << " is absent (issue 11's shared assets)";
+        GTEST_SKIP() << "skipped: " << kAssets << "/" << folder << " is absent (optional local test assets, not part of the repository)";
     const double t0 = dsr::now_ms();
     const dsr::Scene scene = dsr::load_scene(std::string(DSR_SOURCE_DIR) + "/tests/data/" + scene_name);
     const double load_ms = dsr::now_ms() - t0;
@@ -680,7 +680,7 @@ TEST(ObjAssets, WindmillMapsAreUsed) {
     EXPECT_EQ(tris, 66u + 2u * 1328u) << "quads triangulated";
 }
 
-// Issue 11: the same OBJ used twice is uploaded once and drawn with two transforms. A box of two
+// The same OBJ used twice is uploaded once and drawn with two transforms. A box of two
 // material groups, instanced left and right of the view: the vertex buffer holds its corners once,
 // the draws are one per group per instance, and both instances appear where their transforms put
 // them (the left one turned, the right one scaled).

@@ -188,7 +188,7 @@ TEST(PBuffer, RenderTargetAndTextureAtOnceFails) {
 // The regression image: the default scene through the default path, against tests/ref
 // (tests/ref/README.md: how it was made, what checks it independently). Tolerance: llvmpipe is
 // deterministic on one machine and the reference was made on this machine's llvmpipe, so
-// max <= 2 LSB with at most 0.01% of pixels over 1 LSB (issue 10; it was max 8 with 0.1% over
+// max <= 2 LSB with at most 0.01% of pixels over 1 LSB (tests/ref/README.md; it was max 8 with 0.1% over
 // 2). Another CPU (SIMD width, LLVM version) may round differently: find out why before
 // making a new reference.
 TEST(Pipeline, DefaultSceneMatchesReference) {

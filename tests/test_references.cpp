@@ -29,7 +29,7 @@ Image render_default(const PostOptions& post) {
 }
 
 // llvmpipe is deterministic on one machine and the references were made on this machine's
-// llvmpipe, so the comparison is tight (issue 10): max <= 2 LSB and at most 0.01% of pixels
+// llvmpipe, so the comparison is tight (tests/ref/README.md): max <= 2 LSB and at most 0.01% of pixels
 // (6 of 65536) over 1 LSB. Another CPU (SIMD width, LLVM version) may round differently; if
 // this fails there, find out why before making a new reference (tests/ref/README.md).
 void expect_matches_reference(const std::string& name, const Image& actual) {

@@ -340,7 +340,7 @@ namespace {
 
 class LightLines : public SceneFileTest {};
 
-// Issue 12's light syntax: spot, directional, attenuation; the laws' fields land in Light.
+// The light syntax of docs/light_geometry.md: spot, directional, attenuation; the laws' fields land in Light.
 TEST_F(LightLines, SpotDirectionalAttenuation) {
     const std::string path = write("lights.scene",
                                    header() +

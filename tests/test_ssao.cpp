@@ -1,4 +1,4 @@
-// SSAO (issue 13, Vasilovici §5): the kernel as pure math (ssao_kernel.h), then images of a box
+// SSAO (docs/ssao.md, Vasilovici §5): the kernel as pure math (ssao_kernel.h), then images of a box
 // on a floor with and without --ssao on both depth paths and the copy render-target path
 // (--caps no-fbo): creases darken, the open floor stays, no pixel brightens, SSAO off (or at
 // strength 0) is exactly the image without it; and the CLI refuses bad values in one line.

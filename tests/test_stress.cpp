@@ -90,7 +90,7 @@ TEST_P(Stress, Invariants) {
     EXPECT_EQ(r.zero_normal_shaded, 0) << "zero vertex normals must leave the surface unlit";
 
     if (c.category == "coords" && c.name.rfind("coords/0/", 0) != 0) {
-        // Issue 11: objects are drawn camera-relative (view * model in double), so moving the room
+        // Objects are drawn camera-relative (view * model in double), so moving the room
         // far from the origin costs nothing over the room where it is (coords/0, whose ~2.4 LSB
         // are the sphere's facets against the exact sphere). Before, world-space vertices in
         // float made coords/1e6/texture 144.6 LSB off.
@@ -114,7 +114,7 @@ TEST_P(Stress, Invariants) {
         EXPECT_EQ(r.lost_pixels, 0);
     }
     if (c.path == "log") {
-        // The issue's goal: <= 2e-6 relative z at every ratio up to 1e6 (log2/exp2 in the shader;
+        // The goal (docs/accuracy.md): <= 2e-6 relative z at every ratio up to 1e6 (log2/exp2 in the shader;
         // with log/exp it measured 2.2e-6 at 1e6, docs/accuracy.md).
         if (c.far_near <= 1e6) {
             EXPECT_LE(r.z.max, 2e-6);
@@ -133,7 +133,7 @@ TEST_P(Stress, Invariants) {
     if (c.path == "texture" && c.far_near == 1e6) {  // far-plane cancellation
         EXPECT_GT(r.z.max, 1e-2);
     }
-    // Issue 16, the stored positions, against the exact trace (docs/accuracy.md). fp32: float's
+    // The stored positions, against the exact trace (docs/accuracy.md). fp32: float's
     // rounding of the interpolated eye position, measured <= 3.1e-7 up to 1e6. fp16: half's
     // 11-bit significand (measured 9.6e-4: llvmpipe's conversion truncates, the CPU twin rounds,
     // 4.8e-4) while eye z stays under 65504; past it (far 1e5 at 1e6, 1e6 at 1e7) material.frag

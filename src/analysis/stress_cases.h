@@ -15,7 +15,7 @@
 //   inside/<path>             the camera inside light spheres
 //   grazing/<deg>/<path>      a floor seen at 89 and 89.9 degrees from its normal
 //   coords/<offset>/<path>    the room translated by offset*(1, 0.25, -1), up to 1e6
-//   limit/<far/near>/<path>   the tile scene past the range (2e7, 1e8), full sweep only:
+//   limit/<far/near>/<path>   the tile scene past the goal's range (2e7, 1e8), full sweep only:
 //                             where the float math breaks; recorded, never counted as a failure
 //   zero-normal/<path>        a quad whose vertex normals are (0,0,0); light depth and sphere
 //                             tests and scissor off, so every background pixel (zero normal in

@@ -1,4 +1,4 @@
-// Capabilities, probed once at start-up into booleans (STYLE lesson 3); every path
+// Capabilities, probed once at start-up into booleans; every path
 // decision branches on this struct, never on version strings.
 #pragma once
 #include <string>

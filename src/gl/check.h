@@ -1,4 +1,4 @@
-// GL errors become dsr::Error naming the stage (DESIGN: "turned into an exception naming the stage").
+// GL errors become dsr::Error naming the stage.
 #pragma once
 #include <string>
 

@@ -1,5 +1,5 @@
 // Whether GL_FRAGMENT_SHADER_INVOCATIONS_ARB counts fragments that the stencil test rejects: the
-// bench's stencil goal (issue 12: light_invocations <= 1.25 x ideal) can judge a geometry only on a
+// bench's stencil goal (docs/benchmarks.md: light_invocations <= 1.25 x ideal) can judge a geometry only on a
 // GL that counts the fragments that reached the shader. Mesa's llvmpipe adds 16 per 4x4 block on
 // entering its fragment function, before its depth and stencil tests (lp_state_fs.c:
 // "Could use popcount on mask, but pixel accuracy is not required"; lp_query.c multiplies the

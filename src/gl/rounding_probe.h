@@ -1,5 +1,5 @@
-// How this GL turns a fragment's colour into an RGBA8 target's bytes, measured (issue 12: the
-// tiles geometry sums several lights in a shader and rounds each as its own pass would be rounded;
+// How this GL turns a fragment's colour into an RGBA8 target's bytes, measured (docs/light_geometry.md:
+// the tiles geometry sums several lights in a shader and rounds each as its own pass would be rounded;
 // that is exact only if the GL rounds the way the shader assumes). `dsr info` prints it.
 #pragma once
 #include <algorithm>

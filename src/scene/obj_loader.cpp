@@ -134,7 +134,7 @@ void add_materials(const string& path, const string& obj_name, const std::vector
                 model.warnings.push_back(info.file + ":" + std::to_string(line_of(info, "map_Ns")) +
                                          ": map_Ns ignored: map_Ks already gives " + quote(m.name) + " a specular map");
         } else if (!m.specular_highlight_texname.empty()) {
-            // The windmill (../shared/assets) gives its specular map as map_Ns, as WebGL2
+            // Some exported models give their specular map as map_Ns, as WebGL2
             // Fundamentals reads it: a specular colour map, not a shininess map.
             out.specular_map = texture(info, "map_Ns (read as a specular map)", "map_Ns",
                                        m.specular_highlight_texname, false, 1);

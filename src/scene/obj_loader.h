@@ -1,4 +1,4 @@
-// Wavefront OBJ/MTL models (issue 11): parsed with tinyobjloader, validated here so that every
+// Wavefront OBJ/MTL models (docs/scene-format.md): parsed with tinyobjloader, validated here so that every
 // mistake in a file is one dsr::Error naming the file, the line and what was expected. Pure: no
 // GL. Textures go through the image interface (scene/image.h); paths in an MTL are resolved
 // relative to the MTL, an MTL relative to its OBJ.
@@ -8,8 +8,8 @@
 //        kMaxPolygonVertices corners, v | v/t | v//n | v/t/n, negative = relative), o, g, s,
 //        mtllib (one file per line), usemtl; l, p, vp and the free-form statements are warned
 //        about and skipped; anything else is an error.
-//   MTL: newmtl, Kd, Ks, Ns, d / Tr (opacity: below 1 drawn by the forward stage, issue 13), map_Kd, map_Ks, map_Ns
-//        (a specular map, as the windmill in ../shared/assets uses it), map_bump / map_Bump /
+//   MTL: newmtl, Kd, Ks, Ns, d / Tr (opacity: below 1 drawn by the forward stage, docs/forward.md), map_Kd, map_Ks, map_Ns
+//        (a specular map, as some exported models use it), map_bump / map_Bump /
 //        bump / norm (a tangent-space normal map; a greyscale one is a height map, converted on
 //        load with strength -bm). Ka, Ke, Ni, illum, Tf, map_Ka, map_d, disp, refl and the PBR
 //        extension are warned about and skipped; anything else is an error.

@@ -317,7 +317,7 @@ private:
                 m.shininess = line.number("shininess");
                 if (!(m.shininess >= 1 && m.shininess <= 2048)) line.expected_last("shininess in [1, 2048]");
             } else if (k == "tile") m.tile = line.positive("tile");
-            else if (k == "opacity") {  // issue 13: below 1, drawn by the forward pass after the lights
+            else if (k == "opacity") {  // below 1: drawn by the forward pass after the lights (docs/forward.md)
                 m.opacity = line.number("opacity");
                 if (!(m.opacity > 0 && m.opacity <= 1)) line.expected_last("opacity in (0, 1]");
             } else {
