@@ -198,7 +198,7 @@ test-legacy: deps
 	DSR_TEST_SIZE=640x480 $(BUILD)/dsr_tests --gtest_filter='Fallbacks.*:Legacy.*'
 	DSR=$(BUILD)/dsr tests/legacy_matrix.sh --report docs/legacy.md 512x512 640x480
 
-# The benchmark sweep (README: "Benchmarks"): docs/benchmarks.md with its table, goals and plot,
+# The benchmark sweep (docs/guide.md, "Benchmarks"): docs/benchmarks.md with its table, goals and plot,
 # and the raw rows in docs/benchmarks.json. A few minutes on two cores.
 bench: deps
 	$(MAKE) -j$(JOBS) $(BUILD)/dsr

@@ -101,7 +101,7 @@ TEST(Options, BloomTaps) {
 }
 
 // The bloom is added by fixed function with the strength as the vertex colour, which GL 2.x
-// clamps to [0, 1]: strengths above 1 add what 1 adds today (logged, not asserted: README says
+// clamps to [0, 1]: strengths above 1 add what 1 adds today (logged, not asserted: docs/guide.md says
 // so). Below 1 the added light scales with the strength.
 TEST(Options, BloomStrength) {
     const Rendered none = render("--no-bloom --no-aa"), zero = render("--bloom --no-aa --bloom-strength 0");

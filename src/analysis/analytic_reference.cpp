@@ -401,7 +401,7 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
             const dvec3 v = glm::normalize(eye - p);     // Eq. 5: from p to the viewer
             dvec3 c = pass(Mdiff * dvec3(scene.ambient));  // Eq. 6
             for (const Light& light : scene.lights) {
-                // The laws of README "Scene files", written again here from their
+                // The laws of docs/scene-format.md, written again here from their
                 // definitions rather than taken from scene/light_law.h.
                 dvec3 l;
                 double att = 1.0;  // directional: no attenuation

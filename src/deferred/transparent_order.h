@@ -2,7 +2,7 @@
 // distance from the eye to each object's bounding-sphere centre, farthest first (LearnOpenGL's
 // "Blending": sort by distance, draw the farthest first). Per object, not per triangle: two
 // objects that interpenetrate, or one object that overlaps itself, blend in a fixed order that
-// can be wrong for some of their pixels (README "Transparent surfaces"). Pure, no GL.
+// can be wrong for some of their pixels (docs/guide.md, "Transparent surfaces"). Pure, no GL.
 #pragma once
 #include <cstddef>
 #include <vector>

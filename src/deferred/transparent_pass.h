@@ -9,7 +9,7 @@
 // stage (forward_stage.h) and by the forward renderers (src/forward/), so both draw a transparent
 // object the same way: it lives here, beside the scene upload and light volumes both use.
 //
-// What is approximate (README "Transparent surfaces"): the order is per object, not per pixel;
+// What is approximate (docs/guide.md, "Transparent surfaces"): the order is per object, not per pixel;
 // back faces are culled (a closed object shows its near side only); transparent surfaces cast no
 // shadows (nothing does) and get no SSAO; nothing is written to the depth buffer, so a transparent
 // surface never hides another.

@@ -3,7 +3,7 @@
 // GL. Textures go through the image interface (scene/image.h); paths in an MTL are resolved
 // relative to the MTL, an MTL relative to its OBJ.
 //
-// What is read (README "Meshes"):
+// What is read (docs/scene-format.md, "Meshes"):
 //   OBJ: v (3, 4, 6 or 7 numbers: colours and w ignored), vt (1-3), vn (3), f (3 to
 //        kMaxPolygonVertices corners, v | v/t | v//n | v/t/n, negative = relative), o, g, s,
 //        mtllib (one file per line), usemtl; l, p, vp and the free-form statements are warned

@@ -24,7 +24,7 @@ struct Camera {
 
 // A light: colour is S_diff = S_spec (Eq. 3-4). The tutorial has only point lights with
 // Equation 2's linear law; dsr adds spot and directional lights (Vasilovici §4.4) and
-// LearnOpenGL's attenuation law (scene/light_law.h has the laws, README the scene syntax,
+// LearnOpenGL's attenuation law (scene/light_law.h has the laws, docs/scene-format.md the scene syntax,
 // docs/light_geometry.md the light geometries).
 //   point        pos, radius
 //   spot         pos, dir, radius (range), angle_deg = half-angle as GL_SPOT_CUTOFF, exponent
@@ -55,7 +55,7 @@ struct Material {
     int diffuse_map = -1, normal_map = -1, specular_map = -1;
     float tile = 1.0f;
     // `opacity A` or MTL d (1 - Tr): below 1 the material is left out of the G-buffer and drawn
-    // by the forward pass after the lights, blended (docs/forward.md; README "Transparent surfaces").
+    // by the forward pass after the lights, blended (docs/forward.md; docs/guide.md, "Transparent surfaces").
     float opacity = 1.0f;
     bool transparent() const { return opacity < 1.0f; }
 };

@@ -515,7 +515,7 @@ private:
         line.expected_last("a material defined on an earlier line");
     }
 
-    // light point|spot|directional (README "Scene files"; scene.h Light, scene/light_law.h).
+    // light point|spot|directional (docs/scene-format.md; scene.h Light, scene/light_law.h).
     void light(Line& line) {
         const std::string& kind = line.word("light kind 'point', 'spot' or 'directional'");
         Light l;
