@@ -104,7 +104,7 @@ deps:
 run: deps
 	$(MAKE) -j$(JOBS) $(BUILD)/dsr $(BUILD)/dsr_view
 	$(BUILD)/dsr render
-	@echo "wrote out/default.png — open the viewer with: $(BUILD)/dsr view"
+	@echo "make run: the image is out/default.png; open the viewer with: $(BUILD)/dsr view"
 
 test: deps
 	$(MAKE) -j$(JOBS) all
