@@ -99,11 +99,12 @@ deps:
 	  $$sudo apt-get update -q && $$sudo apt-get install -y -q --no-install-recommends $$missing; \
 	fi
 
+# Both executables (the renderer and the viewer), then the default image into out/ (render's
+# default output, out/<scene>.png).
 run: deps
-	$(MAKE) -j$(JOBS) $(BUILD)/dsr
-	@mkdir -p out
-	$(BUILD)/dsr render -o out/default.png
-	@echo "wrote out/default.png"
+	$(MAKE) -j$(JOBS) $(BUILD)/dsr $(BUILD)/dsr_view
+	$(BUILD)/dsr render
+	@echo "make run: the image is out/default.png; open the viewer with: $(BUILD)/dsr view"
 
 test: deps
 	$(MAKE) -j$(JOBS) all

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -202,7 +203,7 @@ TEST(Cli, EveryTableFlagParsesAndRefusesInOneLine) {
     EXPECT_EQ(r.options.bloom, 0);
     ASSERT_TRUE(r.lights.has_value());
     EXPECT_EQ(r.lights->count, 64);
-    EXPECT_EQ(r.out, "out.png");
+    EXPECT_EQ(r.output(), "out/s.png") << "-o's default: out/ and the scene's stem";
     EXPECT_EQ(r.width, 512);
     dsr::BenchSettings b;
     dsr::parse_command_line(dsr::bench_command(b), {"--tile-size", "32", "--tile-plan", "groups", "--light-geometry", "tiles,quad"});
@@ -426,30 +427,103 @@ TEST(Cli, OutSizeAndViews) {
             for (int c = 0; c < 3; ++c) lo = std::min(lo, img.rgba[i + c]), hi = std::max(hi, img.rgba[i + c]);
         EXPECT_GT(hi - lo, 0.1f) << v << ": the view has content";
     }
-    // Content: the 80x60 final image is the 64x64 one scaled bilinearly (§3.6). The CPU model
-    // samples texel centres with clamp-to-edge as GL_LINEAR does; the GPU's 8-bit weights and
-    // the PNG's rounding stay within a few LSB.
-    ASSERT_EQ(run("render --size 64x64 --aa -o " + d + "/small.png").status, 0);
+    // Content: the 80x60 final image is the 64x48 frame scaled bilinearly (§3.6); the frame is
+    // projected for the output's aspect (4:3, as 64x48's own: OutSizeKeepsProportions shows a
+    // square buffer). The CPU model samples texel centres with clamp-to-edge as GL_LINEAR does;
+    // the GPU's 8-bit weights and the PNG's rounding stay within a few LSB.
+    ASSERT_EQ(run("render --size 64x48 --out-size 80x60 --aa -o " + d + "/final.png").status, 0);
+    ASSERT_EQ(run("render --size 64x48 --aa -o " + d + "/small.png").status, 0);
     const Image small = dsr::load_image(d + "/small.png"), big = dsr::load_image(d + "/final.png");
     Image scaled = big;
     for (int y = 0; y < 60; ++y)
         for (int x = 0; x < 80; ++x) {
-            const float u = (x + 0.5f) * 64 / 80 - 0.5f, v = (y + 0.5f) * 64 / 60 - 0.5f;
+            const float u = (x + 0.5f) * 64 / 80 - 0.5f, v = (y + 0.5f) * 48 / 60 - 0.5f;
             const int x0 = int(std::floor(u)), y0 = int(std::floor(v));
             const float fx = u - x0, fy = v - y0;
             auto at = [&](int xx, int yy, int c) {
-                return small.at(std::clamp(xx, 0, 63), std::clamp(yy, 0, 63))[c];
+                return small.at(std::clamp(xx, 0, 63), std::clamp(yy, 0, 47))[c];
             };
             for (int c = 0; c < 3; ++c)
                 scaled.at(x, y)[c] = (1 - fy) * ((1 - fx) * at(x0, y0, c) + fx * at(x0 + 1, y0, c)) +
                                      fy * ((1 - fx) * at(x0, y0 + 1, c) + fx * at(x0 + 1, y0 + 1, c));
         }
     const dsr::ImageDiff sd = dsr::compare_images(big, scaled, 2.0 / 255);
-    std::printf("[ out-size ] 80x60 against the 64x64 frame scaled on the CPU: max %.2f LSB, mean %.3f LSB\n",
+    std::printf("[ out-size ] 80x60 against the 64x48 frame scaled on the CPU: max %.2f LSB, mean %.3f LSB\n",
                 sd.max_lsb(), sd.mean_lsb());
     EXPECT_LE(sd.max_lsb(), 4.0);
     EXPECT_LE(sd.mean_lsb(), 0.5);
     EXPECT_NE(run("render --view albedo").output.find("--view: expected final|normal"), std::string::npos);
+}
+
+// §3.6: a 512x512 buffer shown on a 640x480 screen keeps its proportions, because the projection
+// takes the output's aspect. A unit sphere on the view axis (its outline a circle) is measured in
+// the scaled image by its silhouette's second moments (each pixel weighted by its coverage, so the
+// buffer's pixel steps along the edge average out): a disc of diameter D has variance D²/16 along
+// every axis. Width and height agree within a pixel, and match a render made at 640x480 directly.
+TEST(Cli, OutSizeKeepsProportions) {
+    const std::string d = temp_dir();
+    write(d + "/sphere.scene",
+          "camera pos 0 0 6 target 0 0 0 up 0 1 0 fov 40 near 0.1 far 20\n"
+          "ambient 1 1 1\nbackground 0 0 0\n"
+          "material white diffuse 1 1 1 specular 0 0 0 shininess 1\n"
+          "sphere radius 1 at 0 0 0 material white\n");
+    struct Outline {
+        double width, height;  // 4 sqrt(variance) along x and y
+        int box_w, box_h;      // the pixels at least half covered: their bounding box
+    };
+    auto outline = [](const Image& img) {
+        double m = 0, sx = 0, sy = 0;
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x) {
+                const double c = std::clamp(double(img.at(x, y)[1]), 0.0, 1.0);
+                m += c, sx += c * x, sy += c * y;
+            }
+        const double cx = sx / m, cy = sy / m;
+        double vx = 0, vy = 0;
+        int x0 = img.width, x1 = -1, y0 = img.height, y1 = -1;
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x) {
+                const double c = std::clamp(double(img.at(x, y)[1]), 0.0, 1.0);
+                vx += c * (x - cx) * (x - cx), vy += c * (y - cy) * (y - cy);
+                if (c >= 0.5) x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+            }
+        return Outline{4 * std::sqrt(vx / m), 4 * std::sqrt(vy / m), x1 - x0 + 1, y1 - y0 + 1};
+    };
+    ASSERT_EQ(run("render " + d + "/sphere.scene --no-bloom --size 512x512 --out-size 640x480 -o " + d + "/scaled.png").status, 0);
+    ASSERT_EQ(run("render " + d + "/sphere.scene --no-bloom --size 640x480 -o " + d + "/native.png").status, 0);
+    const Image scaled = dsr::load_image(d + "/scaled.png"), native = dsr::load_image(d + "/native.png");
+    ASSERT_EQ(scaled.width, 640);
+    ASSERT_EQ(scaled.height, 480);
+    const Outline s = outline(scaled), n = outline(native);
+    // The sphere's outline subtends 2 atan(1 / sqrt(35)) of the 40° field: 222.9 px of 480.
+    std::printf("[ out-size ] sphere at 512x512 shown at 640x480: %.2f x %.2f px (box %dx%d); rendered at "
+                "640x480: %.2f x %.2f px (box %dx%d); expected 222.9\n",
+                s.width, s.height, s.box_w, s.box_h, n.width, n.height, n.box_w, n.box_h);
+    ASSERT_GT(s.height, 100) << "the sphere is in view";
+    EXPECT_NEAR(s.width, s.height, 1.0) << "round within a pixel";
+    EXPECT_NEAR(s.width, n.width, 1.0);
+    EXPECT_NEAR(s.height, n.height, 1.0);
+    EXPECT_NEAR(n.width, n.height, 1.0);
+}
+
+// Without -o, outputs go under out/ in the working folder, made when missing: render's image as
+// out/<scene stem>.png, figures under out/figures/. A run that fails leaves no out/ behind.
+TEST(Cli, DefaultOutputsGoUnderOut) {
+    const std::string d = temp_dir();
+    write(d + "/room.scene", "camera pos 0 0 5 target 0 0 0 up 0 1 0 fov 60 near 0.1 far 100\n"
+                             "material m diffuse 1 1 1 specular 0 0 0 shininess 1\nsphere radius 1 at 0 0 0 material m\n"
+                             "light point pos 0 2 2 color 1 1 1 radius 6\n");
+    auto in_d = [&](const std::string& args) { return run(args, "--chdir=" + d); };
+    RunResult bad = in_d("render room.scene --size 32x32 --stats nodir/s.json");
+    EXPECT_NE(bad.status, 0);
+    EXPECT_FALSE(exists(d + "/out")) << bad.output;
+    RunResult r = in_d("render room.scene --size 32x32");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(exists(d + "/out/room.png"));
+    EXPECT_NE(r.output.find("wrote out/room.png"), std::string::npos) << r.output;
+    RunResult f = in_d("figures --size 64x64");
+    ASSERT_EQ(f.status, 0) << f.output;
+    EXPECT_TRUE(exists(d + "/out/figures/fig6_final.png"));
 }
 
 // Mesa itself hides a capability: the probe must read the real GL, not only --caps.

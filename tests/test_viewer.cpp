@@ -132,6 +132,16 @@ TEST_F(Viewer, ScreenshotIsTheRenderWithoutThePanel) {
     EXPECT_LE(max_lsb(v, ref), 1.0) << r.output;
 }
 
+// A script ends when it ends: no `quit`, and the viewer closes after its last line (a `timeout`
+// guard turns a viewer that stays open into a failure, status 124, rather than a hung test).
+TEST_F(Viewer, ScriptWithoutQuitEndsAfterItsLastLine) {
+    const std::string path = out("noquit.script");
+    std::ofstream(path) << "frames 2\n";
+    RunResult r = run("view --size 64x64 --script " + path, "DISPLAY=:" + std::to_string(display_) + " timeout 300");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("dsr view: 2 frames"), std::string::npos) << r.output;
+}
+
 // 512^2 -> 800x600 -> 300x200 -> 0x0 (minimised) -> 640x480: every stage checked for GL errors
 // (--debug-gl), each screenshot at the new size, the buffers reallocated by resize() with no
 // program built, and the last frame the render's at that size.

@@ -61,9 +61,24 @@ TEST(ViewerScript, EveryCommandParses) {
     EXPECT_EQ(s.where(s.commands[9]), "s.txt:12: ");
 }
 
+// A script ends when it ends (the viewer closes after its last command) unless that command is
+// `wait`; comments and blank lines after it do not count.
+TEST(ViewerScript, EndsUnlessItsLastCommandIsWait) {
+    EXPECT_FALSE(parse_script("frames 2\n", "s.txt").waits());
+    EXPECT_FALSE(parse_script("", "s.txt").waits());
+    EXPECT_FALSE(parse_script("# only a comment\n", "s.txt").waits());
+    EXPECT_FALSE(parse_script("frames 2\nquit\n", "s.txt").waits());
+    const Script w = parse_script("size 640 480\nframes 2\nwait   # for a person\n\n# done\n", "s.txt");
+    ASSERT_EQ(w.commands.size(), 3u);
+    EXPECT_EQ(w.commands[2].kind, ScriptCommand::wait);
+    EXPECT_EQ(w.commands[2].line, 3);
+    EXPECT_TRUE(w.waits());
+    EXPECT_TRUE(parse_script("wait\n", "s.txt").waits());
+}
+
 TEST(ViewerScript, BadLineIsOneErrorNamingFileAndLine) {
     const std::pair<const char*, const char*> cases[] = {
-        {"frames 2\nfly away\n", "s.txt:2: expected size, camera, set, frames, screenshot or quit, got 'fly'"},
+        {"frames 2\nfly away\n", "s.txt:2: expected size, camera, set, frames, screenshot, quit or wait, got 'fly'"},
         {"size 640\n", "s.txt:1: expected 'size W H', got 'size 640'"},
         {"size 0 480\n", "s.txt:1: size: expected W H, each in [1, 8192] (or 0 0 to minimise), got '0 480'"},
         {"size 9000 10\n", "s.txt:1: size: expected W H"},
@@ -83,6 +98,9 @@ TEST(ViewerScript, BadLineIsOneErrorNamingFileAndLine) {
         {"screenshot\n", "s.txt:1: expected 'screenshot FILE', got 'screenshot'"},
         {"screenshot a.bmp\n", "s.txt:1: screenshot: expected a file ending .png, .exr, .tif, .jpg or .ppm, got 'a.bmp'"},
         {"quit now\n", "s.txt:1: expected 'quit', got 'quit now'"},
+        {"wait 5\n", "s.txt:1: expected 'wait', got 'wait 5'"},
+        {"frames 2\nwait\nframes 3\n", "s.txt:2: wait: expected as the script's last command, got 'frames' on line 3 after it"},
+        {"wait\n# a comment\nwait\n", "s.txt:1: wait: expected as the script's last command, got 'wait' on line 3"},
     };
     for (auto [text, want] : cases) {
         const std::string got = parse_error(text);

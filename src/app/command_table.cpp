@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
 #include "analysis/bench_run.h"
@@ -25,8 +26,8 @@ bool has_ext(const std::string& path, const std::string& ext) {
 
 // A file flag whose value must end in one of `exts` ("-o: expected a file ending .png, ...").
 Flag file_flag(std::vector<std::string> names, std::string arg, std::string& field, std::vector<std::string> exts,
-               std::string help) {
-    Flag f = text_flag(std::move(names), std::move(arg), field, std::move(help));
+               std::string help, std::string def = "") {
+    Flag f = text_flag(std::move(names), std::move(arg), field, std::move(help), std::move(def));
     f.parse = [&field, exts](Args& a, const std::string& flag) {
         const std::string v = a.value(flag);
         if (std::none_of(exts.begin(), exts.end(), [&](const std::string& e) { return has_ext(v, e); })) {
@@ -106,13 +107,22 @@ std::string caps_with_environment(const std::string& flags) {
     return std::string(env ? env : "") + "," + flags;
 }
 
+std::string RenderSettings::output() const {
+    if (!out.empty()) return out;
+    const std::string stem = scene.empty() ? "default" : std::filesystem::path(scene).stem().string();
+    return std::string(kOutDir) + "/" + (stem.empty() ? "render" : stem) + ".png";
+}
+
 Command render_command(RenderSettings& s) {
     Command c{"render", "render SCENE with the deferred shader into one image",
               {scene_operand("scene file (default data/default.scene), or a model FILE.obj framed with a ground and three lights")},
               one_scene(s.scene), {}, &s.options, ""};
     c.flags = {
         file_flag({"-o", "--output"}, "FILE", s.out, {".png", ".exr", ".tif", ".tiff", ".jpg", ".ppm"},
-                  "image to write, its format by the extension: .png (8-bit), .exr (half float), .tif, .jpg or .ppm"),
+                  "image to write, its format by the extension: .png (8-bit), .exr (half float), .tif, .jpg or .ppm; "
+                  "without -o, the scene file's name under " + std::string(kOutDir) + "/ (out/default.png for the "
+                  "default scene), the folder made if missing",
+                  std::string(kOutDir) + "/SCENE.png"),
         size_flag("--size", s.width, s.height, "G-buffer and P-buffer size"),
         size_flag("--out-size", s.out_width, s.out_height,
                   "main frame buffer the final stage scales the image to, bilinearly (§3.6)", "--size"),
@@ -142,7 +152,10 @@ Command figures_command(FiguresSettings& s) {
                              std::to_string(h) + "'");
                   s.size = w;
               }};
-    c.flags = {text_flag({"-o"}, "DIR", s.dir, "folder to write the PNGs into"), size, context_flag(s.context)};
+    c.flags = {text_flag({"-o"}, "DIR", s.dir,
+                         "folder to write the PNGs into, made if missing (its parent must exist, but for the default's " +
+                             std::string(kOutDir) + "/); make figures writes docs/figures"),
+               size, context_flag(s.context)};
     return c;
 }
 
@@ -268,12 +281,14 @@ Command view_command(ViewerConfig& s) {
               "                          ./dsr_view_DATE_TIME.png; its path is printed\n"
               "  Esc                     quit\n"};
     c.flags = {
-        size_flag("--size", s.width, s.height, "the window's size at start"),
+        size_flag("--size", s.width, s.height, "the window's size at start; the deferred buffers follow the window"),
         lights_flag(s.lights),
         text_flag({"--script"}, "FILE", s.script_path,
                   "run FILE's commands, one a line: size W H (0 0 minimises), camera pos X Y Z target X Y Z up X Y Z, "
                   "set NAME VALUE (a renderer option by its name without dashes: set scissor off, set view normal, "
-                  "set bloom on; or panel, overlay, animate on|off), frames N, screenshot FILE, quit"),
+                  "set bloom on; or panel, overlay, animate on|off), frames N, screenshot FILE, quit, wait. "
+                  "The viewer closes after the script's last line unless that line is wait, which leaves the "
+                  "window open"),
         caps_flag(s.caps_list),
     };
     append(c.flags, gl_debug_flags());

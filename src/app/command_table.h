@@ -24,9 +24,13 @@ struct ContextSettings {
 // The backend to create: --context, else default_context_backend().
 inline std::string context_backend(const ContextSettings& c) { return c.backend.empty() ? default_context_backend() : c.backend; }
 
+// The folder the commands' default outputs go under, made when missing (git ignores it): a
+// run without -o never writes into the checkout's own files.
+inline constexpr const char* kOutDir = "out";
+
 struct RenderSettings {
     std::string scene;                // empty: data/default.scene
-    std::string out = "out.png";      // -o
+    std::string out;                  // -o; empty: output()'s default
     int width = 512, height = 512;    // --size: the G-buffer and P-buffers
     int out_width = 0, out_height = 0;  // --out-size; 0: --size
     int frames = 1;
@@ -35,11 +39,14 @@ struct RenderSettings {
     RenderOptions options;            // the option table's flags
     std::string caps;                 // --caps, added to $DSR_CAPS
     ContextSettings context;
+    // The image to write: -o, else out/<the scene file's stem>.png (out/default.png for the
+    // default scene, out/bunny.png for bunny.obj).
+    std::string output() const;
 };
 
 struct FiguresSettings {
     std::string scene;               // empty: data/default.scene (and the figures only it has)
-    std::string dir = "docs/figures";
+    std::string dir = std::string(kOutDir) + "/figures";  // -o; `make figures` writes docs/figures
     int size = 512;                  // square
     ContextSettings context;
 };

@@ -54,6 +54,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
     // Every figure to a temporary file, renamed together at the end (scene/output_set.h).
     OutputSet outputs("dsr figures");
     add_scene_inputs(outputs, scene.inputs);
+    if (dir == FiguresSettings{}.dir) outputs.make_dir("-o", kOutDir);  // the default's parent
     outputs.make_dir("-o", dir);
     const Stage stage("rendering the figures of " + scene_path);
     auto ctx = create_context(ContextDesc{context_backend(flags.context), n, n});

@@ -30,7 +30,7 @@ namespace dsr {
 int cmd_render(const std::vector<std::string>& argv) {
     RenderSettings flags;  // the render command's table (app/command_table.h)
     parse_command_line(render_command(flags), argv);
-    const std::string out = flags.out, stats_path = flags.stats;
+    const std::string out = flags.output(), stats_path = flags.stats;
     const std::string scene_path = flags.scene.empty() ? resource_dir("data") + "/default.scene" : flags.scene;
     const int w = flags.width, h = flags.height, frames = flags.frames;
     int out_w = flags.out_width, out_h = flags.out_height;
@@ -38,6 +38,7 @@ int cmd_render(const std::vector<std::string>& argv) {
 
     // Outputs: whole or none, never an input (scene/output_set.h); refused before the work.
     OutputSet outputs("dsr render");
+    if (flags.out.empty()) outputs.make_dir("-o", kOutDir);  // the default's folder, kept only with the image
     outputs.add("-o", out);
     if (!stats_path.empty()) outputs.add("--stats", stats_path);
 

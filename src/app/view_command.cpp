@@ -24,7 +24,7 @@ int cmd_view(const std::vector<std::string>& args) {
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     execv(viewer.c_str(), argv.data());
-    throw Error("dsr view: cannot run " + viewer + " (" + std::strerror(errno) + "; `make all` builds it)");
+    throw Error("dsr view: cannot run " + viewer + " (" + std::strerror(errno) + "; `make run` builds it)");
 }
 
 }  // namespace dsr

@@ -70,10 +70,15 @@ FrameDef DeferredShader::frame_of(const Camera& camera, const std::vector<Light>
     FrameSetup s;
     s.width = width();
     s.height = height();
+    s.aspect = aspect();
     s.gbuffer_extent = targets_->gbuffer_extent();
     s.scissors = scissors;
     s.skip_empty = config_.opts.skip.empty_lights;
     return make_frame(camera, lights, s);
+}
+
+void DeferredShader::set_output_size(int out_w, int out_h) {
+    out_aspect_ = out_w > 0 && out_h > 0 ? float(out_w) / float(out_h) : 0.0f;
 }
 
 FrameDef DeferredShader::last_frame() const { return frame_of(camera_, {}, true); }
@@ -83,6 +88,7 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     FrameStats st;
     const double cpu0 = thread_cpu_ms();
     timer_.begin_frame(S_COUNT);
+    set_output_size(out_w, out_h);
     const FrameDef f = frame_of(scene.camera, scene.lights, config_.opts.scissor);
     camera_ = scene.camera;
     timed(timer_, S_GEOMETRY, [&] { geometry_->draw(f, *gpu_, *targets_); });  // 1. geometry stage

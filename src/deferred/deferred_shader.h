@@ -45,8 +45,13 @@ public:
     // Reallocates the G-buffer and P-buffers at the new size; no shader is recompiled.
     void resize(int width, int height);
     void set_scene(const Scene& scene);
-    // The whole pipeline (Appendix A) into the current main frame buffer of out_w x out_h.
+    // The whole pipeline (Appendix A) into the current main frame buffer of out_w x out_h; the
+    // projection takes the output's aspect (set_output_size), whatever the buffers' size.
     FrameStats render(const Scene& scene, int out_w, int out_h);
+    // The main frame buffer's size the frames are projected for (§3.6): its aspect is the
+    // projection's, so an image scaled to it keeps its proportions. render() sets it; before
+    // any, the buffers' aspect. For the one-stage API below.
+    void set_output_size(int out_w, int out_h);
 
     // Appendix A's stages one by one (tests, figures), each on the frame of the scene's camera (the
     // last one drawn for those without a scene).
@@ -79,7 +84,9 @@ public:
     const Paths& paths() const { return config_.paths; }
     // Eye-space camera of the last frame drawn.
     glm::mat4 view_matrix() const { return camera_.view(); }
-    glm::mat4 proj_matrix() const { return camera_.projection(float(width()) / float(height())); }
+    glm::mat4 proj_matrix() const { return camera_.projection(aspect()); }
+    // The projection's aspect: the output's (set_output_size), else the buffers'.
+    float aspect() const { return out_aspect_ > 0 ? out_aspect_ : float(width()) / float(height()); }
 
     // Listing 6: G-buffer and P-buffer management.
     void mrt_bind_render() { targets_->mrt_bind_render(); }
@@ -113,6 +120,7 @@ private:
     // The camera of the last frame drawn, for the one-stage API above and view_matrix(): no stage
     // reads it (render() hands each stage its FrameDef).
     Camera camera_;
+    float out_aspect_ = 0;  // set_output_size's width / height; 0: the buffers'
 };
 
 }  // namespace dsr

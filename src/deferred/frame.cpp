@@ -70,7 +70,10 @@ FrameDef make_frame(const Camera& camera, const std::vector<Light>& lights, cons
     f.height = s.height;
     f.camera = camera;
     f.view = camera.view();
-    f.proj = camera.projection(float(s.width) / float(s.height));
+    // The buffers' pixels need not be square: the final stage scales them to the output, so
+    // the rays, planes and rectangles below all follow this one projection.
+    f.aspect = s.aspect > 0 ? s.aspect : float(s.width) / float(s.height);
+    f.proj = camera.projection(f.aspect);
     f.planes = planes_uniform(camera.near_plane, camera.far_plane);
     f.zrange = glm::vec3(camera.near_plane, camera.far_plane, std::log2(camera.far_plane / camera.near_plane));
     const auto rays = corner_rays(f.proj[0][0], f.proj[1][1]);

@@ -32,6 +32,9 @@ struct LightDraw {
 // What make_frame needs besides the scene.
 struct FrameSetup {
     int width = 0, height = 0;         // the deferred buffers (G-buffer and P-buffer 0)
+    // The projection's aspect: the output's width / height (§3.6: a 512x512 buffer shown on a
+    // 640x480 screen keeps its proportions); 0: the buffers' own, width / height.
+    float aspect = 0;
     glm::vec2 gbuffer_extent{1, 1};    // the G-buffer's content in texture coordinates (pow2 padding)
     bool scissors = true;              // §3.4.2's rectangles; off: every light over the whole screen
     bool skip_empty = true;            // SkipOptions::empty_lights: no pass for a light that adds nothing
@@ -40,7 +43,8 @@ struct FrameSetup {
 struct FrameDef {
     int width = 0, height = 0;
     Camera camera;                     // the scene's, as this frame draws it
-    glm::mat4 view{1}, proj{1};        // camera.view(), camera.projection(width / height)
+    float aspect = 1;                  // FrameSetup's, resolved: the projection's width / height
+    glm::mat4 view{1}, proj{1};        // camera.view(), camera.projection(aspect)
     glm::vec2 planes{0};               // §3.4.3's `planes` (reconstruct.h planes_uniform)
     glm::vec3 zrange{0};               // near, far, log2(far / near): the depth codecs' (depth_codec.glsl)
     std::array<glm::vec3, 4> corner_rays{};  // eye-space view rays at the window corners (Listing 19)

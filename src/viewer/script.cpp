@@ -37,7 +37,7 @@ bool to_int(const std::string& s, long lo, long hi, int& out) {
     return true;
 }
 
-const char* kCommands = "size, camera, set, frames, screenshot or quit";
+const char* kCommands = "size, camera, set, frames, screenshot, quit or wait";
 
 }  // namespace
 
@@ -119,9 +119,16 @@ Script parse_script(std::string text, const std::string& path) {
         } else if (cmd == "quit") {
             want_words(1, "quit");
             c.kind = ScriptCommand::quit;
+        } else if (cmd == "wait") {
+            want_words(1, "wait");
+            c.kind = ScriptCommand::wait;
         } else {
             fail(path, n, std::string("expected ") + kCommands + ", got " + quote(cmd));
         }
+        // `wait` keeps the window open after the script: anything after it would never run.
+        if (!script.commands.empty() && script.commands.back().kind == ScriptCommand::wait)
+            fail(path, script.commands.back().line, "wait: expected as the script's last command, got " +
+                                                        quote(cmd) + " on line " + std::to_string(n) + " after it");
         script.commands.push_back(c);
     }
     return script;

@@ -9,7 +9,9 @@
 //   frames N                                  render N frames
 //   screenshot FILE                           the deferred image (no panel), written with the image seam
 //   quit                                      close the viewer
-// `#` starts a comment; blank lines are skipped.
+//   wait                                      (last line only) leave the window open for a person
+// A script ends when it ends: after its last line the viewer closes, as if `quit` followed,
+// unless that line is `wait`. `#` starts a comment; blank lines are skipped.
 #pragma once
 #include <string>
 #include <vector>
@@ -19,7 +21,7 @@
 namespace dsr {
 
 struct ScriptCommand {
-    enum Kind { size, camera, set, frames, screenshot, quit } kind;
+    enum Kind { size, camera, set, frames, screenshot, quit, wait } kind;
     int line = 0;                        // 1-based, for FILE:LINE in errors while it runs
     int w = 0, h = 0;                    // size
     glm::vec3 pos{0}, target{0}, up{0};  // camera
@@ -32,6 +34,9 @@ struct Script {
     std::vector<ScriptCommand> commands;
     // "FILE:LINE: " for error messages.
     std::string where(const ScriptCommand& c) const { return path + ":" + std::to_string(c.line) + ": "; }
+    // Whether the viewer stays open after the last command (it ends with `wait`); otherwise the
+    // script's end closes it.
+    bool waits() const { return !commands.empty() && commands.back().kind == ScriptCommand::wait; }
 };
 
 // The viewer's own settings `set` takes beside the option table's (each on|off).

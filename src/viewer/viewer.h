@@ -12,15 +12,16 @@ namespace dsr {
 
 struct ViewerConfig {
     std::string scene_path;  // empty: data/default.scene
-    int width = 512, height = 512;  // the window's framebuffer at start (render's --size default)
+    int width = 1280, height = 720;  // the window's framebuffer at start; the deferred buffers follow it
     RenderOptions options;          // the option table's flags
     std::string caps_list;          // --caps, added to $DSR_CAPS
     std::string script_path;        // --script FILE; empty: a person drives it
     std::optional<LightSpec> lights;  // --lights: the bench's generated lights instead of the scene's
 };
 
-// Opens the window and runs until it is closed, Esc, or the script's `quit`. Returns the exit
-// status; throws dsr::Error (one line, FILE:LINE for the script) on bad input or a failure.
+// Opens the window and runs until it is closed, Esc, or the script's end (unless its last line
+// is `wait`: script.h). Returns the exit status; throws dsr::Error (one line, FILE:LINE for the
+// script) on bad input or a failure.
 int run_viewer(const ViewerConfig& config);
 
 }  // namespace dsr

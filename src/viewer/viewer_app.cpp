@@ -404,9 +404,11 @@ int Viewer::run(const Script* script) {
                     }
                     break;
                 case ScriptCommand::quit: quit_ = true; break;
+                case ScriptCommand::wait: break;  // the last command: the loop below goes on
             }
             if (quit_ || glfwWindowShouldClose(ctx_->window())) break;
         }
+        if (!script->waits()) quit_ = true;  // a script ends when it ends (script.h)
     }
     while (!quit_ && !glfwWindowShouldClose(ctx_->window())) frame(nullptr);
     shots_.commit();

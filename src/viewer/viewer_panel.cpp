@@ -87,7 +87,7 @@ void option_widget(ViewerState& st, const RenderOption& o) {
         }
         case OptionKind::subset: {
             // --no-skip: a checkbox per member, ticked when the skip is off.
-            ImGui::TextUnformatted((o.name + " (ticked: skip off)").c_str());
+            ImGui::TextWrapped("%s (ticked: skip off)", o.name.c_str());
             std::vector<std::string> off;
             if (value != "none") {
                 size_t a = 0;
@@ -122,23 +122,31 @@ std::string count_text(std::optional<long long> n) { return n ? std::to_string(*
 
 }  // namespace
 
+// The panel's width: 30% of the window, at most 360 px, at least what a line of options needs
+// (240 px) where the window has room; its height the window's, scrolling inside.
+static float panel_width(int w) { return std::min(std::max(0.3f * float(w), std::min(240.0f, float(w) - 16)), 360.0f); }
+
 void draw_panel(ViewerState& st, const DeferredShader& ds, const Scene& frame_scene, int w, int h) {
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
+    // Placed and sized every frame, so it follows the window: as tall as its content, at most the
+    // window's height (then it scrolls). The title bar's arrow collapses it, F1 hides it.
+    const float pw = panel_width(w);
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(pw, 0), ImVec2(pw, std::max(40.0f, float(h) - 16)));
     ImGui::SetNextWindowBgAlpha(0.85f);
-    if (!ImGui::Begin("dsr view  (F1 hides)", &st.panel)) {
+    if (!ImGui::Begin("dsr view  (F1 hides)", &st.panel,
+                      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove)) {
         ImGui::End();
         return;
     }
-    ImGui::Text("%s", st.renderer.c_str());
+    ImGui::TextWrapped("%s", st.renderer.c_str());  // "llvmpipe (LLVM 15.0.6, 256 bits), GL 4.5 (Compatibility ...)"
     const Paths& p = ds.paths();
-    ImGui::Text("%dx%d  depth %s  timing %s", w, h, p.depth.c_str(), timing_name(st.last.timing));
+    ImGui::TextWrapped("%dx%d  depth %s  timing %s", w, h, p.depth.c_str(), timing_name(st.last.timing));
     ImGui::Checkbox("animate lights (L)", &st.animate);
-    ImGui::SameLine();
     ImGui::Checkbox("scissor overlay (O)", &st.overlay);
-    ImGui::Text("camera speed %.3g/s (scroll), R resets", double(st.fly.speed));
+    ImGui::TextWrapped("camera speed %.3g/s (scroll), R resets, F frames the scene", double(st.fly.speed));
 
-    if (ImGui::CollapsingHeader("frame", ImGuiTreeNodeFlags_DefaultOpen)) {
+    // Both sections start collapsed: the first window shows the image, not the panel.
+    if (ImGui::CollapsingHeader("frame")) {
         const StageTimes& m = st.last.ms;
         const std::pair<const char*, double> stages[] = {{"geometry", m.geometry}, {"ambient", m.ambient},
                                                          {"lights", m.lights},     {"bloom", m.bloom},
@@ -156,18 +164,19 @@ void draw_panel(ViewerState& st, const DeferredShader& ds, const Scene& frame_sc
             ImGui::TableNextColumn();
             ImGui::TextUnformatted("loop");  // the previous frame's: this one is still being drawn
             ImGui::TableNextColumn();
-            ImGui::Text("%8.2f ms  (last frame: with panel, swap)", st.loop_ms);
+            ImGui::Text("%8.2f ms", st.loop_ms);
             ImGui::EndTable();
         }
+        ImGui::TextWrapped("loop: the last frame's, with the panel and the swap");
         const FrameStats& s = st.last;
-        ImGui::Text("lights %d: %d drawn, %d culled", s.lights_total, s.lights_drawn, s.lights_culled);
-        ImGui::Text("light_fragments   %s", count_text(s.counted_light_fragments()).c_str());
-        ImGui::Text("light_invocations %s", count_text(s.light_invocations).c_str());
-        ImGui::Text("ideal             %s%s", count_text(st.ideal).c_str(),
+        ImGui::TextWrapped("lights %d: %d drawn, %d culled", s.lights_total, s.lights_drawn, s.lights_culled);
+        ImGui::TextWrapped("light_fragments   %s", count_text(s.counted_light_fragments()).c_str());
+        ImGui::TextWrapped("light_invocations %s", count_text(s.light_invocations).c_str());
+        ImGui::TextWrapped("ideal             %s%s", count_text(st.ideal).c_str(),
                     st.ideal ? "  (once a second)" : "  (depth-texture path only)");
         if (st.ideal && *st.ideal > 0 && s.light_invocations)
-            ImGui::Text("invocations / ideal %.3f", double(*s.light_invocations) / double(*st.ideal));
-        ImGui::Text("scissor_pixels    %lld", s.scissor_pixels);
+            ImGui::TextWrapped("invocations / ideal %.3f", double(*s.light_invocations) / double(*st.ideal));
+        ImGui::TextWrapped("scissor_pixels    %lld", s.scissor_pixels);
 
         std::vector<float> frame_ms, lights_ms;
         for (const FrameSample& f : st.history) {
@@ -183,8 +192,8 @@ void draw_panel(ViewerState& st, const DeferredShader& ds, const Scene& frame_sc
                              ImVec2(0, 40));
         }
     }
-    if (ImGui::CollapsingHeader("options (the render flags)", ImGuiTreeNodeFlags_DefaultOpen)) {
-        ImGui::PushItemWidth(150);
+    if (ImGui::CollapsingHeader("options (the render flags)")) {
+        ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);  // the other half: the name
         for (const RenderOption& o : render_options()) {
             option_widget(st, o);
             if (!o.help.empty() && ImGui::IsItemHovered()) {  // the table's help, as --help prints it
@@ -196,7 +205,11 @@ void draw_panel(ViewerState& st, const DeferredShader& ds, const Scene& frame_sc
             }
         }
         ImGui::PopItemWidth();
-        if (!st.option_error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", st.option_error.c_str());
+        if (!st.option_error.empty()) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 0.4f, 1));
+            ImGui::TextWrapped("%s", st.option_error.c_str());
+            ImGui::PopStyleColor();
+        }
     }
 
     ImGui::End();

@@ -55,9 +55,9 @@ std::vector<Case> cases() {
     c.push_back(bad_script("nul", std::string("frames 1\nset scissor o\0ff\n", 26), "s.script:2: expected text, got a NUL byte at column 14"));
     c.push_back(bad_script("escape_byte", "frames 1\x1b\n", "s.script:1: expected text, got the control byte 0x1B at column 9"));
     c.push_back(bad_script("bom_then_bad", "\xEF\xBB\xBF" "frames x\n", "s.script:1: frames: expected an integer in [1, 1000000], got 'x'"));
-    c.push_back(bad_script("lone_cr", "frames 1\rfly away\r", "s.script:2: expected size, camera, set, frames, screenshot or quit, got 'fly'"));
+    c.push_back(bad_script("lone_cr", "frames 1\rfly away\r", "s.script:2: expected size, camera, set, frames, screenshot, quit or wait, got 'fly'"));
     // ---- long tokens and values
-    c.push_back(bad_script("long_command", std::string(1 << 20, 'z') + "\n", "s.script:1: expected size, camera, set, frames, screenshot or quit, got 'zzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzz...'"));
+    c.push_back(bad_script("long_command", std::string(1 << 20, 'z') + "\n", "s.script:1: expected size, camera, set, frames, screenshot, quit or wait, got 'zzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzzz...'"));
     c.push_back(bad_script("long_set_value", "set bloom-strength " + std::string(100000, '9') + "\n", "s.script:1: set bloom-strength: expected a value, got '999999999999999999999999999999999999999999999999999999999999...'"));
     c.push_back(bad_script("long_frames", "frames " + std::string(10000, '1') + "\n", "s.script:1: frames: expected an integer in [1, 1000000], got '111111111111111111111111111111111111111111111111111111111111...'"));
     c.push_back(bad_script("long_line_echo", "size 1 2 " + std::string(5000, '3') + "\n", "s.script:1: expected 'size W H', got 'size 1 2 333333333333333333333333333333333333333333333333333...'"));
