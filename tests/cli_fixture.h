@@ -14,7 +14,7 @@ namespace dsr::test {
 
 struct RunResult {
     int status;
-    std::string output;  // stdout and stderr together
+    std::string output;  // stdout and stderr together (stdout alone: run_stdout)
 };
 
 inline std::string dsr_binary() {
@@ -25,9 +25,10 @@ inline std::string dsr_binary() {
     return dir.substr(0, dir.find_last_of('/')) + "/dsr";
 }
 
-// `env` (e.g. "GALLIUM_DRIVER=softpipe") is set for this command only.
-inline RunResult run(const std::string& args, const std::string& env = "") {
-    std::string cmd = (env.empty() ? "" : "env " + env + " ") + dsr_binary() + " " + args + " 2>&1";
+// `env` (e.g. "GALLIUM_DRIVER=softpipe") is set for this command only. `stderr_to`: where the
+// command's stderr goes ("&1": into output with stdout).
+inline RunResult run(const std::string& args, const std::string& env = "", const std::string& stderr_to = "&1") {
+    std::string cmd = (env.empty() ? "" : "env " + env + " ") + dsr_binary() + " " + args + " 2>" + stderr_to;
     RunResult r{-1, ""};
     FILE* p = popen(cmd.c_str(), "r");
     if (!p) return r;
@@ -38,6 +39,9 @@ inline RunResult run(const std::string& args, const std::string& env = "") {
     r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
     return r;
 }
+
+// What the command prints on stdout alone (its stderr discarded).
+inline RunResult run_stdout(const std::string& args) { return run(args, "", "/dev/null"); }
 
 inline bool exists(const std::string& p) {
     struct stat st;

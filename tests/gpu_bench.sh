@@ -158,7 +158,8 @@ run)
             [[ " ${GPU_BENCH_TILES_VARIANTS:-nodepth t32l8 t32l8nodepth} " == *" ${v%%:*} "* ]] || continue
             $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-30} \
                 --lights 1024-overlap,32-large --light-geometry quad,tiles ${v#*:} \
-                --json "$out/gpu_bench_tiles_${v%%:*}_1920x1080.json" > "$out/gpu_bench_tiles_${v%%:*}_1920x1080.txt"
+                --json "$out/gpu_bench_tiles_${v%%:*}_1920x1080.json" \
+                --report "$out/gpu_bench_tiles_${v%%:*}_1920x1080.md" > "$out/gpu_bench_tiles_${v%%:*}_1920x1080.txt"
         done
     fi
     # The tiles geometry's other plan (groups), against quad in the same run.

@@ -2,6 +2,7 @@
 // in N-overlap every lit point lies inside at least 8 lights; in N-large every light's sphere
 // covers most of the screen; --lights items parse as documented.
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 
 #include <glm/glm.hpp>
@@ -60,6 +61,56 @@ TEST(BenchScenes, LargeLightsEachCoverMostOfTheScreen) {
                 100 * min_frac);
     EXPECT_GT(min_frac, 0.5);
     EXPECT_GT(rmin, 3.0);
+}
+
+// N-large is LearnOpenGL's demo as its source sets it up: its object positions, its camera, and its
+// lights from srand(13) in the order it draws them (x, y, z, r, g, b per light from rand() % 100),
+// the same on every platform. The first light worked by hand from glibc's first six rand() % 100
+// after srand(13) (90 81 79 91 64 24); on glibc every light against the C library itself.
+TEST(BenchScenes, LargeIsLearnOpenGLsDemo) {
+    const Scene s = large_lights_scene(32);
+    ASSERT_EQ(s.objects.size(), 9u);
+    EXPECT_EQ(s.camera.pos, glm::vec3(0, 0, 5));
+    EXPECT_EQ(s.camera.fov_deg, 45.0f);
+    EXPECT_EQ(s.ambient, glm::vec3(0.1f));  // the demo's `lighting = Diffuse * 0.1`
+    for (const Object& o : s.objects) {
+        const glm::dvec3 at(o.model[3]);
+        EXPECT_EQ(at.y, -0.5);
+        EXPECT_TRUE(std::abs(at.x) == 3.0 || at.x == 0.0) << at.x;
+        EXPECT_TRUE(std::abs(at.z) == 3.0 || at.z == 0.0) << at.z;
+    }
+    const Light& first = s.lights[0];
+    EXPECT_FLOAT_EQ(first.pos.x, 0.90f * 6 - 3);
+    EXPECT_FLOAT_EQ(first.pos.y, 0.81f * 6 - 4);
+    EXPECT_FLOAT_EQ(first.pos.z, 0.79f * 6 - 3);
+    EXPECT_FLOAT_EQ(first.color.r, 91 / 200.0f + 0.5f);
+    EXPECT_FLOAT_EQ(first.color.g, 64 / 200.0f + 0.5f);
+    EXPECT_FLOAT_EQ(first.color.b, 24 / 200.0f + 0.5f);
+    for (const Light& l : s.lights) {
+        EXPECT_TRUE(l.attenuation);
+        EXPECT_EQ(l.kc, 1.0f);
+        EXPECT_EQ(l.kl, 0.7f);
+        EXPECT_EQ(l.kq, 1.8f);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_GE(l.color[c], 0.5f);
+            EXPECT_LT(l.color[c], 1.0f);
+        }
+        EXPECT_GE(l.pos.y, -4.0f);
+        EXPECT_LT(l.pos.y, 2.0f);
+    }
+#ifdef __GLIBC__
+    std::srand(13);
+    for (const Light& l : s.lights) {
+        glm::vec3 pos, colour;
+        for (int k = 0; k < 3; ++k) pos[k] = float((std::rand() % 100) / 100.0 * 6.0 - (k == 1 ? 4.0 : 3.0));
+        for (int k = 0; k < 3; ++k) colour[k] = float(std::rand() % 100) / 200.0f + 0.5f;
+        EXPECT_EQ(l.pos, pos);
+        EXPECT_EQ(l.color, colour);
+    }
+#endif
+    // More lights continue the same sequence.
+    const Scene more = large_lights_scene(64);
+    for (size_t i = 0; i < s.lights.size(); ++i) EXPECT_EQ(more.lights[i].pos, s.lights[i].pos);
 }
 
 // The ideal count over cones and full-screen volumes: the tiled count equals the brute-force one,

@@ -382,6 +382,29 @@ TEST(Cli, ForcedCapabilityChangesAutoPath) {
     EXPECT_FALSE(exists(d + "/b.png"));
 }
 
+// --stats' ideal count follows the depth path the renderer runs, not the one asked for: with
+// `--depth auto` on a GL with depth textures it is the texture path's count, from the same
+// depth codes (source depth24), equal to --depth texture's.
+TEST(Cli, StatsIdealCountFollowsTheResolvedDepthPath) {
+    std::string d = temp_dir();
+    nlohmann::json j[2];
+    const char* depth[2] = {"auto", "texture"};
+    for (int k = 0; k < 2; ++k) {
+        const std::string stats = d + "/" + depth[k] + ".json";
+        RunResult r = run(std::string("render --size 64x48 --depth ") + depth[k] + " -o " + d + "/" + depth[k] +
+                          ".png --stats " + stats);
+        ASSERT_EQ(r.status, 0) << depth[k] << ": " << r.output;
+        std::ifstream in(stats);
+        j[k] = nlohmann::json::parse(in);
+    }
+    ASSERT_EQ(j[1]["depth_path"], "texture") << "this GL has no depth textures";
+    EXPECT_EQ(j[0]["depth_path"], "texture");
+    EXPECT_EQ(j[0]["ideal_source"], "depth24");
+    ASSERT_TRUE(j[1]["ideal_fragments"].is_number()) << j[1].dump();
+    EXPECT_GT(j[1]["ideal_fragments"].get<long long>(), 0);
+    EXPECT_EQ(j[0]["ideal_fragments"], j[1]["ideal_fragments"]);
+}
+
 TEST(Cli, InfoNamesCapabilitiesAndPaths) {
     RunResult r = run("info");
     ASSERT_EQ(r.status, 0) << r.output;

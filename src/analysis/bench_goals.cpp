@@ -19,9 +19,11 @@ std::string over(long long a, long long b) {
     return std::to_string(a) + " / " + std::to_string(b) + " = " + format_number("%.3f", double(a) / double(b));
 }
 
-Figure not_judged(std::string why = kNotMeasured) {
+// `brief`: the reason in a few words, where `why` runs long.
+Figure not_judged(std::string why = kNotMeasured, std::string brief = "") {
     Figure f;
     f.working = std::move(why);
+    f.brief = std::move(brief);
     return f;
 }
 
@@ -51,7 +53,8 @@ Figure invocations(const Goal& g, const GoalInput& in) {
     const bool ideal = d && d->ideal_fragments && *d->ideal_fragments > 0;
     Figure f = !ideal                  ? not_judged()
                : !d->light_invocations ? not_judged(std::string(kNotMeasured) +
-                                                    " (the GL lacks ARB_pipeline_statistics_query)")
+                                                    " (the GL lacks ARB_pipeline_statistics_query)",
+                                                kNotMeasured)
                                        : judged(double(*d->light_invocations), double(*d->ideal_fragments),
                                                 over(*d->light_invocations, *d->ideal_fragments));
     if (!ideal) return f;
@@ -110,7 +113,8 @@ Figure stencil(const Goal& g, const GoalInput& in) {
                           over(*s->light_invocations, *s->ideal_fragments) +
                           (s->light_fragments ? "; what passed the stencil (occlusion query) " +
                                                     over(*s->light_fragments, *s->ideal_fragments) + " (information)"
-                                              : std::string()));
+                                              : std::string()),
+                          "cannot be judged on this GL (see the report)");
     return judged(double(*s->light_invocations), double(*s->ideal_fragments),
                   over(*s->light_invocations, *s->ideal_fragments));
 }
@@ -190,9 +194,9 @@ void replace_all(std::string& s, const std::string& from, const std::string& to)
         s.replace(at, from.size(), to);
 }
 
-// The goal's sentence for this scene and light count; [...] kept (brackets dropped) on a judged line.
-std::string sentence(const Goal& g, const GoalInput& in, bool judged_line) {
-    std::string s = g.sentence;
+// A goal's sentence (`text`: its sentence or its plain one) for this scene and light count; [...] kept (brackets dropped) on a judged line.
+std::string sentence(const char* text, const Goal& g, const GoalInput& in, bool judged_line) {
+    std::string s = text;
     for (size_t open = s.find('['); open != std::string::npos; open = s.find('[', open)) {
         const size_t close = s.find(']', open);
         if (judged_line) {
@@ -202,6 +206,7 @@ std::string sentence(const Goal& g, const GoalInput& in, bool judged_line) {
             s.erase(open, close - open + 1);
         }
     }
+    replace_all(s, "{cmp words}", g.comparison == Comparison::at_most ? "at most" : "at least");
     replace_all(s, "{cmp}", g.comparison == Comparison::at_most ? "<=" : ">=");
     replace_all(s, "{t}", format_number("%g", g.threshold));
     replace_all(s, "{on}", g.on);
@@ -210,19 +215,27 @@ std::string sentence(const Goal& g, const GoalInput& in, bool judged_line) {
     return s;
 }
 
-// The goal's line, then its lines of information.
-void judge(const Goal& g, const GoalInput& in, std::vector<std::string>& out) {
-    const Figure f = g.measure(g, in);
-    std::string line = sentence(g, in, f.judged) + ": " + f.working;
-    if (f.judged) line += std::string(" -> ") + (met(g, f) ? "met" : "NOT met") + f.after;
-    out.push_back(line);
-    for (const std::string& i : f.info) out.push_back("  " + i);
+// The goal judged: its line, its verdict, its plain sentence; its lines of information into `info`.
+GoalResult judge(const Goal& g, const GoalInput& in, std::vector<std::string>& info) {
+    GoalResult r;
+    r.goal = &g;
+    r.lights = in.lights;
+    r.figure = g.measure(g, in);
+    const Figure& f = r.figure;
+    r.verdict = !f.judged ? Verdict::not_judged : met(g, f) ? Verdict::met : Verdict::not_met;
+    r.line = sentence(g.sentence, g, in, f.judged) + ": " + f.working;
+    if (f.judged) r.line += std::string(" -> ") + (r.verdict == Verdict::met ? "met" : "NOT met") + f.after;
+    r.plain = sentence(g.plain, g, in, f.judged);
+    for (const std::string& i : f.info) info.push_back("  " + i);
+    return r;
 }
 
-std::vector<std::string> judge_all(const std::vector<Row>& rows, const std::string& scene, int own_lights,
-                                   const std::optional<InvocationProbe>& probe, std::optional<GoalGroup> only) {
+// Every goal judged, each followed in `lines` (when given) by its line and its information.
+std::vector<GoalResult> judge_all(const std::vector<Row>& rows, const std::string& scene, int own_lights,
+                                  const std::optional<InvocationProbe>& probe, std::optional<GoalGroup> only,
+                                  std::vector<std::string>* lines) {
     const std::vector<Goal>& t = goal_table();
-    std::vector<std::string> out;
+    std::vector<GoalResult> out;
     // Consecutive goals of one scope and group are judged together: per light count, every goal
     // of the run at the own count, then every one at kManyLights.
     for (size_t i = 0, j = 0; i < t.size(); i = j) {
@@ -231,7 +244,13 @@ std::vector<std::string> judge_all(const std::vector<Row>& rows, const std::stri
         const std::vector<int> counts =
             t[i].scope == Scope::per_light_count ? std::vector<int>{own_lights, kManyLights} : std::vector<int>{0};
         for (int n : counts)
-            for (size_t k = i; k < j; ++k) judge(t[k], GoalInput{rows, scene, n, probe}, out);
+            for (size_t k = i; k < j; ++k) {
+                std::vector<std::string> info;
+                out.push_back(judge(t[k], GoalInput{rows, scene, n, probe}, info));
+                if (!lines) continue;
+                lines->push_back(out.back().line);
+                lines->insert(lines->end(), info.begin(), info.end());
+            }
     }
     return out;
 }
@@ -241,23 +260,31 @@ std::vector<std::string> judge_all(const std::vector<Row>& rows, const std::stri
 const std::vector<Goal>& goal_table() {
     static const std::vector<Goal> table = {
         {"invocations", GoalGroup::renderer, Scope::per_light_count,
-         "light_invocations {cmp} {t} x ideal, {scene} with {lights} lights", 1.25, Comparison::at_most, "",
-         invocations},
+         "light_invocations {cmp} {t} x ideal, {scene} with {lights} lights",
+         "the light shader runs {cmp words} {t} times per pixel a light really reaches ({scene}, {lights} lights)",
+         1.25, Comparison::at_most, "", invocations},
         {"floor", GoalGroup::renderer, Scope::per_light_count, "floor_ratio {cmp} {t}, {scene} with {lights} lights",
-         1.3, Comparison::at_most, "", against_floor},
+         "a frame takes {cmp words} {t} times the least its work could take ({scene}, {lights} lights)", 1.3,
+         Comparison::at_most, "", against_floor},
         {"speed_256", GoalGroup::renderer, Scope::once,
-         "deferred {cmp} {t}x faster than the faster forward multi-pass at {on} lights[, {scene}]", 10,
+         "deferred {cmp} {t}x faster than the faster forward multi-pass at {on} lights[, {scene}]",
+         "deferred shading is {cmp words} {t} times as fast as forward multi-pass at {on} lights[ ({scene})]", 10,
          Comparison::at_least, "256", speed},
         {"stencil", GoalGroup::light_geometry, Scope::per_light_count,
-         "stencil light_invocations {cmp} {t} x ideal, {scene} with {lights} lights", 1.25, Comparison::at_most, "",
-         stencil},
-        {"tiles", GoalGroup::light_geometry, Scope::once, "tiles {cmp} {t}x faster than quad on {on}", 3,
-         Comparison::at_least, "1024-overlap", tiles},
+         "stencil light_invocations {cmp} {t} x ideal, {scene} with {lights} lights",
+         "with stencil light volumes, the light shader runs {cmp words} {t} times per pixel a light really "
+         "reaches ({scene}, {lights} lights)",
+         1.25, Comparison::at_most, "", stencil},
+        {"tiles", GoalGroup::light_geometry, Scope::once, "tiles {cmp} {t}x faster than quad on {on}",
+         "screen tiles are {cmp words} {t} times as fast as one quad per light on {on}", 3, Comparison::at_least,
+         "1024-overlap", tiles},
         {"large", GoalGroup::light_geometry, Scope::once,
-         "best deferred {cmp} {t}x faster than forward single-pass on {on}", 1.5, Comparison::at_least, "32-large",
-         large},
+         "best deferred {cmp} {t}x faster than forward single-pass on {on}",
+         "the fastest deferred configuration is {cmp words} {t} times as fast as forward single-pass on {on}", 1.5,
+         Comparison::at_least, "32-large", large},
         {"geometry_lsb", GoalGroup::light_geometry, Scope::once, "every light geometry within {t} LSB of quad's image",
-         1, Comparison::at_most, "", geometry_lsb},
+         "every way of drawing the lights gives quad's image to within {t} LSB", 1, Comparison::at_most, "",
+         geometry_lsb},
     };
     return table;
 }
@@ -300,14 +327,23 @@ const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& sc
     return nullptr;
 }
 
+std::vector<GoalResult> judge_goals(const std::vector<Row>& rows, const std::string& scene, int own_lights,
+                                    const std::optional<InvocationProbe>& probe) {
+    return judge_all(rows, scene, own_lights, probe, std::nullopt, nullptr);
+}
+
 std::vector<std::string> goals(const std::vector<Row>& rows, const std::string& scene, int own_lights,
                                const std::optional<InvocationProbe>& probe) {
-    return judge_all(rows, scene, own_lights, probe, std::nullopt);
+    std::vector<std::string> lines;
+    judge_all(rows, scene, own_lights, probe, std::nullopt, &lines);
+    return lines;
 }
 
 std::vector<std::string> geometry_goals(const std::vector<Row>& rows, const std::string& scene, int own_lights,
                                         const std::optional<InvocationProbe>& probe) {
-    return judge_all(rows, scene, own_lights, probe, GoalGroup::light_geometry);
+    std::vector<std::string> lines;
+    judge_all(rows, scene, own_lights, probe, GoalGroup::light_geometry, &lines);
+    return lines;
 }
 
 }  // namespace dsr::bench

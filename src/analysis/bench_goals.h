@@ -30,6 +30,7 @@ struct Figure {
     // without a division's rounding.
     double value = 0, scale = 1;
     std::string working;            // judged: how the figure came ("120 / 100 = 1.200"); else why not judged
+    std::string brief;              // not judged: why, in a few words (the summary's); empty: working
     std::string after;              // after the verdict: information ("; without lights ...")
     std::vector<std::string> info;  // lines of information that follow the goal's line (never judged)
 };
@@ -47,9 +48,11 @@ struct Goal {
     const char* id;  // a short name: "invocations", "floor", "speed_256", ...
     GoalGroup group;
     Scope scope;
-    // The goal as printed. {cmp}: "<=" or ">="; {t}: the threshold (%g); {on}: the --lights entry it
+    // The goal as printed. {cmp}: "<=" or ">=" ({cmp words}: "at most" or "at least"); {t}: the threshold (%g); {on}: the --lights entry it
     // is judged on; {scene}, {lights}: the scene and light count judged; [...]: only on a judged line.
     const char* sentence;
+    // The goal as a plain sentence for the summary `dsr bench` prints first (the same placeholders).
+    const char* plain;
     double threshold;
     Comparison comparison;
     const char* on;  // the --lights entry a `once` goal reads ("256", "1024-overlap", "32-large"); "" otherwise
@@ -76,6 +79,21 @@ const Row* fastest_row(const std::vector<Row>& rows, const std::string& scene, i
 // The default configuration with this light geometry.
 const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& scene, int lights,
                              LightGeometry geometry);
+
+// One goal judged on one scene and light count: what goals() prints and what the summary says.
+enum class Verdict { met, not_met, not_judged };
+struct GoalResult {
+    const Goal* goal = nullptr;
+    int lights = 0;                 // per_light_count goals: the count judged
+    Figure figure;
+    Verdict verdict = Verdict::not_judged;
+    std::string line;               // the goal's line, as goals() prints it
+    std::string plain;              // the goal's plain sentence for this scene and count
+};
+
+// Every goal of the table judged on the rows, in goals()' order (its lines without the information).
+std::vector<GoalResult> judge_goals(const std::vector<Row>& rows, const std::string& scene, int own_lights,
+                                    const std::optional<InvocationProbe>& probe = std::nullopt);
 
 // Every goal of the table judged on the rows of `scene` (own_lights: its own light count). Each
 // goal line ends "-> met" or "-> NOT met", or says why it was not judged ("not measured in this

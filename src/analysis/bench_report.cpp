@@ -118,31 +118,6 @@ const std::vector<std::string>& table_header() {
     return h;
 }
 
-std::string text_table(const std::vector<Row>& rows) {
-    const std::vector<std::string>& kHeader = table_header();
-    std::vector<std::vector<std::string>> all = {kHeader};
-    for (const Row& r : rows) all.push_back(table_cells(r));
-    std::vector<size_t> width(kHeader.size(), 0);
-    for (auto& line : all)
-        for (size_t i = 0; i < line.size(); ++i) width[i] = std::max(width[i], line[i].size());
-    std::ostringstream out;
-    for (size_t l = 0; l < all.size(); ++l) {
-        for (size_t i = 0; i < all[l].size(); ++i) {
-            const bool left = i == 0 || i == 2;
-            std::string c = all[l][i];
-            std::string pad(width[i] - c.size(), ' ');
-            out << (i ? "  " : "") << (left ? c + pad : pad + c);
-        }
-        out << "\n";
-        if (l == 0) {
-            size_t total = 0;
-            for (size_t w : width) total += w + 2;
-            out << std::string(total - 2, '-') << "\n";
-        }
-    }
-    return out.str();
-}
-
 std::string markdown_table(const std::vector<Row>& rows) {
     const std::vector<std::string>& kHeader = table_header();
     std::ostringstream out;
@@ -217,17 +192,27 @@ json to_json(const Summary& s) {
     return j;
 }
 
-std::string text_report(const Summary& s) {
+std::string text_summary(const Summary& s, const std::string& report_path, const std::string& json_path) {
     const Config& cfg = s.config;
+    int met = 0, not_met = 0, not_judged = 0;
+    for (const GoalResult& g : s.goal_results)
+        ++(g.verdict == Verdict::met ? met : g.verdict == Verdict::not_met ? not_met : not_judged);
     std::ostringstream o;
-    o << "dsr bench: " << s.machine << "\nGL renderer: " << s.gl_renderer << ", OpenGL " << s.gl_version << "\n"
-      << cfg.w << "x" << cfg.h << ", median of " << cfg.frames << " frames after " << cfg.warmup
-      << " warm-up (fewer where a frame takes over 2 s: see 'frames')\n\n"
-      << text_table(s.rows);
-    o << "\ngoals (" << (s.scenes.empty() ? std::string() : s.scenes[0])
-      << " scene; deferred rows: depth texture, scissor on, every skip on):\n";
-    for (auto& g : s.goals) o << "  " << g << "\n";
-    for (auto& n : s.notes) o << "note: " << n << "\n";
+    o << "dsr bench: " << s.rows.size() << " rows in " << format_number("%.0f", s.seconds) << " s at " << cfg.w << "x"
+      << cfg.h << " on " << s.gl_renderer << ", OpenGL " << s.gl_version << "\n"
+      << "goals, on the " << (s.scenes.empty() ? std::string() : s.scenes[0]) << " scene: " << met << " met, "
+      << not_met << " not met, " << not_judged << " not judged\n";
+    for (const GoalResult& g : s.goal_results) {
+        const char* verdict = g.verdict == Verdict::met ? "met       " : g.verdict == Verdict::not_met ? "NOT met   " : "not judged";
+        const Figure& f = g.figure;
+        o << "  " << verdict << "  " << g.plain << ": " << (f.judged || f.brief.empty() ? f.working : f.brief) << "\n";
+    }
+    if (!report_path.empty())
+        o << "the full table (" << s.rows.size() << " rows), each goal's working"
+          << (s.notes.empty() ? std::string() : s.notes.size() == 1 ? " and the note" : " and the " + std::to_string(s.notes.size()) + " notes") << ": "
+          << report_path << "\n";
+    if (!json_path.empty()) o << "every row as JSON: " << json_path << "\n";
+    o << "exit status 0: the run completed (goals not met are findings, not errors)\n";
     return o.str();
 }
 
@@ -337,7 +322,9 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
           "materials.\n"
        << "- Scenes with 32 or more lights are the scene's geometry with generated lights "
           "(`src/analysis/bench_scenes.h`): stratified over the floor, each floor point in about 2.5 spheres, "
-          "every 8th light switched off (colour 0).\n\n"
+          "every 8th light switched off (colour 0); `large` (`N-large`) is LearnOpenGL's deferred shading demo "
+          "instead: its 9 objects as unit boxes, its camera, its `srand(13)` lights with its attenuation law "
+          "(docs/light_geometry.md, \"32-large\").\n\n"
        << markdown_table(s.rows);
     return md.str();
 }

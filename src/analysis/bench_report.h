@@ -22,8 +22,7 @@ nlohmann::ordered_json row_json(const Row& r);
 const std::vector<std::string>& table_header();
 std::vector<std::string> table_cells(const Row& r);
 
-// The table as `dsr bench` prints it (columns padded, a rule under the header) and as markdown.
-std::string text_table(const std::vector<Row>& rows);
+// The table as the report holds it (markdown).
 std::string markdown_table(const std::vector<Row>& rows);
 
 // Run time against error: one panel per scene, a series per renderer kind.
@@ -37,15 +36,19 @@ struct Summary {
     std::vector<std::string> scenes;              // scene names (file_stem), the first one judged
     double seconds = 0;                           // the whole sweep
     std::vector<Row> rows;
-    std::vector<std::string> goals, notes;
+    std::vector<std::string> goals, notes;        // goals: every goal's line and its information (goals())
+    std::vector<GoalResult> goal_results;         // the same goals judged (judge_goals()), for the summary
     std::optional<InvocationProbe> invocation_probe;  // null where the GL cannot be probed
 };
 
 // docs/benchmarks.json: machine, GL, config, seconds, goals, notes, rows.
 nlohmann::ordered_json to_json(const Summary& s);
 
-// What `dsr bench` prints on stdout: the header lines, the table, the goals and the notes.
-std::string text_report(const Summary& s);
+// What `dsr bench` prints on stdout, short enough to read at a glance: one line on the run, each
+// goal as a plain sentence with its figures and met / NOT met / not judged, where the report (the
+// table, every goal's working, the notes) and the JSON went, and what the exit status means.
+// report_path, json_path: "" when not written.
+std::string text_summary(const Summary& s, const std::string& report_path, const std::string& json_path);
 
 // The report's "Light geometries" section: what each geometry is, and one line per geometry row.
 std::string light_geometry_markdown(const std::vector<Row>& rows);

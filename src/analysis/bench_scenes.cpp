@@ -30,6 +30,34 @@ glm::vec3 hue(float h) {
     return c;
 }
 
+// C's rand() as glibc makes it (its TYPE_3 additive feedback generator, srand's seeding), so the
+// demo's srand(13) lights come out the same on every platform: r[0] = seed, r[i] = 16807 r[i-1]
+// mod (2^31 - 1) for i < 31, r[i] = r[i-31] for i < 34, then r[i] = r[i-31] + r[i-3] (mod 2^32);
+// outputs are r[i] >> 1 from i = 344 on.
+class CRand {
+public:
+    explicit CRand(uint32_t seed) {
+        r_[0] = int32_t(seed == 0 ? 1 : seed);
+        for (int i = 1; i < 31; ++i) {
+            const int64_t v = (16807 * int64_t(r_[i - 1])) % 2147483647;
+            r_[i] = int32_t(v < 0 ? v + 2147483647 : v);
+        }
+        for (int i = 31; i < 34; ++i) r_[i] = r_[i - 31];
+        for (int i = 34; i < 344; ++i) next();
+    }
+    int operator()() { return int(uint32_t(next()) >> 1); }
+
+private:
+    int32_t next() {
+        const int32_t v = int32_t(uint32_t(r_[(i_ + 34 - 31) % 34]) + uint32_t(r_[(i_ + 34 - 3) % 34]));
+        r_[i_] = v;
+        i_ = (i_ + 1) % 34;
+        return v;
+    }
+    int32_t r_[34] = {};
+    int i_ = 0;  // the slot of r[i - 34], overwritten by r[i]
+};
+
 }  // namespace
 
 Scene with_generated_lights(const Scene& scene, int n) {
@@ -124,27 +152,35 @@ Scene large_lights_scene(int n) {
     if (n < 0) throw Error("bench scenes: negative light count");
     Scene s;
     s.path = "";
+    // The demo's camera: at (0, 0, 5) looking down -z, 45 degrees, near 0.1, far 100.
     s.camera.pos = {0, 0, 5};
     s.camera.target = {0, 0, 0};
     s.camera.up = {0, 1, 0};
     s.camera.fov_deg = 45;
     s.camera.near_plane = 0.1f;
     s.camera.far_plane = 100;
+    // Its lighting shader's `lighting = Diffuse * 0.1`: the ambient pass's 0.1 x diffuse.
     s.ambient = glm::vec3(0.1f);
     s.background = glm::vec3(0);
+    // Its G-buffer's albedo and specular intensity (a texture's; here a constant, so the scene keeps an
+    // analytic reference) and its shader's shininess 16.
     Material m;
     m.name = "box";
     m.diffuse = glm::vec3(0.8f, 0.75f, 0.7f);
     m.specular = glm::vec3(0.5f);
     m.shininess = 16;
     s.materials.push_back(m);
+    // Its objectPositions: a 3 x 3 grid of spacing 3 at y = -0.5.
     for (int i = -1; i <= 1; ++i)
         for (int j = -1; j <= 1; ++j) add_box(s, glm::vec3(1), glm::vec3(3.0f * i, -0.5f, 3.0f * j), 0);
+    // Its lights: srand(13), then per light x, y, z, r, g, b from rand() % 100, in that order:
+    // x, z in [-3, 2.94], y in [-4, 1.94], each colour channel in [0.5, 0.995].
+    CRand rand(13);
     for (int i = 0; i < n; ++i) {
-        const uint32_t u = uint32_t(i) + 0x5bd1e995u;
         Light l;
-        l.pos = glm::vec3(unit(u, 0), unit(u, 1), unit(u, 2)) * 6.0f - 3.0f;
-        l.color = glm::vec3(0.5f) + 0.5f * glm::vec3(unit(u, 3), unit(u, 4), unit(u, 5));
+        const float x = float(rand() % 100), y = float(rand() % 100), z = float(rand() % 100);
+        l.pos = glm::vec3(float(x / 100.0 * 6.0 - 3.0), float(y / 100.0 * 6.0 - 4.0), float(z / 100.0 * 6.0 - 3.0));
+        for (int c = 0; c < 3; ++c) l.color[c] = float(rand() % 100) / 200.0f + 0.5f;
         l.attenuation = true;
         l.kc = 1.0f, l.kl = 0.7f, l.kq = 1.8f;
         l.radius = float(attenuation_radius(l.kc, l.kl, l.kq, l.threshold,

@@ -43,11 +43,14 @@ std::string bench_scene_name(const std::string& base_name, const LightSpec& spec
 // many-lights-per-pixel case that multi-light passes exist for. No light is switched off.
 Scene with_overlapping_lights(const Scene& scene, int n);
 
-// A scene like LearnOpenGL's deferred shading demo (seeds/001): 9 unit boxes on a 3 x 3 grid of
-// spacing 3 about the origin (constant materials, so it has an analytic reference), the camera at
-// (0, 0, 5) looking down -z with a 45 degree fov, ambient 0.1, and n lights at hashed positions in
-// [-3, 3]^3 with colours in [0.5, 1]^3 and LearnOpenGL's attenuation (1, 0.7, 1.8) at threshold
-// 5/256, radii 4.1-5.1: each light's rectangle covers most of the screen (tests/test_bench_scenes.cpp).
+// LearnOpenGL's deferred shading demo (5.8.1) as a dsr scene, as its source sets it up: its 9
+// objects as unit boxes at its object positions (a 3 x 3 grid of spacing 3 at y = -0.5; constant
+// materials, so the scene has an analytic reference), its camera at (0, 0, 5) looking down -z with
+// a 45 degree fov, its hard-coded ambient (0.1 x the diffuse colour), and n lights drawn as the
+// demo draws them after srand(13) (glibc's rand(), reproduced here on every platform): positions
+// in [-3, 3) x [-4, 2) x [-3, 3), colours in [0.5, 1) per channel, LearnOpenGL's attenuation
+// (1, 0.7, 1.8) cut at the threshold 5/256 (radii 3.9-5.1, rectangles over most of the screen:
+// tests/test_bench_scenes.cpp). n = 32 is the demo's own set; larger n continue the same sequence.
 Scene large_lights_scene(int n);
 
 }  // namespace dsr

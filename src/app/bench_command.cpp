@@ -1,6 +1,8 @@
 // `dsr bench`: parses the flags by its table (app/command_table.h), runs the sweep (src/analysis/bench_run.h) on a context of the
-// chosen backend, and prints or writes what src/analysis/bench_report.h makes of the rows: the
-// table on stdout, progress on stderr, optional JSON and a markdown report with a plot.
+// chosen backend, and prints or writes what src/analysis/bench_report.h makes of the rows: a short
+// summary on stdout (the goals met or not, where the rest went), progress on stderr, the markdown
+// report with the full table and a plot (--report, out/bench.md by default), optional JSON. The
+// exit status is 0 when the run completed, whatever the goals; non-zero only on an error.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -137,8 +139,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
 
     for (auto& s : scenes) sum.scenes.push_back(bench::file_stem(s));
     sum.goals = bench::goals(sum.rows, sum.scenes[0], own_counts[0], sum.invocation_probe);
-    std::fputs(bench::text_report(sum).c_str(), stdout);
-    std::fflush(stdout);  // the table before the stderr lines that follow
+    sum.goal_results = bench::judge_goals(sum.rows, sum.scenes[0], own_counts[0], sum.invocation_probe);
 
     if (!json_path.empty())
         outputs.put_text("--json", json_path,
@@ -150,7 +151,11 @@ int cmd_bench(const std::vector<std::string>& argv) {
     }
     outputs.commit();
     for (const std::string& w : outputs.written()) std::fprintf(stderr, "bench: wrote %s\n", w.c_str());
-    return 0;
+    std::fflush(stderr);
+    // Last, so it names only what was written and is what a terminal shows at the end.
+    std::fputs(bench::text_summary(sum, report_path, json_path).c_str(), stdout);
+    std::fflush(stdout);
+    return 0;  // the run completed: goals not met are findings, not errors
 }
 
 }  // namespace dsr

@@ -166,7 +166,12 @@ Command bench_command(BenchSettings& s) {
               {scene_operand("scene to measure (default: data/default.scene, tests/data/analytic.scene and, "
                              "without --quick, a generated 1-million-triangle mesh)")},
               one_scene(s.scene), {}, nullptr,
-              "--tile-size, --tile-lights, --tile-plan and --tile-depth set the tiles rows, as render takes them.\n"};
+              "--tile-size, --tile-lights, --tile-plan and --tile-depth set the tiles rows, as render takes them.\n\n"
+              "stdout holds a short summary: each goal as a sentence with its figures and met, NOT met or\n"
+              "not judged, and where the report and the JSON went; progress goes to stderr.\n\n"
+              "exit status: 0 when the run completed, whatever the goals (a goal not met is a finding, not an\n"
+              "error); non-zero only on an error (a bad flag or scene, a GL failure, an output that cannot be\n"
+              "written), with one line on stderr saying which.\n"};
     const bench::Config full;
     const std::vector<std::string>& geometries = find_render_option("light-geometry")->values;
     Flag lights{{"--lights"}, "LIST", "own, N, N-overlap or N-large, comma-separated",
@@ -190,7 +195,9 @@ Command bench_command(BenchSettings& s) {
                     qsize + ", " + std::to_string(BenchSettings::kQuickWarmup) + " warm-up + " +
                         std::to_string(BenchSettings::kQuickFrames) + " timed frames, lights " + BenchSettings::kQuickLights),
         file_flag({"--json"}, "FILE.json", s.json, {".json"}, "every row, the goals and the machine (docs/benchmarks.json)"),
-        file_flag({"--report"}, "FILE.md", s.report, {".md"}, "markdown report, with the plot beside it as FILE_plot.png"),
+        file_flag({"--report"}, "FILE.md", s.report, {".md"},
+                  "markdown report: the full table, each goal's working, the notes; the plot beside it as "
+                  "FILE_plot.png (a folder of one level is created)"),
         size_flag("--size", s.width, s.height, "frame size",
                   std::to_string(full.w) + "x" + std::to_string(full.h) + "; --quick " + qsize),
         int_flag("--frames", "N", 1, 1000, s.frames, "timed frames per row",

@@ -54,7 +54,8 @@ struct FiguresSettings {
 struct BenchSettings {
     std::string scene;            // empty: data/default.scene, tests/data/analytic.scene and a large mesh
     bool quick = false;
-    std::string json, report;     // empty: not written
+    std::string json;             // empty: not written
+    std::string report = "out/bench.md";  // the full table, every goal's working, the notes; a plot beside it
     int width = 0, height = 0;    // 0: the sweep's default (bench::Config), or --quick's
     int frames = 0;               // 0: as width
     std::string lights;           // empty: kBenchLights, or kQuickLights
