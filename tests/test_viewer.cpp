@@ -203,7 +203,7 @@ TEST_F(Viewer, BadScriptLineIsOneErrorAndWritesNothing) {
     EXPECT_EQ(flag.output, "dsr view: --depth: expected auto|texture|packed|position16|position32, got 'fast'\n");
 }
 
-// The viewer links the system libGL through GLFW and never libOSMesa (DESIGN: never both in one
+// The viewer links the system libGL through GLFW and never libOSMesa (docs/architecture.md: never both in one
 // executable); dsr itself links libOSMesa and not libglfw.
 TEST(ViewerBinary, LinksLibGLAndNoOSMesa) {
     const std::string bin = dsr_binary() + "_view";

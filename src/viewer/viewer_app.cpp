@@ -260,7 +260,7 @@ bool Viewer::frame(const std::string* shot) {
     if (st_.panel) draw_panel(st_, *ds_, frame_scene_, w, h);
     ImGui::Render();
     ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
-    gl_state().reset();  // foreign GL code ran (DESIGN: the viewer's panel)
+    gl_state().reset();  // foreign GL code ran (the viewer's panel: Dear ImGui)
     ctx_->swap();
 
     const auto pending = std::move(st_.pending);  // the panel's changes, now that it is drawn
