@@ -275,6 +275,19 @@ TEST(Cli, UnknownCommandOrOptionIsOneLine) {
     }
 }
 
+// A bad value on the command line is echoed at most 60 characters (scene/user_file.h quote), as
+// a scene file's token is: a 5000-character value gives an error line, not a 5000-character one.
+TEST(Cli, LongBadValuesAreEchoedCut) {
+    const std::string big(5000, 'x');
+    for (const std::string& c : {"render --depth " + big, "render --" + big, "render --size " + big, "info --caps " + big,
+                                "render --no-skip " + big, "compare --threshold " + big + " a b"}) {
+        RunResult r = run(c);
+        EXPECT_NE(r.status, 0) << c.substr(0, 40);
+        EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << c.substr(0, 40);
+        EXPECT_LT(r.output.size(), 400u) << c.substr(0, 40) << ": " << r.output.substr(0, 200);
+    }
+}
+
 TEST(Cli, RenderWritesImageAndStats) {
     std::string d = temp_dir();
     RunResult r = run("render --size 96x64 --frames 3 -o " + d + "/a.png --stats " + d + "/s.json");

@@ -1,4 +1,5 @@
 #include "app/args.h"
+#include "scene/user_file.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -37,8 +38,7 @@ int Args::int_value(const std::string& flag, int lo, int hi) {
     std::string v = value(flag);
     long n;
     if (!parse_int(v, n) || n < lo || n > hi)
-        fail(flag + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + v +
-             "'");
+        fail(flag + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + quote(v));
     return int(n);
 }
 
@@ -48,7 +48,7 @@ float Args::float_value(const std::string& flag, float lo, float hi) {
     errno = 0;
     double d = v.empty() ? 0 : std::strtod(v.c_str(), &end);
     if (v.empty() || errno != 0 || *end != '\0' || !(d >= lo && d <= hi))
-        fail(flag + ": expected a number in [" + format_number(lo) + ", " + format_number(hi) + "], got '" + v + "'");
+        fail(flag + ": expected a number in [" + format_number(lo) + ", " + format_number(hi) + "], got " + quote(v));
     return float(d);
 }
 
@@ -58,7 +58,7 @@ void Args::size_value(const std::string& flag, int& w, int& h) {
     long a, b;
     if (x == std::string::npos || !parse_int(v.substr(0, x), a) || !parse_int(v.substr(x + 1), b) || a < 1 ||
         b < 1 || a > 8192 || b > 8192)
-        fail(flag + ": expected WIDTHxHEIGHT with each in [1, 8192], got '" + v + "'");
+        fail(flag + ": expected WIDTHxHEIGHT with each in [1, 8192], got " + quote(v));
     w = int(a);
     h = int(b);
 }
@@ -72,7 +72,7 @@ std::string Args::choice(const std::string& flag, const std::vector<std::string>
         if (v == a) return v;
         list += (list.empty() ? "" : "|") + a;
     }
-    fail(flag + ": expected " + list + ", got '" + v + "'");
+    fail(flag + ": expected " + list + ", got " + quote(v));
 }
 
 }  // namespace dsr

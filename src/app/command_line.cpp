@@ -1,5 +1,6 @@
 // The command-line table's parser and flag makers (command_line.h).
 #include "app/command_line.h"
+#include "scene/user_file.h"
 
 #include <cstdio>
 #include <sstream>
@@ -41,9 +42,9 @@ void parse_command_line(const Command& c, const std::vector<std::string>& argv) 
         } else if (c.renderer && parse_render_flag(args, a, *c.renderer)) {
             // an option table flag, set in *c.renderer
         } else if (!a.empty() && a[0] == '-') {
-            args.fail("unknown option '" + a + "' (dsr " + c.name + " --help lists them)");
+            args.fail("unknown option " + quote(a) + " (dsr " + c.name + " --help lists them)");
         } else if (!c.operand) {
-            args.fail("expected options only, got '" + a + "'");
+            args.fail("expected options only, got " + quote(a));
         } else {
             c.operand(args, a);
         }
@@ -99,7 +100,7 @@ Flag list_flag(std::string name, std::string arg, const std::vector<std::string>
                         bool known = false;
                         for (const std::string& k : values) known |= item == k;
                         if (!known)
-                            a.fail(flag + ": expected a comma-separated list of " + joined(values, ", ") + ", got '" + v + "'");
+                            a.fail(flag + ": expected a comma-separated list of " + joined(values, ", ") + ", got " + quote(v));
                         items.push_back(item);
                     }
                     if (items.empty()) a.fail(flag + ": expected a comma-separated list of " + joined(values, ", ") + ", got ''");
@@ -109,12 +110,12 @@ Flag list_flag(std::string name, std::string arg, const std::vector<std::string>
 
 Flag option_flag(const std::string& option, RenderOptions& into) {
     const RenderOption* o = find_render_option(option);
-    if (!o) throw Error("option_flag: '" + option + "' is not in the option table");  // a slip in a command table
+    if (!o) throw Error("option_flag: " + quote(option) + " is not in the option table");  // a slip in a command table
     std::vector<std::string> names = {"--" + o->name};
     if (o->kind == OptionKind::toggle) names.push_back("--no-" + o->name);
     return Flag{names, option_arg(*o), option_range(*o), option_default(*o), o->help, {},
                 [&into](Args& a, const std::string& flag) {
-                    if (!parse_render_flag(a, flag, into)) a.fail("unknown option '" + flag + "'");
+                    if (!parse_render_flag(a, flag, into)) a.fail("unknown option " + quote(flag));
                 }};
 }
 

@@ -2,6 +2,7 @@
 // fails before anything is loaded or written; checks that need the whole line stay in the
 // command (compare's two files, gen-textures' folder).
 #include "app/command_table.h"
+#include "scene/user_file.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -33,7 +34,7 @@ Flag file_flag(std::vector<std::string> names, std::string arg, std::string& fie
         if (std::none_of(exts.begin(), exts.end(), [&](const std::string& e) { return has_ext(v, e); })) {
             std::string list;
             for (size_t i = 0; i < exts.size(); ++i) list += (i == 0 ? "" : i + 1 == exts.size() ? " or " : ", ") + exts[i];
-            a.fail(flag + ": expected a file ending " + list + ", got '" + v + "'");
+            a.fail(flag + ": expected a file ending " + list + ", got " + quote(v));
         }
         field = v;
     };
@@ -42,12 +43,15 @@ Flag file_flag(std::vector<std::string> names, std::string arg, std::string& fie
 
 // SCENE, at most one.
 Operand scene_operand(const std::string& help) { return Operand{"SCENE", help, true}; }
-std::function<void(Args&, const std::string&)> one_scene(std::string& field) {
-    return [&field](Args& a, const std::string& w) {
-        if (!field.empty()) a.fail("expected one scene file, got also '" + w + "'");
+// An operand given at most once: a second is refused, naming it.
+std::function<void(Args&, const std::string&)> one_operand(std::string& field, const std::string& what) {
+    return [&field, what](Args& a, const std::string& w) {
+        if (!field.empty()) a.fail("expected one " + what + ", got also " + quote(w));
         field = w;
     };
 }
+
+std::function<void(Args&, const std::string&)> one_scene(std::string& field) { return one_operand(field, "scene file"); }
 
 Flag context_flag(ContextSettings& c) {
     return text_flag({"--context"}, "NAME", c.backend,
@@ -92,7 +96,7 @@ Flag lights_flag(std::optional<LightSpec>& field) {
                     field = parse_light_spec(v);
                     if (!field)
                         a.fail(flag + ": expected 'own', a count N in [0, 65536], N-overlap (N a multiple of 8) or "
-                                      "N-large, got '" + v + "'");
+                                      "N-large, got " + quote(v));
                 }};
 }
 
@@ -186,7 +190,7 @@ Command bench_command(BenchSettings& s) {
                     for (std::string item; std::getline(ss, item, ','); ++n)
                         if (!parse_light_spec(item))
                             a.fail(flag + ": expected a comma-separated list of 'own', counts N in [0, 65536], N-overlap "
-                                          "(N a multiple of 8) or N-large, got '" + item + "' in '" + v + "'");
+                                          "(N a multiple of 8) or N-large, got " + quote(item) + " in " + quote(v));
                     if (n == 0) a.fail(flag + ": expected at least one count, got ''");
                     s.lights = v;
                 }};
@@ -237,10 +241,7 @@ Command info_command(InfoSettings& s) {
 Command gen_textures_command(GenTexturesSettings& s) {
     return Command{"gen-textures", "write the default scene's procedural textures",
                    {Operand{"DIR", "folder to write the textures into", false}},
-                   [&s](Args& a, const std::string& w) {
-                       if (!s.dir.empty()) a.fail("expected one output folder, got also '" + w + "'");
-                       s.dir = w;
-                   },
+                   one_operand(s.dir, "output folder"),
                    {}, nullptr, ""};
 }
 
@@ -248,10 +249,7 @@ Command gen_model_command(GenModelSettings& s) {
     return Command{"gen-model",
                    "write a windmill dsr makes itself: OBJ + MTL + diffuse, normal and specular PNG maps",
                    {Operand{"DIR", "folder to write the model into (created when missing)", false}},
-                   [&s](Args& a, const std::string& w) {
-                       if (!s.dir.empty()) a.fail("expected one output folder, got also '" + w + "'");
-                       s.dir = w;
-                   },
+                   one_operand(s.dir, "output folder"),
                    {}, nullptr, ""};
 }
 

@@ -1,5 +1,6 @@
 // Help and docs/cli.md from the tables (help_text.h).
 #include "app/help_text.h"
+#include "scene/user_file.h"
 
 #include <sstream>
 #include <vector>
@@ -135,7 +136,7 @@ std::string top_help() {
 std::string unknown_command_line(const std::string& name) {
     std::vector<std::string> names;
     for (const Command& c : command_table()) names.push_back(c.name);
-    return "dsr: unknown command '" + name + "' (expected " + joined(names, ", ") + "; dsr --help lists them)";
+    return "dsr: unknown command " + quote(name) + " (expected " + joined(names, ", ") + "; dsr --help lists them)";
 }
 
 std::string cli_markdown() {

@@ -55,7 +55,7 @@ int cmd_stress(const std::vector<std::string>& argv) {
         for (StressCase& c : cases)
             if (c.name.find(only) != std::string::npos) kept.push_back(std::move(c));
         cases = std::move(kept);
-        if (cases.empty()) throw Error("dsr stress: --only: no case name contains '" + only + "'");
+        if (cases.empty()) throw Error("dsr stress: --only: no case name contains " + quote(only));
     }
     // --light-geometry: every case through that geometry instead of the tutorial's quad, so its
     // depth hand-off, meshes and stencil meet the same far/near ratios and coordinates.

@@ -75,11 +75,7 @@ public:
                 meshes_.draw(l);
             }
             gl_state().apply(light_);
-            set_light_params(prog_, l.params);
-            q.begin();
-            meshes_.draw(l);
-            q.end();
-            ++stats.light_passes;
+            meshes_.shade(l, prog_, q, stats);
         }
     }
 

@@ -31,11 +31,7 @@ public:
         gl_state().apply(s);
         for (const LightDraw& l : f.lights) {
             if (meshes_.past_far(f, l)) continue;
-            set_light_params(prog_, l.params);
-            q.begin();
-            meshes_.draw(l);
-            q.end();
-            ++stats.light_passes;
+            meshes_.shade(l, prog_, q, stats);
         }
     }
 

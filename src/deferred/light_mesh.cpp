@@ -69,4 +69,12 @@ void LightMeshes::draw(const LightDraw& l) const {
     glDisableClientState(GL_VERTEX_ARRAY);
 }
 
+void LightMeshes::shade(const LightDraw& l, Program& prog, LightQueries& q, FrameStats& stats) const {
+    set_light_params(prog, l.params);
+    q.begin();
+    draw(l);
+    q.end();
+    ++stats.light_passes;
+}
+
 }  // namespace dsr

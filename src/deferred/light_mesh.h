@@ -22,6 +22,9 @@ public:
     // The light's mesh: spheres as the unit sphere's mesh scaled and moved by the modelview,
     // cones as their own mesh (already in eye space).
     void draw(const LightDraw& l) const;
+    // The light's shading pass over its mesh with `prog` (bound, its state applied): parameters,
+    // the mesh inside the light's queries, one light pass counted.
+    void shade(const LightDraw& l, Program& prog, LightQueries& q, FrameStats& stats) const;
 
 private:
     VolumeMesh unit_sphere_;  // volume_mesh of the unit sphere at the origin

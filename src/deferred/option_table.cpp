@@ -1,6 +1,7 @@
 // The option table (option_table.h). Each entry reads and writes one field of RenderOptions;
 // the values and their spelling are exactly those `dsr render` has always taken.
 #include "deferred/option_table.h"
+#include "scene/user_file.h"
 
 #include "scene/scene.h"
 
@@ -278,13 +279,13 @@ std::string check_render_option(const RenderOption& o, const std::string& v) {
         case OptionKind::toggle:
             for (const std::string& a : o.values)
                 if (v == a) return "";
-            return "expected " + joined(o.values, "|") + ", got '" + v + "'";
+            return "expected " + joined(o.values, "|") + ", got " + quote(v);
         case OptionKind::number: {
             char* end = nullptr;
             errno = 0;
             const double d = v.empty() ? 0 : std::strtod(v.c_str(), &end);
             if (v.empty() || errno != 0 || *end != '\0' || !(d >= o.lo && d <= o.hi))
-                return "expected a number in [" + std::to_string(o.lo) + ", " + std::to_string(o.hi) + "], got '" + v + "'";
+                return "expected a number in [" + std::to_string(o.lo) + ", " + std::to_string(o.hi) + "], got " + quote(v);
             return "";
         }
         case OptionKind::integer: {
@@ -296,7 +297,7 @@ std::string check_render_option(const RenderOption& o, const std::string& v) {
             if (v.empty() || errno != 0 || *end != '\0' || n < long(o.lo) || n > long(o.hi))
                 return "expected " + (o.values.empty() ? std::string() : joined(o.values, "|") + " or ") +
                        "an integer in [" + std::to_string(long(o.lo)) + ", " + std::to_string(long(o.hi)) +
-                       "], got '" + v + "'";
+                       "], got " + quote(v);
             return "";
         }
         case OptionKind::subset: {
@@ -305,9 +306,9 @@ std::string check_render_option(const RenderOption& o, const std::string& v) {
             for (const std::string& k : items) {
                 bool known = false;
                 for (const std::string& a : o.values) known |= k == a;
-                if (!known) return "expected " + joined(o.values, ", ") + " (comma-separated) or none, got '" + k + "'";
+                if (!known) return "expected " + joined(o.values, ", ") + " (comma-separated) or none, got " + quote(k);
             }
-            if (items.empty()) return "expected " + joined(o.values, ", ") + " (comma-separated) or none, got '" + v + "'";
+            if (items.empty()) return "expected " + joined(o.values, ", ") + " (comma-separated) or none, got " + quote(v);
             return "";
         }
     }

@@ -1,6 +1,7 @@
 // The --caps table (cap_names.h). The effects are the fallbacks choose_paths (deferred/paths.h)
 // takes; docs/legacy.md measures them.
 #include "gl/cap_names.h"
+#include "scene/user_file.h"
 
 namespace dsr {
 
@@ -37,7 +38,7 @@ std::string check_cap_names(const std::vector<std::string>& names) {
         const std::vector<CapName>& t = cap_names();
         std::string list;
         for (size_t i = 0; i < t.size(); ++i) list += (i == 0 ? "" : i + 1 == t.size() ? " or " : ", ") + std::string(t[i].name);
-        return "unknown capability '" + n + "' (expected " + list + ")";
+        return "unknown capability " + quote(n) + " (expected " + list + ")";
     }
     return "";
 }

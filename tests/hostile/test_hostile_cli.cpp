@@ -14,10 +14,10 @@ using D = const std::string&;
 std::vector<Case> cases() {
     std::vector<Case> c;
     auto scene = [](D d) { write(d, "a.scene", scene_text()); };
-    c.push_back({"unknown_command_with_newline", nullptr, "$'ren\\nder'", "dsr: unknown command 'ren der'", 2});
+    c.push_back({"unknown_command_with_newline", nullptr, "$'ren\\nder'", "dsr: unknown command 'ren?der'", 2});
     c.push_back({"scene_name_with_newline", nullptr, "render $'a\\nb.scene' -o out.png", "cannot open scene file a b.scene: No such file or directory"});
     c.push_back({"scene_name_not_utf8", nullptr, "render $'\\xff\\xfe.scene' -o out.png", "cannot open scene file ??.scene: No such file or directory"});
-    c.push_back({"flag_value_with_newline", scene, "render a.scene --depth $'tex\\nture' -o out.png", "dsr render: --depth: expected auto|texture|packed|position16|position32, got 'tex ture'"});
+    c.push_back({"flag_value_with_newline", scene, "render a.scene --depth $'tex\\nture' -o out.png", "dsr render: --depth: expected auto|texture|packed|position16|position32, got 'tex?ture'"});
     c.push_back({"flag_value_escape", scene, "render a.scene --view $'\\x1b[2J' -o out.png", "dsr render: --view: expected"});
     c.push_back({"size_missing", scene, "render a.scene --size", "dsr render: --size: expected a value, got nothing"});
     c.push_back({"size_empty", scene, "render a.scene --size ''", "dsr render: --size: expected a value, got ''"});
