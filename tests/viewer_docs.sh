@@ -60,7 +60,7 @@ done
 if [[ -n $shot ]]; then
   # The viewer writes ready.png after 40 frames (the panel is laid out and its plot has a few
   # seconds), then keeps drawing while the root window is taken.
-  printf 'set overlay on\nframes 40\nscreenshot %s\nframes 1000000\n' "$tmp/ready.png" > "$tmp/shot.script"
+  printf 'set overlay on\nframes 40\nscreenshot %s\nwait\n' "$tmp/ready.png" > "$tmp/shot.script"
   "$D" view --size 1280x720 --script "$tmp/shot.script" >/dev/null &
   viewer=$!
   for _ in $(seq 600); do [[ -e $tmp/ready.png ]] && break; sleep 0.1; done

@@ -408,6 +408,9 @@ int Viewer::run(const Script* script) {
             }
             if (quit_ || glfwWindowShouldClose(ctx_->window())) break;
         }
+        // The script's screenshots are whole now: renamed into place before the window goes on, so
+        // a `wait` script leaves them for a person or a tool that waits for the file.
+        shots_.commit();
         if (!script->waits()) quit_ = true;  // a script ends when it ends (script.h)
     }
     while (!quit_ && !glfwWindowShouldClose(ctx_->window())) frame(nullptr);
