@@ -40,14 +40,8 @@ Place place_of(const std::string& path) {
 // "FLAG: " before a message, nothing for an output without one (write_image's).
 std::string label(const std::string& flag) { return flag.empty() ? "" : flag + ": "; }
 
-std::string kind_of(mode_t m) {
-    if (S_ISDIR(m)) return "a folder";
-    if (S_ISFIFO(m)) return "a FIFO";
-    if (S_ISCHR(m)) return "a character device";
-    if (S_ISBLK(m)) return "a block device";
-    if (S_ISSOCK(m)) return "a socket";
-    return "something that is not a file";
-}
+// What is in an output's way, as the readers name it (user_file.h kind_of); outputs say folder.
+std::string in_the_way(mode_t m) { return S_ISDIR(m) ? "a folder" : kind_of(m); }
 
 }  // namespace
 
@@ -105,7 +99,7 @@ void OutputSet::add(const std::string& flag, const std::string& path) {
     if (path.empty()) fail(label(flag) + "expected a file name, got ''");
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
-        fail(label(flag) + "expected a file to write, got " + quote(path) + ", " + kind_of(st.st_mode));
+        fail(label(flag) + "expected a file to write, got " + quote(path) + ", " + in_the_way(st.st_mode));
     // Its folder must be there (figures' and bench's are made first, by make_dir): said now,
     // before the work, rather than when the output is ready.
     const std::string dir = std::filesystem::path(path).parent_path().string();
@@ -124,7 +118,7 @@ void OutputSet::make_dir(const std::string& flag, const std::string& dir) {
     if (dir.empty()) fail(label(flag) + "expected a folder name, got ''");
     struct stat st {};
     if (::stat(dir.c_str(), &st) == 0) {
-        if (!S_ISDIR(st.st_mode)) fail(label(flag) + "expected a folder, got " + quote(dir) + ", " + kind_of(st.st_mode));
+        if (!S_ISDIR(st.st_mode)) fail(label(flag) + "expected a folder, got " + quote(dir) + ", " + in_the_way(st.st_mode));
         return;
     }
     if (::mkdir(dir.c_str(), 0777) != 0) fail("cannot create " + dir + ": " + std::strerror(errno));

@@ -14,9 +14,6 @@
 
 namespace dsr {
 
-namespace {
-
-// What a file is when it is not a regular file, for "expected a regular file, got ...".
 std::string kind_of(mode_t m) {
     if (S_ISDIR(m)) return "a directory";
     if (S_ISFIFO(m)) return "a FIFO";
@@ -25,6 +22,8 @@ std::string kind_of(mode_t m) {
     if (S_ISSOCK(m)) return "a socket";
     return "something that is not a file";
 }
+
+namespace {
 
 // Checks a stat result: regular and at most max_bytes; returns the reason to refuse, or "".
 std::string refusal(const struct stat& st, size_t max_bytes) {

@@ -37,6 +37,10 @@ std::string read_user_text(const std::string& path, const std::string& what, siz
 // "PATH:LINE: expected text, got a NUL byte at column C" (lines as TextLines counts them).
 void check_user_text(const std::string& path, std::string& text);
 
+// What a file is when it is not a regular file, for "expected a regular file, got ...": "a
+// directory", "a FIFO", "a character device", ...
+std::string kind_of(mode_t m);
+
 // `s` in single quotes, at most 60 characters ("..." after a cut, at a character boundary);
 // control characters and bytes that are not UTF-8 shown as '?'. Every token or file name a
 // message echoes goes through it, so no input can make an error line long or several lines.
