@@ -294,6 +294,40 @@ TEST_P(Forward, LightMarkersShowInFrontOfSurfacesAndHideBehindThem) {
     if (::testing::Test::HasFailure()) write_failure_images(std::string("forward_markers_") + c.name, b.image, a.image);
 }
 
+// `markers box H`: a world-sized cube in the light's colour. At the light's pixel the colour, and
+// the changed pixels a square about as wide as the cube's projection (not the sphere's 4 pixels).
+TEST_P(Forward, BoxMarkersAreCubesOfTheirWorldSize) {
+    const Case& c = GetParam();
+    Scene s = wall_scene();
+    s.lights.clear();
+    const glm::vec3 shown(-1.2f, 0.6f, 0.5f);
+    s.lights.push_back({shown, {1.0f, 0.25f, 0.1f}, 3.0f});
+    s.marker_shape = Scene::MarkerShape::box;
+    s.marker_size = 0.1f;
+    ShaderOptions off = options_of(c), on = off;
+    on.show_lights = true;
+    const RenderResult a = render_scene(s, kN, kN, off, c.caps);
+    const RenderResult b = render_scene(s, kN, kN, on, c.caps);
+    EXPECT_EQ(b.stats.light_markers, 1);
+    const glm::ivec2 ps = pixel_of(s, shown);
+    const int want[3] = {255, 64, 26};
+    for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(lsb(b.image, ps.x, ps.y, ch), want[ch], 1) << "channel " << ch;
+    // The cube's half-width on screen at its distance (corners and perspective add up to ~1.7x).
+    const float half_px = 0.1f / glm::length(shown - s.camera.pos) *
+                          (kN / 2.0f) / std::tan(glm::radians(s.camera.fov_deg) / 2.0f);
+    int x0 = kN, x1 = -1;
+    for (int y = 0; y < kN; ++y)
+        for (int x = 0; x < kN; ++x) {
+            bool d = false;
+            for (int ch = 0; ch < 3; ++ch) d = d || lsb(a.image, x, y, ch) != lsb(b.image, x, y, ch);
+            if (d) x0 = std::min(x0, x), x1 = std::max(x1, x);
+        }
+    const float width = float(x1 - x0 + 1);
+    EXPECT_GT(width, 1.8f * half_px) << "cube " << width << " px wide, its face " << 2 * half_px;
+    EXPECT_LT(width, 3.6f * half_px + 2) << "cube " << width << " px wide, its face " << 2 * half_px;
+    if (::testing::Test::HasFailure()) write_failure_images(std::string("forward_box_markers_") + c.name, b.image, a.image);
+}
+
 // With nothing to draw, the forward stage and its depth hand-off change no pixel: opacity 1 is the
 // opaque path, and a frame that runs the stage (a directional light has no marker) is the same.
 TEST_P(Forward, NothingToDrawChangesNothing) {

@@ -170,6 +170,9 @@ Scene large_lights_scene(int n) {
     m.specular = glm::vec3(0.5f);
     m.shininess = 16;
     s.materials.push_back(m);
+    // Its light boxes (drawn with --show-lights): renderCube's +-1 scaled by 0.125.
+    s.marker_shape = Scene::MarkerShape::box;
+    s.marker_size = 0.125f;
     // Its objectPositions: a 3 x 3 grid of spacing 3 at y = -0.5.
     for (int i = -1; i <= 1; ++i)
         for (int j = -1; j <= 1; ++j) add_box(s, glm::vec3(1), glm::vec3(3.0f * i, -0.5f, 3.0f * j), 0);

@@ -2,7 +2,7 @@
 // through the depth hand-off (depth_handoff.h), the scene's depth, so geometry drawn now is hidden
 // by opaque surfaces exactly as in a forward render. Two things are drawn, before post-processing
 // so bloom and anti-aliasing see them:
-//  * light markers (`--show-lights`): a small emissive sphere in each point and spot light's
+//  * light markers (`--show-lights`): a small emissive sphere (or the scene's `markers box`) in each point and spot light's
 //    colour, fixed function, depth tested and written, so bloom makes them glow as the tutorial's
 //    Figure 11 highlights do;
 //  * transparent surfaces (materials with opacity < 1): the tutorial's §4 "fall-back to a non
@@ -39,6 +39,7 @@ private:
     std::vector<ObjectBounds> bounds_;              // object_bounds(scene)
     std::unique_ptr<TransparentPass> transparent_;  // scenes with transparent materials
     Mesh marker_mesh_;                              // the unit sphere
+    Mesh marker_box_;                               // the cube of +-1 (`markers box`)
 };
 
 }  // namespace dsr

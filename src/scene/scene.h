@@ -135,6 +135,12 @@ struct Scene {
     std::vector<Object> objects;  // what is drawn: a mesh with its transform
     std::vector<Light> lights;
     bool post_bloom = false, post_aa = false;  // `post bloom aa` directive
+    // `markers box SIZE` / `markers sphere`: what --show-lights draws at each light. A sphere of a
+    // fixed share of the screen (marker_radius), or, as LearnOpenGL's demo draws its light boxes,
+    // a cube of world half-size `marker_size`.
+    enum class MarkerShape { sphere, box };
+    MarkerShape marker_shape = MarkerShape::sphere;
+    float marker_size = 0;  // the box's half-size in world units; unused for spheres
     std::vector<MeshModel> models;         // `mesh` lines' OBJ models, object space
     std::vector<MeshInstance> instances;   // one per `mesh` line
     std::vector<std::string> warnings;     // statements the loaders read and ignored

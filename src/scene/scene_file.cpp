@@ -231,7 +231,7 @@ private:
 
     void directive(Line& line) {
         const std::string kinds =
-            "a directive (camera, ambient, background, material, plane, box, sphere, mesh, light, post)";
+            "a directive (camera, ambient, background, material, plane, box, sphere, mesh, light, post, markers)";
         const std::string d = line.word(kinds);
         if (d == "camera") camera(line);
         else if (d == "ambient") { scene_.ambient = line.colour("ambient"); line.end(); }
@@ -241,6 +241,7 @@ private:
         else if (d == "mesh") mesh(line);
         else if (d == "light") light(line);
         else if (d == "post") post(line);
+        else if (d == "markers") markers(line);
         else line.expected_last(kinds);
     }
 
@@ -589,6 +590,20 @@ private:
             const std::string k = line.key({"bloom", "aa"}, seen);
             (k == "bloom" ? scene_.post_bloom : scene_.post_aa) = true;
         }
+    }
+
+    // `markers sphere` (the default) or `markers box SIZE`: the shape --show-lights draws.
+    void markers(Line& line) {
+        std::set<std::string> seen;
+        const std::string k = line.key({"sphere", "box"}, seen);
+        if (k == "sphere") {
+            scene_.marker_shape = Scene::MarkerShape::sphere;
+            scene_.marker_size = 0;
+        } else {
+            scene_.marker_shape = Scene::MarkerShape::box;
+            scene_.marker_size = line.positive("markers box half-size");
+        }
+        line.end();
     }
 
     static std::string fmt(double f) {

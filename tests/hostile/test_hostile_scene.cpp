@@ -62,13 +62,13 @@ std::vector<Case> cases() {
     c.push_back(bad_scene("escape_byte", scene_text("ambient 0.1 0.1 0.1\x1b[2J\n"), "a.scene:5: expected text, got the control byte 0x1B at column 20"));
     c.push_back(bad_scene("delete_byte", scene_text("ambient 0.1\x7f 0.1 0.1\n"), "a.scene:5: expected text, got the control byte 0x7F"));
     c.push_back(bad_scene("form_feed", scene_text("\f\n"), "a.scene:5: expected text, got the control byte 0x0C at column 1"));
-    c.push_back(bad_scene("bom_then_bad_directive", "\xEF\xBB\xBFteapot 1\n", "a.scene:1: expected a directive (camera, ambient, background, material, plane, box, sphere, mesh, light, post), got 'teapot'"));
+    c.push_back(bad_scene("bom_then_bad_directive", "\xEF\xBB\xBFteapot 1\n", "a.scene:1: expected a directive (camera, ambient, background, material, plane, box, sphere, mesh, light, post, markers), got 'teapot'"));
     c.push_back(bad_scene("utf16_file", std::string("\xFF\xFE" "c\0a\0m\0", 8), "a.scene:1: expected text, got a NUL byte at column 4"));
     c.push_back(bad_scene("binary_garbage", std::string("\x7f" "ELF\x02\x01\x01", 7), "a.scene:1: expected text, got the control byte 0x7F at column 1"));
     c.push_back(bad_scene("lone_cr_lines", std::string(kCamera).replace(std::string(kCamera).size() - 1, 1, "\r") + "teapot\r", "a.scene:2: expected a directive"));
     // ---- long tokens: echoed at most 60 characters
     c.push_back({"huge_token", [](D d) { write(d, "a.scene", std::string(kCamera) + "teapot" + std::string(50 << 20, 'x') + "\n"); },
-                 "render a.scene -o out.png", "a.scene:2: expected a directive (camera, ambient, background, material, plane, box, sphere, mesh, light, post), got 'teapotxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx...'"});
+                 "render a.scene -o out.png", "a.scene:2: expected a directive (camera, ambient, background, material, plane, box, sphere, mesh, light, post, markers), got 'teapotxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx...'"});
     c.push_back(bad_scene("long_number", scene_text("ambient " + std::string(5000, '1') + " 0 0\n"), "a.scene:5: expected a number for ambient, got '111111111111111111111111111111111111111111111111111111111111...'"));
     c.push_back(bad_scene("long_material_name", scene_text("sphere radius 1 at 0 0 0 material " + std::string(1000, 'q') + "\n"), "a.scene:5: expected a material defined on an earlier line, got 'qqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqqq...'"));
     c.push_back(bad_scene("long_texture_name", scene_text("", " diffuse_map " + std::string(300, 'p') + ".png"), "a.scene:2: expected a readable image for diffuse_map, got 'pppppppppppppppppppppppppppppppppppppppppppppppppppppppppppp...'"));
