@@ -87,11 +87,11 @@ TEST_F(SceneFileTest, ExtraToken) {
 
 TEST_F(SceneFileTest, Markers) {
     const std::string p = write("markers.scene", header() + "markers box 0.125\n");
-    const Scene s = load_scene(p);
-    EXPECT_EQ(s.marker_shape, Scene::MarkerShape::box);
+    const dsr::Scene s = dsr::load_scene(p);
+    EXPECT_EQ(s.marker_shape, dsr::Scene::MarkerShape::box);
     EXPECT_FLOAT_EQ(s.marker_size, 0.125f);
-    EXPECT_EQ(load_scene(write("m2.scene", header() + "markers box 2\nmarkers sphere\n")).marker_shape,
-              Scene::MarkerShape::sphere);
+    EXPECT_EQ(dsr::load_scene(write("m2.scene", header() + "markers box 2\nmarkers sphere\n")).marker_shape,
+              dsr::Scene::MarkerShape::sphere);
     expect_error(header() + "markers box\n", 3, {"expected a number for markers box half-size", "got end of line"});
     expect_error(header() + "markers box -1\n", 3, {"expected markers box half-size > 0", "got '-1'"});
     expect_error(header() + "markers cone\n", 3, {"expected one of sphere, box", "got 'cone'"});
