@@ -42,23 +42,22 @@ void ForwardStage::draw(const FrameDef& f, const Scene& scene, GpuScene& gpu, Fr
 // few hundred vertices), fixed function: the colour is the light's, unlit.
 void ForwardStage::draw_light_markers(const FrameDef& f, const Scene& scene, FrameStats& stats) {
     const bool boxes = scene.marker_shape == Scene::MarkerShape::box;
-    if (marker_mesh_.indices.empty()) marker_mesh_ = make_sphere(1.0f, 0, 16, 8);
-    if (marker_box_.indices.empty()) marker_box_ = make_box(glm::vec3(2.0f), 0);
-    const Mesh& mesh = boxes ? marker_box_ : marker_mesh_;
+    Mesh& mesh = boxes ? marker_box_ : marker_mesh_;
+    if (mesh.indices.empty()) mesh = boxes ? make_box(glm::vec3(2.0f), 0) : make_sphere(1.0f, 0, 16, 8);
     RenderState s = opaque_geometry();  // back faces culled, GL_LEQUAL, depth written, no program
     gl_state().apply(s);
     glEnableClientState(GL_VERTEX_ARRAY);
     glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &mesh.vertices[0].pos);
     for (const Light& l : scene.lights) {
         if (l.type == Light::Type::directional) continue;  // no position to mark
+        const glm::vec3 eye = f.camera.to_eye(l.pos);  // in double, rounded once
         if (boxes) {
+            if (!(eye.z < 0)) continue;  // at or behind the eye
             // World-aligned, so it turns with the scene: view * model in double, rounded once.
             const glm::dmat4 model = glm::scale(glm::translate(glm::dmat4(1), glm::dvec3(l.pos)),
                                                 glm::dvec3(scene.marker_size));
-            if (!(f.camera.to_eye(l.pos).z < 0)) continue;  // at or behind the eye
             gl_state().set_modelview(camera_relative(f.camera.view_d(), model));
         } else {
-            const glm::vec3 eye = f.camera.to_eye(l.pos);  // in double, rounded once
             const float r = marker_radius(glm::length(eye), f.proj[1][1]);
             if (!(r > 0)) continue;
             gl_state().set_modelview(glm::scale(glm::translate(glm::mat4(1), eye), glm::vec3(r)));

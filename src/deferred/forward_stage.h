@@ -2,8 +2,8 @@
 // through the depth hand-off (depth_handoff.h), the scene's depth, so geometry drawn now is hidden
 // by opaque surfaces exactly as in a forward render. Two things are drawn, before post-processing
 // so bloom and anti-aliasing see them:
-//  * light markers (`--show-lights`): a small emissive sphere (or the scene's `markers box`) in each point and spot light's
-//    colour, fixed function, depth tested and written, so bloom makes them glow as the tutorial's
+//  * light markers (`--show-lights`): a small emissive sphere (or the scene's `markers box`) in
+//    each point and spot light's colour, fixed function, depth tested and written, so bloom makes them glow as the tutorial's
 //    Figure 11 highlights do;
 //  * transparent surfaces (materials with opacity < 1): the tutorial's §4 "fall-back to a non
 //    deferred shading approach for transparent surfaces", LearnOpenGL's "Combining deferred
