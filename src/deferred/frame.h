@@ -16,6 +16,11 @@
 
 namespace dsr {
 
+// The light shader a light needs (the shader table's specialised light rows): a point light with
+// Equation 2 (the tutorial's, LIGHT_POINT_ONLY), a point light with the attenuation law
+// (LIGHT_POINT_INVERSE), or any light (type and law selected per light).
+enum class LightShader { point_linear, point_inverse, any };
+
 // One visible light of the frame: its shader parameters, eye-space volume and scissor rectangle.
 struct LightDraw {
     const Light* light = nullptr;  // in the scene the frame was made from
@@ -27,6 +32,10 @@ struct LightDraw {
     // The tutorial's point light with Equation 2 (no type or law selection): the light shaders'
     // cheaper LIGHT_POINT_ONLY variant shades it.
     bool tutorial() const { return light->type == Light::Type::point && !light->attenuation; }
+    LightShader shader() const {
+        if (light->type != Light::Type::point) return LightShader::any;
+        return light->attenuation ? LightShader::point_inverse : LightShader::point_linear;
+    }
 };
 
 // What make_frame needs besides the scene.

@@ -1,6 +1,8 @@
 // The light geometries' factory (light_geometry.h): the one place that names every geometry's class.
 #include "deferred/light_geometry.h"
 
+#include "dsr_error.h"
+
 namespace dsr {
 
 // Each defined in its geometry's file.
@@ -17,6 +19,8 @@ std::unique_ptr<LightGeometryPass> make_light_geometry(const ShaderConfig& c, Pr
         case LightGeometry::volume: return make_volume_geometry(c, programs);
         case LightGeometry::stencil: return make_stencil_geometry(c, programs);
         case LightGeometry::tiles: return make_tiles_geometry(c, programs, width, height);
+        case LightGeometry::screen:
+        case LightGeometry::automatic: throw Error(std::string("light geometry ") + light_geometry_name(c.paths.light_geometry) + ": not built yet");
     }
     return nullptr;
 }

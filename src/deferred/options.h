@@ -32,7 +32,10 @@ const char* target_format_name(TargetFormat f);  // "RGBA8", "RGBA16F", "RGBA32F
 //  volume   the back faces of the light's volume mesh, depth test GL_GREATER against the scene
 //  stencil  per light a two-sided stencil pass over the volume, then the light pass where it marks
 //  tiles    screen tiles; up to `tile_lights` lights per pass in one shader (§3.4.3's closing remark)
-enum class LightGeometry { quad, volume, stencil, tiles };
+//  screen   every light at every pixel, in full-screen passes with no culling (LearnOpenGL's
+//           deferred demo's lighting pass): the peer's algorithm, measured beside dsr's
+//  automatic  each light by the cheapest of quad, volume and tiles (light_path_choice.h)
+enum class LightGeometry { quad, volume, stencil, tiles, screen, automatic };
 
 // Where the G-buffer and P-buffers are rendered (§3.2's pPBuffer): automatic picks fbo where
 // EXT_framebuffer_object exists, else copy; pbuffer needs a context with pbuffer surfaces (EGL).
@@ -72,6 +75,10 @@ struct SkipOptions {
                                     // light's sphere (or is background) are rejected before shading
     bool light_sphere_test = true;  // then pixels whose surface point is outside the sphere (att = 0):
                                     // rejected after one depth fetch, before the G-buffer reads
+    bool depth_prepass = true;      // the depth pre-pass (§3.3.1) left out where the frame's depth
+                                    // complexity makes it pure cost
+    bool ambient_pass = true;       // the ambient pass (Listing 15) folded into a full-screen light pass
+    bool final_pass = true;         // no final pass (§3.6) when the output is P-buffer 0 read back at its size
 };
 
 // Screen-space ambient occlusion (Vasilovici §5, docs/ssao.md): its own pass from the G-buffer's
@@ -123,7 +130,7 @@ struct ShaderOptions {
 const char* depth_handoff_name(DepthHandoff h);
 DepthHandoff depth_handoff_from_name(const std::string& name);
 
-// "quad", "volume", "stencil", "tiles"; from_name throws dsr::Error listing them otherwise.
+// "quad", "volume", "stencil", "tiles", "screen", "auto"; from_name throws dsr::Error listing them otherwise.
 const char* light_geometry_name(LightGeometry g);
 LightGeometry light_geometry_from_name(const std::string& name);
 

@@ -179,6 +179,8 @@ const char* light_geometry_name(LightGeometry g) {
         case LightGeometry::volume: return "volume";
         case LightGeometry::stencil: return "stencil";
         case LightGeometry::tiles: return "tiles";
+        case LightGeometry::screen: return "screen";
+        case LightGeometry::automatic: return "auto";
     }
     return "?";
 }
@@ -225,9 +227,10 @@ DepthHandoff depth_handoff_from_name(const std::string& n) {
 }
 
 LightGeometry light_geometry_from_name(const std::string& n) {
-    for (LightGeometry g : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles})
+    for (LightGeometry g : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles,
+                            LightGeometry::screen, LightGeometry::automatic})
         if (n == light_geometry_name(g)) return g;
-    throw Error("light geometry '" + n + "': expected quad, volume, stencil or tiles");
+    throw Error("light geometry '" + n + "': expected quad, volume, stencil, tiles, screen or auto");
 }
 
 }  // namespace dsr
