@@ -1,7 +1,8 @@
 #version 120
 // Lighting pass for one light (Listing 20), of any type (lighting.glsl light_contribution:
 // point, spot, directional; Equation 2 or the attenuation law). Variants: LIGHT_POINT_ONLY (the
-// tutorial's point lights only, lighting.glsl), PACKED_DEPTH (depth from the
+// tutorial's point lights only, lighting.glsl), LIGHT_POINT_INVERSE (point lights with the
+// attenuation law only), PACKED_DEPTH (depth from the
 // RGB8 target, Listing 18 / ENC_* encodings), POSITION_TARGET (the stored eye-space position), LISTING2_LITERAL, LIGHT_DEPTH_TEST (reject
 // surfaces in front of or behind the light's sphere before shading), LIGHT_SPHERE_TEST (reject
 // surface points outside the sphere), OUTPUT_POSITION (write the
@@ -47,7 +48,7 @@ void main()
     // Beyond the tutorial: a surface outside the sphere's depth span [z-r, z+r] (background
     // included: it sits at the far plane) cannot be lit; reject it before any other work.
     // A spot's cone lies in the sphere about its apex; a directional light has no span.
-#ifdef LIGHT_POINT_ONLY
+#ifdef POINT_LIGHTS
     if (abs(pos.z - lightpos.z) > lightpos.w)
 #else
     if (lightcolor.w < 1.5 && abs(pos.z - lightpos.z) > lightpos.w)
@@ -58,7 +59,7 @@ void main()
     // A point outside the sphere gets att = 0 (Equation 2): nothing to add, so no G-buffer reads.
     // A spot adds nothing on or outside its cone either (GL_SPOT_CUTOFF).
     vec3 d = pos - lightpos.xyz;
-#ifdef LIGHT_POINT_ONLY
+#ifdef POINT_LIGHTS
     if (dot(d, d) >= lightpos.w * lightpos.w)
         discard;
 #else

@@ -41,7 +41,7 @@ void shade(int i, vec3 pos, vec3 v, vec3 normal, vec3 diffuse, vec4 specular, fl
 {
     vec4 lp = lightpos[i];
     float type = lightcolor[i].w;
-#ifdef LIGHT_POINT_ONLY
+#ifdef POINT_LIGHTS
     type = 0.0;
 #endif
 #ifdef LIGHT_DEPTH_TEST
@@ -52,7 +52,7 @@ void shade(int i, vec3 pos, vec3 v, vec3 normal, vec3 diffuse, vec4 specular, fl
     vec3 d = pos - lp.xyz;
     if (type < 1.5 && dot(d, d) >= lp.w * lp.w)
         return;
-#ifndef LIGHT_POINT_ONLY
+#ifndef POINT_LIGHTS
     if (type > 0.5 && type < 1.5 && dot(d, lightdir[i].xyz) <= length(d) * lightdir[i].w)
         return;
 #endif

@@ -10,6 +10,10 @@
 // in, the NVIDIA compiler ran forward single-pass's general-light loop (32-large) 45% slower (H200
 // at 1080p: 3.96 against 5.74 ms; docs/gpu.md, run 10), so the forward renderer asks for it on
 // GPUs where its lights need the general shader.
+#if defined(LIGHT_POINT_ONLY) || defined(LIGHT_POINT_INVERSE)
+#define POINT_LIGHTS
+#endif
+
 vec3 view_vector(vec3 p)
 {
     return -normalize(p);  // Equation 5: from p towards the viewer at the eye-space origin
@@ -55,13 +59,22 @@ vec3 lighting(vec3 Scolor, vec3 Spos, float Sradius, vec3 p, vec3 v, vec3 n, vec
 // Spot: 0 on and outside the cone (GL_SPOT_CUTOFF), inside cos(theta)^E times
 // smoothstep(cos half-angle, Lspot.x, cos theta). Directional: l = -dir, no attenuation.
 // With LIGHT_POINT_ONLY defined, the shader promises only point lights with Equation 2
-// (Lcolor.w = 0, Latt.w = 0) and gets lighting() without the selection.
+// (Lcolor.w = 0, Latt.w = 0) and gets lighting() without the selection; with LIGHT_POINT_INVERSE,
+// only point lights with the attenuation law (Lcolor.w = 0, Latt.w = 1), at the same cost.
+// POINT_LIGHTS: either promise (the callers' depth and sphere tests need no type test).
 vec3 light_contribution(vec4 Lpos, vec4 Lcolor, vec4 Ldir, vec4 Lspot, vec4 Latt,
                         vec3 p, vec3 v, vec3 n, vec3 Mdiff, vec3 Mspec, float Mshi)
 {
 #ifdef LIGHT_POINT_ONLY
     // Every light of the program is the tutorial's: Equation 2 alone, at the tutorial's cost.
     return lighting(Lcolor.rgb, Lpos.xyz, Lpos.w, p, v, n, Mdiff, Mspec, Mshi);
+#elif defined(LIGHT_POINT_INVERSE)
+    // Every light is a point light with the attenuation law: the general form's arithmetic for
+    // that case alone (the same float operations, so the same image), without the selection.
+    vec3 l = Lpos.xyz - p;
+    float dist = length(l);
+    float f = dist < Lpos.w ? 1.0 / (Latt.x + Latt.y * dist + Latt.z * dist * dist) : 0.0;
+    return f * brdf(Lcolor.rgb, l, dist, p, v, n, Mdiff, Mspec, Mshi);
 #else
     // Selects, not branches: the type and law are uniform, but a software rasteriser pays for
     // control flow; every factor is computed and the light's own one chosen (measured: branches

@@ -26,7 +26,7 @@ StencilFace counting_face(GLenum zfail) {
 class StencilGeometry final : public LightGeometryPass {
 public:
     StencilGeometry(const ShaderConfig& c, ProgramSet& programs)
-        : quads_(programs, false), prog_(programs.take("light_stencil")), faces_(c.paths.stencil_faces) {
+        : quads_(programs, false), progs_(programs, "light_stencil"), faces_(c.paths.stencil_faces) {
         // The stencil pass: no colour, no shader, depth tested (GL_LESS: a face on or behind the
         // surface fails), nothing written but the stencil.
         mark_.color_write = false;
@@ -47,7 +47,7 @@ public:
         mark_front_.cull_face = GL_BACK;
         // The light pass: back faces (each pixel of the volume's outline once), where the stencil
         // is non-zero; the pass zeroes what it passes, so every light starts from a clear stencil.
-        light_ = light_pass_state(prog_.id(), false);
+        light_ = light_pass_state(0, false);  // the light's program per light
         light_.cull = true;
         light_.cull_face = GL_FRONT;
         light_.stencil_test = true;
@@ -61,7 +61,7 @@ public:
 
     void draw(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats) override {
         meshes_.draw_quads_past_far(f, quads_, q, stats);
-        set_light_uniforms(prog_, f);
+        progs_.begin(f);
         meshes_.begin(f);
         for (const LightDraw& l : f.lights) {
             if (meshes_.past_far(f, l)) continue;
@@ -74,15 +74,17 @@ public:
                 gl_state().apply(mark_);
                 meshes_.draw(l);
             }
+            Program& prog = progs_[l.shader()];
+            light_.program = prog.id();
             gl_state().apply(light_);
-            meshes_.shade(l, prog_, q, stats);
+            meshes_.shade(l, prog, q, stats);
         }
     }
 
 private:
     LightQuads quads_;
     LightMeshes meshes_;
-    Program prog_;
+    LightPrograms progs_;
     Paths::StencilFaces faces_;
     RenderState mark_, mark_back_, mark_front_, light_;
 };

@@ -38,8 +38,7 @@ double wall_ms(F&& f) {
 class TilesGeometry final : public LightGeometryPass {
 public:
     TilesGeometry(const ShaderConfig& c, ProgramSet& programs, int width, int height)
-        : prog_(programs.take("light_tiles")),
-          point_prog_(programs.take("light_tiles_point")),
+        : progs_(programs, "light_tiles"),
           tile_size_(c.opts.tile_size),
           tile_lights_(c.opts.tile_lights),
           batch_(c.tile_batch),
@@ -73,7 +72,7 @@ public:
         std::vector<ScissorRect> rects(f.lights.size());
         for (size_t i = 0; i < f.lights.size(); ++i) rects[i] = f.lights[i].rect;
 
-        Program& prog = begin_draws(f);
+        begin_draws(f);
         uploads_ = 0;
         stats.light_passes = 0;
         stats.tile_light_pairs = 0;
@@ -82,7 +81,7 @@ public:
             plan_ms += wall_ms([&] { plan = plan_tile_groups(rects, f.width, f.height, tile_size_, tile_lights_, cull); });
             for (const TileDraw& d : plan.draws) {
                 plan_ms += wall_ms([&] { upload(&d, 1); });
-                draw_batch(f, prog, plan.batches[size_t(d.batch)], q, stats);
+                draw_batch(f, plan.batches[size_t(d.batch)], q, stats);
             }
             stats.tile_light_pairs = plan.tile_light_pairs;
         } else {
@@ -99,7 +98,7 @@ public:
                     stats.tile_light_pairs += planner->plan_batch(b, draws_);
                     upload(draws_.data(), draws_.size());
                 });
-                draw_batch(f, prog, planner->batches()[size_t(b)], q, stats);
+                draw_batch(f, planner->batches()[size_t(b)], q, stats);
                 glFlush();
             }
         }
@@ -127,22 +126,21 @@ private:
         return &depth;
     }
 
-    // The program, its frame uniforms, state, pixel camera and client arrays for the draws. The
-    // tutorial's cheaper point-light shader where every light of the frame allows it (as quad picks
-    // per light): the general one evaluates every type's terms for every light.
-    Program& begin_draws(const FrameDef& f) {
-        const bool point_only = std::all_of(f.lights.begin(), f.lights.end(), [](const LightDraw& l) { return l.tutorial(); });
-        Program& prog = point_only ? point_prog_ : prog_;
+    // The programs' frame uniforms, the pixel camera and client arrays for the draws. Each batch
+    // is drawn by the form of the light program its lights allow (LightPrograms::common): the
+    // general one evaluates every type's terms for every light.
+    void begin_draws(const FrameDef& f) {
         gl_state().set_camera(f.pixels());
-        set_light_uniforms(prog, f);
-        prog.set("quantize_round", round_);  // ignored (optimised away) without QUANTIZE_8BIT
-        gl_state().apply(light_pass_state(prog.id(), false));
+        progs_.begin(f);
+        for (LightShader k : {LightShader::point_linear, LightShader::point_inverse, LightShader::any}) {
+            progs_[k].use();
+            progs_[k].set("quantize_round", round_);  // ignored (optimised away) without QUANTIZE_8BIT
+        }
         glEnableClientState(GL_VERTEX_ARRAY);
         for (int k = 0; k < id_vecs_; ++k) {
             glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
             glEnableClientState(GL_TEXTURE_COORD_ARRAY);
         }
-        return prog;
     }
 
     void end_draws() {
@@ -186,7 +184,9 @@ private:
 
     // The uploaded draws: the batch's lights into the uniform arrays (lighting.glsl's five vec4s
     // per light, one array each), then one draw per layer, each counted.
-    void draw_batch(const FrameDef& f, Program& prog, const std::vector<int>& batch, LightQueries& q, FrameStats& stats) {
+    void draw_batch(const FrameDef& f, const std::vector<int>& batch, LightQueries& q, FrameStats& stats) {
+        Program& prog = progs_[LightPrograms::common(f, batch)];
+        gl_state().apply(light_pass_state(prog.id(), false));
         const GLsizei bytes = GLsizei(stride_ * sizeof(float));
         auto at = [](int fl) { return reinterpret_cast<const void*>(size_t(fl) * sizeof(float)); };  // buffer offsets
         glVertexPointer(2, GL_FLOAT, bytes, at(0));
@@ -216,7 +216,7 @@ private:
         stats.light_passes += int(n_draws);
     }
 
-    Program prog_, point_prog_;
+    LightPrograms progs_;
     int tile_size_, tile_lights_, batch_;
     bool groups_;
     int id_vecs_, stride_;

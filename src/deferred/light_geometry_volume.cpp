@@ -16,29 +16,31 @@ namespace {
 class VolumeGeometry final : public LightGeometryPass {
 public:
     VolumeGeometry(const ShaderConfig& c, ProgramSet& programs)
-        : quads_(programs, false), prog_(programs.take("light_volume")) {}
+        : quads_(programs, false), progs_(programs, "light_volume") {}
 
     void draw(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats) override {
         meshes_.draw_quads_past_far(f, quads_, q, stats);
-        set_light_uniforms(prog_, f);
+        progs_.begin(f);
         meshes_.begin(f);
-        RenderState s = light_pass_state(prog_.id(), false);
+        RenderState s = light_pass_state(0, false);
         s.cull = true;
         s.cull_face = GL_FRONT;  // back faces only: the camera may be inside
         s.depth_test = true;
         s.depth_func = GL_GREATER;  // the volume's far side behind the scene surface
         s.depth_write = false;
-        gl_state().apply(s);
         for (const LightDraw& l : f.lights) {
             if (meshes_.past_far(f, l)) continue;
-            meshes_.shade(l, prog_, q, stats);
+            Program& prog = progs_[l.shader()];
+            s.program = prog.id();
+            gl_state().apply(s);
+            meshes_.shade(l, prog, q, stats);
         }
     }
 
 private:
     LightQuads quads_;
     LightMeshes meshes_;
-    Program prog_;
+    LightPrograms progs_;
 };
 
 }  // namespace

@@ -45,17 +45,33 @@ float window_depth(float z, glm::vec2 planes) { return (planes.x * z + planes.y)
 
 }  // namespace
 
-LightQuads::LightQuads(ProgramSet& programs, bool depth_bounds)
-    : point_(programs.take("light_point")), any_(programs.take("light")), depth_bounds_(depth_bounds) {}
+LightPrograms::LightPrograms(ProgramSet& programs, const std::string& family) {
+    forms_[int(LightShader::point_linear)] = programs.take(family + "_point");
+    forms_[int(LightShader::point_inverse)] = programs.take(family + "_point_inverse");
+    forms_[int(LightShader::any)] = programs.take(family);
+}
+
+void LightPrograms::begin(const FrameDef& f) {
+    for (Program& p : forms_) set_light_uniforms(p, f);
+}
+
+LightShader LightPrograms::common(const FrameDef& f, const std::vector<int>& lights) {
+    if (lights.empty()) return LightShader::any;
+    const LightShader first = f.lights[size_t(lights[0])].shader();
+    for (int i : lights)
+        if (f.lights[size_t(i)].shader() != first) return LightShader::any;
+    return first;
+}
+
+LightQuads::LightQuads(ProgramSet& programs, bool depth_bounds) : progs_(programs, "light"), depth_bounds_(depth_bounds) {}
 
 void LightQuads::begin(const FrameDef& f) {
     gl_state().set_camera(f.pixels());
-    set_light_uniforms(any_, f);
-    set_light_uniforms(point_, f);
+    progs_.begin(f);
 }
 
 void LightQuads::draw(const FrameDef& f, const LightDraw& l, LightQueries& q) {
-    Program& prog = l.tutorial() ? point_ : any_;
+    Program& prog = progs_[l.shader()];
     RenderState s = light_pass_state(prog.id(), !l.full);
     if (!l.full) glScissor(l.rect.x0, l.rect.y0, l.rect.x1 - l.rect.x0, l.rect.y1 - l.rect.y0);  // set_light_scissor
     if (depth_bounds_ && l.eye.kind != LightVolume::Kind::full_screen) {

@@ -3,6 +3,9 @@
 // scissored quad per light (Listings 16-17), which the quad geometry draws for every light and
 // the volume geometries for the lights their mesh cannot serve.
 #pragma once
+#include <string>
+#include <vector>
+
 #include "deferred/frame.h"
 #include "deferred/light_queries.h"
 #include "deferred/shader_table.h"
@@ -20,8 +23,23 @@ void set_light_uniforms(Program& prog, const FrameDef& f);
 // set_light_params: one light as lighting.glsl's five vec4s (light_params.h).
 void set_light_params(Program& prog, const LightParams& lp);
 
-// The light's quad over its scissor rectangle, through "light_point" for the tutorial's point
-// lights and "light" for the others.
+// A light program in its three forms (the shader table's rows FAMILY, FAMILY_point and
+// FAMILY_point_inverse): each light is drawn by the form of its LightShader, so the type and law
+// selection is paid only by the lights that need it.
+class LightPrograms {
+public:
+    LightPrograms(ProgramSet& programs, const std::string& family);
+    // set_light_uniforms on every form, before a frame's first draw.
+    void begin(const FrameDef& f);
+    Program& operator[](LightShader s) { return forms_[int(s)]; }
+    // The form that serves every light of `lights` (indices into f.lights): their common one, else any.
+    static LightShader common(const FrameDef& f, const std::vector<int>& lights);
+
+private:
+    Program forms_[3];  // LightShader's order: point_linear, point_inverse, any
+};
+
+// The light's quad over its scissor rectangle, through the light's form of "light".
 class LightQuads {
 public:
     // depth_bounds: EXT_depth_bounds_test on each quad (Paths::depth_bounds).
@@ -32,7 +50,7 @@ public:
     void draw(const FrameDef& f, const LightDraw& l, LightQueries& q);
 
 private:
-    Program point_, any_;
+    LightPrograms progs_;
     bool depth_bounds_;
 };
 

@@ -19,7 +19,7 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
     c.opts = asked;
     c.opts.depth = c.paths.depth_path;
     c.opts.tile_size = c.paths.tile_size, c.opts.tile_lights = c.paths.tile_lights;  // auto resolved
-    if (c.paths.light_geometry != LightGeometry::tiles) return c;
+    if (c.paths.light_geometry != LightGeometry::tiles && c.paths.light_geometry != LightGeometry::automatic) return c;
     // The batch the uniform arrays hold: five vec4s a light within the fragment stage's uniform
     // budget (GL 2.0 guarantees 64 vec4s; llvmpipe and NVIDIA give 1024), a few vec4s kept for the
     // other uniforms, and below tile_plan's empty-slot index 255.
@@ -107,10 +107,22 @@ Defines aa_defines(const ShaderConfig& c) {
 bool always(const ShaderConfig&) { return true; }
 bool material_variants(const ShaderConfig& c) { return c.opts.skip.material_variants; }
 bool geometry_is(const ShaderConfig& c, LightGeometry g) { return c.paths.light_geometry == g; }
+bool is_auto(const ShaderConfig& c) { return geometry_is(c, LightGeometry::automatic); }
+// Which geometries draw with which programs: volume and stencil draw the lights their meshes
+// cannot serve as quads; auto draws each light as a quad, a volume or in tiles.
+bool uses_quads(const ShaderConfig& c) {
+    return geometry_is(c, LightGeometry::quad) || geometry_is(c, LightGeometry::volume) ||
+           geometry_is(c, LightGeometry::stencil) || is_auto(c);
+}
+bool uses_volume(const ShaderConfig& c) { return geometry_is(c, LightGeometry::volume) || is_auto(c); }
+bool uses_stencil(const ShaderConfig& c) { return geometry_is(c, LightGeometry::stencil); }
+bool uses_tiles(const ShaderConfig& c) { return geometry_is(c, LightGeometry::tiles) || is_auto(c); }
+Defines point_linear(Defines d) { return with(std::move(d), {"LIGHT_POINT_ONLY"}); }
+Defines point_inverse(Defines d) { return with(std::move(d), {"LIGHT_POINT_INVERSE"}); }
 // The tiles' depth spans need a float target behind a framebuffer object; without them the plan
 // runs without depth culling.
 bool tile_depth(const ShaderConfig& c) {
-    return geometry_is(c, LightGeometry::tiles) && c.opts.tile_depth && c.caps.fbo && c.caps.texture_float && c.paths.fbo;
+    return uses_tiles(c) && c.opts.tile_depth && c.caps.fbo && c.caps.texture_float && c.paths.fbo;
 }
 
 std::string tile_size(const ShaderConfig& c) { return "TILE_SIZE " + std::to_string(c.opts.tile_size); }
@@ -130,29 +142,39 @@ const std::vector<ShaderRow>& shader_rows() {
          [](C c) { return depth_defines(c); }, true},
         {"material_flat_no_specular", "material.vert", "material.frag", "G-buffer, no normal map, no specular",
          material_variants, [](C c) { return with(depth_defines(c), {"NO_SPECULAR"}); }, true},
-        // Lighting stage (§3.4): the light pass for spot, directional and attenuated lights, and the
-        // tutorial's point lights with Equation 2 (LIGHT_POINT_ONLY: no type or law selection).
-        {"light", "light.vert", "light.frag", "light pass, any light (Listing 20)",
-         [](C c) { return !geometry_is(c, LightGeometry::tiles); }, [](C c) { return light_defines(c); }},
-        {"light_point", "light.vert", "light.frag", "light pass, the tutorial's point lights",
-         [](C c) { return !geometry_is(c, LightGeometry::tiles); },
-         [](C c) { return with(light_defines(c), {"LIGHT_POINT_ONLY"}); }},
-        {"light_volume", "light.vert", "light.frag", "light pass over a volume mesh",
-         [](C c) { return geometry_is(c, LightGeometry::volume) || geometry_is(c, LightGeometry::stencil); },
+        // Lighting stage (§3.4): each light program in three forms (LightShader, light_pass.h
+        // LightPrograms), so a light pays only for its own type and law: any light (type and law
+        // selected per pixel), the tutorial's point lights with Equation 2 (LIGHT_POINT_ONLY), and
+        // point lights with the attenuation law (LIGHT_POINT_INVERSE).
+        {"light", "light.vert", "light.frag", "light pass, any light (Listing 20)", uses_quads,
+         [](C c) { return light_defines(c); }},
+        {"light_point", "light.vert", "light.frag", "light pass, the tutorial's point lights", uses_quads,
+         [](C c) { return point_linear(light_defines(c)); }},
+        {"light_point_inverse", "light.vert", "light.frag", "light pass, point lights, attenuation law", uses_quads,
+         [](C c) { return point_inverse(light_defines(c)); }},
+        {"light_volume", "light.vert", "light.frag", "light pass over a volume mesh", uses_volume,
          [](C c) { return with(light_defines(c), {"VOLUME"}); }},
+        {"light_volume_point", "light.vert", "light.frag", "volume mesh, the tutorial's point lights", uses_volume,
+         [](C c) { return point_linear(with(light_defines(c), {"VOLUME"})); }},
+        {"light_volume_point_inverse", "light.vert", "light.frag", "volume mesh, point lights, attenuation law",
+         uses_volume, [](C c) { return point_inverse(with(light_defines(c), {"VOLUME"})); }},
         // Behind the stencil test the in-shader rejections are redundant (the stencil marks surfaces
         // inside the volume) and harmful: a shader that may discard, in a pass that writes the
         // stencil (zeroing it for the next light), makes the GPU test the stencil after the shader
         // instead of before it (the H200 ran the shader for 2.40x the ideal count with them).
         // Without them a pixel just outside the sphere adds att = 0.
-        {"light_stencil", "light.vert", "light.frag", "light pass behind the stencil mask",
-         [](C c) { return geometry_is(c, LightGeometry::stencil); },
+        {"light_stencil", "light.vert", "light.frag", "light pass behind the stencil mask", uses_stencil,
          [](C c) { return with(light_defines(c, false), {"VOLUME"}); }},
-        {"light_tiles", "light.vert", "light_tiles.frag", "tiles: several lights a pass, any type",
-         [](C c) { return geometry_is(c, LightGeometry::tiles); }, tiles_defines},
-        {"light_tiles_point", "light.vert", "light_tiles.frag", "tiles: the tutorial's point lights",
-         [](C c) { return geometry_is(c, LightGeometry::tiles); },
-         [](C c) { return with(tiles_defines(c), {"LIGHT_POINT_ONLY"}); }},
+        {"light_stencil_point", "light.vert", "light.frag", "stencil mask, the tutorial's point lights", uses_stencil,
+         [](C c) { return point_linear(with(light_defines(c, false), {"VOLUME"})); }},
+        {"light_stencil_point_inverse", "light.vert", "light.frag", "stencil mask, point lights, attenuation law",
+         uses_stencil, [](C c) { return point_inverse(with(light_defines(c, false), {"VOLUME"})); }},
+        {"light_tiles", "light.vert", "light_tiles.frag", "tiles: several lights a pass, any type", uses_tiles,
+         tiles_defines},
+        {"light_tiles_point", "light.vert", "light_tiles.frag", "tiles: the tutorial's point lights", uses_tiles,
+         [](C c) { return point_linear(tiles_defines(c)); }},
+        {"light_tiles_point_inverse", "light.vert", "light_tiles.frag", "tiles: point lights, attenuation law",
+         uses_tiles, [](C c) { return point_inverse(tiles_defines(c)); }},
         {"tile_depth", "post.vert", "tile_depth.frag", "tiles: each tile column's depth span per row", tile_depth,
          [](C c) { return with(depth_defines(c), {tile_size(c)}); }},
         {"tile_depth_reduce", "post.vert", "tile_depth_reduce.frag", "tiles: a tile's rows together", tile_depth,
