@@ -74,7 +74,9 @@ int cmd_figures(const std::vector<std::string>& argv) {
     };
     const int cx = n * 300 / 512, cy = n * 220 / 512, cs = n / 4;  // close-up: the red ball's rim on the floor
 
+    // The tutorial's figures with the tutorial's light pass: one scissored quad per light (§3.4.2).
     ShaderOptions plain;
+    plain.light_geometry = LightGeometry::quad;
     ShaderOptions packed = plain;
     packed.depth = DepthPath::packed;
     frame(packed, [&](DeferredShader& ds) {  // Figure 4: the G-buffer of the packed path
@@ -132,7 +134,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
     if (default_scene) {
         const Scene ts = load_scene(resource_dir("data") + "/transparency.scene");
         add_scene_inputs(outputs, ts.inputs);
-        ShaderOptions o;
+        ShaderOptions o = plain;
         o.post.bloom = o.post.aa = true;  // the scene's `post bloom aa`
         o.show_lights = true;
         DeferredShader ds(caps, n, n, o, shaders);
@@ -156,7 +158,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
             throw;
         }
         std::filesystem::remove_all(tmpl);  // the maps are in memory now
-        ShaderOptions o;
+        ShaderOptions o = plain;
         o.post.aa = true;
         DeferredShader ds(caps, n, n, o, shaders);
         ds.set_scene(wm);

@@ -4,6 +4,7 @@
 
 #include "app/command_table.h"
 #include "app/commands.h"
+#include "deferred/light_cost.h"
 #include "deferred/paths.h"
 #include "deferred/shader_table.h"
 #include "gl/caps.h"
@@ -48,6 +49,11 @@ int cmd_info(const std::vector<std::string>& argv) {
     const Paths tp = choose_paths(caps, tiles);
     std::printf("  --light-geometry tiles: %d-pixel tiles, %d lights a pass (auto: %s)\n", tp.tile_size, tp.tile_lights,
                 caps.software_rasterizer ? "a CPU rasteriser's" : "a GPU's");
+    std::printf("  --light-geometry auto: each light by the cheapest path; the cost model's constants (%s),\n"
+                "  each path's scaled by what its passes took in the frames before%s:\n%s",
+                caps.software_rasterizer ? "a CPU rasteriser's" : "a GPU's",
+                caps.software_rasterizer ? "" : " (on a CPU rasteriser only; here the constants as they are)",
+                describe(default_light_costs(caps.software_rasterizer)).c_str());
     std::printf("  --depth-bounds on: %s\n", caps.depth_bounds ? "EXT_depth_bounds_test" : "refused (no EXT_depth_bounds_test)");
     std::printf("  --render-target pbuffer: %s\n",
                 offscreen_surfaces() ? ("EGL pbuffer surfaces; " + offscreen_surfaces()->bind_tex_image_note()).c_str()

@@ -116,7 +116,14 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["light_geometry_asked"] = light_geometry_name(opts.light_geometry);
     if (!paths.light_geometry_note.empty()) j["light_geometry_note"] = paths.light_geometry_note;
     if (paths.light_geometry == LightGeometry::stencil) j["stencil_faces"] = stencil_faces_name(paths.stencil_faces);
-    if (paths.light_geometry == LightGeometry::tiles) j["tiles"] = {{"size", paths.tile_size}, {"lights_per_pass", paths.tile_lights}, {"tile_light_pairs", last.tile_light_pairs}, {"depth_culling", last.tile_depth}, {"depth_ms", last.tile_depth_ms}, {"plan_ms", last.tile_plan_ms}};
+    if (paths.light_geometry == LightGeometry::tiles || paths.light_geometry == LightGeometry::automatic)
+        j["tiles"] = {{"size", paths.tile_size}, {"lights_per_pass", paths.tile_lights}, {"tile_light_pairs", last.tile_light_pairs}, {"depth_culling", last.tile_depth}, {"depth_ms", last.tile_depth_ms}, {"plan_ms", last.tile_plan_ms}};
+    if (last.auto_geometry)  // what the cost model chose (light_cost.h), against the light stage as measured
+        j["auto"] = {{"lights", {{"quad", last.auto_lights[0]}, {"volume", last.auto_lights[1]}, {"tiles", last.auto_lights[2]}}},
+                     {"depth_spans", last.auto_spans},
+                     {"predicted_lights_ms", last.auto_predicted_ms},
+                     {"measured_lights_ms", last.ms.lights},
+                     {"scale", {{"quad", last.auto_scale[0]}, {"volume", last.auto_scale[1]}, {"tiles", last.auto_scale[2]}}}};
     j["depth_bounds"] = paths.depth_bounds;
     j["light_passes"] = last.light_passes;
     // The depth hand-off as run (docs/forward.md) (null: nothing needed it) and the forward stage's work.

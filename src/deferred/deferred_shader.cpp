@@ -124,7 +124,11 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
     const int units[4] = {0, 1, 2, 3};
     const int gbuffer[4] = {G_NORMAL, G_DIFFUSE, G_SPECULAR, depth_target(config_.opts.depth)};
     for (int i = 0; i < 4; ++i) mrt_bind_texture(gbuffer[i], units[i]);  // mrt_bind_texture(ALL)
-    if (config_.paths.accum_depth) {
+    // The light geometry's plan for the frame first (the auto geometry's depth spans, timed with
+    // the light passes): whether its lights need the scene's depth decides the hand-off.
+    bool lights_need_depth = false;
+    timed(timer_, S_LIGHTS, [&] { lights_need_depth = lighting_->prepare(f, *targets_, st); });
+    if (config_.paths.accum_depth && (lights_need_depth || config_.paths.forward_stage || config_.paths.depth_bounds)) {
         timed(timer_, S_DEPTH_COPY, [&] { lighting_->hand_off_depth(f, *targets_); });
         check_gl_stage("lighting stage: depth hand-off");
     }

@@ -46,6 +46,14 @@ struct FrameStats {
     // tiles, wall clock inside the light stage: the depth spans' two passes and read-back (which
     // waits for the G-buffer: on a GPU, a pipeline drain), and the plan with its vertices' upload.
     double tile_depth_ms = 0, tile_plan_ms = 0;
+    // --light-geometry auto (light_cost.h): the lights each path took (quad, volume, tiles), what
+    // the model predicted for the light stage (ms, the spans included), whether it measured the
+    // tiles' depth spans, and each path's calibration scale as used.
+    bool auto_geometry = false;
+    int auto_lights[3] = {0, 0, 0};
+    double auto_predicted_ms = 0;
+    bool auto_spans = false;
+    double auto_scale[3] = {1, 1, 1};
     // The forward stage (docs/forward.md): markers drawn, transparent objects blended and their draws.
     int light_markers = 0;
     int transparent_objects = 0;

@@ -4,6 +4,7 @@
 //   volume   light_geometry_volume.cpp   the back faces of the light's volume mesh
 //   stencil  light_geometry_stencil.cpp  the volume masked by a stencil pass
 //   tiles    light_geometry_tiles.cpp    screen tiles, several lights a pass (§3.4.3's closing remark)
+//   auto     light_geometry_auto.cpp     each light by the cheapest of quad, volume and tiles
 // A geometry draws; whether the frame is counted, and how long it took, is decided outside it
 // (LightingStage::draw_lighting, DeferredShader's timer). A fifth geometry is a new file, a line
 // in make_light_geometry and its name in the options (options.h, option_table.cpp), with the rows
@@ -28,6 +29,10 @@ public:
     // light shader sits between q.begin() and q.end(); the passes go into stats (light_passes,
     // lights_as_quads, the tiles' plan). States every piece of GL state it needs, camera included.
     virtual void draw(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats) = 0;
+    // Once a frame before the depth hand-off, with the G-buffer bound as textures (units 0-3) and
+    // P-buffer 0 for rendering: whether this frame's lights need the scene's depth in P-buffer 0
+    // (where Paths::accum_depth gives it one). The auto geometry makes its plan for f here.
+    virtual bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) { return true; }
     // The deferred buffers' new size, for what a geometry keeps at that size (the tiles' spans).
     virtual void resize(int width, int height) {}
 };

@@ -10,7 +10,7 @@
 // A frame is: cull (the depth spans and the tiles' boxes), then per batch plan, upload and draw.
 #include <algorithm>
 
-#include "deferred/light_geometry.h"
+#include "deferred/light_geometry_tiles.h"
 #include "deferred/light_pass.h"
 #include "deferred/tile_depth.h"
 #include "dsr_clock.h"
@@ -35,7 +35,7 @@ double wall_ms(F&& f) {
     return now_ms() - t;
 }
 
-class TilesGeometry final : public LightGeometryPass {
+class TilesGeometry final : public TilesPass {
 public:
     TilesGeometry(const ShaderConfig& c, ProgramSet& programs, int width, int height)
         : progs_(programs, "light_tiles"),
@@ -55,26 +55,57 @@ public:
     }
 
     void draw(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats) override {
+        const std::vector<DepthSpan> spans = depth_spans(f, targets, stats);
+        TileDepth depth;
+        const TileDepth* cull = nullptr;
+        stats.tile_plan_ms += wall_ms([&] { cull = tile_boxes(f, spans, depth); });
+        draw_lights(f, cull, q, stats);
+    }
+
+    bool depth_culling() const override { return depth_ != nullptr; }
+    int tile_size() const override { return tile_size_; }
+    int lights_per_pass() const override { return tile_lights_; }
+
+    std::vector<DepthSpan> depth_spans(const FrameDef& f, RenderTargets& targets, FrameStats& stats) override {
         // The spans' passes draw into buffers of their own: P-buffer 0 unbound around them (it
         // keeps its contents: the spans need framebuffer objects).
         std::vector<DepthSpan> spans;
         if (depth_)
-            stats.tile_depth_ms = wall_ms([&] {
+            stats.tile_depth_ms += wall_ms([&] {
                 targets.fb_unbind_render(P_ACCUM);
                 spans = depth_->spans(f);
                 targets.fb_bind_render(P_ACCUM);
             });
+        return spans;
+    }
+
+    // Depth culling: most of a tile's rectangle-overlapping lights lie in front of or behind all of
+    // its surfaces (1024-overlap at 256x256: 6.6M tile-pixel-light pairs from the rectangles, 0.6M
+    // pixel-light pairs inside a sphere). Null without spans.
+    const TileDepth* tile_boxes(const FrameDef& f, const std::vector<DepthSpan>& spans, TileDepth& depth) const override {
+        if (spans.empty()) return nullptr;
+        const int ts = tile_size_, tx = (f.width + ts - 1) / ts;
+        for (size_t t = 0; t < spans.size(); ++t) {
+            const int x = int(t) % tx, y = int(t) / tx;
+            depth.tiles.push_back(tile_box(spans[t], float(x * ts), float(y * ts), float(std::min(f.width, (x + 1) * ts)),
+                                           float(std::min(f.height, (y + 1) * ts)), f.ray_map, xy_slack_));
+        }
+        depth.lights.resize(f.lights.size());
+        for (size_t i = 0; i < f.lights.size(); ++i) {
+            const LightParams& p = f.lights[i].params;
+            if (p.color.w < 1.5f) depth.lights[i] = LightBound{glm::vec3(p.pos), p.pos.w};  // directional: unbounded
+        }
+        return &depth;
+    }
+
+    void draw_lights(const FrameDef& f, const TileDepth* cull, LightQueries& q, FrameStats& stats) override {
         double plan_ms = 0;
-        TileDepth depth;
-        const TileDepth* cull = nullptr;
-        plan_ms += wall_ms([&] { cull = tile_boxes(f, spans, depth); });
         stats.tile_depth = cull != nullptr;
         std::vector<ScissorRect> rects(f.lights.size());
         for (size_t i = 0; i < f.lights.size(); ++i) rects[i] = f.lights[i].rect;
 
         begin_draws(f);
         uploads_ = 0;
-        stats.light_passes = 0;
         stats.tile_light_pairs = 0;
         if (groups_) {
             TilePlan plan;
@@ -85,8 +116,8 @@ public:
             }
             stats.tile_light_pairs = plan.tile_light_pairs;
         } else {
-            // Batch by batch (tile_plan.h TilePlanner): the GL shades a batch while the CPU plans
-            // the next; the flush after each hands the batch over instead of holding it until the
+            // Batch by batch (tile_plan.h TilePlanner): the GL shades a batch while the CPU plans the
+            // next; the flush after each hands the batch over instead of holding it until the
             // buffer fills.
             std::unique_ptr<TilePlanner> planner;
             plan_ms += wall_ms([&] {
@@ -103,29 +134,10 @@ public:
             }
         }
         end_draws();
-        stats.tile_plan_ms = plan_ms;
+        stats.tile_plan_ms += plan_ms;
     }
 
 private:
-    // Depth culling: most of a tile's rectangle-overlapping lights lie in front of or behind all of
-    // its surfaces (1024-overlap at 256x256: 6.6M tile-pixel-light pairs from the rectangles, 0.6M
-    // pixel-light pairs inside a sphere). Null without spans.
-    const TileDepth* tile_boxes(const FrameDef& f, const std::vector<DepthSpan>& spans, TileDepth& depth) const {
-        if (spans.empty()) return nullptr;
-        const int ts = tile_size_, tx = (f.width + ts - 1) / ts;
-        for (size_t t = 0; t < spans.size(); ++t) {
-            const int x = int(t) % tx, y = int(t) / tx;
-            depth.tiles.push_back(tile_box(spans[t], float(x * ts), float(y * ts), float(std::min(f.width, (x + 1) * ts)),
-                                           float(std::min(f.height, (y + 1) * ts)), f.ray_map, xy_slack_));
-        }
-        depth.lights.resize(f.lights.size());
-        for (size_t i = 0; i < f.lights.size(); ++i) {
-            const LightParams& p = f.lights[i].params;
-            if (p.color.w < 1.5f) depth.lights[i] = LightBound{glm::vec3(p.pos), p.pos.w};  // directional: unbounded
-        }
-        return &depth;
-    }
-
     // The programs' frame uniforms, the pixel camera and client arrays for the draws. Each batch
     // is drawn by the form of the light program its lights allow (LightPrograms::common): the
     // general one evaluates every type's terms for every light.
@@ -234,9 +246,13 @@ private:
 
 }  // namespace
 
+std::unique_ptr<TilesPass> make_tiles_pass(const ShaderConfig& c, ProgramSet& programs, int width, int height) {
+    return std::make_unique<TilesGeometry>(c, programs, width, height);
+}
+
 std::unique_ptr<LightGeometryPass> make_tiles_geometry(const ShaderConfig& c, ProgramSet& programs, int width,
                                                        int height) {
-    return std::make_unique<TilesGeometry>(c, programs, width, height);
+    return make_tiles_pass(c, programs, width, height);
 }
 
 }  // namespace dsr

@@ -21,20 +21,10 @@ public:
     void draw(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats) override {
         meshes_.draw_quads_past_far(f, quads_, q, stats);
         progs_.begin(f);
-        meshes_.begin(f);
-        RenderState s = light_pass_state(0, false);
-        s.cull = true;
-        s.cull_face = GL_FRONT;  // back faces only: the camera may be inside
-        s.depth_test = true;
-        s.depth_func = GL_GREATER;  // the volume's far side behind the scene surface
-        s.depth_write = false;
-        for (const LightDraw& l : f.lights) {
-            if (meshes_.past_far(f, l)) continue;
-            Program& prog = progs_[l.shader()];
-            s.program = prog.id();
-            gl_state().apply(s);
-            meshes_.shade(l, prog, q, stats);
-        }
+        std::vector<const LightDraw*> lights;
+        for (const LightDraw& l : f.lights)
+            if (!meshes_.past_far(f, l)) lights.push_back(&l);
+        meshes_.shade_volumes(f, lights, progs_, q, stats);
     }
 
 private:

@@ -77,4 +77,21 @@ void LightMeshes::shade(const LightDraw& l, Program& prog, LightQueries& q, Fram
     ++stats.light_passes;
 }
 
+void LightMeshes::shade_volumes(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightPrograms& progs,
+                                LightQueries& q, FrameStats& stats) const {
+    begin(f);
+    RenderState s = light_pass_state(0, false);
+    s.cull = true;
+    s.cull_face = GL_FRONT;  // back faces only: the camera may be inside
+    s.depth_test = true;
+    s.depth_func = GL_GREATER;  // the volume's far side behind the scene surface
+    s.depth_write = false;
+    for (const LightDraw* l : lights) {
+        Program& prog = progs[l->shader()];
+        s.program = prog.id();
+        gl_state().apply(s);
+        shade(*l, prog, q, stats);
+    }
+}
+
 }  // namespace dsr

@@ -25,6 +25,11 @@ public:
     // The light's shading pass over its mesh with `prog` (bound, its state applied): parameters,
     // the mesh inside the light's queries, one light pass counted.
     void shade(const LightDraw& l, Program& prog, LightQueries& q, FrameStats& stats) const;
+    // The volume geometry's light passes (light_geometry_volume.cpp) for `lights` (none past far):
+    // back faces, depth test GL_GREATER against the scene's depth in P-buffer 0, each light with
+    // its form of `progs`, whose frame uniforms begin() set.
+    void shade_volumes(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightPrograms& progs,
+                       LightQueries& q, FrameStats& stats) const;
 
 private:
     VolumeMesh unit_sphere_;  // volume_mesh of the unit sphere at the origin

@@ -39,6 +39,10 @@ public:
     void draw_ambient(const FrameDef& f, const Scene& scene, RenderTargets& targets, const SsaoStage* ssao);
     // hand_off_depth (depth_handoff.h), with the G-buffer bound as textures.
     void hand_off_depth(const FrameDef& f, RenderTargets& targets);
+    // Before the depth hand-off, with the G-buffer bound as textures and P-buffer 0 for rendering:
+    // the light geometry's plan for f (LightGeometryPass::prepare); whether its lights need the
+    // scene's depth in P-buffer 0.
+    bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) { return geometry_->prepare(f, targets, stats); }
     // Listing 17: the frame's visible lights added into P-buffer 0 by the light geometry, with the
     // G-buffer bound as textures (units 0-3); counted when counting is on and the GL can.
     void draw_lighting(const FrameDef& f, RenderTargets& targets, FrameStats& stats);

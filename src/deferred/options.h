@@ -104,7 +104,8 @@ struct ShaderOptions {
     // targets (ARB_texture_float + ARB_half_float_pixel) where 8-bit normals are the largest
     // error of the deferred image.
     bool gbuffer_half = false;
-    LightGeometry light_geometry = LightGeometry::quad;
+    // auto: each light by its cheapest path (light_cost.h); quad is the tutorial's (§3.4.2).
+    LightGeometry light_geometry = LightGeometry::automatic;
     bool depth_bounds = false;      // EXT_depth_bounds_test on the quad passes (refused where missing)
     // tiles: pixels per side and lights per pass (the shader's constant loop bound); 0 is auto,
     // resolved by choose_paths (Paths::tile_size, tile_lights) from the GL: on a CPU rasteriser 16

@@ -83,7 +83,9 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     p.depth_bounds = opts.depth_bounds && p.light_geometry == LightGeometry::quad;
     p.accum_stencil = p.light_geometry == LightGeometry::stencil;
     p.forward_stage = opts.show_lights || opts.forward_surfaces;
+    // auto: the hand-off runs in the frames where it draws some lights as volumes.
     p.accum_depth = p.light_geometry == LightGeometry::volume || p.light_geometry == LightGeometry::stencil ||
+                    p.light_geometry == LightGeometry::automatic ||
                     p.depth_bounds || p.forward_stage;
     // The blit copies between two framebuffer objects (the copy and pbuffer targets have none),
     // and only between depth buffers of one format: EXT_framebuffer_blit makes a depth blit between
@@ -125,7 +127,7 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     else if (opts.depth_handoff == DepthHandoff::blit && p.accum_stencil)
         p.refused = "--depth-handoff blit: the stencil geometry's depth-stencil buffer and the G-buffer's depth differ in "
                     "format, and a depth blit between them is INVALID_OPERATION (use --depth-handoff pass or auto)";
-    else if (opts.light_geometry == LightGeometry::tiles &&
+    else if ((opts.light_geometry == LightGeometry::tiles || opts.light_geometry == LightGeometry::automatic) &&
              (p.tile_size < 8 || p.tile_size > 512 || p.tile_lights < 1 || p.tile_lights > 32))
         p.refused = "tiles: tile size must be 8..512 and lights per pass 1..32";
     return p;

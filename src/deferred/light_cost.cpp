@@ -1,0 +1,148 @@
+// The auto geometry's cost model (light_cost.h).
+#include "deferred/light_cost.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace dsr {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kMpx = 1e-6;
+}  // namespace
+
+const char* light_path_name(LightPath p) {
+    switch (p) {
+        case LightPath::quad: return "quad";
+        case LightPath::volume: return "volume";
+        case LightPath::tiles: return "tiles";
+    }
+    return "?";
+}
+
+LightCostModel default_light_costs(bool software_rasterizer) {
+    LightCostModel m;
+    if (software_rasterizer) {
+        // llvmpipe, 2 cores, 512x512 and 800x600: the light stage's ms of each geometry on the
+        // bench scenes fitted to the terms (quad: 357 lights over 1.1 Mpx took 42 ms, 32 lights
+        // over 14.7 Mpx 345 ms, both on a loaded machine; the ratios are what the choice uses).
+        m.quad_draw_ms = 0.045, m.quad_mpx_ms = 21;
+        m.volume_draw_ms = 0.09, m.volume_mpx_ms = 14;
+        m.handoff_mpx_ms = 0.5;
+        m.spans_mpx_ms = 6;
+        m.tile_pass_mpx_ms = 20, m.tile_light_mpx_ms = 13.5;
+    } else {
+        // A GPU: draws cost the CPU more than the pixels cost the GPU.
+        m.quad_draw_ms = 0.004, m.quad_mpx_ms = 0.12;
+        m.volume_draw_ms = 0.006, m.volume_mpx_ms = 0.08;
+        m.handoff_mpx_ms = 0.02;
+        m.spans_mpx_ms = 0.7;
+        m.tile_pass_mpx_ms = 0.15, m.tile_light_mpx_ms = 0.06;
+    }
+    return m;
+}
+
+std::string describe(const LightCostModel& m) {
+    std::ostringstream o;
+    o << "  quad           " << m.quad_draw_ms << " ms a light + " << m.quad_mpx_ms << " ms per Mpx of its rectangle\n"
+      << "  volume         " << m.volume_draw_ms << " ms a light + " << m.volume_mpx_ms
+      << " ms per Mpx of its rectangle; hand-off " << m.handoff_mpx_ms << " ms per Mpx of screen\n"
+      << "  tiles          " << m.tile_pass_mpx_ms << " ms per Mpx of tile pixels per pass + " << m.tile_light_mpx_ms
+      << " ms per Mpx of (tile pixel, light) pairs; depth spans " << m.spans_mpx_ms << " ms per Mpx of screen,\n"
+      << "                 measured where the lights would cost over " << m.spans_worth << "x that\n";
+    return o.str();
+}
+
+void tile_cover(const std::vector<ScissorRect>& rects, int width, int height, int tile_size, const TileDepth* depth,
+                std::vector<LightFeature>& lights, TileGrid& grid) {
+    const int tx = (width + tile_size - 1) / tile_size, ty = (height + tile_size - 1) / tile_size;
+    grid.tile_px = tile_size * tile_size;
+    grid.lights.assign(size_t(tx) * size_t(ty), 0);
+    lights.resize(rects.size());
+    for (size_t i = 0; i < rects.size(); ++i) {
+        const ScissorRect r{std::max(0, rects[i].x0), std::max(0, rects[i].y0), std::min(width, rects[i].x1),
+                            std::min(height, rects[i].y1)};  // what of it is on the screen
+        std::vector<int>& out = lights[i].tiles;
+        out.clear();
+        if (r.x1 <= r.x0 || r.y1 <= r.y0) continue;
+        const int x0 = std::max(0, r.x0 / tile_size), x1 = std::min(tx - 1, (r.x1 - 1) / tile_size);
+        const int y0 = std::max(0, r.y0 / tile_size), y1 = std::min(ty - 1, (r.y1 - 1) / tile_size);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const int t = y * tx + x;
+                if (depth) {
+                    const TileBox& b = depth->tiles[size_t(t)];
+                    const LightBound& lb = depth->lights[i];
+                    if (b.empty || (lb.radius >= 0 && !sphere_meets_box(lb, b))) continue;
+                }
+                out.push_back(t);
+                ++grid.lights[size_t(t)];
+            }
+    }
+}
+
+std::array<double, kLightPaths> light_prices(const LightFeature& l, const TileGrid& grid, const LightCostModel& m,
+                                             const std::array<double, kLightPaths>& scale) {
+    std::array<double, kLightPaths> p;
+    p[int(LightPath::quad)] = scale[0] * (m.quad_draw_ms + m.quad_mpx_ms * l.rect_px * kMpx);
+    p[int(LightPath::volume)] = l.volume_ok ? scale[1] * (m.volume_draw_ms + m.volume_mpx_ms * l.rect_px * kMpx) : kInf;
+    if (!l.tiles_ok) {
+        p[int(LightPath::tiles)] = kInf;
+        return p;
+    }
+    // Its share of each tile it keeps: the tile's passes (ceil(k / N) of them) divided among its
+    // k lights, and its own term in the loop.
+    double px = 0;
+    for (int t : l.tiles) {
+        const int k = std::max(1, grid.lights[size_t(t)]);
+        const double passes = std::ceil(double(k) / grid.lights_per_pass);
+        px += grid.tile_px * (m.tile_pass_mpx_ms * passes / k + m.tile_light_mpx_ms);
+    }
+    p[int(LightPath::tiles)] = scale[2] * px * kMpx;
+    return p;
+}
+
+LightPathPlan choose_light_paths(const std::vector<LightFeature>& lights, const TileGrid& grid, double screen_px,
+                                 const LightCostModel& m, const std::array<double, kLightPaths>& scale,
+                                 const std::array<bool, kLightPaths>& allowed, bool spans_paid) {
+    std::vector<std::array<double, kLightPaths>> prices(lights.size());
+    for (size_t i = 0; i < lights.size(); ++i) prices[i] = light_prices(lights[i], grid, m, scale);
+    const double handoff = m.handoff_mpx_ms * screen_px * kMpx;
+    const double spans = spans_paid ? 0 : m.spans_mpx_ms * screen_px * kMpx;
+    LightPathPlan best;
+    best.predicted_total_ms = kInf;
+    // The per-frame costs make the choice of one light depend on the others only through whether
+    // a path is used at all: for each set of paths in use, each light takes its cheapest.
+    for (int use_volume = 0; use_volume <= int(allowed[1]); ++use_volume)
+        for (int use_tiles = 0; use_tiles <= int(allowed[2]); ++use_tiles) {
+            LightPathPlan p;
+            p.path.resize(lights.size());
+            for (size_t i = 0; i < lights.size(); ++i) {
+                LightPath c = LightPath::quad;
+                if (use_volume && prices[i][1] < prices[i][int(c)]) c = LightPath::volume;
+                if (use_tiles && prices[i][2] < prices[i][int(c)]) c = LightPath::tiles;
+                p.path[i] = c;
+                ++p.count[int(c)];
+                p.predicted_ms[int(c)] += prices[i][int(c)];
+            }
+            if (p.count[1]) p.predicted_ms[1] += handoff;
+            if (p.count[2]) p.predicted_ms[2] += spans;
+            p.predicted_total_ms = p.predicted_ms[0] + p.predicted_ms[1] + p.predicted_ms[2];
+            if (p.predicted_total_ms < best.predicted_total_ms) best = std::move(p);
+        }
+    return best;
+}
+
+bool spans_worth_measuring(double best_without_tiles_ms, double screen_px, const LightCostModel& m, double tiles_scale) {
+    return best_without_tiles_ms > m.spans_worth * m.spans_mpx_ms * screen_px * kMpx;
+}
+
+void LightCostCalibration::add(LightPath p, double measured_ms, double predicted_raw_ms) {
+    if (!(predicted_raw_ms > 0) || !(measured_ms >= 0)) return;
+    double& s = scale_[int(p)];
+    s = std::clamp(0.5 * s + 0.5 * (measured_ms / predicted_raw_ms), 0.25, 4.0);
+}
+
+}  // namespace dsr

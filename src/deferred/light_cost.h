@@ -1,0 +1,104 @@
+// `--light-geometry auto`: each light by the cheapest way for it, from a cost model. Pure: no GL.
+// The model prices what each geometry pays for a light (docs/light_geometry.md, "auto"):
+//   quad    a draw, and every pixel of its scissor rectangle through the light shader (§3.4.2)
+//   volume  a draw of its mesh, and the rectangle's pixels rasterised and depth-tested, most
+//           rejected before the shader; once a frame the depth hand-off
+//   tiles   per tile it keeps after depth culling, its share of the tile's passes (G-buffer read
+//           and blend once per group of lights, divided among the tile's lights) and its own term
+//           in the shader's loop; once a frame the depth spans
+// Given the per-light prices, choose_light_paths finds the assignment of least total cost, the
+// per-frame costs included (it tries the four combinations of paying them or not). The constants
+// are a GL's: default_light_costs gives the ones measured on a CPU rasteriser and on a GPU, and the
+// auto geometry scales each geometry's by what its passes took in the frames before
+// (LightCostCalibration), so the model follows the running GL.
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "deferred/scissor.h"
+#include "deferred/tile_plan.h"
+
+namespace dsr {
+
+enum class LightPath { quad, volume, tiles };
+constexpr int kLightPaths = 3;
+const char* light_path_name(LightPath p);  // "quad", "volume", "tiles"
+
+// Milliseconds per draw and per million pixels.
+struct LightCostModel {
+    double quad_draw_ms = 0, quad_mpx_ms = 0;      // per light; per Mpx of its scissor rectangle
+    double volume_draw_ms = 0, volume_mpx_ms = 0;  // per light; per Mpx of its scissor rectangle
+    double handoff_mpx_ms = 0;                     // the depth hand-off, per Mpx of the screen (once)
+    double spans_mpx_ms = 0;                       // the tiles' depth spans, per Mpx of the screen (once)
+    double tile_pass_mpx_ms = 0;                   // tiles: per Mpx of tile pixels per pass (read, blend)
+    double tile_light_mpx_ms = 0;                  // tiles: per Mpx of (tile pixel, light) pairs
+    // The spans are measured only where the lights would cost more than this many times the spans
+    // without tiles: below it, tiles cannot win back what finding out costs.
+    double spans_worth = 4;
+};
+
+// Measured with `dsr render --frames N --stats` per geometry (docs/light_geometry.md, "auto"):
+// software: llvmpipe on 2 cores; else: an NVIDIA H200 through EGL.
+LightCostModel default_light_costs(bool software_rasterizer);
+// The constants, one per line (dsr info).
+std::string describe(const LightCostModel& m);
+
+// What the model knows of one light.
+struct LightFeature {
+    double rect_px = 0;        // its scissor rectangle's pixels (the whole screen for a full one)
+    bool volume_ok = true;     // its mesh can serve it (light_mesh.h past_far: not directional, not past far)
+    bool tiles_ok = true;      // the tiles geometry may take it
+    // Tiles: the tiles it keeps (indices into the tile grid, row by row) after depth culling.
+    std::vector<int> tiles;
+};
+
+// The frame's tiles as the model sees them.
+struct TileGrid {
+    int tile_px = 256;                // pixels of a whole tile (tile_size^2)
+    int lights_per_pass = 32;
+    std::vector<int> lights;          // per tile: how many lights keep it (over every light of the frame)
+};
+
+// The per-light tiles cover: for each light, the tiles its rectangle overlaps whose box its sphere
+// reaches (depth culling as tile_plan.h TileDepth; without `depth`, every tile the rectangle
+// overlaps), and per tile how many lights keep it. rects: the lights' scissor rectangles.
+void tile_cover(const std::vector<ScissorRect>& rects, int width, int height, int tile_size, const TileDepth* depth,
+                std::vector<LightFeature>& lights, TileGrid& grid);
+
+// One light's price on each path (infinity where it cannot take that path), per-frame costs excluded.
+std::array<double, kLightPaths> light_prices(const LightFeature& l, const TileGrid& grid, const LightCostModel& m,
+                                             const std::array<double, kLightPaths>& scale);
+
+struct LightPathPlan {
+    std::vector<LightPath> path;                    // per light
+    std::array<int, kLightPaths> count{};           // lights per path
+    std::array<double, kLightPaths> predicted_ms{}; // per path, its per-frame cost included
+    double predicted_total_ms = 0;
+};
+
+// The assignment of least predicted cost. screen_px: the frame's pixels (the per-frame costs);
+// spans_paid: the spans are already measured (their cost is sunk); scale: each path's calibration.
+// A path is left out entirely where `allowed` says so.
+LightPathPlan choose_light_paths(const std::vector<LightFeature>& lights, const TileGrid& grid, double screen_px,
+                                 const LightCostModel& m, const std::array<double, kLightPaths>& scale,
+                                 const std::array<bool, kLightPaths>& allowed, bool spans_paid);
+
+// Whether measuring the spans is worth it: the best plan without tiles costs more than
+// spans_worth times the spans.
+bool spans_worth_measuring(double best_without_tiles_ms, double screen_px, const LightCostModel& m, double tiles_scale);
+
+// Each path's scale: measured / predicted ms of its passes, smoothed over frames (an exponential
+// average, clamped to [1/4, 4]). A path not drawn in a frame keeps its scale.
+class LightCostCalibration {
+public:
+    const std::array<double, kLightPaths>& scale() const { return scale_; }
+    // One frame's measurement of a path's passes against what the model predicted for them, both
+    // without the scale (raw model ms).
+    void add(LightPath p, double measured_ms, double predicted_raw_ms);
+
+private:
+    std::array<double, kLightPaths> scale_{1, 1, 1};
+};
+
+}  // namespace dsr

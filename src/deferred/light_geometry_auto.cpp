@@ -1,0 +1,164 @@
+// Light geometry `auto` (the default): each light of a frame by the cheapest of quad, volume and
+// tiles, as the cost model prices them (light_cost.h), mixed in one frame. The three add the same
+// 8-bit steps into P-buffer 0 (docs/light_geometry.md: every geometry is quad's image to the
+// byte), so which light took which path changes the time, never the image.
+// A frame: prepare() prices every light without tiles; where the lights would cost enough for
+// tiles to pay, it measures the tiles' depth spans and prices the tiles with the exact tiles each
+// light keeps; then it chooses (choose_light_paths). draw() draws each path's lights. On a CPU
+// rasteriser each path's passes are timed (glFinish and the wall clock, as the stages are) and the
+// model's scale for that path follows what they took.
+#include <cmath>
+
+#include "deferred/light_cost.h"
+#include "deferred/light_geometry.h"
+#include "deferred/light_geometry_tiles.h"
+#include "deferred/light_mesh.h"
+#include "deferred/light_pass.h"
+#include "dsr_clock.h"
+
+namespace dsr {
+
+namespace {
+
+class AutoGeometry final : public LightGeometryPass {
+public:
+    AutoGeometry(const ShaderConfig& c, ProgramSet& programs, int width, int height)
+        : quads_(programs, false),
+          volume_progs_(programs, "light_volume"),
+          tiles_(make_tiles_pass(c, programs, width, height)),
+          model_(default_light_costs(c.caps.software_rasterizer)),
+          volume_ok_(c.paths.accum_depth),
+          calibrate_(c.caps.software_rasterizer) {}
+
+    void resize(int width, int height) override { tiles_->resize(width, height); }
+
+    bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) override {
+        const double screen_px = double(f.width) * double(f.height);
+        features_.assign(f.lights.size(), LightFeature{});
+        std::vector<ScissorRect> rects(f.lights.size());
+        for (size_t i = 0; i < f.lights.size(); ++i) {
+            const LightDraw& l = f.lights[i];
+            rects[i] = l.full ? ScissorRect{0, 0, f.width, f.height} : l.rect;
+            features_[i].rect_px = double(rects[i].x1 - rects[i].x0) * double(rects[i].y1 - rects[i].y0);
+            features_[i].volume_ok = volume_ok_ && !meshes_.past_far(f, l);
+        }
+        const std::array<double, kLightPaths>& scale = calib_.scale();
+        grid_ = TileGrid{};
+        grid_.lights_per_pass = tiles_->lights_per_pass();
+        plan_ = choose_light_paths(features_, grid_, screen_px, model_, scale, {true, volume_ok_, false}, true);
+        depth_ = TileDepth{};
+        cull_ = nullptr;
+        bool spans = false;
+        // Spans that gave the tiles no light are not measured again for a few frames (a scene
+        // whose lights stay as they are would pay for them every frame to learn the same).
+        bool tiles_pay = !tiles_->depth_culling() ||
+                         spans_worth_measuring(plan_.predicted_total_ms, screen_px, model_, scale[2]);
+        if (tiles_pay && tiles_->depth_culling() && spans_rest_ > 0) {
+            --spans_rest_;
+            tiles_pay = false;
+        }
+        if (tiles_pay) {
+            if (tiles_->depth_culling()) {
+                spans = true;
+                cull_ = tiles_->tile_boxes(f, tiles_->depth_spans(f, targets, stats), depth_);
+            }
+            tile_cover(rects, f.width, f.height, tiles_->tile_size(), cull_, features_, grid_);
+            plan_ = choose_light_paths(features_, grid_, screen_px, model_, scale, {true, volume_ok_, true}, true);
+            if (spans) plan_.predicted_ms[2] += model_.spans_mpx_ms * screen_px * 1e-6;
+            if (spans && plan_.count[int(LightPath::tiles)] == 0) spans_rest_ = kSpansRest;
+        }
+        planned_ = true;
+        stats.auto_geometry = true;
+        stats.auto_spans = spans;
+        for (int p = 0; p < kLightPaths; ++p) {
+            stats.auto_lights[p] = plan_.count[size_t(p)];
+            stats.auto_scale[p] = scale[size_t(p)];
+        }
+        stats.auto_predicted_ms = plan_.predicted_ms[0] + plan_.predicted_ms[1] + plan_.predicted_ms[2];
+        return plan_.count[int(LightPath::volume)] > 0;
+    }
+
+    void draw(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats) override {
+        if (!planned_) prepare(f, targets, stats);
+        planned_ = false;
+        std::vector<const LightDraw*> by_path[kLightPaths];
+        double raw[kLightPaths] = {0, 0, 0};  // the model's ms for each path's lights, unscaled
+        for (size_t i = 0; i < f.lights.size(); ++i) {
+            const int p = int(plan_.path[i]);
+            by_path[p].push_back(&f.lights[i]);
+            raw[p] += light_prices(features_[i], grid_, model_, {1, 1, 1})[size_t(p)];
+        }
+        if (!by_path[int(LightPath::tiles)].empty())
+            timed(LightPath::tiles, raw, [&] {
+                FrameDef sub = f;  // the tiles' lights alone, with their bounds
+                sub.lights.clear();
+                TileDepth depth;
+                if (cull_) depth.tiles = cull_->tiles;
+                for (size_t i = 0; i < f.lights.size(); ++i)
+                    if (plan_.path[i] == LightPath::tiles) {
+                        sub.lights.push_back(f.lights[i]);
+                        if (cull_) depth.lights.push_back(cull_->lights[i]);
+                    }
+                tiles_->draw_lights(sub, cull_ ? &depth : nullptr, q, stats);
+            });
+        if (!by_path[int(LightPath::volume)].empty())
+            timed(LightPath::volume, raw, [&] {
+                volume_progs_.begin(f);
+                meshes_.shade_volumes(f, by_path[int(LightPath::volume)], volume_progs_, q, stats);
+            });
+        if (!by_path[int(LightPath::quad)].empty())
+            timed(LightPath::quad, raw, [&] {
+                quads_.begin(f);
+                for (const LightDraw* l : by_path[int(LightPath::quad)]) {
+                    quads_.draw(f, *l, q);
+                    ++stats.light_passes;
+                }
+            });
+    }
+
+private:
+    // A path's passes; on a CPU rasteriser timed, and the path's scale updated.
+    template <class F>
+    void timed(LightPath p, const double* raw, F&& draw) {
+        // A path's first frame is not measured: the GL compiles its programs' code on first use
+        // (llvmpipe: tens of milliseconds).
+        if (!calibrate_ || !drawn_before_[int(p)]) {
+            drawn_before_[int(p)] = true;
+            draw();
+            return;
+        }
+        glFinish();
+        const double t0 = now_ms();
+        draw();
+        glFinish();
+        calib_.add(p, now_ms() - t0, raw[int(p)]);
+    }
+
+    LightQuads quads_;
+    LightMeshes meshes_;
+    LightPrograms volume_progs_;
+    std::unique_ptr<TilesPass> tiles_;
+    LightCostModel model_;
+    LightCostCalibration calib_;
+    bool volume_ok_;   // the paths give P-buffer 0 the scene's depth (the hand-off)
+    bool calibrate_;
+    bool drawn_before_[kLightPaths] = {false, false, false};
+    static constexpr int kSpansRest = 8;
+    int spans_rest_ = 0;  // frames left before the spans are measured again
+    // The frame's plan, from prepare() to draw().
+    bool planned_ = false;
+    std::vector<LightFeature> features_;
+    TileGrid grid_;
+    LightPathPlan plan_;
+    TileDepth depth_;
+    const TileDepth* cull_ = nullptr;
+};
+
+}  // namespace
+
+std::unique_ptr<LightGeometryPass> make_auto_geometry(const ShaderConfig& c, ProgramSet& programs, int width,
+                                                      int height) {
+    return std::make_unique<AutoGeometry>(c, programs, width, height);
+}
+
+}  // namespace dsr

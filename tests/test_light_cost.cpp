@@ -1,0 +1,178 @@
+// The auto geometry's cost model (src/deferred/light_cost.h), pure: the choice against every
+// assignment of paths to lights, the tiles' cover against a tile-by-tile check, the calibration.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "deferred/light_cost.h"
+
+namespace dsr {
+
+namespace {
+
+LightCostModel test_model() {
+    LightCostModel m = default_light_costs(true);
+    m.handoff_mpx_ms = 3;  // large enough that leaving volumes out is sometimes right
+    m.spans_mpx_ms = 8;
+    return m;
+}
+
+// The total the model gives an assignment, computed from its definition.
+double total_of(const std::vector<LightFeature>& ls, const TileGrid& grid, double screen_px, const LightCostModel& m,
+                const std::array<double, kLightPaths>& scale, const std::vector<int>& a, bool spans_paid) {
+    double t = 0;
+    bool volume = false, tiles = false;
+    for (size_t i = 0; i < ls.size(); ++i) {
+        t += light_prices(ls[i], grid, m, scale)[size_t(a[i])];
+        volume |= a[i] == 1;
+        tiles |= a[i] == 2;
+    }
+    if (volume) t += m.handoff_mpx_ms * screen_px * 1e-6;
+    if (tiles && !spans_paid) t += m.spans_mpx_ms * screen_px * 1e-6;
+    return t;
+}
+
+}  // namespace
+
+// Over random frames of up to 7 lights, choose_light_paths' total is the least over all 3^n
+// assignments (each light on any path it may take), per-frame costs included.
+TEST(LightCost, ChoiceIsTheCheapestAssignment) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    const LightCostModel m = test_model();
+    for (int trial = 0; trial < 300; ++trial) {
+        const int n = 1 + trial % 7;
+        TileGrid grid;
+        grid.tile_px = 256;
+        grid.lights_per_pass = 4;
+        grid.lights.assign(64, 0);
+        std::vector<LightFeature> ls(static_cast<size_t>(n));
+        for (LightFeature& l : ls) {
+            l.rect_px = std::pow(10.0, 2 + 4 * u(rng));
+            l.volume_ok = u(rng) > 0.2;
+            l.tiles_ok = u(rng) > 0.1;
+            for (int t = 0; t < 64; ++t)
+                if (u(rng) < 0.3) {
+                    l.tiles.push_back(t);
+                    ++grid.lights[size_t(t)];
+                }
+        }
+        const std::array<double, kLightPaths> scale = {0.5 + u(rng), 0.5 + u(rng), 0.5 + u(rng)};
+        const bool spans_paid = trial % 2 == 0;
+        const double screen = 65536 * (1 + 4 * u(rng));
+        const LightPathPlan p = choose_light_paths(ls, grid, screen, m, scale, {true, true, true}, spans_paid);
+        double best = std::numeric_limits<double>::infinity();
+        std::vector<int> a(size_t(n), 0);
+        for (int code = 0; code < int(std::pow(3, n)); ++code) {
+            int c = code;
+            for (int i = 0; i < n; ++i, c /= 3) a[size_t(i)] = c % 3;
+            best = std::min(best, total_of(ls, grid, screen, m, scale, a, spans_paid));
+        }
+        std::vector<int> chosen;
+        for (LightPath x : p.path) chosen.push_back(int(x));
+        const double got = total_of(ls, grid, screen, m, scale, chosen, spans_paid);
+        ASSERT_NEAR(got, best, 1e-9 * best) << "trial " << trial;
+        EXPECT_NEAR(p.predicted_total_ms, got, 1e-9 * got) << "trial " << trial;
+        int counted = 0;
+        for (int k = 0; k < kLightPaths; ++k) counted += p.count[size_t(k)];
+        EXPECT_EQ(counted, n);
+    }
+}
+
+TEST(LightCost, PathsNotAllowedAreNotChosen) {
+    const LightCostModel m = test_model();
+    TileGrid grid;
+    grid.lights.assign(4, 1);
+    LightFeature big;
+    big.rect_px = 1e6;
+    big.tiles = {0, 1, 2, 3};
+    const LightPathPlan all = choose_light_paths({big}, grid, 1e6, m, {1, 1, 1}, {true, true, true}, true);
+    EXPECT_NE(all.path[0], LightPath::quad);  // a million-pixel rectangle through the shader: the dearest
+    const LightPathPlan quads = choose_light_paths({big}, grid, 1e6, m, {1, 1, 1}, {true, false, false}, true);
+    EXPECT_EQ(quads.path[0], LightPath::quad);
+    LightFeature no_volume = big;
+    no_volume.volume_ok = no_volume.tiles_ok = false;
+    EXPECT_EQ(choose_light_paths({no_volume}, grid, 1e6, m, {1, 1, 1}, {true, true, true}, true).path[0], LightPath::quad);
+}
+
+// The tiles each light keeps, against a tile-by-tile check of its rectangle and its sphere
+// against each tile's box; and each tile's count of lights.
+TEST(LightCost, TileCoverMatchesTileByTile) {
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int> px(-20, 150);
+    std::uniform_real_distribution<float> u(0, 1);
+    const int w = 120, h = 90, ts = 16, tx = (w + ts - 1) / ts, ty = (h + ts - 1) / ts;
+    TileDepth depth;
+    for (int t = 0; t < tx * ty; ++t) {
+        TileBox b;
+        b.empty = u(rng) < 0.15;
+        b.lo = {u(rng) * 4 - 2, u(rng) * 4 - 2, -8 + 2 * u(rng)};
+        b.hi = b.lo + glm::vec3(u(rng), u(rng), 3 * u(rng));
+        depth.tiles.push_back(b);
+    }
+    std::vector<ScissorRect> rects;
+    for (int i = 0; i < 40; ++i) {
+        ScissorRect r{px(rng), px(rng), 0, 0};
+        r.x1 = r.x0 + px(rng) / 2, r.y1 = r.y0 + px(rng) / 2;
+        rects.push_back(r);
+        depth.lights.push_back(LightBound{{u(rng) * 4 - 2, u(rng) * 4 - 2, -9 + 8 * u(rng)}, i % 9 == 0 ? -1 : 2 * u(rng)});
+    }
+    for (const TileDepth* cull : {static_cast<const TileDepth*>(nullptr), static_cast<const TileDepth*>(&depth)}) {
+        std::vector<LightFeature> ls;
+        TileGrid grid;
+        tile_cover(rects, w, h, ts, cull, ls, grid);
+        ASSERT_EQ(ls.size(), rects.size());
+        std::vector<int> count(size_t(tx * ty), 0);
+        for (size_t i = 0; i < rects.size(); ++i) {
+            std::vector<int> want;
+            for (int t = 0; t < tx * ty; ++t) {
+                const int x0 = (t % tx) * ts, y0 = (t / tx) * ts;
+                const ScissorRect& r = rects[i];
+                const bool overlaps = r.x0 < std::min(w, x0 + ts) && x0 < r.x1 && r.y0 < std::min(h, y0 + ts) && y0 < r.y1 &&
+                                      r.x1 > r.x0 && r.y1 > r.y0;
+                bool kept = overlaps;
+                if (kept && cull) {
+                    const TileBox& b = depth.tiles[size_t(t)];
+                    kept = !b.empty && (depth.lights[i].radius < 0 || sphere_meets_box(depth.lights[i], b));
+                }
+                if (kept) want.push_back(t), ++count[size_t(t)];
+            }
+            EXPECT_EQ(ls[i].tiles, want) << "light " << i << (cull ? " culled" : "") << " rect " << rects[i].x0 << " "
+                                         << rects[i].y0 << " " << rects[i].x1 << " " << rects[i].y1;
+        }
+        EXPECT_EQ(grid.lights, count);
+        EXPECT_EQ(grid.tile_px, ts * ts);
+    }
+}
+
+// A tile's passes are shared among its lights: the same light is cheaper in tiles where more
+// lights keep its tiles (one pass for up to lights_per_pass of them).
+TEST(LightCost, TilesShareTheirPasses) {
+    const LightCostModel m = test_model();
+    LightFeature l;
+    l.rect_px = 4096;
+    l.tiles = {0, 1};
+    TileGrid alone, shared;
+    alone.lights = {1, 1};
+    shared.lights = {16, 16};
+    alone.lights_per_pass = shared.lights_per_pass = 32;
+    const double a = light_prices(l, alone, m, {1, 1, 1})[2], s = light_prices(l, shared, m, {1, 1, 1})[2];
+    EXPECT_LT(s, a);
+    EXPECT_NEAR(a, 2 * 256 * (m.tile_pass_mpx_ms + m.tile_light_mpx_ms) * 1e-6, 1e-12);
+    EXPECT_NEAR(s, 2 * 256 * (m.tile_pass_mpx_ms / 16 + m.tile_light_mpx_ms) * 1e-6, 1e-12);
+}
+
+TEST(LightCost, CalibrationFollowsTheMeasuredRatio) {
+    LightCostCalibration c;
+    for (int i = 0; i < 20; ++i) c.add(LightPath::tiles, 3.0, 1.0);
+    EXPECT_NEAR(c.scale()[2], 3.0, 1e-3);
+    EXPECT_EQ(c.scale()[0], 1.0);  // paths not measured keep their scale
+    c.add(LightPath::quad, 100.0, 1.0);
+    EXPECT_EQ(c.scale()[0], 4.0);  // clamped
+    c.add(LightPath::volume, 1.0, 0.0);  // nothing predicted: no information
+    EXPECT_EQ(c.scale()[1], 1.0);
+}
+
+}  // namespace dsr
