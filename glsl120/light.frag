@@ -6,7 +6,8 @@
 // RGB8 target, Listing 18 / ENC_* encodings), POSITION_TARGET (the stored eye-space position), LISTING2_LITERAL, LIGHT_DEPTH_TEST (reject
 // surfaces in front of or behind the light's sphere before shading), LIGHT_SPHERE_TEST (reject
 // surface points outside the sphere), OUTPUT_POSITION (write the
-// reconstructed eye-space position instead of light: accuracy measurements).
+// reconstructed eye-space position instead of light: accuracy measurements), BATCH (many lights'
+// quads in one draw, each light's parameters from uniform arrays by the quad's slot).
 #include "depth_codec.glsl"
 #include "lighting.glsl"
 
@@ -14,22 +15,41 @@ uniform sampler2D normal_map;    // unit 0
 uniform sampler2D diffuse_map;   // unit 1
 uniform sampler2D specular_map;  // unit 2
 uniform sampler2D depth_map;     // unit 3
+#ifdef BATCH
+// BATCH: many lights in one draw (pseudo-instancing): each light's quad carries its slot in the
+// arrays (texture coordinate 2, light.vert), the same five vec4s a light as below.
+uniform vec4 batch_pos[BATCH];
+uniform vec4 batch_color[BATCH];
+uniform vec4 batch_dir[BATCH];
+uniform vec4 batch_spot[BATCH];
+uniform vec4 batch_att[BATCH];
+varying float slot;
+#else
 uniform vec4 lightpos;           // eye space, w = radius
 uniform vec4 lightcolor;         // rgb, w = type (0 point, 1 spot, 2 directional)
 uniform vec4 lightdir;           // eye-space unit direction, w = cos(half-angle)
 uniform vec4 lightspot;          // (cos of the soft edge's inner angle, exponent, -, -)
 uniform vec4 lightatt;           // (KC, KL, KQ, law): lighting.glsl
+#endif
 uniform vec2 planes;             // §3.4.3: (-f/(f-n), -f*n/(f-n))
 uniform vec3 zrange;             // (near, far, log2(far/near)) for the linear and log encodings
 uniform vec2 uv_scale;           // VOLUME: G-buffer texture coordinates per window pixel
 uniform vec4 ray_map;            // view ray (x, y) = gl_FragCoord.xy * ray_map.xy + ray_map.zw, z = -1
 
-#ifndef VOLUME
+#if !defined(VOLUME) && !defined(BATCH)
 varying vec2 texcoord;           // the quad's (light.vert)
 #endif
 
 void main()
 {
+#ifdef BATCH
+    int i = int(slot + 0.5);  // constant over the light's quad; rounded against interpolation's last bit
+    vec4 lightpos = batch_pos[i];
+    vec4 lightcolor = batch_color[i];
+    vec4 lightdir = batch_dir[i];
+    vec4 lightspot = batch_spot[i];
+    vec4 lightatt = batch_att[i];
+#endif
     // The pixel centre's view ray (Listing 19's corner rays, which are affine in window
     // coordinates, as a map of gl_FragCoord): what interpolating them across the drawn primitive
     // gives in exact arithmetic, but the same float result whatever draws the pixel. Interpolated
@@ -38,7 +58,7 @@ void main()
     // turned that into 4 LSB between the geometries' images (1024-overlap). The texture
     // coordinates may be interpolated: at a pixel centre they pick the same nearest texel either
     // way, and on llvmpipe computing them too made quad's light passes ~5% slower.
-#ifdef VOLUME
+#if defined(VOLUME) || defined(BATCH)
     vec2 texcoord = gl_FragCoord.xy * uv_scale;
 #endif
     vec3 vpos = vec3(gl_FragCoord.xy * ray_map.xy + ray_map.zw, -1.0);

@@ -7,10 +7,14 @@
 // ssao.frag both.
 // VOLUME: the light's volume mesh instead (light geometries volume and stencil).
 // ID_VECS (light_tiles.frag): texture coordinates 2.. carry the quad's light slots, two a float.
+// BATCH (light.frag): texture coordinate 2 carries the quad's light slot.
 varying vec2 texcoord;
 varying vec3 vpos;
 #ifdef ID_VECS
 varying vec4 ids[ID_VECS];
+#endif
+#ifdef BATCH
+varying float slot;  // the light's slot in light.frag's arrays, from texture coordinate 2
 #endif
 
 void main()
@@ -22,6 +26,9 @@ void main()
 #else
     texcoord = gl_MultiTexCoord0.xy;
     vpos = gl_MultiTexCoord1.xyz;
+#endif
+#ifdef BATCH
+    slot = gl_MultiTexCoord2.x;
 #endif
 #ifdef ID_VECS
     ids[0] = gl_MultiTexCoord2;

@@ -6,6 +6,8 @@
 #include <limits>
 #include <sstream>
 
+#include "dsr_error.h"
+
 namespace dsr {
 
 namespace {
@@ -29,7 +31,7 @@ LightCostModel default_light_costs(bool software_rasterizer) {
         // bench scenes fitted to the terms (quad: 357 lights over 1.1 Mpx took 42 ms, 32 lights
         // over 14.7 Mpx 345 ms, both on a loaded machine; the ratios are what the choice uses).
         m.quad_draw_ms = 0.045, m.quad_mpx_ms = 21;
-        m.volume_draw_ms = 0.09, m.volume_mpx_ms = 14;
+        m.volume_draw_ms = 0.09, m.volume_mpx_ms = 12;
         m.handoff_mpx_ms = 0.5;
         m.spans_mpx_ms = 6;
         m.tile_pass_mpx_ms = 20, m.tile_light_mpx_ms = 13.5;
@@ -143,6 +145,20 @@ void LightCostCalibration::add(LightPath p, double measured_ms, double predicted
     if (!(predicted_raw_ms > 0) || !(measured_ms >= 0)) return;
     double& s = scale_[int(p)];
     s = std::clamp(0.5 * s + 0.5 * (measured_ms / predicted_raw_ms), 0.25, 4.0);
+}
+
+std::array<double, kLightPaths> parse_cost_scale(const std::string& text) {
+    std::array<double, kLightPaths> out{};
+    std::istringstream in(text);
+    for (int i = 0; i < kLightPaths; ++i) {
+        char comma = ',';
+        if ((i > 0 && !(in >> comma)) || comma != ',' || !(in >> out[size_t(i)]) || !(out[size_t(i)] > 0) ||
+            !std::isfinite(out[size_t(i)]))
+            throw Error("DSR_LIGHT_COST_SCALE '" + text + "': expected three positive numbers quad,volume,tiles");
+    }
+    std::string rest;
+    if (in >> rest) throw Error("DSR_LIGHT_COST_SCALE '" + text + "': expected three positive numbers quad,volume,tiles");
+    return out;
 }
 
 }  // namespace dsr

@@ -92,6 +92,9 @@ bool spans_worth_measuring(double best_without_tiles_ms, double screen_px, const
 // average, clamped to [1/4, 4]). A path not drawn in a frame keeps its scale.
 class LightCostCalibration {
 public:
+    LightCostCalibration() = default;
+    // Starting scales, e.g. from DSR_LIGHT_COST_SCALE="quad,volume,tiles" (parse_cost_scale).
+    explicit LightCostCalibration(const std::array<double, kLightPaths>& start) : scale_(start) {}
     const std::array<double, kLightPaths>& scale() const { return scale_; }
     // One frame's measurement of a path's passes against what the model predicted for them, both
     // without the scale (raw model ms).
@@ -100,5 +103,9 @@ public:
 private:
     std::array<double, kLightPaths> scale_{1, 1, 1};
 };
+
+// "Q,V,T": three positive numbers, each path's starting scale (DSR_LIGHT_COST_SCALE: a large one keeps a
+// path out, for measuring the others); throws dsr::Error naming what was expected.
+std::array<double, kLightPaths> parse_cost_scale(const std::string& text);
 
 }  // namespace dsr

@@ -4,10 +4,12 @@
 // byte), so which light took which path changes the time, never the image.
 // A frame: prepare() prices every light without tiles; where the lights would cost enough for
 // tiles to pay, it measures the tiles' depth spans and prices the tiles with the exact tiles each
-// light keeps; then it chooses (choose_light_paths). draw() draws each path's lights. On a CPU
+// light keeps; then it chooses (choose_light_paths). draw() draws each path's lights, the quads in
+// batches (LightQuadBatch: a few draws, not one per light). On a CPU
 // rasteriser each path's passes are timed (glFinish and the wall clock, as the stages are) and the
 // model's scale for that path follows what they took.
 #include <cmath>
+#include <cstdlib>
 
 #include "deferred/light_cost.h"
 #include "deferred/light_geometry.h"
@@ -23,10 +25,11 @@ namespace {
 class AutoGeometry final : public LightGeometryPass {
 public:
     AutoGeometry(const ShaderConfig& c, ProgramSet& programs, int width, int height)
-        : quads_(programs, false),
+        : quads_(programs, c.tile_batch),
           volume_progs_(programs, "light_volume"),
           tiles_(make_tiles_pass(c, programs, width, height)),
           model_(default_light_costs(c.caps.software_rasterizer)),
+          calib_(start_scale()),
           volume_ok_(c.paths.accum_depth),
           calibrate_(c.caps.software_rasterizer) {}
 
@@ -107,16 +110,16 @@ public:
                 meshes_.shade_volumes(f, by_path[int(LightPath::volume)], volume_progs_, q, stats);
             });
         if (!by_path[int(LightPath::quad)].empty())
-            timed(LightPath::quad, raw, [&] {
-                quads_.begin(f);
-                for (const LightDraw* l : by_path[int(LightPath::quad)]) {
-                    quads_.draw(f, *l, q);
-                    ++stats.light_passes;
-                }
-            });
+            timed(LightPath::quad, raw, [&] { quads_.draw(f, by_path[int(LightPath::quad)], q, stats); });
     }
 
 private:
+    // Each path's scale before any frame: 1, or DSR_LIGHT_COST_SCALE's (docs/light_geometry.md).
+    static std::array<double, kLightPaths> start_scale() {
+        const char* e = std::getenv("DSR_LIGHT_COST_SCALE");
+        return e && *e ? parse_cost_scale(e) : std::array<double, kLightPaths>{1, 1, 1};
+    }
+
     // A path's passes; on a CPU rasteriser timed, and the path's scale updated.
     template <class F>
     void timed(LightPath p, const double* raw, F&& draw) {
@@ -134,7 +137,7 @@ private:
         calib_.add(p, now_ms() - t0, raw[int(p)]);
     }
 
-    LightQuads quads_;
+    LightQuadBatch quads_;
     LightMeshes meshes_;
     LightPrograms volume_progs_;
     std::unique_ptr<TilesPass> tiles_;

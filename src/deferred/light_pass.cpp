@@ -93,4 +93,55 @@ void LightQuads::draw(const FrameDef& f, const LightDraw& l, LightQueries& q) {
     q.end();
 }
 
+LightQuadBatch::LightQuadBatch(ProgramSet& programs, int batch) : progs_(programs, "light_batch"), batch_(batch) {}
+
+void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightQueries& q,
+                          FrameStats& stats) {
+    if (lights.empty()) return;
+    gl_state().set_camera(f.pixels());
+    progs_.begin(f);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glClientActiveTexture(GL_TEXTURE2);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    for (LightShader form : {LightShader::point_linear, LightShader::point_inverse, LightShader::any}) {
+        std::vector<const LightDraw*> mine;
+        for (const LightDraw* l : lights)
+            if (l->shader() == form) mine.push_back(l);
+        Program& prog = progs_[form];
+        for (size_t first = 0; first < mine.size(); first += size_t(batch_)) {
+            const size_t n = std::min(mine.size() - first, size_t(batch_));
+            pos_.clear(), color_.clear(), dir_.clear(), spot_.clear(), att_.clear();
+            verts_.clear();
+            for (size_t k = 0; k < n; ++k) {
+                const LightDraw& l = *mine[first + k];
+                const LightParams& p = l.params;
+                pos_.push_back(p.pos), color_.push_back(p.color), dir_.push_back(p.dir);
+                spot_.push_back(p.spot), att_.push_back(p.att);
+                // The rectangle as a quad (x, y, slot per corner); a full light's is the viewport.
+                const float x0 = float(l.full ? 0 : l.rect.x0), y0 = float(l.full ? 0 : l.rect.y0);
+                const float x1 = float(l.full ? f.width : l.rect.x1), y1 = float(l.full ? f.height : l.rect.y1);
+                const float slot = float(k);
+                const float quad[12] = {x0, y0, slot, x1, y0, slot, x1, y1, slot, x0, y1, slot};
+                verts_.insert(verts_.end(), quad, quad + 12);
+            }
+            gl_state().apply(light_pass_state(prog.id(), false));
+            const int count = int(n);
+            prog.set_array("batch_pos", pos_.data(), count);
+            prog.set_array("batch_color", color_.data(), count);
+            prog.set_array("batch_dir", dir_.data(), count);
+            prog.set_array("batch_spot", spot_.data(), count);
+            prog.set_array("batch_att", att_.data(), count);
+            glVertexPointer(2, GL_FLOAT, 3 * sizeof(float), verts_.data());
+            glTexCoordPointer(1, GL_FLOAT, 3 * sizeof(float), verts_.data() + 2);
+            q.begin();
+            glDrawArrays(GL_QUADS, 0, GLsizei(4 * n));
+            q.end();
+            ++stats.light_passes;
+        }
+    }
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    glClientActiveTexture(GL_TEXTURE0);
+    glDisableClientState(GL_VERTEX_ARRAY);
+}
+
 }  // namespace dsr

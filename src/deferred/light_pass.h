@@ -54,4 +54,24 @@ private:
     bool depth_bounds_;
 };
 
+// Many lights' quads in a handful of draws (pseudo-instancing with vertex arrays only, no GL 3
+// instancing): the lights in batches of the uniform arrays' size ("light_batch" programs,
+// light.frag BATCH), each quad over its light's scissor rectangle carrying the light's slot; one
+// draw per batch and program form. The quad covers exactly the pixels the scissored full-screen
+// quad lets through, and every light adds the same 8-bit step in any order, so the image is the
+// per-light loop's; the CPU submits a few draws instead of one per light.
+class LightQuadBatch {
+public:
+    // batch: lights the arrays hold (ShaderConfig::tile_batch).
+    LightQuadBatch(ProgramSet& programs, int batch);
+    // Every light of `lights` (of f), each one counted light pass per draw.
+    void draw(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightQueries& q, FrameStats& stats);
+
+private:
+    LightPrograms progs_;
+    int batch_;
+    std::vector<float> verts_;  // kept for its storage
+    std::vector<glm::vec4> pos_, color_, dir_, spot_, att_;
+};
+
 }  // namespace dsr

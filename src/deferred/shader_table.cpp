@@ -109,12 +109,15 @@ bool material_variants(const ShaderConfig& c) { return c.opts.skip.material_vari
 bool geometry_is(const ShaderConfig& c, LightGeometry g) { return c.paths.light_geometry == g; }
 bool is_auto(const ShaderConfig& c) { return geometry_is(c, LightGeometry::automatic); }
 // Which geometries draw with which programs: volume and stencil draw the lights their meshes
-// cannot serve as quads; auto draws each light as a quad, a volume or in tiles.
+// cannot serve as quads; auto draws each light as a quad (in batches), a volume or in tiles.
 bool uses_quads(const ShaderConfig& c) {
     return geometry_is(c, LightGeometry::quad) || geometry_is(c, LightGeometry::volume) ||
-           geometry_is(c, LightGeometry::stencil) || is_auto(c);
+           geometry_is(c, LightGeometry::stencil);
 }
 bool uses_volume(const ShaderConfig& c) { return geometry_is(c, LightGeometry::volume) || is_auto(c); }
+// The auto geometry submits its quads in batches (LightQuadBatch); quad keeps Listing 17's loop.
+bool uses_batches(const ShaderConfig& c) { return is_auto(c); }
+Defines batch_defines(const ShaderConfig& c) { return with(light_defines(c), {"BATCH " + std::to_string(c.tile_batch)}); }
 bool uses_stencil(const ShaderConfig& c) { return geometry_is(c, LightGeometry::stencil); }
 bool uses_tiles(const ShaderConfig& c) { return geometry_is(c, LightGeometry::tiles) || is_auto(c); }
 Defines point_linear(Defines d) { return with(std::move(d), {"LIGHT_POINT_ONLY"}); }
@@ -152,6 +155,12 @@ const std::vector<ShaderRow>& shader_rows() {
          [](C c) { return point_linear(light_defines(c)); }},
         {"light_point_inverse", "light.vert", "light.frag", "light pass, point lights, attenuation law", uses_quads,
          [](C c) { return point_inverse(light_defines(c)); }},
+        {"light_batch", "light.vert", "light.frag", "light quads in batches, any light", uses_batches,
+         [](C c) { return batch_defines(c); }},
+        {"light_batch_point", "light.vert", "light.frag", "light quads in batches, the tutorial's point lights",
+         uses_batches, [](C c) { return point_linear(batch_defines(c)); }},
+        {"light_batch_point_inverse", "light.vert", "light.frag", "light quads in batches, point lights, attenuation law",
+         uses_batches, [](C c) { return point_inverse(batch_defines(c)); }},
         {"light_volume", "light.vert", "light.frag", "light pass over a volume mesh", uses_volume,
          [](C c) { return with(light_defines(c), {"VOLUME"}); }},
         {"light_volume_point", "light.vert", "light.frag", "volume mesh, the tutorial's point lights", uses_volume,
