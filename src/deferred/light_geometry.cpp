@@ -11,6 +11,7 @@ std::unique_ptr<LightGeometryPass> make_volume_geometry(const ShaderConfig& c, P
 std::unique_ptr<LightGeometryPass> make_stencil_geometry(const ShaderConfig& c, ProgramSet& programs);
 std::unique_ptr<LightGeometryPass> make_tiles_geometry(const ShaderConfig& c, ProgramSet& programs, int width,
                                                        int height);
+std::unique_ptr<LightGeometryPass> make_screen_geometry(const ShaderConfig& c, ProgramSet& programs);
 
 std::unique_ptr<LightGeometryPass> make_light_geometry(const ShaderConfig& c, ProgramSet& programs, int width,
                                                        int height) {
@@ -19,7 +20,7 @@ std::unique_ptr<LightGeometryPass> make_light_geometry(const ShaderConfig& c, Pr
         case LightGeometry::volume: return make_volume_geometry(c, programs);
         case LightGeometry::stencil: return make_stencil_geometry(c, programs);
         case LightGeometry::tiles: return make_tiles_geometry(c, programs, width, height);
-        case LightGeometry::screen:
+        case LightGeometry::screen: return make_screen_geometry(c, programs);
         case LightGeometry::automatic: throw Error(std::string("light geometry ") + light_geometry_name(c.paths.light_geometry) + ": not built yet");
     }
     return nullptr;

@@ -19,13 +19,15 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
     c.opts = asked;
     c.opts.depth = c.paths.depth_path;
     c.opts.tile_size = c.paths.tile_size, c.opts.tile_lights = c.paths.tile_lights;  // auto resolved
-    if (c.paths.light_geometry != LightGeometry::tiles) return c;
-    // The batch the uniform arrays hold: five vec4s a light within the fragment stage's uniform
-    // budget (GL 2.0 guarantees 64 vec4s; llvmpipe and NVIDIA give 1024), a few vec4s kept for the
-    // other uniforms, and below tile_plan's empty-slot index 255.
+    if (c.paths.light_geometry != LightGeometry::tiles && c.paths.light_geometry != LightGeometry::screen) return c;
+    // The batch the uniform arrays hold (tiles, and screen's lights a draw): five vec4s a light
+    // within the fragment stage's uniform budget (GL 2.0 guarantees 64 vec4s; llvmpipe and NVIDIA
+    // give 1024), a few vec4s kept for the other uniforms, and below tile_plan's empty-slot index 255.
     GLint comps = 0;
     glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
-    c.tile_batch = c.opts.tile_plan == TileGrouping::groups ? c.opts.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
+    const bool groups = c.paths.light_geometry == LightGeometry::tiles && c.opts.tile_plan == TileGrouping::groups;
+    c.tile_batch = groups ? c.opts.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
+    if (c.paths.light_geometry == LightGeometry::screen) return c;  // one rounding per pixel, as the demo's
     // P-buffer 0 is RGBA8: several lights summed in one pass are each rounded as their own pass
     // would be, as this GL rounds into RGBA8, measured once (gl/rounding_probe.h): llvmpipe rounds
     // t x 255 to nearest, an exact tie to even; the H200 truncates t to 12 bits first, which rounds
@@ -87,6 +89,11 @@ Defines tiles_defines(const ShaderConfig& c) {
     return d;
 }
 
+// light_screen.frag: a batch of lights in uniform arrays, every one at every pixel.
+Defines screen_defines(const ShaderConfig& c) {
+    return with(light_defines(c, false), {"BATCH " + std::to_string(c.tile_batch)});
+}
+
 Defines blur_defines(const ShaderConfig& c, bool select) {
     const PostOptions& p = c.opts.post;
     Defines d = {"NUMPOINTS " + std::to_string(p.bloom_taps)};
@@ -107,6 +114,10 @@ Defines aa_defines(const ShaderConfig& c) {
 bool always(const ShaderConfig&) { return true; }
 bool material_variants(const ShaderConfig& c) { return c.opts.skip.material_variants; }
 bool geometry_is(const ShaderConfig& c, LightGeometry g) { return c.paths.light_geometry == g; }
+// The per-light quad programs (light_pass.h LightQuads): every geometry but tiles and screen.
+bool quad_programs(const ShaderConfig& c) {
+    return !geometry_is(c, LightGeometry::tiles) && !geometry_is(c, LightGeometry::screen);
+}
 // The tiles' depth spans need a float target behind a framebuffer object; without them the plan
 // runs without depth culling.
 bool tile_depth(const ShaderConfig& c) {
@@ -132,10 +143,9 @@ const std::vector<ShaderRow>& shader_rows() {
          material_variants, [](C c) { return with(depth_defines(c), {"NO_SPECULAR"}); }, true},
         // Lighting stage (§3.4): the light pass for spot, directional and attenuated lights, and the
         // tutorial's point lights with Equation 2 (LIGHT_POINT_ONLY: no type or law selection).
-        {"light", "light.vert", "light.frag", "light pass, any light (Listing 20)",
-         [](C c) { return !geometry_is(c, LightGeometry::tiles); }, [](C c) { return light_defines(c); }},
-        {"light_point", "light.vert", "light.frag", "light pass, the tutorial's point lights",
-         [](C c) { return !geometry_is(c, LightGeometry::tiles); },
+        {"light", "light.vert", "light.frag", "light pass, any light (Listing 20)", quad_programs,
+         [](C c) { return light_defines(c); }},
+        {"light_point", "light.vert", "light.frag", "light pass, the tutorial's point lights", quad_programs,
          [](C c) { return with(light_defines(c), {"LIGHT_POINT_ONLY"}); }},
         {"light_volume", "light.vert", "light.frag", "light pass over a volume mesh",
          [](C c) { return geometry_is(c, LightGeometry::volume) || geometry_is(c, LightGeometry::stencil); },
@@ -153,6 +163,13 @@ const std::vector<ShaderRow>& shader_rows() {
         {"light_tiles_point", "light.vert", "light_tiles.frag", "tiles: the tutorial's point lights",
          [](C c) { return geometry_is(c, LightGeometry::tiles); },
          [](C c) { return with(tiles_defines(c), {"LIGHT_POINT_ONLY"}); }},
+        // LearnOpenGL's deferred demo's lighting pass (light_geometry_screen.cpp): every light of a
+        // batch at every pixel, no in-shader rejections.
+        {"light_screen", "light.vert", "light_screen.frag", "screen: every light at every pixel, any type",
+         [](C c) { return geometry_is(c, LightGeometry::screen); }, screen_defines},
+        {"light_screen_point", "light.vert", "light_screen.frag", "screen: the tutorial's point lights",
+         [](C c) { return geometry_is(c, LightGeometry::screen); },
+         [](C c) { return with(screen_defines(c), {"LIGHT_POINT_ONLY"}); }},
         {"tile_depth", "post.vert", "tile_depth.frag", "tiles: each tile column's depth span per row", tile_depth,
          [](C c) { return with(depth_defines(c), {tile_size(c)}); }},
         {"tile_depth_reduce", "post.vert", "tile_depth_reduce.frag", "tiles: a tile's rows together", tile_depth,
