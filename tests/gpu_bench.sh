@@ -139,7 +139,7 @@ run)
     # max_lsb_vs_quad column: is the in-shader sum of several lights the blend's sum here?
     if part tiles; then
         $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-30} \
-            --lights ${GPU_BENCH_TILES_LIGHTS:-own,1024,1024-overlap,32-large} --light-geometry quad,volume,stencil,tiles \
+            --lights ${GPU_BENCH_TILES_LIGHTS:-own,1024,1024-overlap,32-large} --light-geometry quad,volume,stencil,tiles,screen \
             --json "$out/gpu_bench_tiles_1920x1080.json" --report "$out/gpu_bench_tiles_1920x1080.md" \
             | tee "$out/gpu_bench_tiles_1920x1080.txt"
         # Per stage, and where the tiles' CPU time goes: the depth spans' read-back (a pipeline

@@ -36,6 +36,9 @@ TEST(Fallbacks, EveryCombinationMatchesFullCapabilities) {
     Scene s = default_scene();
     ShaderOptions opts;
     opts.post.bloom = opts.post.aa = true;  // the post passes sample padded buffers too
+    // The tutorial's quads: the light fragments below compare the work, and auto's choice of paths
+    // follows the capabilities (without framebuffer objects the tiles cull nothing).
+    opts.light_geometry = LightGeometry::quad;
     auto full = render_scene(s, w, h, opts);
     std::printf("[ renderer ] %s, %dx%d, bloom + anti-alias on\n", full.renderer.c_str(), w, h);
     std::printf("[ matrix   ] %-45s %-8s %-10s %-5s %-5s %8s %9s %8s\n", "forced off", "depth", "gbuffer", "rt",

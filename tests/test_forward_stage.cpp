@@ -61,6 +61,7 @@ TEST(PathsForward, TheForwardStageGetsTheSceneDepthByBlitOrPass) {
     c.glsl120 = c.fbo = c.draw_buffers = c.depth_texture = true;
     c.max_draw_buffers = 4;
     ShaderOptions o;
+    o.light_geometry = LightGeometry::quad;  // auto may draw volumes: it has the hand-off, run where it does
     EXPECT_FALSE(choose_paths(c, o).accum_depth) << "no forward stage, no hand-off";
     o.show_lights = true;
     Paths p = choose_paths(c, o);

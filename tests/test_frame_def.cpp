@@ -111,7 +111,7 @@ TEST(ShaderTable, EveryRowCompilesWhereItIsUsed) {
     o.post.bloom = true;
     o.ssao.on = true;
     build(o);
-    for (LightGeometry g : {LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles}) {
+    for (LightGeometry g : {LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles, LightGeometry::screen}) {
         ShaderOptions t;
         t.light_geometry = g;
         t.show_lights = true;  // the depth hand-off

@@ -263,3 +263,73 @@ TEST(LightGeometry, TilesDepthCullingOnThePositionPaths) {
 }
 
 }  // namespace dsr::test
+
+namespace dsr::test {
+
+// The screen geometry, LearnOpenGL's deferred demo's lighting pass: every light at every pixel in
+// full-screen draws of a batch each, the sum rounded to 8 bits once where quad rounds each light's
+// pass, so its image is quad's within a few LSB, not equal. Every pixel enters the shader (no
+// scissor, no test, no discard): light_fragments is the screen's pixels times the draws.
+TEST(LightGeometry, ScreenIsQuadWithinAFewLsb) {
+    struct Case {
+        const char* name;
+        Scene scene;
+        double max_lsb, mean_lsb;
+    };
+    // Measured on llvmpipe: 1 LSB (mean 0.009), 2 (0.134), and 8 (0.755) where about 20 lights
+    // meet at a pixel, each of quad's passes rounded by up to half a step.
+    const std::vector<Case> cases = {
+        {"screen_default", default_scene(), 2, 0.05},
+        {"screen_lights", load_scene(resource_dir("data") + "/lights.scene"), 2, 0.2},  // spot and directional
+        {"screen_512", with_overlapping_lights(default_scene(), 512), 10, 1.0},         // several batches
+    };
+    for (const Case& c : cases) {
+        const RenderResult quad = render_scene(c.scene, kW, kH, with_geometry(LightGeometry::quad));
+        const RenderResult screen = render_scene(c.scene, kW, kH, with_geometry(LightGeometry::screen));
+        EXPECT_EQ(screen.paths.light_geometry, LightGeometry::screen);
+        const ImageDiff d = compare_logged(c.name, screen.image, quad.image, c.max_lsb / 255.0);
+        std::printf("[ screen   ] %s: %d lights, %d draws, max %.0f LSB, mean %.4f LSB\n", c.name,
+                    screen.stats.lights_drawn, screen.stats.light_passes, d.max_lsb(), d.mean_lsb());
+        EXPECT_LE(d.max_lsb() - 1e-3, c.max_lsb) << c.name;
+        EXPECT_LT(d.mean_lsb(), c.mean_lsb) << c.name;
+        EXPECT_EQ(screen.stats.lights_drawn, quad.stats.lights_drawn) << c.name;
+        EXPECT_GE(screen.stats.light_passes, 1);
+        EXPECT_LE(screen.stats.light_passes, (screen.stats.lights_drawn + 127) / 128 + 1) << c.name;
+        EXPECT_EQ(screen.stats.light_fragments, (long long)screen.stats.light_passes * kW * kH) << c.name;
+    }
+}
+
+// auto (light_cost.h): each light by quad (in batches), volume or tiles, mixed in one frame, and the
+// image is quad's to the byte whatever it chose: as the model chooses, and with each path forced by
+// its starting scales (DSR_LIGHT_COST_SCALE: a large scale keeps a path out). Every light is
+// counted on exactly one path.
+TEST(LightGeometry, AutoIsQuadToTheByteWhateverItChooses) {
+    struct Case {
+        const char* name;
+        Scene scene;
+    };
+    const Scene base = default_scene();
+    const std::vector<Case> cases = {{"own", base},
+                                     {"256", bench_scene(base, LightSpec{256, LightSet::spread})},
+                                     {"1024-overlap", bench_scene(base, LightSpec{1024, LightSet::overlap})}};
+    int used[3] = {0, 0, 0};
+    for (const char* scale : {"", "1,1000,1000", "1000,1,1000", "1000,1000,1"}) {
+        setenv("DSR_LIGHT_COST_SCALE", scale, 1);
+        for (const Case& c : cases) {
+            const RenderResult quad = render_scene(c.scene, kW, kH, with_geometry(LightGeometry::quad));
+            const RenderResult a = render_scene(c.scene, kW, kH, with_geometry(LightGeometry::automatic));
+            expect_same(std::string("auto_") + c.name + (*scale ? std::string("_") + scale : ""), a, quad);
+            ASSERT_TRUE(a.stats.auto_geometry);
+            EXPECT_EQ(a.stats.auto_lights[0] + a.stats.auto_lights[1] + a.stats.auto_lights[2], a.stats.lights_drawn)
+                << c.name << " " << scale;
+            for (int p = 0; p < 3; ++p) used[p] += a.stats.auto_lights[p];
+            std::printf("[ auto     ] %s, scales '%s': quad %d, volume %d, tiles %d of %d lights, %d passes\n", c.name,
+                        scale, a.stats.auto_lights[0], a.stats.auto_lights[1], a.stats.auto_lights[2],
+                        a.stats.lights_drawn, a.stats.light_passes);
+        }
+    }
+    unsetenv("DSR_LIGHT_COST_SCALE");
+    for (int p = 0; p < 3; ++p) EXPECT_GT(used[p], 0) << "path " << p << " never taken";
+}
+
+}  // namespace dsr::test

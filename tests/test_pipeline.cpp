@@ -61,6 +61,7 @@ TEST(Pipeline, ListingTwoLightingDiffers) {
 TEST(Pipeline, ScissorChangesFragmentsNotImage) {
     Scene s = default_scene();
     ShaderOptions on, off;
+    on.light_geometry = off.light_geometry = LightGeometry::quad;  // the tutorial's scissored quads (§3.4.2)
     on.skip.light_depth_test = off.skip.light_depth_test = false;
     on.skip.light_sphere_test = off.skip.light_sphere_test = false;
     off.scissor = false;
@@ -80,6 +81,7 @@ TEST(Pipeline, ScissorChangesFragmentsNotImage) {
 TEST(Pipeline, LightDepthTestChangesFragmentsNotImage) {
     Scene s = default_scene();
     ShaderOptions with, without;
+    with.light_geometry = without.light_geometry = LightGeometry::quad;  // one counted pass per light
     with.skip.light_sphere_test = without.skip.light_sphere_test = false;
     without.skip.light_depth_test = false;
     for (DepthPath p : {DepthPath::texture, DepthPath::packed}) {

@@ -14,10 +14,16 @@ namespace dsr::bench {
 
 enum class Comparison { at_most, at_least };  // figure <= threshold, figure >= threshold
 
-// Where a goal is judged: at the scene's own light count and at kManyLights (a line each), or once
-// on the rows its `on` names.
-enum class Scope { per_light_count, once };
+// Where a goal is judged: at the scene's own light count and at kManyLights (a line each), once
+// on the rows its `on` names, or on each of goal_light_sets() (a line each).
+enum class Scope { per_light_count, once, per_light_set };
 constexpr int kManyLights = 1024;
+// The size and light count the floor goal is judged at (a GPU goal: the floor leaves out the
+// frame's fixed costs, which weigh more the smaller the frame, so its ratio depends on the size).
+constexpr int kFloorWidth = 1920, kFloorHeight = 1080, kFloorLights = kManyLights;
+
+// The --lights entries a per_light_set goal is judged on: the full bench's scenes but 32.
+const std::vector<std::string>& goal_light_sets();
 
 // goals() prints both groups; geometry_goals() the light geometries' (docs/light_geometry.md).
 enum class GoalGroup { renderer, light_geometry };
@@ -35,13 +41,15 @@ struct Figure {
     std::vector<std::string> info;  // lines of information that follow the goal's line (never judged)
 };
 
-// What a measure reads: the rows, the scene judged, the light count (per_light_count goals), the
-// GL's invocation counter where it was probed.
+// What a measure reads: the rows, the scene judged, the light count (per_light_count goals; the
+// scene's own for the others), the GL's invocation counter where it was probed, and the --lights
+// entry a per_light_set goal judges ("own", "256", "1024-overlap", ...).
 struct GoalInput {
     const std::vector<Row>& rows;
     const std::string& scene;
     int lights;
     const std::optional<InvocationProbe>& probe;
+    std::string set = "";
 };
 
 struct Goal {
@@ -49,13 +57,14 @@ struct Goal {
     GoalGroup group;
     Scope scope;
     // The goal as printed. {cmp}: "<=" or ">=" ({cmp words}: "at most" or "at least"); {t}: the threshold (%g); {on}: the --lights entry it
-    // is judged on; {scene}, {lights}: the scene and light count judged; [...]: only on a judged line.
+    // is judged on; {scene}, {lights}: the scene and light count judged; {set}: the --lights entry
+    // of a per_light_set goal; [...]: only on a judged line.
     const char* sentence;
     // The goal as a plain sentence for the summary `dsr bench` prints first (the same placeholders).
     const char* plain;
     double threshold;
     Comparison comparison;
-    const char* on;  // the --lights entry a `once` goal reads ("256", "1024-overlap", "32-large"); "" otherwise
+    const char* on;  // the --lights entry a `once` goal reads ("256", "1024-overlap", "32-large", "4096"); "" otherwise
     Figure (*measure)(const Goal& goal, const GoalInput& in);
 };
 
@@ -79,6 +88,10 @@ const Row* fastest_row(const std::vector<Row>& rows, const std::string& scene, i
 // The default configuration with this light geometry.
 const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& scene, int lights,
                              LightGeometry geometry);
+
+// dsr's default: the default configuration with the default light geometry, auto; quad's row
+// where the run has no auto row. Null when it has neither.
+const Row* find_default_row(const std::vector<Row>& rows, const std::string& scene, int lights);
 
 // One goal judged on one scene and light count: what goals() prints and what the summary says.
 enum class Verdict { met, not_met, not_judged };

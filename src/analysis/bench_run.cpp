@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <tuple>
 
 #include "dsr_clock.h"
 #include "analysis/analytic_reference.h"
@@ -48,6 +49,7 @@ struct Setup {
 // Everything one scene variant (scene, light count, size) shares across its rows.
 struct Variant {
     std::string name;
+    int w = 0, h = 0;  // variant_size: the sweep's, or the demo's for N-large
     Scene scene;
     int sweep_index = 0;
     std::string lights_label;
@@ -91,7 +93,7 @@ Row base_row(const Config& cfg, const Variant& v, Renderer renderer) {
     r.scene = v.name;
     r.renderer = renderer;
     r.lights = int(v.scene.lights.size());
-    r.w = cfg.w, r.h = cfg.h;
+    r.w = v.w, r.h = v.h;
     r.sweep_index = v.sweep_index;
     r.lights_label = v.lights_label;
     return r;
@@ -111,7 +113,7 @@ std::unique_ptr<RowRun> deferred(const Setup& st, const Variant& v, const Row& w
     o.gbuffer_half = want.gbuffer_half;
     o.post.bloom = o.post.aa = false;  // the tutorial's core passes only; post costs the same on every row
     auto run = std::make_unique<RowRun>();
-    run->ds = std::make_unique<DeferredShader>(st.caps, st.cfg.w, st.cfg.h, o, st.shaders);
+    run->ds = std::make_unique<DeferredShader>(st.caps, v.w, v.h, o, st.shaders);
     run->ds->set_scene(v.scene);
     Row& r = run->row = base_row(st.cfg, v, Renderer::deferred);
     r.depth = want.depth;
@@ -134,7 +136,7 @@ std::unique_ptr<RowRun> forward(const Setup& st, const Variant& v, ForwardMode m
     o.mode = mode;
     o.float_target = float_target;
     auto run = std::make_unique<RowRun>();
-    run->fr = std::make_unique<ForwardRenderer>(st.caps, st.cfg.w, st.cfg.h, o, st.shaders);
+    run->fr = std::make_unique<ForwardRenderer>(st.caps, v.w, v.h, o, st.shaders);
     run->fr->set_scene(v.scene);
     run->row = base_row(st.cfg, v, mode == ForwardMode::single ? Renderer::forward_single : Renderer::forward_multi);
     run->row.float_accum = float_target;
@@ -164,6 +166,7 @@ Variant make_variant(const Setup& st, const std::string& path, const std::string
                      int sweep_index, const std::function<void(const std::string&)>& say) {
     Variant v;
     v.name = name;
+    std::tie(v.w, v.h) = variant_size(st.cfg, spec.set);
     v.scene = bench_scene(load_scene(path), spec);
     v.sweep_index = sweep_index;
     v.lights_label = spec.count < 0 ? "own"
@@ -172,8 +175,8 @@ Variant make_variant(const Setup& st, const std::string& path, const std::string
                                                                                    : "");
     if (analytic_capable(v.scene)) {
         const double t0 = now_ms();
-        v.trace = analytic_trace(v.scene, st.cfg.w, st.cfg.h);
-        v.interior = interior_mask(*v.trace, st.cfg.w, st.cfg.h);
+        v.trace = analytic_trace(v.scene, v.w, v.h);
+        v.interior = interior_mask(*v.trace, v.w, v.h);
         say(printf_line("bench: analytic reference of %s with %zu lights traced in %.1f s", v.name.c_str(),
                         v.scene.lights.size(), (now_ms() - t0) / 1000));
     }
@@ -251,7 +254,7 @@ Floors build_floors(const Setup& st, const Variant& v, const Runs& runs, bool fi
     for (auto& run : runs)
         if (run->ds && !floors.bench.count(layout_of(*run->ds))) {
             const GbufferLayout l = layout_of(*run->ds);
-            floors.bench[l] = std::make_unique<FloorBench>(st.caps, st.cfg.w, st.cfg.h, l, st.shaders);
+            floors.bench[l] = std::make_unique<FloorBench>(st.caps, v.w, v.h, l, st.shaders);
             floors.bench[l]->set_scene(v.scene);
         }
     return floors;
@@ -267,7 +270,7 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
     for (auto& run : runs) {
         double first = 0;
         for (int i = 0; i < cfg.warmup; ++i) {
-            double ms = run->frame(v.scene, cfg.w, cfg.h);
+            double ms = run->frame(v.scene, v.w, v.h);
             if (i == 0) first = ms;
             if (ms > kSlowFrameMs) break;  // a slow frame is its own warm-up
         }
@@ -282,8 +285,8 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
     for (int f = 0; f < rounds; ++f) {
         for (auto& run : runs) {
             if (f >= run->row.frames) continue;
-            run->ms.push_back(run->frame(v.scene, cfg.w, cfg.h));
-            if (f + 1 == run->row.frames) run->image = opaque(read_pixels(cfg.w, cfg.h));
+            run->ms.push_back(run->frame(v.scene, v.w, v.h));
+            if (f + 1 == run->row.frames) run->image = opaque(read_pixels(v.w, v.h));
         }
         if (f < cfg.frames)  // (a) in the same rounds, as many frames as the fast rows
             for (auto& [l, fb] : floors.bench) floors.fill_ms[l].push_back(fb->fill_frame(v.scene));
@@ -291,7 +294,7 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
     for (auto& run : runs)
         if (run->ds) {
             run->ds->set_counting(true);
-            run->last = run->ds->render(v.scene, cfg.w, cfg.h);
+            run->last = run->ds->render(v.scene, v.w, v.h);
         }
 }
 
@@ -310,10 +313,10 @@ std::map<GbufferLayout, FloorParts> floor_parts(Floors& floors) {
 // The variant's ideal count: the analytic trace's exact eye depth where the scene allows,
 // otherwise the first depth-texture row's 24-bit depth codes.
 IdealCount variant_ideal(const Config& cfg, const Variant& v, const Runs& runs) {
-    if (v.trace) return ideal_from_eye_depth(v.scene, cfg.w, cfg.h, v.trace->eye_depth);
+    if (v.trace) return ideal_from_eye_depth(v.scene, v.w, v.h, v.trace->eye_depth);
     for (auto& run : runs)
         if (run->ds && run->ds->options().depth == DepthPath::texture)
-            return ideal_from_depth_codes(v.scene, cfg.w, cfg.h, run->ds->read_gbuffer_depth_codes());
+            return ideal_from_depth_codes(v.scene, v.w, v.h, run->ds->read_gbuffer_depth_codes());
     return {};
 }
 
@@ -345,7 +348,7 @@ void finish_row(const Config& cfg, const Variant& v, RowRun& run, const IdealCou
         auto p = parts.find(layout_of(*run.ds));
         if (p != parts.end()) {
             FloorParts fp = p->second;
-            fp.post_ms = post_floor_ms(run.ds->options().post, cfg.w, cfg.h, fp.light_ns_per_fragment);
+            fp.post_ms = post_floor_ms(run.ds->options().post, v.w, v.h, fp.light_ns_per_fragment);
             r.floor_fill_ms = fp.fill_ms;
             r.floor_light_ns = fp.light_ns_per_fragment;
             r.floor_post_ms = fp.post_ms;
@@ -399,6 +402,20 @@ bool analytic_capable(const Scene& s) {
     for (const Material& m : s.materials)
         if (m.diffuse_map >= 0 || m.normal_map >= 0 || m.specular_map >= 0) return false;
     return true;
+}
+
+std::pair<int, int> variant_size(const Config& cfg, LightSet set) {
+    if (set == LightSet::large && !cfg.size_given) return {kDemoWidth, kDemoHeight};
+    return {cfg.w, cfg.h};
+}
+
+std::pair<int, int> context_size(const Config& cfg) {
+    int w = cfg.w, h = cfg.h;
+    for (size_t i = 0; i < cfg.lights.size(); ++i) {
+        const auto [vw, vh] = variant_size(cfg, i < cfg.light_sets.size() ? cfg.light_sets[i] : LightSet::spread);
+        w = std::max(w, vw), h = std::max(h, vh);
+    }
+    return {w, h};
 }
 
 int frames_for(double first_ms, int frames) {

@@ -11,6 +11,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/bench_scenes.h"
@@ -25,6 +26,7 @@ namespace dsr::bench {
 struct Config {
     bool quick = false;
     int w = 512, h = 512;
+    bool size_given = false;  // --size given: every variant at w x h (else N-large at the demo's, variant_size)
     int frames = 10, warmup = 2;
     std::vector<int> lights;  // light counts of the sweep; -1: the scene's own lights
     std::vector<LightSet> light_sets;  // parallel to lights (bench_scenes.h); missing: spread
@@ -34,9 +36,9 @@ struct Config {
     TileGrouping tile_plan = ShaderOptions{}.tile_plan;
     bool tile_depth = ShaderOptions{}.tile_depth;
     // Light geometries with rows of their own (the default configuration with each); quad's rows
-    // are always there.
+    // are always there. screen is LearnOpenGL's lighting pass, measured beside dsr's (goal `demo`).
     std::vector<LightGeometry> geometries = {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil,
-                                             LightGeometry::tiles};
+                                             LightGeometry::tiles, LightGeometry::screen};
 };
 
 // Which renderer a row measured: the deferred one, or the forward one in one of its modes
@@ -100,6 +102,12 @@ std::string config_text(const Row& r);
 // True when every material is constant (no maps), so the analytic reference applies.
 bool analytic_capable(const Scene& s);
 
+// The size a scene variant of `set` runs at: N-large (LearnOpenGL's demo) at the demo's
+// kDemoWidth x kDemoHeight unless --size was given; every other variant at the sweep's w x h.
+std::pair<int, int> variant_size(const Config& cfg, LightSet set);
+// The context the sweep needs: as large as every variant of cfg.lights in each dimension.
+std::pair<int, int> context_size(const Config& cfg);
+
 // Frames to time after warm-up: the configured count, unless one frame takes over 2 s (forward
 // passes at 1024 lights on a software rasteriser), then as many as fit in 20 s, at least 3.
 int frames_for(double first_ms, int frames);
@@ -123,7 +131,7 @@ IdealCount ideal_from_eye_depth(const Scene& scene, int w, int h, const std::vec
 IdealCount ideal_from_depth_codes(const Scene& scene, int w, int h, const std::vector<uint32_t>& codes);
 
 // Measures the rows of each scene variant on the current GL context, which must be at least
-// cfg.w x cfg.h (the caller creates it with create_context).
+// context_size(cfg) (the caller creates it with create_context).
 class Runner {
 public:
     Runner(const Config& cfg, const Caps& caps, const std::string& shader_dir);

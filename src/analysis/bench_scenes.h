@@ -52,5 +52,8 @@ Scene with_overlapping_lights(const Scene& scene, int n);
 // (1, 0.7, 1.8) cut at the threshold 5/256 (radii 3.9-5.1, rectangles over most of the screen:
 // tests/test_bench_scenes.cpp). n = 32 is the demo's own set; larger n continue the same sequence.
 Scene large_lights_scene(int n);
+// The demo's window (its SCR_WIDTH x SCR_HEIGHT): the size `dsr bench` runs N-large at unless
+// --size is given (bench_run.h variant_size).
+constexpr int kDemoWidth = 800, kDemoHeight = 600;
 
 }  // namespace dsr

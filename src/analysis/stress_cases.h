@@ -39,7 +39,13 @@ struct StressCase {
     std::string path;       // "texture" or an encoding name
     Scene scene;
     int width = 256, height = 256;
-    ShaderOptions opts;     // depth path, encoding, skips, scissor (the runner sets float_accum)
+    // depth path, encoding, skips, scissor (the runner sets float_accum); the tutorial's quad per
+    // light unless `dsr stress --light-geometry` says otherwise
+    ShaderOptions opts = [] {
+        ShaderOptions o;
+        o.light_geometry = LightGeometry::quad;
+        return o;
+    }();
     double far_near = 0;    // the camera's far/near
     double light_radius = 0;                // the first light's radius (0: no lights)
     std::vector<int> no_reference_meshes;   // meshes left out of the LSB comparison (zero normals

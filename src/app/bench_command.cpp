@@ -47,7 +47,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
     if (quick)
         cfg.w = cfg.h = BenchSettings::kQuickSize, cfg.frames = BenchSettings::kQuickFrames,
         cfg.warmup = BenchSettings::kQuickWarmup;
-    if (flags.width) cfg.w = flags.width, cfg.h = flags.height;
+    if (flags.width) cfg.w = flags.width, cfg.h = flags.height, cfg.size_given = true;
     if (flags.frames) cfg.frames = flags.frames;
     const ShaderOptions& tiles = flags.tiles.shader;  // --tile-*: the option table's entries, its defaults
     cfg.tile_size = tiles.tile_size, cfg.tile_lights = tiles.tile_lights;
@@ -104,7 +104,8 @@ int cmd_bench(const std::vector<std::string>& argv) {
     if (!report_path.empty()) outputs.add("--report", report_path), outputs.add("--report's plot", plot_path);
     const Stage stage("benchmarking");
 
-    auto ctx = create_context(ContextDesc{context_backend(flags.context), cfg.w, cfg.h});
+    const auto [context_w, context_h] = bench::context_size(cfg);  // N-large may run at the demo's size
+    auto ctx = create_context(ContextDesc{context_backend(flags.context), context_w, context_h});
     const Caps caps = probe_caps();
     bench::Summary sum;
     sum.machine = bench::machine_name();

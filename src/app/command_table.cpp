@@ -182,7 +182,7 @@ Command bench_command(BenchSettings& s) {
                 std::string(BenchSettings::kBenchLights) + "; --quick " + BenchSettings::kQuickLights,
                 "light counts of the sweep: own, the scene's own lights; N lights spread over the floor; N-overlap, "
                 "N lights (a multiple of 8) in clusters of 8, every lit pixel inside at least 8; N-large, 9 boxes "
-                "and N lights covering most of the screen, as LearnOpenGL's demo",
+                "and N lights covering most of the screen, as LearnOpenGL's demo, at its 800x600 unless --size is given",
                 {}, [&s](Args& a, const std::string& flag) {
                     const std::string v = a.value(flag);
                     std::stringstream ss(v);
@@ -202,8 +202,9 @@ Command bench_command(BenchSettings& s) {
         file_flag({"--report"}, "FILE.md", s.report, {".md"},
                   "markdown report: the full table, each goal's working, the notes; the plot beside it as "
                   "FILE_plot.png (a folder of one level is created)"),
-        size_flag("--size", s.width, s.height, "frame size",
-                  std::to_string(full.w) + "x" + std::to_string(full.h) + "; --quick " + qsize),
+        size_flag("--size", s.width, s.height, "frame size of every row",
+                  std::to_string(full.w) + "x" + std::to_string(full.h) + "; --quick " + qsize + "; N-large " +
+                      std::to_string(kDemoWidth) + "x" + std::to_string(kDemoHeight)),
         int_flag("--frames", "N", 1, 1000, s.frames, "timed frames per row",
                  std::to_string(full.frames) + "; --quick " + std::to_string(BenchSettings::kQuickFrames)),
         lights,

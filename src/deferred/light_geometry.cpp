@@ -13,6 +13,7 @@ std::unique_ptr<LightGeometryPass> make_tiles_geometry(const ShaderConfig& c, Pr
                                                        int height);
 std::unique_ptr<LightGeometryPass> make_auto_geometry(const ShaderConfig& c, ProgramSet& programs, int width,
                                                       int height);
+std::unique_ptr<LightGeometryPass> make_screen_geometry(const ShaderConfig& c, ProgramSet& programs);
 
 std::unique_ptr<LightGeometryPass> make_light_geometry(const ShaderConfig& c, ProgramSet& programs, int width,
                                                        int height) {
@@ -22,7 +23,7 @@ std::unique_ptr<LightGeometryPass> make_light_geometry(const ShaderConfig& c, Pr
         case LightGeometry::stencil: return make_stencil_geometry(c, programs);
         case LightGeometry::tiles: return make_tiles_geometry(c, programs, width, height);
         case LightGeometry::automatic: return make_auto_geometry(c, programs, width, height);
-        case LightGeometry::screen: throw Error(std::string("light geometry ") + light_geometry_name(c.paths.light_geometry) + ": not built yet");
+        case LightGeometry::screen: return make_screen_geometry(c, programs);
     }
     return nullptr;
 }

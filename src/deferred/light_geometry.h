@@ -4,6 +4,7 @@
 //   volume   light_geometry_volume.cpp   the back faces of the light's volume mesh
 //   stencil  light_geometry_stencil.cpp  the volume masked by a stencil pass
 //   tiles    light_geometry_tiles.cpp    screen tiles, several lights a pass (§3.4.3's closing remark)
+//   screen   light_geometry_screen.cpp   every light at every pixel (LearnOpenGL's demo, for comparison)
 //   auto     light_geometry_auto.cpp     each light by the cheapest of quad, volume and tiles
 // A geometry draws; whether the frame is counted, and how long it took, is decided outside it
 // (LightingStage::draw_lighting, DeferredShader's timer). A fifth geometry is a new file, a line

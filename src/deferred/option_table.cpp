@@ -97,13 +97,14 @@ std::vector<RenderOption> make_table() {
         "G-buffer target precision: RGBA8 as the tutorial (Figure 3), or half-float targets");
     add(switch_option("scissor", &ShaderOptions::scissor), "light scissor rectangles (§3.4.2, Listing 16)");
     add(choice(
-            "light-geometry", {"auto", "quad", "volume", "stencil", "tiles"},
+            "light-geometry", {"auto", "quad", "volume", "stencil", "tiles", "screen"},
             [](const RenderOptions& r) { return std::string(light_geometry_name(r.shader.light_geometry)); },
             [](RenderOptions& r, const std::string& v) { r.shader.light_geometry = light_geometry_from_name(v); }),
         "how each light reaches its pixels: each by the cheapest of quad, volume and tiles as a cost model "
         "prices it (auto), the tutorial's scissored screen quad, the back faces of the "
         "light's volume mesh, a stencil-masked volume, or screen tiles with several lights a pass "
-        "(docs/light_geometry.md)");
+        "(docs/light_geometry.md); screen is LearnOpenGL's deferred demo's lighting pass, every light at every "
+        "pixel in full-screen passes with no culling (the peer's algorithm, for comparison)");
     add(switch_option("depth-bounds", &ShaderOptions::depth_bounds),
         "quad: EXT_depth_bounds_test on each light's depth span (refused where the GL lacks it, as llvmpipe does)");
     add(choice(

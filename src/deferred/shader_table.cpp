@@ -19,13 +19,19 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
     c.opts = asked;
     c.opts.depth = c.paths.depth_path;
     c.opts.tile_size = c.paths.tile_size, c.opts.tile_lights = c.paths.tile_lights;  // auto resolved
-    if (c.paths.light_geometry != LightGeometry::tiles && c.paths.light_geometry != LightGeometry::automatic) return c;
-    // The batch the uniform arrays hold: five vec4s a light within the fragment stage's uniform
-    // budget (GL 2.0 guarantees 64 vec4s; llvmpipe and NVIDIA give 1024), a few vec4s kept for the
-    // other uniforms, and below tile_plan's empty-slot index 255.
+    if (c.paths.light_geometry != LightGeometry::tiles && c.paths.light_geometry != LightGeometry::automatic &&
+        c.paths.light_geometry != LightGeometry::screen)
+        return c;
+    // The batch the uniform arrays hold (tiles, auto's quads, screen's lights a draw): five vec4s a
+    // light within the fragment stage's uniform budget (GL 2.0 guarantees 64 vec4s; llvmpipe and
+    // NVIDIA give 1024), a few vec4s kept for the other uniforms, and below tile_plan's empty-slot
+    // index 255.
     GLint comps = 0;
     glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
-    c.tile_batch = c.opts.tile_plan == TileGrouping::groups ? c.opts.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
+    const bool groups = (c.paths.light_geometry == LightGeometry::tiles || c.paths.light_geometry == LightGeometry::automatic) &&
+                        c.opts.tile_plan == TileGrouping::groups;
+    c.tile_batch = groups ? c.opts.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
+    if (c.paths.light_geometry == LightGeometry::screen) return c;  // one rounding per pixel, as the demo's
     // P-buffer 0 is RGBA8: several lights summed in one pass are each rounded as their own pass
     // would be, as this GL rounds into RGBA8, measured once (gl/rounding_probe.h): llvmpipe rounds
     // t x 255 to nearest, an exact tie to even; the H200 truncates t to 12 bits first, which rounds
@@ -87,6 +93,11 @@ Defines tiles_defines(const ShaderConfig& c) {
     return d;
 }
 
+// light_screen.frag: a batch of lights in uniform arrays, every one at every pixel.
+Defines screen_defines(const ShaderConfig& c) {
+    return with(light_defines(c, false), {"BATCH " + std::to_string(c.tile_batch)});
+}
+
 Defines blur_defines(const ShaderConfig& c, bool select) {
     const PostOptions& p = c.opts.post;
     Defines d = {"NUMPOINTS " + std::to_string(p.bloom_taps)};
@@ -122,6 +133,7 @@ bool uses_stencil(const ShaderConfig& c) { return geometry_is(c, LightGeometry::
 bool uses_tiles(const ShaderConfig& c) { return geometry_is(c, LightGeometry::tiles) || is_auto(c); }
 Defines point_linear(Defines d) { return with(std::move(d), {"LIGHT_POINT_ONLY"}); }
 Defines point_inverse(Defines d) { return with(std::move(d), {"LIGHT_POINT_INVERSE"}); }
+bool uses_screen(const ShaderConfig& c) { return geometry_is(c, LightGeometry::screen); }
 // The tiles' depth spans need a float target behind a framebuffer object; without them the plan
 // runs without depth culling.
 bool tile_depth(const ShaderConfig& c) {
@@ -184,6 +196,15 @@ const std::vector<ShaderRow>& shader_rows() {
          [](C c) { return point_linear(tiles_defines(c)); }},
         {"light_tiles_point_inverse", "light.vert", "light_tiles.frag", "tiles: point lights, attenuation law",
          uses_tiles, [](C c) { return point_inverse(tiles_defines(c)); }},
+        // LearnOpenGL's deferred demo's lighting pass (light_geometry_screen.cpp): every light of a
+        // batch at every pixel, no in-shader rejections; in the three forms, as the demo's shader
+        // is written for its one kind of light.
+        {"light_screen", "light.vert", "light_screen.frag", "screen: every light at every pixel, any type", uses_screen,
+         screen_defines},
+        {"light_screen_point", "light.vert", "light_screen.frag", "screen: the tutorial's point lights", uses_screen,
+         [](C c) { return point_linear(screen_defines(c)); }},
+        {"light_screen_point_inverse", "light.vert", "light_screen.frag", "screen: point lights, attenuation law",
+         uses_screen, [](C c) { return point_inverse(screen_defines(c)); }},
         {"tile_depth", "post.vert", "tile_depth.frag", "tiles: each tile column's depth span per row", tile_depth,
          [](C c) { return with(depth_defines(c), {tile_size(c)}); }},
         {"tile_depth_reduce", "post.vert", "tile_depth_reduce.frag", "tiles: a tile's rows together", tile_depth,

@@ -62,7 +62,7 @@ std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f) {
     rows_->unbind_texture(0, 4);
     tiles_->unbind_render();
     glActiveTexture(GL_TEXTURE0);
-    check_gl("tile depth spans");
+    check_gl_stage("tile depth spans");
     std::vector<DepthSpan> out(size_t(tx) * ty);
     for (size_t i = 0; i < out.size(); ++i) out[i] = DepthSpan{px[4 * i], px[4 * i + 1]};
     return out;

@@ -1,0 +1,44 @@
+#version 120
+// Light geometry `screen` (src/deferred/light_geometry_screen.cpp): LearnOpenGL's deferred shading
+// demo's lighting pass (5.8.1), a full-screen quad that evaluates every light at every pixel. The
+// uniform arrays hold a batch of BATCH lights, light_count of them set; the G-buffer is read once,
+// then Listing 20's light term is summed over all of them with no depth test, no sphere test and
+// no discard, and the sum is blended once: one rounding to 8 bits per pixel, as the demo's.
+#include "depth_codec.glsl"
+#include "lighting.glsl"
+
+uniform sampler2D normal_map;    // unit 0
+uniform sampler2D diffuse_map;   // unit 1
+uniform sampler2D specular_map;  // unit 2
+uniform sampler2D depth_map;     // unit 3
+uniform vec4 lightpos[BATCH];    // lighting.glsl light_contribution's five vec4s per light
+uniform vec4 lightcolor[BATCH];
+uniform vec4 lightdir[BATCH];
+uniform vec4 lightspot[BATCH];
+uniform vec4 lightatt[BATCH];
+uniform int light_count;         // this draw's lights: slots 0 .. light_count-1
+uniform vec2 planes;
+uniform vec3 zrange;
+uniform vec2 uv_scale;           // texture coordinates and (light.frag's) view ray from gl_FragCoord
+uniform vec4 ray_map;
+
+void main()
+{
+    vec2 texcoord = gl_FragCoord.xy * uv_scale;
+    vec3 pos = surface_eye_pos(depth_map, texcoord, vec3(gl_FragCoord.xy * ray_map.xy + ray_map.zw, -1.0), planes, zrange);
+    vec3 normal = texture2D(normal_map, texcoord).xyz - 0.5;
+    float len = length(normal);
+    normal = len > 0.1 ? normal / len : vec3(0.0);  // background and degenerate normals: unlit (light.frag)
+    vec3 diffuse = texture2D(diffuse_map, texcoord).rgb;
+    vec4 specular = texture2D(specular_map, texcoord);
+    float shininess = decode_shininess(specular.a);
+    vec3 v = view_vector(pos);  // once, not per light
+    vec3 c = vec3(0.0);
+    for (int k = 0; k < BATCH; ++k) {
+        if (k >= light_count)
+            break;
+        c += light_contribution(lightpos[k], lightcolor[k], lightdir[k], lightspot[k], lightatt[k], pos, v, normal,
+                                diffuse, specular.rgb, shininess);
+    }
+    gl_FragColor = vec4(c, 1.0);
+}
