@@ -12,7 +12,7 @@
 #                                    (GPU_BENCH_SMOKE=1: build, info and one small render only;
 #                                    GPU_BENCH_SIZES, _FRAMES, _LIGHTS: the bench's sweep;
 #                                    GPU_BENCH_PARTS: some of renders geometry targets ssao
-#                                    forward tiles groups bench, default all)
+#                                    forward tiles auto groups bench, default all)
 #
 # The build links the system's libEGL/libOpenGL (glvnd, the NVIDIA driver behind them), never
 # libOSMesa; it is the same renderer objects as the headless build.
@@ -160,6 +160,25 @@ run)
                 --lights 1024-overlap,32-large --light-geometry quad,tiles ${v#*:} \
                 --json "$out/gpu_bench_tiles_${v%%:*}_1920x1080.json" \
                 --report "$out/gpu_bench_tiles_${v%%:*}_1920x1080.md" > "$out/gpu_bench_tiles_${v%%:*}_1920x1080.txt"
+        done
+    fi
+    # auto (the default) against every fixed geometry and LearnOpenGL's algorithm (screen) in one
+    # run, with each path's share and the model's prediction per frame (--stats auto), and the
+    # demo's own 800x600 for the goal measured on it.
+    if part auto; then
+        $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-30} \
+            --lights ${GPU_BENCH_AUTO_LIGHTS:-own,256,1024,4096,1024-overlap,32-large} \
+            --light-geometry auto,quad,volume,tiles,screen \
+            --json "$out/gpu_bench_auto_1920x1080.json" --report "$out/gpu_bench_auto_1920x1080.md" \
+            | tee "$out/gpu_bench_auto_1920x1080.txt"
+        $dsr bench $src/data/default.scene --context egl --frames ${GPU_BENCH_FRAMES:-30} --lights 32-large \
+            --light-geometry auto,quad,volume,tiles,screen --json "$out/gpu_bench_auto_large.json" \
+            --report "$out/gpu_bench_auto_large.md" | tee "$out/gpu_bench_auto_large.txt"
+        for l in own 1024 4096 1024-overlap 32-large; do
+            for sc in "1,1,1" "1,1000,1000" "1000,1,1000" "1000,1000,1"; do
+                DSR_LIGHT_COST_SCALE=$sc $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --lights $l \
+                    --frames 30 --stats "$out/auto_${l}_${sc//,/_}.json" -o "$out/auto_${l}.png"
+            done
         done
     fi
     # The tiles geometry's other plan (groups), against quad in the same run.

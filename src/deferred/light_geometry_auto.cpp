@@ -17,6 +17,8 @@
 #include "deferred/light_mesh.h"
 #include "deferred/light_pass.h"
 #include "dsr_clock.h"
+#include "gl/entry_points.h"
+#include "gl/gl.h"
 
 namespace dsr {
 
@@ -31,11 +33,17 @@ public:
           model_(default_light_costs(c.caps.software_rasterizer)),
           calib_(start_scale()),
           volume_ok_(c.paths.accum_depth),
-          calibrate_(c.caps.software_rasterizer) {}
+          calibrate_(c.caps.software_rasterizer),
+          gpu_calibrate_(!c.caps.software_rasterizer && c.caps.timer_query && gl_entry.QueryCounter) {}
+
+    ~AutoGeometry() override {
+        if (!queries_.empty()) glDeleteQueries(GLsizei(queries_.size()), queries_.data());
+    }
 
     void resize(int width, int height) override { tiles_->resize(width, height); }
 
     bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) override {
+        collect_gpu_times();
         const double screen_px = double(f.width) * double(f.height);
         features_.assign(f.lights.size(), LightFeature{});
         std::vector<ScissorRect> rects(f.lights.size());
@@ -120,14 +128,25 @@ private:
         return e && *e ? parse_cost_scale(e) : std::array<double, kLightPaths>{1, 1, 1};
     }
 
-    // A path's passes; on a CPU rasteriser timed, and the path's scale updated.
+    // A path's passes, timed, and the path's scale updated: on a CPU rasteriser by glFinish and
+    // the wall clock, as its stages are timed; on a GPU by two timestamp queries
+    // (ARB_timer_query's glQueryCounter, which may sit inside the frame timer's elapsed-time
+    // query), read at the next frame's prepare() where the GPU has finished them, never waited for.
     template <class F>
     void timed(LightPath p, const double* raw, F&& draw) {
         // A path's first frame is not measured: the GL compiles its programs' code on first use
         // (llvmpipe: tens of milliseconds).
-        if (!calibrate_ || !drawn_before_[int(p)]) {
+        if (!drawn_before_[int(p)] || (!calibrate_ && !gpu_calibrate_)) {
             drawn_before_[int(p)] = true;
             draw();
+            return;
+        }
+        if (gpu_calibrate_) {
+            GpuTime t{p, query(), query(), raw[int(p)]};
+            glQueryCounter(t.begin, GL_TIMESTAMP);
+            draw();
+            glQueryCounter(t.end, GL_TIMESTAMP);
+            pending_.push_back(t);
             return;
         }
         glFinish();
@@ -137,6 +156,42 @@ private:
         calib_.add(p, now_ms() - t0, raw[int(p)]);
     }
 
+    // A query of the pool: those of finished measurements are used again.
+    GLuint query() {
+        if (free_.empty()) {
+            queries_.push_back(0);
+            glGenQueries(1, &queries_.back());
+            return queries_.back();
+        }
+        const GLuint q = free_.back();
+        free_.pop_back();
+        return q;
+    }
+
+    // The last frame's GPU measurements that are ready into the calibration; those not ready are
+    // dropped (their queries stay busy until a later frame finds them done).
+    void collect_gpu_times() {
+        std::vector<GpuTime> busy;
+        for (const GpuTime& t : pending_) {
+            GLuint ready = 0;
+            glGetQueryObjectuiv(t.end, GL_QUERY_RESULT_AVAILABLE, &ready);
+            if (!ready) {
+                busy.push_back(t);
+                continue;
+            }
+            GLuint64 t0 = 0, t1 = 0;
+            glGetQueryObjectui64v(t.begin, GL_QUERY_RESULT, &t0);
+            glGetQueryObjectui64v(t.end, GL_QUERY_RESULT, &t1);
+            if (t.raw_ms > 0) calib_.add(t.path, double(t1 - t0) * 1e-6, t.raw_ms);
+            free_.push_back(t.begin), free_.push_back(t.end);
+        }
+        pending_.clear();
+        // Keep waiting on at most a few frames' worth; the rest are given up (their queries leak
+        // into the pool's size, bounded by what a frame asks for).
+        for (const GpuTime& t : busy)
+            if (pending_.size() < 3 * kLightPaths) pending_.push_back(t);
+    }
+
     LightQuadBatch quads_;
     LightMeshes meshes_;
     LightPrograms volume_progs_;
@@ -144,7 +199,15 @@ private:
     LightCostModel model_;
     LightCostCalibration calib_;
     bool volume_ok_;   // the paths give P-buffer 0 the scene's depth (the hand-off)
-    bool calibrate_;
+    bool calibrate_;      // a CPU rasteriser: glFinish and the wall clock
+    bool gpu_calibrate_;  // a GPU with ARB_timer_query: timestamps
+    struct GpuTime {
+        LightPath path;
+        GLuint begin, end;
+        double raw_ms;
+    };
+    std::vector<GLuint> queries_, free_;
+    std::vector<GpuTime> pending_;
     bool drawn_before_[kLightPaths] = {false, false, false};
     static constexpr int kSpansRest = 8;
     int spans_rest_ = 0;  // frames left before the spans are measured again
