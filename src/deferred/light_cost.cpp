@@ -137,7 +137,7 @@ LightPathPlan choose_light_paths(const std::vector<LightFeature>& lights, const 
     return best;
 }
 
-bool spans_worth_measuring(double best_without_tiles_ms, double screen_px, const LightCostModel& m, double tiles_scale) {
+bool spans_worth_measuring(double best_without_tiles_ms, double screen_px, const LightCostModel& m) {
     return best_without_tiles_ms > m.spans_worth * m.spans_mpx_ms * screen_px * kMpx;
 }
 

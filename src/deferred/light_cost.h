@@ -86,7 +86,7 @@ LightPathPlan choose_light_paths(const std::vector<LightFeature>& lights, const 
 
 // Whether measuring the spans is worth it: the best plan without tiles costs more than
 // spans_worth times the spans.
-bool spans_worth_measuring(double best_without_tiles_ms, double screen_px, const LightCostModel& m, double tiles_scale);
+bool spans_worth_measuring(double best_without_tiles_ms, double screen_px, const LightCostModel& m);
 
 // Each path's scale: measured / predicted ms of its passes, smoothed over frames (an exponential
 // average, clamped to [1/4, 4]). A path not drawn in a frame keeps its scale.

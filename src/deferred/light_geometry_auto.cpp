@@ -5,9 +5,8 @@
 // A frame: prepare() prices every light without tiles; where the lights would cost enough for
 // tiles to pay, it measures the tiles' depth spans and prices the tiles with the exact tiles each
 // light keeps; then it chooses (choose_light_paths). draw() draws each path's lights, the quads in
-// batches (LightQuadBatch: a few draws, not one per light). On a CPU
-// rasteriser each path's passes are timed (glFinish and the wall clock, as the stages are) and the
-// model's scale for that path follows what they took.
+// batches (LightQuadBatch: a few draws, not one per light). Each path's passes are timed (see
+// timed()) and the model's scale for that path follows what they took.
 #include <cmath>
 #include <cstdlib>
 
@@ -63,7 +62,7 @@ public:
         // Spans that gave the tiles no light are not measured again for a few frames (a scene
         // whose lights stay as they are would pay for them every frame to learn the same).
         bool tiles_pay = !tiles_->depth_culling() ||
-                         spans_worth_measuring(plan_.predicted_total_ms, screen_px, model_, scale[2]);
+                         spans_worth_measuring(plan_.predicted_total_ms, screen_px, model_);
         if (tiles_pay && tiles_->depth_culling() && spans_rest_ > 0) {
             --spans_rest_;
             tiles_pay = false;
