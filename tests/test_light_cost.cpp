@@ -23,12 +23,13 @@ LightCostModel test_model() {
 double total_of(const std::vector<LightFeature>& ls, const TileGrid& grid, double screen_px, const LightCostModel& m,
                 const std::array<double, kLightPaths>& scale, const std::vector<int>& a, bool spans_paid) {
     double t = 0;
-    bool volume = false, tiles = false;
+    bool used[3] = {false, false, false};
     for (size_t i = 0; i < ls.size(); ++i) {
         t += light_prices(ls[i], grid, m, scale)[size_t(a[i])];
-        volume |= a[i] == 1;
-        tiles |= a[i] == 2;
+        used[a[i]] = true;
     }
+    const bool volume = used[1], tiles = used[2];
+    t += m.path_ms * (int(used[0]) + int(used[1]) + int(used[2]));
     if (volume) t += m.handoff_mpx_ms * screen_px * 1e-6;
     if (tiles && !spans_paid) t += m.spans_mpx_ms * screen_px * 1e-6;
     return t;

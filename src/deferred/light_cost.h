@@ -33,6 +33,7 @@ struct LightCostModel {
     double spans_mpx_ms = 0;                       // the tiles' depth spans, per Mpx of the screen (once)
     double tile_pass_mpx_ms = 0;                   // tiles: per Mpx of tile pixels per pass (read, blend)
     double tile_light_mpx_ms = 0;                  // tiles: per Mpx of (tile pixel, light) pairs
+    double path_ms = 0;                            // once per path a frame uses (its state, its sync)
     // The spans are measured only where the lights would cost more than this many times the spans
     // without tiles: below it, tiles cannot win back what finding out costs.
     double spans_worth = 4;
