@@ -161,9 +161,16 @@ TEST(LightGeometry, AllGeometriesMatchQuadWithSpotAndDirectionalLights) {
         directional |= l.type == Light::Type::directional;
     }
     ASSERT_TRUE(spot && directional);
-    const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
+    // The ambient skip off: each geometry draws the directional light itself (with the skip on the
+    // lighting stage folds the ambient pass into that light's pass before the geometry runs).
+    auto unfolded = [](LightGeometry g) {
+        ShaderOptions o = with_geometry(g);
+        o.skip.ambient_pass = false;
+        return o;
+    };
+    const RenderResult quad = render_scene(s, kW, kH, unfolded(LightGeometry::quad));
     for (LightGeometry g : {LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles}) {
-        const RenderResult r = render_scene(s, kW, kH, with_geometry(g));
+        const RenderResult r = render_scene(s, kW, kH, unfolded(g));
         expect_same(std::string("lights_") + light_geometry_name(g), r, quad);
         if (g != LightGeometry::tiles) {
             EXPECT_GT(r.stats.lights_as_quads, 0) << "the directional light: a full-screen quad";

@@ -91,10 +91,15 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     set_output_size(out_w, out_h);
     const FrameDef f = frame_of(scene.camera, scene.lights, config_.opts.scissor);
     camera_ = scene.camera;
-    timed(timer_, S_GEOMETRY, [&] { geometry_->draw(f, *gpu_, *targets_); });  // 1. geometry stage
+    timed(timer_, S_GEOMETRY, [&] { geometry_->draw(f, *gpu_, *targets_, st); });  // 1. geometry stage
     draw_lights(f, scene, st);                                          // 2. lighting stage
     post_stage(f);                                                      // 3. post-processing
-    timed(timer_, S_FINAL, [&] { final_.draw(*targets_, out_w, out_h); });       // 4. final stage
+    // 4. final stage, unless the caller reads P-buffer 0 itself at its own size (read_output): then
+    // the fixed-function copy into the main frame buffer would give it the same bytes.
+    final_skipped_ = config_.opts.skip.final_pass && read_back_ && out_w == width() && out_h == height() &&
+                     !config_.opts.float_accum;
+    st.final_pass_ran = !final_skipped_;
+    if (!final_skipped_) timed(timer_, S_FINAL, [&] { final_.draw(*targets_, out_w, out_h); });
     std::vector<double> ms;
     st.ms.cpu = thread_cpu_ms() - cpu0;
     st.ms.frame = timer_.end_frame(ms);
@@ -116,9 +121,11 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
 // passes that test against it, and the forward stage after them, all into P-buffer 0.
 void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameStats& st) {
     if (ssao_) timed(timer_, S_SSAO, [&] { ssao_->draw(f, *targets_); });
+    // Where a light covers the whole screen, its pass writes what the ambient pass would have.
+    const std::optional<AmbientFold> fold = lighting_->ambient_fold(f, scene, ssao_ != nullptr);
     timer_.begin(S_AMBIENT);
     fb_bind_render(P_ACCUM);
-    lighting_->draw_ambient(f, scene, *targets_, ssao_.get());
+    if (!fold) lighting_->draw_ambient(f, scene, *targets_, ssao_.get());
     check_gl_stage("lighting stage: ambient pass");
     timer_.end();
     const int units[4] = {0, 1, 2, 3};
@@ -129,7 +136,7 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
         check_gl_stage("lighting stage: depth hand-off");
     }
     timer_.begin(S_LIGHTS);
-    lighting_->draw_lighting(f, *targets_, st);  // Listing 17
+    lighting_->draw_lighting(f, *targets_, st, fold ? &*fold : nullptr);  // Listing 17
     for (int i = 3; i >= 0; --i) mrt_unbind_texture(gbuffer[i], units[i]);
     check_gl_stage("lighting stage: light passes");
     if (config_.paths.forward_stage) {
@@ -151,7 +158,8 @@ void DeferredShader::post_stage(const FrameDef& f) {
 void DeferredShader::geometry_stage(const Scene& scene) {
     if (!gpu_) throw Error("DeferredShader::geometry_stage before set_scene");
     camera_ = scene.camera;
-    geometry_->draw(last_frame(), *gpu_, *targets_);
+    FrameStats st;
+    geometry_->draw(last_frame(), *gpu_, *targets_, st);
 }
 
 void DeferredShader::draw_lights(const Scene& scene, bool scissors, FrameStats& stats) {
@@ -181,6 +189,12 @@ std::vector<uint32_t> DeferredShader::read_gbuffer_depth_codes() {
 }
 
 Image DeferredShader::reconstructed_positions() { return lighting_->reconstructed_positions(last_frame(), *targets_); }
+
+Image DeferredShader::read_output(int out_w, int out_h) {
+    if (!final_skipped_) return read_pixels(out_w, out_h);
+    const PBuffer& b = targets_->pbuffer(P_ACCUM);
+    return read_texture_rgba8(b.texture(0), b.width(), b.height(), b.texture_width(), b.texture_height());
+}
 
 Image DeferredShader::read_pbuffer(int fb) {
     const PBuffer& b = targets_->pbuffer(fb);
