@@ -7,9 +7,12 @@
 // surfaces in front of or behind the light's sphere before shading), LIGHT_SPHERE_TEST (reject
 // surface points outside the sphere), OUTPUT_POSITION (write the
 // reconstructed eye-space position instead of light: accuracy measurements), BATCH (many lights'
-// quads in one draw, each light's parameters from uniform arrays by the quad's slot).
+// quads in one draw, each light's parameters from uniform arrays by the quad's slot), AMBIENT_FOLD (a
+// full-screen light's pass that also writes the background and Listing 15's ambient term, blending
+// off: lighting_stage.cpp; with QUANTIZE_8BIT each term rounded as its own pass would be).
 #include "depth_codec.glsl"
 #include "lighting.glsl"
+#include "quantize.glsl"
 
 uniform sampler2D normal_map;    // unit 0
 uniform sampler2D diffuse_map;   // unit 1
@@ -35,6 +38,10 @@ uniform vec2 planes;             // §3.4.3: (-f/(f-n), -f*n/(f-n))
 uniform vec3 zrange;             // (near, far, log2(far/near)) for the linear and log encodings
 uniform vec2 uv_scale;           // VOLUME: G-buffer texture coordinates per window pixel
 uniform vec4 ray_map;            // view ray (x, y) = gl_FragCoord.xy * ray_map.xy + ray_map.zw, z = -1
+#ifdef AMBIENT_FOLD
+uniform vec3 ambient;            // Listing 15's ambient colour
+uniform vec3 background;         // the colour P-buffer 0 was cleared to
+#endif
 
 #if !defined(VOLUME) && !defined(BATCH)
 varying vec2 texcoord;           // the quad's (light.vert)
@@ -64,6 +71,20 @@ void main()
     vec3 vpos = vec3(gl_FragCoord.xy * ray_map.xy + ray_map.zw, -1.0);
     // pos.z = -planes.y/(planes.x+depth), pos.xy along the view ray; or the stored position.
     vec3 pos = surface_eye_pos(depth_map, texcoord, vpos, planes, zrange);
+#ifdef AMBIENT_FOLD
+    // What the clear and the ambient pass leave (Listing 15: ambient x diffuse where the alpha test
+    // finds a surface, else the background), and the light added to it in this one pass. A
+    // rejected pixel is not discarded: it keeps that, as it would without the light.
+    vec4 surface = texture2D(diffuse_map, texcoord);
+    vec3 base = surface.a > 0.5 ? ambient * surface.rgb : background;
+#ifdef QUANTIZE_8BIT
+    base = quantize8(base);  // as the clear and the ambient pass wrote it into RGBA8
+#endif
+    float base_alpha = surface.a > 0.5 ? surface.a : 1.0;
+#define REJECT { gl_FragColor = vec4(base, base_alpha); return; }
+#else
+#define REJECT discard
+#endif
 #ifdef LIGHT_DEPTH_TEST
     // Beyond the tutorial: a surface outside the sphere's depth span [z-r, z+r] (background
     // included: it sits at the far plane) cannot be lit; reject it before any other work.
@@ -73,7 +94,7 @@ void main()
 #else
     if (lightcolor.w < 1.5 && abs(pos.z - lightpos.z) > lightpos.w)
 #endif
-        discard;
+        REJECT;
 #endif
 #ifdef LIGHT_SPHERE_TEST
     // A point outside the sphere gets att = 0 (Equation 2): nothing to add, so no G-buffer reads.
@@ -81,12 +102,12 @@ void main()
     vec3 d = pos - lightpos.xyz;
 #ifdef POINT_LIGHTS
     if (dot(d, d) >= lightpos.w * lightpos.w)
-        discard;
+        REJECT;
 #else
     if (lightcolor.w < 1.5 && dot(d, d) >= lightpos.w * lightpos.w)
-        discard;
+        REJECT;
     if (lightcolor.w > 0.5 && lightcolor.w < 1.5 && dot(d, lightdir.xyz) <= length(d) * lightdir.w)
-        discard;
+        REJECT;
 #endif
 #endif
 
@@ -102,5 +123,12 @@ void main()
     vec4 specular = texture2D(specular_map, texcoord);
     vec3 c = light_contribution(lightpos, lightcolor, lightdir, lightspot, lightatt, pos, view_vector(pos), normal, diffuse,
                                 specular.rgb, decode_shininess(specular.a));
+#ifdef AMBIENT_FOLD
+#ifdef QUANTIZE_8BIT
+    c = quantize8(c);  // as the light's own additive pass would have been rounded
+#endif
+    gl_FragColor = vec4(base + c, base_alpha + 1.0);  // the additive blend's sum
+#else
     gl_FragColor = vec4(c, 1.0);
+#endif
 }

@@ -37,7 +37,10 @@ struct SkipField {
 constexpr SkipField kSkipFields[] = {{"material_variants", &SkipOptions::material_variants},
                                      {"empty_lights", &SkipOptions::empty_lights},
                                      {"light_depth_test", &SkipOptions::light_depth_test},
-                                     {"light_sphere_test", &SkipOptions::light_sphere_test}};
+                                     {"light_sphere_test", &SkipOptions::light_sphere_test},
+                                     {"depth_prepass", &SkipOptions::depth_prepass},
+                                     {"ambient_pass", &SkipOptions::ambient_pass},
+                                     {"final_pass", &SkipOptions::final_pass}};
 
 // What every job of one scene variant reads: the sweep, the GL and the shaders.
 struct Setup {
@@ -115,6 +118,7 @@ std::unique_ptr<RowRun> deferred(const Setup& st, const Variant& v, const Row& w
     auto run = std::make_unique<RowRun>();
     run->ds = std::make_unique<DeferredShader>(st.caps, v.w, v.h, o, st.shaders);
     run->ds->set_scene(v.scene);
+    run->ds->set_read_back(true);  // its image is read back (read_output): the final pass may be skipped
     Row& r = run->row = base_row(st.cfg, v, Renderer::deferred);
     r.depth = want.depth;
     r.encoding = want.encoding;
@@ -286,7 +290,8 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
         for (auto& run : runs) {
             if (f >= run->row.frames) continue;
             run->ms.push_back(run->frame(v.scene, v.w, v.h));
-            if (f + 1 == run->row.frames) run->image = opaque(read_pixels(v.w, v.h));
+            if (f + 1 == run->row.frames)
+                run->image = opaque(run->ds ? run->ds->read_output(v.w, v.h) : read_pixels(v.w, v.h));
         }
         if (f < cfg.frames)  // (a) in the same rounds, as many frames as the fast rows
             for (auto& [l, fb] : floors.bench) floors.fill_ms[l].push_back(fb->fill_frame(v.scene));

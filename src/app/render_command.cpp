@@ -60,6 +60,8 @@ int cmd_render(const std::vector<std::string>& argv) {
 
     DeferredShader ds(caps, w, h, opts, resource_dir("glsl120"));
     ds.set_scene(scene);
+    // Headless: the image is read back, never shown, so the final pass may be left out (final_pass).
+    ds.set_read_back(view == View::final);
     std::vector<FrameStats> all;
     // With several frames the timed ones do not count (two queries around every light draw are
     // the measurement's cost); one more frame after them counts, its times left out of the medians.
@@ -71,7 +73,7 @@ int cmd_render(const std::vector<std::string>& argv) {
         counted = ds.render(scene, out_w, out_h);
     }
     if (view != View::final) ds.draw_view(view, out_w, out_h);
-    Image img = opaque(read_pixels(out_w, out_h));
+    Image img = opaque(view == View::final ? ds.read_output(out_w, out_h) : read_pixels(out_w, out_h));
 
     const FrameStats& last = counted;
     auto med = [&](double StageTimes::*field) {
@@ -97,7 +99,14 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["gbuffer_bytes_per_pixel"] = paths.gbuffer_bytes_per_pixel;
     j["lighting"] = opts.listing2_literal ? "listing" : "equations";
     j["skips"] = {{"variants", skip.material_variants}, {"empty_lights", skip.empty_lights},
-                  {"light_depth_test", skip.light_depth_test}, {"light_sphere_test", skip.light_sphere_test}};
+                  {"light_depth_test", skip.light_depth_test}, {"light_sphere_test", skip.light_sphere_test},
+                  {"depth_prepass", skip.depth_prepass}, {"ambient", skip.ambient_pass}, {"final", skip.final_pass}};
+    // What the pass skips did in the counted frame (the last): whether the depth pre-pass and the
+    // final pass ran, whether the ambient pass was folded into a light's, and the depth complexity
+    // (fragments shaded without the pre-pass per pixel covered) the pre-pass choice read.
+    j["passes"] = {{"depth_prepass", last.depth_prepass_ran}, {"ambient_folded", last.ambient_folded},
+                   {"final", last.final_pass_ran},
+                   {"depth_complexity", last.depth_complexity ? nlohmann::json(*last.depth_complexity) : nlohmann::json(nullptr)}};
     j["scissor"] = opts.scissor;
     j["gbuffer"] = opts.gbuffer_half ? "half" : "rgba8";
     j["bloom"] = post.bloom;

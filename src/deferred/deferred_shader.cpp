@@ -1,6 +1,7 @@
 // pDeferredShader: set-up, the frame in Appendix A's order, and the one-stage-at-a-time API.
 #include "deferred/deferred_shader.h"
 
+#include "deferred/ambient_fold.h"
 #include "deferred/forward_stage.h"
 #include "deferred/geometry_stage.h"
 #include "deferred/gpu_scene.h"
@@ -91,10 +92,15 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     set_output_size(out_w, out_h);
     const FrameDef f = frame_of(scene.camera, scene.lights, config_.opts.scissor);
     camera_ = scene.camera;
-    timed(timer_, S_GEOMETRY, [&] { geometry_->draw(f, *gpu_, *targets_); });  // 1. geometry stage
+    timed(timer_, S_GEOMETRY, [&] { geometry_->draw(f, *gpu_, *targets_, st); });  // 1. geometry stage
     draw_lights(f, scene, st);                                          // 2. lighting stage
     post_stage(f);                                                      // 3. post-processing
-    timed(timer_, S_FINAL, [&] { final_.draw(*targets_, out_w, out_h); });       // 4. final stage
+    // 4. final stage, unless the caller reads P-buffer 0 itself at its own size (read_output): then
+    // the fixed-function copy into the main frame buffer would give it the same bytes.
+    final_skipped_ = config_.opts.skip.final_pass && read_back_ && out_w == width() && out_h == height() &&
+                     !config_.opts.float_accum;
+    st.final_pass_ran = !final_skipped_;
+    if (!final_skipped_) timed(timer_, S_FINAL, [&] { final_.draw(*targets_, out_w, out_h); });
     std::vector<double> ms;
     st.ms.cpu = thread_cpu_ms() - cpu0;
     st.ms.frame = timer_.end_frame(ms);
@@ -116,9 +122,11 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
 // passes that test against it, and the forward stage after them, all into P-buffer 0.
 void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameStats& st) {
     if (ssao_) timed(timer_, S_SSAO, [&] { ssao_->draw(f, *targets_); });
+    // Where a light covers the whole screen, its pass writes what the ambient pass would have.
+    const std::optional<AmbientFold> fold = lighting_->ambient_fold(f, scene, ssao_ != nullptr);
     timer_.begin(S_AMBIENT);
     fb_bind_render(P_ACCUM);
-    lighting_->draw_ambient(f, scene, *targets_, ssao_.get());
+    if (!fold) lighting_->draw_ambient(f, scene, *targets_, ssao_.get());
     check_gl_stage("lighting stage: ambient pass");
     timer_.end();
     const int units[4] = {0, 1, 2, 3};
@@ -127,13 +135,18 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
     // The light geometry's plan for the frame first (the auto geometry's depth spans, timed with
     // the light passes): whether its lights need the scene's depth decides the hand-off.
     bool lights_need_depth = false;
-    timed(timer_, S_LIGHTS, [&] { lights_need_depth = lighting_->prepare(f, *targets_, st); });
+    // The lights the light geometry draws (the frame's, less the one the fold draws): one value for
+    // its plan and its passes.
+    std::optional<FrameDef> rest;
+    if (fold) rest = without_light(f, fold->light);
+    const FrameDef& lights = rest ? *rest : f;
+    timed(timer_, S_LIGHTS, [&] { lights_need_depth = lighting_->prepare(lights, *targets_, st); });
     if (config_.paths.accum_depth && (lights_need_depth || config_.paths.forward_stage || config_.paths.depth_bounds)) {
         timed(timer_, S_DEPTH_COPY, [&] { lighting_->hand_off_depth(f, *targets_); });
         check_gl_stage("lighting stage: depth hand-off");
     }
     timer_.begin(S_LIGHTS);
-    lighting_->draw_lighting(f, *targets_, st);  // Listing 17
+    lighting_->draw_lighting(f, lights, *targets_, st, fold ? &*fold : nullptr);  // Listing 17
     for (int i = 3; i >= 0; --i) mrt_unbind_texture(gbuffer[i], units[i]);
     check_gl_stage("lighting stage: light passes");
     if (config_.paths.forward_stage) {
@@ -155,7 +168,8 @@ void DeferredShader::post_stage(const FrameDef& f) {
 void DeferredShader::geometry_stage(const Scene& scene) {
     if (!gpu_) throw Error("DeferredShader::geometry_stage before set_scene");
     camera_ = scene.camera;
-    geometry_->draw(last_frame(), *gpu_, *targets_);
+    FrameStats st;
+    geometry_->draw(last_frame(), *gpu_, *targets_, st);
 }
 
 void DeferredShader::draw_lights(const Scene& scene, bool scissors, FrameStats& stats) {
@@ -185,6 +199,12 @@ std::vector<uint32_t> DeferredShader::read_gbuffer_depth_codes() {
 }
 
 Image DeferredShader::reconstructed_positions() { return lighting_->reconstructed_positions(last_frame(), *targets_); }
+
+Image DeferredShader::read_output(int out_w, int out_h) {
+    if (!final_skipped_) return read_pixels(out_w, out_h);
+    const PBuffer& b = targets_->pbuffer(P_ACCUM);
+    return read_texture_rgba8(b.texture(0), b.width(), b.height(), b.texture_width(), b.texture_height());
+}
 
 Image DeferredShader::read_pbuffer(int fb) {
     const PBuffer& b = targets_->pbuffer(fb);

@@ -48,6 +48,14 @@ public:
     // The whole pipeline (Appendix A) into the current main frame buffer of out_w x out_h; the
     // projection takes the output's aspect (set_output_size), whatever the buffers' size.
     FrameStats render(const Scene& scene, int out_w, int out_h);
+    // The caller reads each frame back with read_output and shows it in no window (a headless
+    // render, the bench): where the output is the buffers' own size and P-buffer 0 is RGBA8, the
+    // final pass (§3.6) is then skipped (SkipOptions::final_pass) and read_output reads P-buffer 0.
+    // Off by default: the final pass draws into the main frame buffer, which a window shows.
+    void set_read_back(bool on) { read_back_ = on; }
+    // The last frame's image as the main frame buffer would hold it after the final pass, out_w x
+    // out_h (render()'s): read from P-buffer 0 where the final pass was skipped, else read_pixels.
+    Image read_output(int out_w, int out_h);
     // The main frame buffer's size the frames are projected for (§3.6): its aspect is the
     // projection's, so an image scaled to it keeps its proportions. render() sets it; before
     // any, the buffers' aspect. For the one-stage API below.
@@ -121,6 +129,8 @@ private:
     // reads it (render() hands each stage its FrameDef).
     Camera camera_;
     float out_aspect_ = 0;  // set_output_size's width / height; 0: the buffers'
+    bool read_back_ = false;       // set_read_back
+    bool final_skipped_ = false;   // the last render() left the final pass out
 };
 
 }  // namespace dsr

@@ -8,7 +8,12 @@
 namespace dsr {
 
 GeometryStage::GeometryStage(const ShaderConfig& c, ProgramSet& programs)
-    : mrt_(c.paths.mrt), variants_(c.opts.skip.material_variants), depth_(c.opts.depth), encoding_(c.opts.encoding) {
+    : mrt_(c.paths.mrt),
+      variants_(c.opts.skip.material_variants),
+      depth_(c.opts.depth),
+      encoding_(c.opts.encoding),
+      skip_prepass_(c.opts.skip.depth_prepass && c.paths.count_fragments) {
+    if (skip_prepass_) glGenQueries(2, queries_);
     // The table's material rows by variant; without MRT one program per G-buffer target.
     const struct {
         const char* name;
@@ -26,7 +31,24 @@ GeometryStage::GeometryStage(const ShaderConfig& c, ProgramSet& programs)
     }
 }
 
-void GeometryStage::draw(const FrameDef& f, GpuScene& gpu, RenderTargets& t) {
+GeometryStage::~GeometryStage() {
+    if (queries_[0]) glDeleteQueries(2, queries_);
+}
+
+void GeometryStage::collect_counts() {
+    if (pending_ == 0) return;
+    GLuint n[2] = {0, 0};
+    for (int i = 2 - pending_; i < 2; ++i) glGetQueryObjectuiv(queries_[i], GL_QUERY_RESULT, &n[i]);
+    if (pending_ == 2) choice_.measured_with_prepass(n[0], n[1]);
+    else choice_.measured_without(n[1]);
+    pending_ = 0;
+}
+
+void GeometryStage::draw(const FrameDef& f, GpuScene& gpu, RenderTargets& t, FrameStats& stats) {
+    collect_counts();
+    const bool prepass = !skip_prepass_ || choice_.run_next();
+    stats.depth_prepass_ran = prepass;
+    if (skip_prepass_) stats.depth_complexity = choice_.complexity();
     t.mrt_bind_render();  // Listing 7 line 3
     gl_state().set_camera(f.proj, f.view);  // set_perspective_camera() (line 5)
     // Each draw loads its object's modelview, view * model composed in double (camera-relative).
@@ -47,24 +69,38 @@ void GeometryStage::draw(const FrameDef& f, GpuScene& gpu, RenderTargets& t) {
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
     check_gl_stage("geometry stage: set-up");
-    draw_depth(gpu);  // line 20
-    check_gl_stage("geometry stage: depth pass");
+    if (prepass) {
+        if (skip_prepass_) glBeginQuery(GL_SAMPLES_PASSED, queries_[0]);
+        draw_depth(gpu);  // line 20
+        if (skip_prepass_) glEndQuery(GL_SAMPLES_PASSED);
+        check_gl_stage("geometry stage: depth pass");
+    }
+    // Without the pre-pass the first material pass writes depth with GL_LEQUAL: of surfaces at
+    // equal depth the last drawn stays, as behind the pre-pass. Its samples passed are the
+    // fragments shaded (behind the pre-pass: the pixels covered).
+    auto material = [&](int target, bool first) {
+        const bool count = skip_prepass_ && first;
+        if (count) glBeginQuery(GL_SAMPLES_PASSED, queries_[1]);
+        draw_material(f, gpu, target, !prepass && first);
+        if (count) glEndQuery(GL_SAMPLES_PASSED);
+    };
+    pending_ = !skip_prepass_ ? 0 : prepass ? 2 : 1;
     // Each target is cleared to its own value; without MRT (§3.2, "rendering one pass per
-    // buffer") each is also drawn right away, the depth pre-pass keeping every pass to the
-    // visible fragments like the single MRT pass.
-    gl_state().apply(material_pass_state());  // the clears write colour
+    // buffer") each is also drawn right away, the depth the first pass (or the pre-pass) laid
+    // down keeping every later pass to the visible fragments like the single MRT pass.
+    gl_state().apply(material_pass_state(false));  // the clears write colour
     PBuffer& g = t.gbuffer();
     std::vector<int> all;
     for (int i = 0; i < g.color_targets(); ++i) {
         g.set_draw_targets({i});
         glClearColor(clear[i].r, clear[i].g, clear[i].b, clear[i].a);
         glClear(GL_COLOR_BUFFER_BIT);
-        if (!mrt_) draw_material(f, gpu, i);
+        if (!mrt_) material(i, i == 0);
         all.push_back(i);
     }
     if (mrt_) {
         g.set_draw_targets(all);
-        draw_material(f, gpu, -1);  // line 22: all targets in one pass (ARB_draw_buffers)
+        material(-1, true);  // line 22: all targets in one pass (ARB_draw_buffers)
     }
     check_gl_stage("geometry stage: material pass");
     t.mrt_unbind_render();  // line 24
@@ -79,11 +115,11 @@ RenderState GeometryStage::depth_pass_state() {
 }
 
 // The material pass: the same, colour on and depth writes off (the pre-pass laid it down,
-// so only the visible fragment passes GL_LEQUAL: early Z, §3.3.1).
-RenderState GeometryStage::material_pass_state() {
+// so only the visible fragment passes GL_LEQUAL: early Z, §3.3.1), or on without the pre-pass.
+RenderState GeometryStage::material_pass_state(bool write_depth) {
     RenderState s = depth_pass_state();
     s.color_write = true;
-    s.depth_write = false;
+    s.depth_write = write_depth;
     return s;
 }
 
@@ -107,8 +143,8 @@ Program& GeometryStage::material_program(const GpuMaterial& m, int target) {
 // Listing 9 (target -1: all targets at once; t: only G-buffer target t), with its test un-inverted
 // (docs/errata.md): materials with a normal map use the tangent-space shader, the others a variant
 // that skips the normal map.
-void GeometryStage::draw_material(const FrameDef& f, const GpuScene& gpu, int target) {
-    gl_state().apply(material_pass_state());
+void GeometryStage::draw_material(const FrameDef& f, const GpuScene& gpu, int target, bool write_depth) {
+    gl_state().apply(material_pass_state(write_depth));
     gpu.bind_all();
     int bound = -1;
     for (const DrawRange& r : gpu.ranges()) {

@@ -1,11 +1,15 @@
 // Geometry stage (§3.3, Listings 7-13): the only stage that sees 3D geometry. A depth-only
 // pre-pass fills the G-buffer's depth, then the material pass writes normal, diffuse,
 // specular (and packed depth or position) for exactly the visible fragments (early Z, §3.3.1).
+// Where the frame's depth complexity makes the pre-pass pure cost (SkipOptions::depth_prepass,
+// depth_prepass.h) it is left out and the material pass writes depth itself.
 #pragma once
 #include <map>
 #include <tuple>
 
+#include "deferred/depth_prepass.h"
 #include "deferred/frame.h"
+#include "deferred/frame_stats.h"
 #include "deferred/gpu_scene.h"
 #include "deferred/render_targets.h"
 #include "deferred/shader_table.h"
@@ -27,20 +31,32 @@ struct MaterialKey {
 class GeometryStage {
 public:
     GeometryStage(const ShaderConfig& c, ProgramSet& programs);
-    // Listing 7: the G-buffer filled with `gpu`'s opaque surfaces as the frame's camera sees them.
-    void draw(const FrameDef& f, GpuScene& gpu, RenderTargets& targets);
+    ~GeometryStage();
+    GeometryStage(const GeometryStage&) = delete;
+    GeometryStage& operator=(const GeometryStage&) = delete;
+    // Listing 7: the G-buffer filled with `gpu`'s opaque surfaces as the frame's camera sees them;
+    // whether the pre-pass ran, and the depth complexity that chose it, into `stats`.
+    void draw(const FrameDef& f, GpuScene& gpu, RenderTargets& targets, FrameStats& stats);
 
 private:
     static RenderState depth_pass_state();
-    static RenderState material_pass_state();
+    // write_depth: the material pass lays depth down itself (no pre-pass before it).
+    static RenderState material_pass_state(bool write_depth);
+    // The last frame's two counts into the choice (read a frame late: no wait on the GPU).
+    void collect_counts();
     void draw_depth(const GpuScene& gpu);                                // Listing 8
-    void draw_material(const FrameDef& f, const GpuScene& gpu, int target);  // Listings 9-13
+    void draw_material(const FrameDef& f, const GpuScene& gpu, int target, bool write_depth);  // Listings 9-13
     Program& material_program(const GpuMaterial& m, int target);
 
     std::map<MaterialKey, Program> programs_;
     bool mrt_, variants_;
     DepthPath depth_;
     DepthEncoding encoding_;
+    // The pre-pass skip: on where asked and the GL has occlusion queries to measure with.
+    bool skip_prepass_;
+    DepthPrepassChoice choice_;
+    GLuint queries_[2] = {0, 0};  // samples passed: the pre-pass, the (first) material pass
+    int pending_ = 0;             // 0: none; 1: the material pass's count; 2: both
 };
 
 }  // namespace dsr

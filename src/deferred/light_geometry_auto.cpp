@@ -89,7 +89,7 @@ public:
     }
 
     void draw(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats) override {
-        if (!planned_) prepare(f, targets, stats);
+        if (!planned_ || plan_.path.size() != f.lights.size()) prepare(f, targets, stats);  // (prepare() saw another frame)
         planned_ = false;
         std::vector<const LightDraw*> by_path[kLightPaths];
         double raw[kLightPaths] = {0, 0, 0};  // the model's ms for each path's lights, unscaled

@@ -1,6 +1,7 @@
 // The lighting stage (lighting_stage.h).
 #include "deferred/lighting_stage.h"
 
+#include "deferred/ambient_fold.h"
 #include "deferred/light_pass.h"
 #include "deferred/screen_quad.h"
 #include "deferred/ssao_stage.h"
@@ -33,6 +34,9 @@ LightingStage::LightingStage(const ShaderConfig& c, ProgramSet& programs, int wi
       pow2_(!c.caps.npot),
       geometry_(make_light_geometry(c, programs, width, height)) {
     set_handoff(c, programs);
+    fold_round_ = c.tile_round;
+    if (programs.has("light_fold")) fold_any_ = programs.take("light_fold");
+    if (programs.has("light_point_fold")) fold_point_ = programs.take("light_point_fold");
     if (programs.has("position")) position_prog_ = programs.take("position");
 }
 
@@ -61,21 +65,53 @@ void LightingStage::draw_ambient(const FrameDef& f, const Scene& scene, RenderTa
     if (ssao) ssao->modulate_ambient(f, t);
 }
 
+std::optional<AmbientFold> LightingStage::ambient_fold(const FrameDef& f, const Scene& scene, bool ssao) const {
+    if (ssao || !fold_any_.id() || !fold_point_.id()) return std::nullopt;
+    const std::optional<size_t> i = full_screen_light(f);
+    if (!i) return std::nullopt;
+    return AmbientFold{*i, scene.background, scene.ambient};
+}
+
 void LightingStage::hand_off_depth(const FrameDef& f, RenderTargets& t) {
     if (!handoff_) throw Error("the depth hand-off runs only where the paths give P-buffer 0 a depth buffer");
     handoff_->draw(f, t);
 }
 
-void LightingStage::draw_lighting(const FrameDef& f, RenderTargets& t, FrameStats& stats) {
+void LightingStage::draw_lighting(const FrameDef& f, const FrameDef& lights, RenderTargets& t, FrameStats& stats,
+                                  const AmbientFold* fold) {
     stats.lights_total = f.lights_total;
     stats.lights_culled = f.lights_culled;
     stats.lights_drawn = int(f.lights.size());
     stats.scissor_pixels = f.scissor_pixels;
     // Whether this frame is counted: decided here for every geometry.
     LightQueries q(counting_ && count_samples_, counting_ && count_invocations_);
-    geometry_->draw(f, t, q, stats);
+    if (fold) {
+        draw_fold(f, *fold, q);
+        ++stats.light_passes;
+        stats.ambient_folded = true;
+    }
+    geometry_->draw(lights, t, q, stats);
     q.collect(stats);
     // unbind_light(): nothing to restore, the next pass states what it needs.
+}
+
+// The full-screen light's quad through its fold variant: it replaces the clear and Listing 15, so
+// it writes every pixel (no blending, no scissor) and rejects none (light.frag's AMBIENT_FOLD).
+void LightingStage::draw_fold(const FrameDef& f, const AmbientFold& fold, LightQueries& q) {
+    const LightDraw& l = f.lights[fold.light];
+    Program& prog = l.tutorial() ? fold_point_ : fold_any_;
+    gl_state().set_camera(f.pixels());
+    RenderState s = fixed_function_2d();
+    s.program = prog.id();
+    gl_state().apply(s);
+    set_light_uniforms(prog, f);
+    prog.set("ambient", fold.ambient);
+    prog.set("background", fold.background);
+    prog.set("quantize_round", fold_round_);  // quantize.glsl's fallback (unused where a model fits)
+    set_light_params(prog, l.params);
+    q.begin();
+    draw_rect(f, 0, 0, float(f.width), float(f.height), true);
+    q.end();
 }
 
 Image LightingStage::reconstructed_positions(const FrameDef& f, RenderTargets& t) {

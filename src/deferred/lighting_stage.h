@@ -1,10 +1,14 @@
 // Lighting stage (§3.4, Listings 14-20): image space, into P-buffer 0. A fixed-function ambient
 // pass (Listing 15, Eq. 6, scaled by SSAO when it is on), the depth hand-off where a later pass
 // tests against the scene's depth, then every visible light of the frame added by the light
-// geometry the options ask for (light_geometry.h). Also the light pass's arithmetic written out as
+// geometry the options ask for (light_geometry.h). Where a light covers the whole screen, the
+// ambient pass may be folded into that light's pass (ambient_fold.h, SkipOptions::ambient_pass). Also the light pass's arithmetic written out as
 // positions, for the accuracy measurements (reconstructed_positions).
 #pragma once
 #include <memory>
+#include <optional>
+
+#include <glm/glm.hpp>
 
 #include "deferred/depth_handoff.h"
 #include "deferred/frame.h"
@@ -20,6 +24,13 @@
 namespace dsr {
 
 class SsaoStage;
+
+// The ambient pass folded into the pass of f.lights[light], a full-screen light: the colours the
+// clear and Listing 15 would have used.
+struct AmbientFold {
+    size_t light = 0;
+    glm::vec3 background{0}, ambient{0};
+};
 
 class LightingStage {
 public:
@@ -37,15 +48,24 @@ public:
     // the alpha test keeps it where the G-buffer holds no surface (diffuse alpha 0). `ssao`: the
     // AO buffer it is multiplied by, or null.
     void draw_ambient(const FrameDef& f, const Scene& scene, RenderTargets& targets, const SsaoStage* ssao);
+    // Whether this frame's ambient pass folds into a light's pass: the skip on, SSAO off (it scales
+    // the ambient pass alone), a light drawn full screen and its fold program built. When it does,
+    // draw_ambient is not called and draw_lighting draws that light first.
+    std::optional<AmbientFold> ambient_fold(const FrameDef& f, const Scene& scene, bool ssao) const;
     // hand_off_depth (depth_handoff.h), with the G-buffer bound as textures.
     void hand_off_depth(const FrameDef& f, RenderTargets& targets);
     // Before the depth hand-off, with the G-buffer bound as textures and P-buffer 0 for rendering:
-    // the light geometry's plan for f (LightGeometryPass::prepare); whether its lights need the
-    // scene's depth in P-buffer 0.
-    bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) { return geometry_->prepare(f, targets, stats); }
-    // Listing 17: the frame's visible lights added into P-buffer 0 by the light geometry, with the
-    // G-buffer bound as textures (units 0-3); counted when counting is on and the GL can.
-    void draw_lighting(const FrameDef& f, RenderTargets& targets, FrameStats& stats);
+    // the light geometry's plan for `lights` (the frame the geometry will draw:
+    // LightGeometryPass::prepare); whether its lights need the scene's depth in P-buffer 0.
+    bool prepare(const FrameDef& lights, RenderTargets& targets, FrameStats& stats) {
+        return geometry_->prepare(lights, targets, stats);
+    }
+    // Listing 17: the frame's visible lights added into P-buffer 0, with the G-buffer bound as
+    // textures (units 0-3); counted when counting is on and the GL can. With `fold`, that light
+    // first, writing every pixel with the ambient pass folded in; then `lights` (f, or f without
+    // the folded light: what prepare() planned) by the light geometry.
+    void draw_lighting(const FrameDef& f, const FrameDef& lights, RenderTargets& targets, FrameStats& stats,
+                       const AmbientFold* fold = nullptr);
     // After the geometry stage: the eye-space position each pixel's depth reconstructs to, exactly
     // as the light pass computes it (same decoder, planes and view rays), in float: rgb = (x, y, z),
     // alpha 1 where the G-buffer has a surface, 0 elsewhere. Throws without float targets.
@@ -58,6 +78,9 @@ private:
     bool pow2_;
     std::unique_ptr<LightGeometryPass> geometry_;
     std::unique_ptr<DepthHandoffPass> handoff_;  // where Paths::accum_depth
+    void draw_fold(const FrameDef& f, const AmbientFold& fold, LightQueries& q);
+    Program fold_any_, fold_point_;              // with the ambient skip (and SSAO off)
+    float fold_round_ = 0.5f;                    // ShaderConfig::tile_round: quantize.glsl's fallback
     Program position_prog_;                      // where the table built it
     std::unique_ptr<PBuffer> position_buf_;      // on first use
 };

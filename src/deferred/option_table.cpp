@@ -71,6 +71,9 @@ const std::pair<const char*, bool SkipOptions::*> kSkips[] = {
     {"empty-lights", &SkipOptions::empty_lights},
     {"light-depth-test", &SkipOptions::light_depth_test},
     {"light-sphere-test", &SkipOptions::light_sphere_test},
+    {"depth-prepass", &SkipOptions::depth_prepass},
+    {"ambient", &SkipOptions::ambient_pass},
+    {"final", &SkipOptions::final_pass},
 };
 
 std::vector<RenderOption> make_table() {
@@ -156,7 +159,11 @@ std::vector<RenderOption> make_table() {
         "work the renderer skips where a scene does not need it, turned off: the tangent-space work and map "
         "reads a material lacks (variants), lights of zero colour or an empty scissor rectangle "
         "(empty-lights), pixels whose surface lies in front of or behind a light's sphere "
-        "(light-depth-test) or outside it (light-sphere-test)");
+        "(light-depth-test) or outside it (light-sphere-test), the depth pre-pass where the last frame's "
+        "depth complexity makes it pure cost (depth-prepass: the material pass writes depth itself), the "
+        "ambient pass folded into the pass of a light drawn over the whole screen (ambient: a "
+        "directional light, or any with --scissor off; not with --ssao), the final pass where the image "
+        "is read back at the buffers' size (final: P-buffer 0 read directly)");
     RenderOption view = choice(
         "view", view_names(), [](const RenderOptions& r) { return std::string(view_name(r.view)); },
         [](RenderOptions& r, const std::string& v) { r.view = view_from_name(v); });

@@ -19,25 +19,26 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
     c.opts = asked;
     c.opts.depth = c.paths.depth_path;
     c.opts.tile_size = c.paths.tile_size, c.opts.tile_lights = c.paths.tile_lights;  // auto resolved
-    if (c.paths.light_geometry != LightGeometry::tiles && c.paths.light_geometry != LightGeometry::automatic &&
-        c.paths.light_geometry != LightGeometry::screen)
-        return c;
+    const LightGeometry g = c.paths.light_geometry;
+    const bool tiles = g == LightGeometry::tiles || g == LightGeometry::automatic;  // auto draws tiles too
+    const bool fold = c.opts.skip.ambient_pass && !c.opts.ssao.on;  // the light_fold rows
     // The batch the uniform arrays hold (tiles, auto's quads, screen's lights a draw): five vec4s a
     // light within the fragment stage's uniform budget (GL 2.0 guarantees 64 vec4s; llvmpipe and
     // NVIDIA give 1024), a few vec4s kept for the other uniforms, and below tile_plan's empty-slot
     // index 255.
-    GLint comps = 0;
-    glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
-    const bool groups = (c.paths.light_geometry == LightGeometry::tiles || c.paths.light_geometry == LightGeometry::automatic) &&
-                        c.opts.tile_plan == TileGrouping::groups;
-    c.tile_batch = groups ? c.opts.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
-    if (c.paths.light_geometry == LightGeometry::screen) return c;  // one rounding per pixel, as the demo's
+    if (tiles || g == LightGeometry::screen) {
+        GLint comps = 0;
+        glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
+        const bool groups = tiles && c.opts.tile_plan == TileGrouping::groups;
+        c.tile_batch = groups ? c.opts.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
+    }
     // P-buffer 0 is RGBA8: several lights summed in one pass are each rounded as their own pass
     // would be, as this GL rounds into RGBA8, measured once (gl/rounding_probe.h): llvmpipe rounds
     // t x 255 to nearest, an exact tie to even; the H200 truncates t to 12 bits first, which rounds
     // up later than the half by as much as 0.06 of a step, and over the dozens of lights a pixel of
-    // 1024-overlap gets the difference reached 16 LSB.
-    if (!c.opts.float_accum && c.opts.tile_lights > 1 && c.paths.fbo) {
+    // 1024-overlap gets the difference reached 16 LSB. The ambient fold likewise rounds the ambient
+    // term and the light's as the ambient pass and the light's own pass would.
+    if (!c.opts.float_accum && ((tiles && c.opts.tile_lights > 1) || fold) && c.paths.fbo) {
         const Unorm8Rounding& r = unorm8_rounding();
         c.rounding_measured = true;
         c.rounding_bits = unorm8_truncate_bits(r);
@@ -73,6 +74,25 @@ Defines light_defines(const ShaderConfig& c, bool rejections = true) {
     if (c.opts.listing2_literal) d.push_back("LISTING2_LITERAL");
     if (rejections && c.opts.skip.light_depth_test) d.push_back("LIGHT_DEPTH_TEST");
     if (rejections && c.opts.skip.light_sphere_test) d.push_back("LIGHT_SPHERE_TEST");
+    return d;
+}
+
+// quantize.glsl's model of this GL's rounding into RGBA8, where it was measured.
+Defines quantize_defines(const ShaderConfig& c) {
+    if (!c.rounding_measured) return {};
+    Defines d = {"QUANTIZE_8BIT"};
+    if (c.rounding_bits > 0) d.push_back("QUANTIZE_TRUNCATE " + std::to_string(1 << c.rounding_bits) + ".0");
+    if (c.rounding_bits == 0) d.push_back("QUANTIZE_TIES_EVEN");
+    return d;
+}
+
+// The ambient fold's light pass (light.frag AMBIENT_FOLD), each term rounded as its pass would be.
+Defines fold_defines(const ShaderConfig& c, bool point_only) {
+    Defines d = light_defines(c);
+    if (point_only) d.push_back("LIGHT_POINT_ONLY");
+    d.push_back("AMBIENT_FOLD");
+    const Defines q = quantize_defines(c);
+    d.insert(d.end(), q.begin(), q.end());
     return d;
 }
 
@@ -134,6 +154,13 @@ bool uses_tiles(const ShaderConfig& c) { return geometry_is(c, LightGeometry::ti
 Defines point_linear(Defines d) { return with(std::move(d), {"LIGHT_POINT_ONLY"}); }
 Defines point_inverse(Defines d) { return with(std::move(d), {"LIGHT_POINT_INVERSE"}); }
 bool uses_screen(const ShaderConfig& c) { return geometry_is(c, LightGeometry::screen); }
+// The ambient fold where it gives the unfolded image's bytes: a float P-buffer 0 (the same float
+// sums), or this GL's rounding into RGBA8 measured (shader_config) so each term is rounded as its own
+// pass would be; without framebuffer objects (no probe) it would round once instead of twice, and
+// bloom's bright pass made that 1 LSB into 3.
+bool ambient_fold(const ShaderConfig& c) {
+    return c.opts.skip.ambient_pass && !c.opts.ssao.on && (c.opts.float_accum || c.rounding_measured);
+}
 // The tiles' depth spans need a float target behind a framebuffer object; without them the plan
 // runs without depth culling.
 bool tile_depth(const ShaderConfig& c) {
@@ -173,6 +200,13 @@ const std::vector<ShaderRow>& shader_rows() {
          uses_batches, [](C c) { return point_linear(batch_defines(c)); }},
         {"light_batch_point_inverse", "light.vert", "light.frag", "light quads in batches, point lights, attenuation law",
          uses_batches, [](C c) { return point_inverse(batch_defines(c)); }},
+        // The ambient pass folded into a full-screen light's pass (lighting_stage.cpp): the light
+        // pass that also writes the background and Listing 15's ambient term, blending off. Not
+        // with SSAO, which scales the ambient pass alone.
+        {"light_fold", "light.vert", "light.frag", "full-screen light pass with the ambient pass folded in",
+         ambient_fold, [](C c) { return fold_defines(c, false); }},
+        {"light_point_fold", "light.vert", "light.frag", "the same, the tutorial's point lights", ambient_fold,
+         [](C c) { return fold_defines(c, true); }},
         {"light_volume", "light.vert", "light.frag", "light pass over a volume mesh", uses_volume,
          [](C c) { return with(light_defines(c), {"VOLUME"}); }},
         {"light_volume_point", "light.vert", "light.frag", "volume mesh, the tutorial's point lights", uses_volume,

@@ -44,6 +44,23 @@ Image read_texture(GLuint tex, int w, int h, int tw, int th, bool depth) {
     return img;
 }
 
+Image read_texture_rgba8(GLuint tex, int w, int h, int tw, int th) {
+    std::vector<unsigned char> all(size_t(tw) * th * 4);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, all.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    check_gl("reading a buffer back");
+    Image img;
+    img.width = w;
+    img.height = h;
+    img.rgba.resize(size_t(w) * h * 4);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 4; ++c) img.rgba[(size_t(y) * w + x) * 4 + c] = all[(size_t(y) * tw + x) * 4 + c] / 255.0f;
+    return img;
+}
+
 std::vector<uint32_t> read_depth_codes(GLuint tex, int w, int h, int tw, int th) {
     std::vector<GLuint> all(size_t(tw) * th);
     glBindTexture(GL_TEXTURE_2D, tex);

@@ -1,0 +1,24 @@
+// A colour rounded to 8 bits as this GL rounds a fragment written into an RGBA8 target
+// (gl/rounding_probe.h, measured once; shader_table.cpp picks the define): one pass that sums what
+// several passes would have blended rounds each term as its own pass would. light_tiles.frag holds
+// the same arithmetic for its lights.
+#ifdef QUANTIZE_8BIT
+uniform float quantize_round;  // the fallback's offset where no model fits
+
+vec3 quantize8(vec3 t)
+{
+#ifdef QUANTIZE_TRUNCATE
+    // This GL's colour to 2^-n first, then to nearest with a tie down (the H200: 4096.0).
+    t = floor(t * QUANTIZE_TRUNCATE) / QUANTIZE_TRUNCATE;
+    return ceil(t * 255.0 - 0.5) / 255.0;
+#elif defined(QUANTIZE_TIES_EVEN)
+    // round(t x 255), a tie to even (llvmpipe).
+    vec3 x = t * 255.0;
+    vec3 r = floor(x + 0.5);
+    r -= vec3(equal(r - x, vec3(0.5))) * mod(r, 2.0);
+    return r / 255.0;
+#else
+    return floor(t * 255.0 + quantize_round) / 255.0;
+#endif
+}
+#endif

@@ -1,0 +1,193 @@
+// The three pass skips (SkipOptions: depth_prepass, ambient_pass, final_pass): each leaves a pass
+// out, and the image stays what the pass would have made (0 LSB for the pre-pass and the final
+// pass, within 1 LSB for the ambient fold, which rounds once instead of twice). Each test also
+// checks the skip happened (FrameStats' depth_prepass_ran, final_pass_ran, ambient_folded).
+#include <gtest/gtest.h>
+
+#include "deferred/ambient_fold.h"
+#include "deferred/depth_prepass.h"
+#include "render_fixture.h"
+
+using namespace dsr;
+using namespace dsr::test;
+
+namespace {
+
+constexpr int kSize = 128;
+
+struct Frames {
+    std::vector<FrameStats> stats;
+    Image image;  // the last frame's, as a headless render reads it
+};
+
+// `frames` frames of `scene` on one DeferredShader, the last read back as `dsr render` reads it
+// (read_back: the final pass may be skipped).
+Frames render_frames(const Scene& scene, const ShaderOptions& opts, int frames, bool read_back = true,
+                     const std::vector<std::string>& force_off = {}, int out_w = kSize, int out_h = kSize) {
+    auto ctx = create_context(ContextDesc{"osmesa", std::max(kSize, out_w), std::max(kSize, out_h)});
+    DeferredShader ds(probe_caps(force_off), kSize, kSize, opts, resource_dir("glsl120"));
+    ds.set_scene(scene);
+    ds.set_read_back(read_back);
+    Frames r;
+    for (int i = 0; i < frames; ++i) r.stats.push_back(ds.render(scene, out_w, out_h));
+    r.image = opaque(ds.read_output(out_w, out_h));
+    return r;
+}
+
+ShaderOptions no_skip(bool SkipOptions::*field, ShaderOptions o = {}) {
+    o.skip.*field = false;
+    return o;
+}
+
+// Ten discs facing the camera, drawn far to near, each covering the one behind: every pixel of
+// the nearest is drawn ten times in draw order, the overdraw the pre-pass is for.
+Scene stacked_scene() {
+    Scene s = lit_sphere_scene();
+    s.objects.clear();
+    s.meshes.clear();
+    for (int i = 0; i < 10; ++i) add_sphere(s, 1.0f, {0, 0, -2.0f + 0.2f * i}, 0);
+    return s;
+}
+
+// The default scene with a directional light added: a light drawn over the whole screen.
+Scene with_directional(Scene s) {
+    Light moon;
+    moon.type = Light::Type::directional;
+    moon.dir = glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f));
+    moon.color = {0.12f, 0.14f, 0.22f};
+    s.lights.push_back(moon);
+    return s;
+}
+
+}  // namespace
+
+// The choice: the first frame runs the pre-pass (nothing measured yet); below the threshold the
+// next frames leave it out, above it they keep it; a frame without it that measures more shaded
+// fragments against the last covered count brings it back; and every kRemeasure frames it runs.
+TEST(PassSkips, DepthPrepassChoice) {
+    DepthPrepassChoice c(1.5, 4);
+    EXPECT_TRUE(c.run_next());
+    EXPECT_FALSE(c.complexity());
+    c.measured_without(1000);  // nothing to set it against: still measuring
+    EXPECT_TRUE(c.run_next());
+    c.measured_with_prepass(1200, 1000);
+    EXPECT_DOUBLE_EQ(*c.complexity(), 1.2);
+    EXPECT_FALSE(c.run_next());
+    c.measured_without(1400);
+    EXPECT_FALSE(c.run_next());
+    c.measured_without(1600);  // 1.6 per covered pixel
+    EXPECT_TRUE(c.run_next());
+    c.measured_with_prepass(3000, 1000);
+    EXPECT_TRUE(c.run_next());
+    c.measured_with_prepass(0, 0);  // nothing drawn: nothing to save
+    EXPECT_FALSE(c.run_next());
+    for (int i = 0; i < 3; ++i) {
+        c.measured_without(0);
+        EXPECT_FALSE(c.run_next()) << i;
+    }
+    c.measured_without(0);
+    EXPECT_TRUE(c.run_next()) << "the fourth frame without it measures again";
+}
+
+// The default scene has little overdraw: from the second frame on the pre-pass is left out, and
+// the image is the pre-pass's to the byte, with MRT and with one material pass per target.
+TEST(PassSkips, DepthPrepassSkippedSameImage) {
+    const Scene s = default_scene();
+    for (const bool mrt : {true, false}) {
+        const std::vector<std::string> caps = mrt ? std::vector<std::string>{} : std::vector<std::string>{"no-mrt"};
+        for (DepthPath p : {DepthPath::texture, DepthPath::packed}) {
+            const Frames skip = render_frames(s, with_depth(p), 3, true, caps);
+            const Frames full = render_frames(s, no_skip(&SkipOptions::depth_prepass, with_depth(p)), 3, true, caps);
+            ASSERT_TRUE(skip.stats[1].depth_complexity);
+            std::printf("[ prepass  ] %s %s: depth complexity %.3f\n", mrt ? "mrt" : "no-mrt", depth_path_name(p),
+                        *skip.stats[1].depth_complexity);
+            EXPECT_TRUE(skip.stats[0].depth_prepass_ran) << "the first frame measures";
+            EXPECT_FALSE(skip.stats[1].depth_prepass_ran);
+            EXPECT_FALSE(skip.stats[2].depth_prepass_ran);
+            EXPECT_TRUE(full.stats[2].depth_prepass_ran);
+            EXPECT_FALSE(full.stats[2].depth_complexity) << "not measured with the skip off";
+            const ImageDiff d = compare_logged("depth pre-pass skipped vs run", skip.image, full.image, 0);
+            EXPECT_EQ(d.max_abs, 0.0);
+        }
+    }
+}
+
+// Heavy overdraw keeps the pre-pass: ten discs, each drawn over the last.
+TEST(PassSkips, DepthPrepassKeptUnderOverdraw) {
+    const Frames f = render_frames(stacked_scene(), ShaderOptions{}, 3);
+    ASSERT_TRUE(f.stats[1].depth_complexity);
+    std::printf("[ prepass  ] stacked discs: depth complexity %.3f\n", *f.stats[1].depth_complexity);
+    EXPECT_GT(*f.stats[1].depth_complexity, DepthPrepassChoice::kThreshold);
+    EXPECT_TRUE(f.stats[1].depth_prepass_ran);
+    EXPECT_TRUE(f.stats[2].depth_prepass_ran);
+}
+
+// A headless render read back at the buffers' size reads P-buffer 0 directly: the same bytes as
+// the final pass's copy, on every render-target path. At another output size the final pass runs.
+TEST(PassSkips, FinalPassSkippedSameImage) {
+    const Scene s = default_scene();
+    for (const char* off : {"", "no-fbo"}) {
+        const std::vector<std::string> caps = *off ? std::vector<std::string>{off} : std::vector<std::string>{};
+        const Frames skip = render_frames(s, ShaderOptions{}, 1, true, caps);
+        const Frames full = render_frames(s, no_skip(&SkipOptions::final_pass), 1, true, caps);
+        const Frames window = render_frames(s, ShaderOptions{}, 1, false, caps);  // a viewer: the final pass runs
+        EXPECT_FALSE(skip.stats[0].final_pass_ran) << off;
+        EXPECT_EQ(skip.stats[0].ms.final, 0.0);
+        EXPECT_TRUE(full.stats[0].final_pass_ran) << off;
+        EXPECT_TRUE(window.stats[0].final_pass_ran) << off;
+        EXPECT_EQ(compare_logged("final pass skipped vs run", skip.image, full.image, 0).max_abs, 0.0) << off;
+        EXPECT_EQ(compare_images(window.image, full.image, 0).max_abs, 0.0) << off;
+    }
+    const Frames scaled = render_frames(s, ShaderOptions{}, 1, true, {}, 160, 120);
+    EXPECT_TRUE(scaled.stats[0].final_pass_ran) << "another output size needs the final pass's scaling";
+    EXPECT_EQ(scaled.image.width, 160);
+}
+
+// With a light over the whole screen the ambient pass folds into its pass, with the scissors on
+// (the directional light) and off (every light; the first is folded). The GL's rounding into RGBA8
+// is measured and the fold rounds each term as the ambient pass and the light's own pass would: the
+// same bytes (the brief allows 1 LSB). Without framebuffer objects nothing measures the rounding and
+// the fold, which would round once instead of twice, is not made. Not with SSAO.
+TEST(PassSkips, AmbientFoldedSameImage) {
+    const Scene s = with_directional(default_scene());
+    for (const char* off : {"", "no-fbo"}) {
+        const std::vector<std::string> caps = *off ? std::vector<std::string>{off} : std::vector<std::string>{};
+        for (const bool scissor : {true, false}) {
+            ShaderOptions o;
+            o.scissor = scissor;
+            o.light_geometry = LightGeometry::quad;  // a pass per light: the fold's pass replaces its light's
+            const Frames fold = render_frames(s, o, 1, true, caps);
+            const Frames full = render_frames(s, no_skip(&SkipOptions::ambient_pass, o), 1, true, caps);
+            EXPECT_EQ(fold.stats[0].ambient_folded, !*off) << off;
+            EXPECT_FALSE(full.stats[0].ambient_folded);
+            EXPECT_EQ(fold.stats[0].light_passes, full.stats[0].light_passes);
+            const std::string name = std::string("ambient folded vs not") + (scissor ? "" : ", no scissor") + (*off ? ", no-fbo" : "");
+            const ImageDiff d = compare_logged(name, fold.image, full.image, 1.0 / 255.0);
+            EXPECT_EQ(d.max_abs, 0.0) << name;
+        }
+    }
+    // Without a full-screen light there is nothing to fold into.
+    EXPECT_FALSE(render_frames(default_scene(), ShaderOptions{}, 1).stats[0].ambient_folded);
+    ShaderOptions ssao;
+    ssao.ssao.on = true;
+    EXPECT_FALSE(render_frames(s, ssao, 1).stats[0].ambient_folded) << "SSAO scales the ambient pass alone";
+}
+
+// The fold's pure part: the first full-screen light, and the frame without it.
+TEST(PassSkips, FullScreenLight) {
+    FrameDef f;
+    Light a, b;
+    LightDraw la, lb;
+    la.light = &a;
+    lb.light = &b;
+    f.lights = {la, lb};
+    EXPECT_FALSE(full_screen_light(f));
+    f.lights[1].full = true;
+    ASSERT_TRUE(full_screen_light(f));
+    EXPECT_EQ(*full_screen_light(f), 1u);
+    f.lights_total = 2;
+    const FrameDef g = without_light(f, 1);
+    ASSERT_EQ(g.lights.size(), 1u);
+    EXPECT_EQ(g.lights[0].light, &a);
+    EXPECT_EQ(g.lights_total, 2);
+}
