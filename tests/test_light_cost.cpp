@@ -171,7 +171,7 @@ TEST(LightCost, CalibrationFollowsTheMeasuredRatio) {
     EXPECT_NEAR(c.scale()[2], 3.0, 1e-3);
     EXPECT_EQ(c.scale()[0], 1.0);  // paths not measured keep their scale
     c.add(LightPath::quad, 100.0, 1.0);
-    EXPECT_EQ(c.scale()[0], 4.0);  // clamped
+    EXPECT_EQ(c.scale()[0], 10.0);  // clamped
     c.add(LightPath::volume, 1.0, 0.0);  // nothing predicted: no information
     EXPECT_EQ(c.scale()[1], 1.0);
 }

@@ -90,7 +90,7 @@ LightPathPlan choose_light_paths(const std::vector<LightFeature>& lights, const 
 bool spans_worth_measuring(double best_without_tiles_ms, double screen_px, const LightCostModel& m);
 
 // Each path's scale: measured / predicted ms of its passes, smoothed over frames (an exponential
-// average, clamped to [1/4, 4]). A path not drawn in a frame keeps its scale.
+// average, clamped to [0.1, 10]). A path not drawn in a frame keeps its scale.
 class LightCostCalibration {
 public:
     LightCostCalibration() = default;
