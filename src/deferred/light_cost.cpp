@@ -71,25 +71,10 @@ void tile_cover(const std::vector<ScissorRect>& rects, int width, int height, in
     grid.tile_px = tile_size * tile_size;
     grid.lights.assign(size_t(tx) * size_t(ty), 0);
     lights.resize(rects.size());
+    std::vector<std::vector<int>> kept = tiles_kept(rects, width, height, tile_size, depth);  // the plans' culling
     for (size_t i = 0; i < rects.size(); ++i) {
-        const ScissorRect r{std::max(0, rects[i].x0), std::max(0, rects[i].y0), std::min(width, rects[i].x1),
-                            std::min(height, rects[i].y1)};  // what of it is on the screen
-        std::vector<int>& out = lights[i].tiles;
-        out.clear();
-        if (r.x1 <= r.x0 || r.y1 <= r.y0) continue;
-        const int x0 = std::max(0, r.x0 / tile_size), x1 = std::min(tx - 1, (r.x1 - 1) / tile_size);
-        const int y0 = std::max(0, r.y0 / tile_size), y1 = std::min(ty - 1, (r.y1 - 1) / tile_size);
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                const int t = y * tx + x;
-                if (depth) {
-                    const TileBox& b = depth->tiles[size_t(t)];
-                    const LightBound& lb = depth->lights[i];
-                    if (b.empty || (lb.radius >= 0 && !sphere_meets_box(lb, b))) continue;
-                }
-                out.push_back(t);
-                ++grid.lights[size_t(t)];
-            }
+        lights[i].tiles = std::move(kept[i]);
+        for (int t : lights[i].tiles) ++grid.lights[size_t(t)];
     }
 }
 

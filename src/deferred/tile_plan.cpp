@@ -149,6 +149,28 @@ private:
     std::vector<CullLight> lights_;
 };
 
+}  // namespace
+
+std::vector<std::vector<int>> tiles_kept(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
+                                         const TileDepth* depth) {
+    const int tx = (width + tile_size - 1) / tile_size, ty = (height + tile_size - 1) / tile_size;
+    const TileCuller culler(depth, tx, ty);
+    std::vector<std::vector<int>> out(rects.size());
+    for (size_t i = 0; i < rects.size(); ++i) {
+        const ScissorRect r{std::max(0, rects[i].x0), std::max(0, rects[i].y0), std::min(width, rects[i].x1),
+                            std::min(height, rects[i].y1)};
+        if (r.x1 <= r.x0 || r.y1 <= r.y0) continue;
+        culler.each(int(i), r, tile_size, [&](int x, int y) {
+            out[i].push_back(y * tx + x);
+            return false;
+        });
+        std::sort(out[i].begin(), out[i].end());
+    }
+    return out;
+}
+
+namespace {
+
 // The rectangles clipped to the screen, and the indices of the lights that reach some tile
 // (non-empty rectangle; with depth, a tile of it whose span meets the light's) in Morton order of
 // their centre's tile (stable: equal codes keep the input order).

@@ -135,6 +135,12 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+// For each rectangle's light, the tiles (row-major indices, ascending) of its rectangle, clipped to
+// the screen, that the plans give it: all of them without depth; with it, those whose box its
+// sphere meets (sphere_meets_box, tested a block of tiles first, as the plans do).
+std::vector<std::vector<int>> tiles_kept(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
+                                         const TileDepth* depth);
+
 // vec4s of packed light slots a tile vertex carries (two slots per float): texture coordinates 2..
 inline int tile_id_vecs(int lights_per_pass) { return (lights_per_pass + 7) / 8; }
 
