@@ -99,11 +99,25 @@ std::array<double, kLightPaths> light_prices(const LightFeature& l, const TileGr
     return p;
 }
 
+LightPrices price_lights(const std::vector<LightFeature>& lights, const TileGrid& grid, const LightCostModel& m) {
+    LightPrices p(lights.size());
+    for (size_t i = 0; i < lights.size(); ++i) p[i] = light_prices(lights[i], grid, m, {1, 1, 1});
+    return p;
+}
+
 LightPathPlan choose_light_paths(const std::vector<LightFeature>& lights, const TileGrid& grid, double screen_px,
                                  const LightCostModel& m, const std::array<double, kLightPaths>& scale,
                                  const std::array<bool, kLightPaths>& allowed, bool spans_paid) {
-    std::vector<std::array<double, kLightPaths>> prices(lights.size());
-    for (size_t i = 0; i < lights.size(); ++i) prices[i] = light_prices(lights[i], grid, m, scale);
+    return choose_light_paths(price_lights(lights, grid, m), screen_px, m, scale, allowed, spans_paid);
+}
+
+LightPathPlan choose_light_paths(const LightPrices& raw, double screen_px, const LightCostModel& m,
+                                 const std::array<double, kLightPaths>& scale,
+                                 const std::array<bool, kLightPaths>& allowed, bool spans_paid) {
+    LightPrices prices = raw;
+    for (auto& p : prices)
+        for (int k = 0; k < kLightPaths; ++k) p[size_t(k)] *= scale[size_t(k)];
+    const size_t n = raw.size();
     const double handoff = m.handoff_mpx_ms * screen_px * kMpx;
     const double spans = spans_paid ? 0 : m.spans_mpx_ms * screen_px * kMpx;
     LightPathPlan best;
@@ -115,8 +129,8 @@ LightPathPlan choose_light_paths(const std::vector<LightFeature>& lights, const 
         for (int k = 0; k < kLightPaths; ++k) possible &= !(mask >> k & 1) || allowed[size_t(k)];
         if (!possible) continue;
         LightPathPlan p;
-        p.path.resize(lights.size());
-        for (size_t i = 0; i < lights.size() && possible; ++i) {
+        p.path.resize(n);
+        for (size_t i = 0; i < n && possible; ++i) {
             int c = -1;
             for (int k = 0; k < kLightPaths; ++k)
                 if ((mask >> k & 1) && prices[i][size_t(k)] < kInf && (c < 0 || prices[i][size_t(k)] < prices[i][size_t(c)]))

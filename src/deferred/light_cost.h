@@ -78,11 +78,19 @@ struct LightPathPlan {
     double predicted_total_ms = 0;
 };
 
+// Each light's prices, unscaled (light_prices with scales 1), for choose_light_paths below.
+using LightPrices = std::vector<std::array<double, kLightPaths>>;
+LightPrices price_lights(const std::vector<LightFeature>& lights, const TileGrid& grid, const LightCostModel& m);
+
 // The assignment of least predicted cost. screen_px: the frame's pixels (the per-frame costs);
 // spans_paid: the spans are already measured (their cost is sunk); scale: each path's calibration.
 // A path is left out entirely where `allowed` says so.
 LightPathPlan choose_light_paths(const std::vector<LightFeature>& lights, const TileGrid& grid, double screen_px,
                                  const LightCostModel& m, const std::array<double, kLightPaths>& scale,
+                                 const std::array<bool, kLightPaths>& allowed, bool spans_paid);
+// The same from prices price_lights gave (each scaled here): the auto geometry prices once a frame.
+LightPathPlan choose_light_paths(const LightPrices& raw, double screen_px, const LightCostModel& m,
+                                 const std::array<double, kLightPaths>& scale,
                                  const std::array<bool, kLightPaths>& allowed, bool spans_paid);
 
 // Whether measuring the spans is worth it: the best plan without tiles costs more than

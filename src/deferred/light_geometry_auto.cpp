@@ -55,7 +55,8 @@ public:
         const std::array<double, kLightPaths>& scale = calib_.scale();
         grid_ = TileGrid{};
         grid_.lights_per_pass = tiles_->lights_per_pass();
-        plan_ = choose_light_paths(features_, grid_, screen_px, model_, scale, {true, volume_ok_, false}, true);
+        raw_ = price_lights(features_, grid_, model_);
+        plan_ = choose_light_paths(raw_, screen_px, model_, scale, {true, volume_ok_, false}, true);
         depth_ = TileDepth{};
         cull_ = nullptr;
         bool spans = false;
@@ -73,7 +74,8 @@ public:
                 cull_ = tiles_->tile_boxes(f, tiles_->depth_spans(f, targets, stats), depth_);
             }
             tile_cover(rects, f.width, f.height, tiles_->tile_size(), cull_, features_, grid_);
-            plan_ = choose_light_paths(features_, grid_, screen_px, model_, scale, {true, volume_ok_, true}, true);
+            raw_ = price_lights(features_, grid_, model_);
+            plan_ = choose_light_paths(raw_, screen_px, model_, scale, {true, volume_ok_, true}, true);
             if (spans) plan_.predicted_ms[2] += model_.spans_mpx_ms * screen_px * 1e-6;
             if (spans && plan_.count[int(LightPath::tiles)] == 0) spans_rest_ = kSpansRest;
         }
@@ -96,7 +98,7 @@ public:
         for (size_t i = 0; i < f.lights.size(); ++i) {
             const int p = int(plan_.path[i]);
             by_path[p].push_back(&f.lights[i]);
-            raw[p] += light_prices(features_[i], grid_, model_, {1, 1, 1})[size_t(p)];
+            raw[p] += raw_[i][size_t(p)];
         }
         if (!by_path[int(LightPath::tiles)].empty())
             timed(LightPath::tiles, raw, [&] {
@@ -219,6 +221,7 @@ private:
     bool planned_ = false;
     std::vector<LightFeature> features_;
     TileGrid grid_;
+    LightPrices raw_;  // each light's prices, unscaled
     LightPathPlan plan_;
     TileDepth depth_;
     const TileDepth* cull_ = nullptr;
