@@ -7,6 +7,7 @@
 #include <random>
 
 #include "deferred/light_cost.h"
+#include "dsr_error.h"
 
 namespace dsr {
 
@@ -174,6 +175,19 @@ TEST(LightCost, CalibrationFollowsTheMeasuredRatio) {
     EXPECT_EQ(c.scale()[0], 10.0);  // clamped
     c.add(LightPath::volume, 1.0, 0.0);  // nothing predicted: no information
     EXPECT_EQ(c.scale()[1], 1.0);
+}
+
+// DSR_LIGHT_COST_SCALE: three positive numbers or one clear error.
+TEST(LightCost, StartingScalesParse) {
+    EXPECT_EQ(parse_cost_scale("1,1000,0.5"), (std::array<double, kLightPaths>{1, 1000, 0.5}));
+    for (const char* bad : {"", "1,2", "1,2,3,4", "a,b,c", "0,1,1", "1,-2,1", "1;2;3", "1,2,inf"}) {
+        try {
+            parse_cost_scale(bad);
+            ADD_FAILURE() << "accepted '" << bad << "'";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("expected three positive numbers"), std::string::npos) << e.what();
+        }
+    }
 }
 
 }  // namespace dsr

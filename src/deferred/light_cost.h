@@ -7,7 +7,7 @@
 //           and blend once per group of lights, divided among the tile's lights) and its own term
 //           in the shader's loop; once a frame the depth spans
 // Given the per-light prices, choose_light_paths finds the assignment of least total cost, the
-// per-frame costs included (it tries the four combinations of paying them or not). The constants
+// per-frame costs included (it tries every set of paths in use). The constants
 // are a GL's: default_light_costs gives the ones measured on a CPU rasteriser and on a GPU, and the
 // auto geometry scales each geometry's by what its passes took in the frames before
 // (LightCostCalibration), so the model follows the running GL.
