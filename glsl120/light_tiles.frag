@@ -8,6 +8,7 @@
 // counts the rest).
 #include "depth_codec.glsl"
 #include "lighting.glsl"
+#include "quantize.glsl"
 
 uniform sampler2D normal_map;    // unit 0
 uniform sampler2D diffuse_map;   // unit 1
@@ -19,13 +20,6 @@ uniform vec4 lightdir[BATCH];
 uniform vec4 lightspot[BATCH];
 uniform vec4 lightatt[BATCH];
 uniform vec2 planes;
-#ifdef QUANTIZE_8BIT
-// How this GL converts a colour to 8 bits (gl/rounding_probe.h), so each term rounds as its own
-// pass would: to nearest with an exact tie to the even byte (QUANTIZE_TIES_EVEN, llvmpipe);
-// QUANTIZE_TRUNCATE 2^n where it truncates to n bits first and rounds ties down (the H200:
-// 4096.0); where no model fits, floor(t x 255 + quantize_round), 1 - the median threshold.
-uniform float quantize_round;
-#endif
 uniform vec3 zrange;
 uniform vec2 uv_scale;  // texture coordinates and (light.frag's) view ray from gl_FragCoord
 uniform vec4 ray_map;
@@ -63,20 +57,7 @@ void shade(int i, vec3 pos, vec3 v, vec3 normal, vec3 diffuse, vec4 specular, fl
     // P-buffer 0, rounded to the 8-bit step that pass would have written, as this GL rounds: the
     // sum then matches the quad geometry's image instead of differing by up to N/2 LSB.
 #ifdef QUANTIZE_8BIT
-#ifdef QUANTIZE_TRUNCATE
-    // This GL's colour to 2^-n first, then to nearest with a tie down (the H200's t = 0.5 gives 127).
-    t = floor(t * QUANTIZE_TRUNCATE) / QUANTIZE_TRUNCATE;
-    t = ceil(t * 255.0 - 0.5) / 255.0;
-#elif defined(QUANTIZE_TIES_EVEN)
-    // round(t x 255), a tie to even (1.5 gives 2, 2.5 gives 2): floor(v + 0.5) alone took every tie
-    // up, and where a pixel's terms held two even ties (1024-overlap at 384x384) it was 2 LSB off quad.
-    vec3 x = t * 255.0;
-    vec3 r = floor(x + 0.5);
-    r -= vec3(equal(r - x, vec3(0.5))) * mod(r, 2.0);
-    t = r / 255.0;
-#else
-    t = floor(t * 255.0 + quantize_round) / 255.0;
-#endif
+    t = quantize8(t);
 #endif
     c += t;
     any = true;

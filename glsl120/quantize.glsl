@@ -1,7 +1,11 @@
 // A colour rounded to 8 bits as this GL rounds a fragment written into an RGBA8 target
 // (gl/rounding_probe.h, measured once; shader_table.cpp picks the define): one pass that sums what
-// several passes would have blended rounds each term as its own pass would. light_tiles.frag holds
-// the same arithmetic for its lights.
+// several passes would have blended rounds each term as its own pass would (light_tiles.frag's
+// lights, light.frag's ambient fold). To nearest with an exact tie to the even byte
+// (QUANTIZE_TIES_EVEN, llvmpipe; floor(v + 0.5) alone took every tie up, and where a pixel's terms
+// held two even ties, 1024-overlap at 384x384, it was 2 LSB off quad); QUANTIZE_TRUNCATE 2^n where
+// the GL truncates to n bits first and rounds ties down (the H200: 4096.0); where no model fits,
+// floor(t x 255 + quantize_round), 1 - the median threshold.
 #ifdef QUANTIZE_8BIT
 uniform float quantize_round;  // the fallback's offset where no model fits
 
