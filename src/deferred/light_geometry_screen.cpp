@@ -27,24 +27,17 @@ public:
         for (size_t first = 0; first < f.lights.size(); first += size_t(batch_)) {
             const size_t last = std::min(f.lights.size(), first + size_t(batch_));
             batch.clear();
-            pos_.clear(), color_.clear(), dir_.clear(), spot_.clear(), att_.clear();
+            arrays_.clear();
             for (size_t i = first; i < last; ++i) {
                 batch.push_back(int(i));
-                const LightParams& p = f.lights[i].params;
-                pos_.push_back(p.pos), color_.push_back(p.color), dir_.push_back(p.dir);
-                spot_.push_back(p.spot), att_.push_back(p.att);
+                arrays_.add(f.lights[i].params);
             }
             // The form the batch's lights allow, as the demo's shader is written for its one kind
             // of light (its lights take the attenuation law's point-light form).
             Program& prog = progs_[LightPrograms::common(f, batch)];
             gl_state().apply(light_pass_state(prog.id(), false));  // additive, the whole screen
-            const int count = int(last - first);
-            prog.set_array("lightpos", pos_.data(), count);
-            prog.set_array("lightcolor", color_.data(), count);
-            prog.set_array("lightdir", dir_.data(), count);
-            prog.set_array("lightspot", spot_.data(), count);
-            prog.set_array("lightatt", att_.data(), count);
-            prog.set("light_count", count);
+            arrays_.set(prog, LightArrays::kLight);
+            prog.set("light_count", arrays_.size());
             q.begin();
             draw_rect(f, 0, 0, float(f.width), float(f.height), false);
             q.end();
@@ -55,7 +48,7 @@ public:
 private:
     LightPrograms progs_;
     int batch_;
-    std::vector<glm::vec4> pos_, color_, dir_, spot_, att_;  // kept between frames for their storage
+    LightArrays arrays_;
 };
 
 }  // namespace

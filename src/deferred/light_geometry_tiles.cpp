@@ -206,19 +206,10 @@ private:
             glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
             glTexCoordPointer(4, GL_FLOAT, bytes, at(kFixedFloats + 4 * k));
         }
-        pos_.clear(), color_.clear(), dir_.clear(), spot_.clear(), att_.clear();
-        for (int l : batch) {
-            const LightParams& p = f.lights[size_t(l)].params;
-            pos_.push_back(p.pos), color_.push_back(p.color), dir_.push_back(p.dir);
-            spot_.push_back(p.spot), att_.push_back(p.att);
-        }
-        const int count = int(batch.size());
-        prog.set_array("lightpos", pos_.data(), count);
-        prog.set_array("lightcolor", color_.data(), count);
-        prog.set_array("lightdir", dir_.data(), count);
-        prog.set_array("lightspot", spot_.data(), count);
-        prog.set_array("lightatt", att_.data(), count);
-        if (groups_) prog.set("light_count", count);
+        arrays_.clear();
+        for (int l : batch) arrays_.add(f.lights[size_t(l)].params);
+        arrays_.set(prog, LightArrays::kLight);
+        if (groups_) prog.set("light_count", arrays_.size());
         const size_t n_draws = first_.size() - 1;
         for (size_t di = 0; di < n_draws; ++di) {
             q.begin();
@@ -241,7 +232,7 @@ private:
     std::vector<float> verts_;
     std::vector<size_t> first_;
     std::vector<TileDraw> draws_;
-    std::vector<glm::vec4> pos_, color_, dir_, spot_, att_;
+    LightArrays arrays_;
 };
 
 }  // namespace

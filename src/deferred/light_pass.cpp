@@ -45,6 +45,22 @@ float window_depth(float z, glm::vec2 planes) { return (planes.x * z + planes.y)
 
 }  // namespace
 
+void LightArrays::clear() { pos_.clear(), color_.clear(), dir_.clear(), spot_.clear(), att_.clear(); }
+
+void LightArrays::add(const LightParams& p) {
+    pos_.push_back(p.pos), color_.push_back(p.color), dir_.push_back(p.dir);
+    spot_.push_back(p.spot), att_.push_back(p.att);
+}
+
+void LightArrays::set(Program& prog, const char* const (&names)[5]) const {
+    const int n = size();
+    prog.set_array(names[0], pos_.data(), n);
+    prog.set_array(names[1], color_.data(), n);
+    prog.set_array(names[2], dir_.data(), n);
+    prog.set_array(names[3], spot_.data(), n);
+    prog.set_array(names[4], att_.data(), n);
+}
+
 LightPrograms::LightPrograms(ProgramSet& programs, const std::string& family) {
     forms_[int(LightShader::point_linear)] = programs.take(family + "_point");
     forms_[int(LightShader::point_inverse)] = programs.take(family + "_point_inverse");
@@ -110,13 +126,11 @@ void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>
         Program& prog = progs_[form];
         for (size_t first = 0; first < mine.size(); first += size_t(batch_)) {
             const size_t n = std::min(mine.size() - first, size_t(batch_));
-            pos_.clear(), color_.clear(), dir_.clear(), spot_.clear(), att_.clear();
+            arrays_.clear();
             verts_.clear();
             for (size_t k = 0; k < n; ++k) {
                 const LightDraw& l = *mine[first + k];
-                const LightParams& p = l.params;
-                pos_.push_back(p.pos), color_.push_back(p.color), dir_.push_back(p.dir);
-                spot_.push_back(p.spot), att_.push_back(p.att);
+                arrays_.add(l.params);
                 // The rectangle as a quad (x, y, slot per corner); a full light's is the viewport.
                 const float x0 = float(l.full ? 0 : l.rect.x0), y0 = float(l.full ? 0 : l.rect.y0);
                 const float x1 = float(l.full ? f.width : l.rect.x1), y1 = float(l.full ? f.height : l.rect.y1);
@@ -125,12 +139,7 @@ void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>
                 verts_.insert(verts_.end(), quad, quad + 12);
             }
             gl_state().apply(light_pass_state(prog.id(), false));
-            const int count = int(n);
-            prog.set_array("batch_pos", pos_.data(), count);
-            prog.set_array("batch_color", color_.data(), count);
-            prog.set_array("batch_dir", dir_.data(), count);
-            prog.set_array("batch_spot", spot_.data(), count);
-            prog.set_array("batch_att", att_.data(), count);
+            arrays_.set(prog, LightArrays::kBatch);
             glVertexPointer(2, GL_FLOAT, 3 * sizeof(float), verts_.data());
             glTexCoordPointer(1, GL_FLOAT, 3 * sizeof(float), verts_.data() + 2);
             q.begin();

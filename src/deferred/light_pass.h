@@ -23,6 +23,23 @@ void set_light_uniforms(Program& prog, const FrameDef& f);
 // set_light_params: one light as lighting.glsl's five vec4s (light_params.h).
 void set_light_params(Program& prog, const LightParams& lp);
 
+// A batch of lights in uniform arrays, lighting.glsl's five vec4s a light, one array each (the
+// tiles' batches, screen's, the batched quads'). Kept between frames for its storage.
+class LightArrays {
+public:
+    // The arrays' names in light_tiles.frag and light_screen.frag, and in light.frag's BATCH.
+    static constexpr const char* kLight[5] = {"lightpos", "lightcolor", "lightdir", "lightspot", "lightatt"};
+    static constexpr const char* kBatch[5] = {"batch_pos", "batch_color", "batch_dir", "batch_spot", "batch_att"};
+    void clear();
+    void add(const LightParams& p);
+    int size() const { return int(pos_.size()); }
+    // Into `prog`'s arrays (prog in use) of these names: position, colour, direction, spot, attenuation.
+    void set(Program& prog, const char* const (&names)[5]) const;
+
+private:
+    std::vector<glm::vec4> pos_, color_, dir_, spot_, att_;
+};
+
 // A light program in its three forms (the shader table's rows FAMILY, FAMILY_point and
 // FAMILY_point_inverse): each light is drawn by the form of its LightShader, so the type and law
 // selection is paid only by the lights that need it.
@@ -71,7 +88,7 @@ private:
     LightPrograms progs_;
     int batch_;
     std::vector<float> verts_;  // kept for its storage
-    std::vector<glm::vec4> pos_, color_, dir_, spot_, att_;
+    LightArrays arrays_;
 };
 
 }  // namespace dsr
