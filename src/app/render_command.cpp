@@ -125,7 +125,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["light_geometry_asked"] = light_geometry_name(opts.light_geometry);
     if (!paths.light_geometry_note.empty()) j["light_geometry_note"] = paths.light_geometry_note;
     if (paths.light_geometry == LightGeometry::stencil) j["stencil_faces"] = stencil_faces_name(paths.stencil_faces);
-    if (paths.light_geometry == LightGeometry::tiles || paths.light_geometry == LightGeometry::automatic)
+    if (draws_tiles(paths.light_geometry))
         j["tiles"] = {{"size", paths.tile_size}, {"lights_per_pass", paths.tile_lights}, {"tile_light_pairs", last.tile_light_pairs}, {"depth_culling", last.tile_depth}, {"depth_ms", last.tile_depth_ms}, {"plan_ms", last.tile_plan_ms}};
     if (last.auto_geometry)  // what the cost model chose (light_cost.h), against the light stage as measured
         j["auto"] = {{"lights", {{"quad", last.auto_lights[0]}, {"volume", last.auto_lights[1]}, {"tiles", last.auto_lights[2]}}},

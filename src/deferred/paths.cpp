@@ -127,7 +127,7 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     else if (opts.depth_handoff == DepthHandoff::blit && p.accum_stencil)
         p.refused = "--depth-handoff blit: the stencil geometry's depth-stencil buffer and the G-buffer's depth differ in "
                     "format, and a depth blit between them is INVALID_OPERATION (use --depth-handoff pass or auto)";
-    else if ((opts.light_geometry == LightGeometry::tiles || opts.light_geometry == LightGeometry::automatic) &&
+    else if (draws_tiles(opts.light_geometry) &&
              (p.tile_size < 8 || p.tile_size > 512 || p.tile_lights < 1 || p.tile_lights > 32))
         p.refused = "tiles: tile size must be 8..512 and lights per pass 1..32";
     return p;

@@ -58,6 +58,9 @@ struct Paths {
 
 Paths choose_paths(const Caps& caps, const ShaderOptions& opts);
 
+// Whether the geometry draws lights through the tiles: tiles, and auto, which sends some there.
+inline bool draws_tiles(LightGeometry g) { return g == LightGeometry::tiles || g == LightGeometry::automatic; }
+
 // One line per decision with its reason, for `dsr info`.
 std::string describe(const Paths& paths);
 const char* stencil_faces_name(Paths::StencilFaces f);  // "separate" | "two-side-ext" | "one-sided"

@@ -20,7 +20,7 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
     c.opts.depth = c.paths.depth_path;
     c.opts.tile_size = c.paths.tile_size, c.opts.tile_lights = c.paths.tile_lights;  // auto resolved
     const LightGeometry g = c.paths.light_geometry;
-    const bool tiles = g == LightGeometry::tiles || g == LightGeometry::automatic;  // auto draws tiles too
+    const bool tiles = draws_tiles(g);
     const bool fold = c.opts.skip.ambient_pass && !c.opts.ssao.on;  // the light_fold rows
     // The batch the uniform arrays hold (tiles, auto's quads, screen's lights a draw): five vec4s a
     // light within the fragment stage's uniform budget (GL 2.0 guarantees 64 vec4s; llvmpipe and
@@ -150,7 +150,7 @@ bool uses_volume(const ShaderConfig& c) { return geometry_is(c, LightGeometry::v
 bool uses_batches(const ShaderConfig& c) { return is_auto(c); }
 Defines batch_defines(const ShaderConfig& c) { return with(light_defines(c), {"BATCH " + std::to_string(c.tile_batch)}); }
 bool uses_stencil(const ShaderConfig& c) { return geometry_is(c, LightGeometry::stencil); }
-bool uses_tiles(const ShaderConfig& c) { return geometry_is(c, LightGeometry::tiles) || is_auto(c); }
+bool uses_tiles(const ShaderConfig& c) { return draws_tiles(c.paths.light_geometry); }
 Defines point_linear(Defines d) { return with(std::move(d), {"LIGHT_POINT_ONLY"}); }
 Defines point_inverse(Defines d) { return with(std::move(d), {"LIGHT_POINT_INVERSE"}); }
 bool uses_screen(const ShaderConfig& c) { return geometry_is(c, LightGeometry::screen); }

@@ -7,17 +7,28 @@
 
 namespace dsr {
 
+namespace {
+
+// w x h RGBA8 pixels, rows `stride` pixels apart, as an Image of k / 255 values: what both the
+// frame buffer's and an RGBA8 texture's read-backs hold.
+Image image_of_rgba8(const std::vector<unsigned char>& px, int w, int h, int stride) {
+    Image img;
+    img.width = w;
+    img.height = h;
+    img.rgba.resize(size_t(w) * h * 4);
+    for (int y = 0; y < h; ++y)
+        for (size_t i = 0; i < size_t(w) * 4; ++i) img.rgba[size_t(y) * w * 4 + i] = px[size_t(y) * stride * 4 + i] / 255.0f;
+    return img;
+}
+
+}  // namespace
+
 Image read_pixels(int width, int height) {
     std::vector<unsigned char> px(size_t(width) * height * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
     check_gl("reading the main frame buffer");
-    Image img;
-    img.width = width;
-    img.height = height;
-    img.rgba.resize(px.size());
-    for (size_t i = 0; i < px.size(); ++i) img.rgba[i] = px[i] / 255.0f;
-    return img;
+    return image_of_rgba8(px, width, height, width);
 }
 
 Image read_texture(GLuint tex, int w, int h, int tw, int th, bool depth) {
@@ -51,14 +62,7 @@ Image read_texture_rgba8(GLuint tex, int w, int h, int tw, int th) {
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, all.data());
     glBindTexture(GL_TEXTURE_2D, 0);
     check_gl("reading a buffer back");
-    Image img;
-    img.width = w;
-    img.height = h;
-    img.rgba.resize(size_t(w) * h * 4);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            for (int c = 0; c < 4; ++c) img.rgba[(size_t(y) * w + x) * 4 + c] = all[(size_t(y) * tw + x) * 4 + c] / 255.0f;
-    return img;
+    return image_of_rgba8(all, w, h, tw);
 }
 
 std::vector<uint32_t> read_depth_codes(GLuint tex, int w, int h, int tw, int th) {
