@@ -118,6 +118,42 @@ TEST(TilePlan, EveryOverlapShadedOnceAgainstBruteForce) {
     }
 }
 
+// The planner given tiles_kept's lists (auto's culling, done once to price the lights) plans
+// exactly what it plans when it culls itself: the same batches, quads and slots, draw by draw.
+TEST(TilePlan, KeptTilesPlanAsTheCullingDoes) {
+    std::mt19937 rng(31);
+    std::uniform_int_distribution<int> pos(-40, 300), size(0, 160);
+    for (int trial = 0; trial < 24; ++trial) {
+        const int w = 131 + trial * 11, h = 77 + trial * 7;
+        std::vector<ScissorRect> rects(size_t(2 + trial * 11));
+        for (ScissorRect& r : rects) {
+            r.x0 = pos(rng), r.y0 = pos(rng);
+            r.x1 = r.x0 + size(rng), r.y1 = r.y0 + size(rng);
+        }
+        const int ts = 8 << (trial % 3), n = 1 + trial % 9, b = 1 + (trial * 13) % 70;
+        SCOPED_TRACE(testing::Message() << "trial " << trial);
+        const TileDepth depth = random_depth(rng, rects.size(), ((w + ts - 1) / ts) * ((h + ts - 1) / ts));
+        for (const TileDepth* d : {static_cast<const TileDepth*>(nullptr), &depth}) {
+            const std::vector<std::vector<int>> kept = tiles_kept(rects, w, h, ts, d);
+            TilePlanner culling(rects, w, h, ts, n, b, d), given(rects, w, h, ts, n, b, nullptr, &kept);
+            ASSERT_EQ(culling.batches(), given.batches());
+            for (int k = 0; k < int(culling.batches().size()); ++k) {
+                std::vector<TileDraw> a, g;
+                EXPECT_EQ(culling.plan_batch(k, a), given.plan_batch(k, g));
+                ASSERT_EQ(a.size(), g.size());
+                for (size_t i = 0; i < a.size(); ++i) {
+                    ASSERT_EQ(a[i].quads.size(), g[i].quads.size());
+                    for (size_t q = 0; q < a[i].quads.size(); ++q) {
+                        const TileQuad &x = a[i].quads[q], &y = g[i].quads[q];
+                        EXPECT_TRUE(x.x0 == y.x0 && x.y0 == y.y0 && x.x1 == y.x1 && x.y1 == y.y1);
+                        EXPECT_TRUE(std::equal(x.slots.begin(), x.slots.end(), y.slots.begin(), y.slots.end()));
+                    }
+                }
+            }
+        }
+    }
+}
+
 // tile_box holds every surface point of its pixels (pixel centres on their view rays, z in the
 // span), computed as light.frag reconstructs it; an empty span gives an empty box.
 TEST(TilePlan, TileBoxHoldsEverySurfacePointOfItsPixels) {

@@ -7,6 +7,7 @@
 #include "deferred/gpu_scene.h"
 #include "deferred/lighting_stage.h"
 #include "deferred/post_stage.h"
+#include "deferred/shadow_stage.h"
 #include "deferred/ssao_stage.h"
 #include "dsr_clock.h"
 #include "dsr_error.h"

@@ -29,6 +29,9 @@ struct LightDraw {
     LightVolume eye;               // light_volume.h, in eye space
     ScissorRect rect;              // the whole viewport when `full`
     bool full = false;
+    // Its shadow map among the frame's (shadow_stage.h), in order of the shadowed lights; -1
+    // where it casts none (no `shadow`, or FrameSetup::shadows off).
+    int shadow = -1;
     // The tutorial's point light with Equation 2 (no type or law selection): the light shaders'
     // cheaper LIGHT_POINT_ONLY variant shades it.
     bool tutorial() const { return light->type == Light::Type::point && !light->attenuation; }
@@ -47,6 +50,7 @@ struct FrameSetup {
     glm::vec2 gbuffer_extent{1, 1};    // the G-buffer's content in texture coordinates (pow2 padding)
     bool scissors = true;              // §3.4.2's rectangles; off: every light over the whole screen
     bool skip_empty = true;            // SkipOptions::empty_lights: no pass for a light that adds nothing
+    bool shadows = false;              // the lights' `shadow` honoured (ShadowOptions::on and a shadow stage)
 };
 
 struct FrameDef {
@@ -67,6 +71,7 @@ struct FrameDef {
     std::vector<LightDraw> lights;
     int lights_total = 0, lights_culled = 0;
     long long scissor_pixels = 0;      // the rectangles' area, summed
+    int shadowed_lights = 0;           // lights with LightDraw::shadow >= 0
 
     // The eye-space view ray (x, y, -1) at window position (x, y): bilinear in the corner rays.
     glm::vec3 view_ray_at(float x, float y) const;

@@ -105,13 +105,15 @@ public:
                 FrameDef sub = f;  // the tiles' lights alone, with their bounds
                 sub.lights.clear();
                 TileDepth depth;
+                std::vector<std::vector<int>> kept;  // tile_cover's, so the planner does not cull again
                 if (cull_) depth.tiles = cull_->tiles;
                 for (size_t i = 0; i < f.lights.size(); ++i)
                     if (plan_.path[i] == LightPath::tiles) {
                         sub.lights.push_back(f.lights[i]);
+                        kept.push_back(std::move(features_[i].tiles));
                         if (cull_) depth.lights.push_back(cull_->lights[i]);
                     }
-                tiles_->draw_lights(sub, cull_ ? &depth : nullptr, q, stats);
+                tiles_->draw_lights(sub, cull_ ? &depth : nullptr, q, stats, &kept);
             });
         if (!by_path[int(LightPath::volume)].empty())
             timed(LightPath::volume, raw, [&] {

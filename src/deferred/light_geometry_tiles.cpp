@@ -59,7 +59,7 @@ public:
         TileDepth depth;
         const TileDepth* cull = nullptr;
         stats.tile_plan_ms += wall_ms([&] { cull = tile_boxes(f, spans, depth); });
-        draw_lights(f, cull, q, stats);
+        draw_lights(f, cull, q, stats, nullptr);
     }
 
     bool depth_culling() const override { return depth_ != nullptr; }
@@ -98,7 +98,8 @@ public:
         return &depth;
     }
 
-    void draw_lights(const FrameDef& f, const TileDepth* cull, LightQueries& q, FrameStats& stats) override {
+    void draw_lights(const FrameDef& f, const TileDepth* cull, LightQueries& q, FrameStats& stats,
+                     const std::vector<std::vector<int>>* kept) override {
         double plan_ms = 0;
         stats.tile_depth = cull != nullptr;
         std::vector<ScissorRect> rects(f.lights.size());
@@ -121,7 +122,7 @@ public:
             // buffer fills.
             std::unique_ptr<TilePlanner> planner;
             plan_ms += wall_ms([&] {
-                planner = std::make_unique<TilePlanner>(rects, f.width, f.height, tile_size_, tile_lights_, batch_, cull);
+                planner = std::make_unique<TilePlanner>(rects, f.width, f.height, tile_size_, tile_lights_, batch_, cull, kept);
             });
             for (int b = 0; b < int(planner->batches().size()); ++b) {
                 plan_ms += wall_ms([&] {

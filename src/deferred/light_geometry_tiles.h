@@ -22,7 +22,10 @@ public:
     // The tiles' boxes and f's lights' bounds into `depth`; null (and nothing written) without spans.
     virtual const TileDepth* tile_boxes(const FrameDef& f, const std::vector<DepthSpan>& spans, TileDepth& depth) const = 0;
     // f's lights through the tiles, culled by `cull` (its lights f's, in order; null: no culling).
-    virtual void draw_lights(const FrameDef& f, const TileDepth* cull, LightQueries& q, FrameStats& stats) = 0;
+    // kept: each light's tiles as tiles_kept gave them for f's rectangles and `cull` (the list
+    // plan uses them instead of culling again); null: culled here.
+    virtual void draw_lights(const FrameDef& f, const TileDepth* cull, LightQueries& q, FrameStats& stats,
+                             const std::vector<std::vector<int>>* kept = nullptr) = 0;
 };
 
 std::unique_ptr<TilesPass> make_tiles_pass(const ShaderConfig& config, ProgramSet& programs, int width, int height);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace dsr {
 
@@ -175,7 +176,8 @@ namespace {
 // (non-empty rectangle; with depth, a tile of it whose span meets the light's) in Morton order of
 // their centre's tile (stable: equal codes keep the input order).
 std::vector<int> morton_order(const std::vector<ScissorRect>& rects, int width, int height, int ts,
-                              std::vector<ScissorRect>& clipped, const TileCuller& culler) {
+                              std::vector<ScissorRect>& clipped, const TileCuller& culler,
+                              const std::vector<std::vector<int>>* kept = nullptr) {
     clipped.assign(rects.size(), ScissorRect{});
     std::vector<int> order;
     for (size_t i = 0; i < rects.size(); ++i) {
@@ -184,8 +186,8 @@ std::vector<int> morton_order(const std::vector<ScissorRect>& rects, int width, 
         r.x1 = std::min(r.x1, width), r.y1 = std::min(r.y1, height);
         clipped[i] = r;
         if (r.empty()) continue;
-        bool reaches = false;
-        culler.each(int(i), r, ts, [&](int, int) { return reaches = true; });
+        bool reaches = kept && !(*kept)[i].empty();
+        if (!kept) culler.each(int(i), r, ts, [&](int, int) { return reaches = true; });
         if (reaches) order.push_back(int(i));
     }
     std::vector<unsigned> key(rects.size(), 0);
@@ -234,6 +236,7 @@ struct TilePlanner::Impl {
     int width = 0, height = 0, ts = 1, n = 1, tx = 0, ty = 0;
     std::vector<ScissorRect> clipped;
     TileCuller culler;
+    const std::vector<std::vector<int>>* kept = nullptr;  // tiles_kept's lists, or null: cull here
     std::vector<std::vector<int>> batches;
     // Scratch reused across batches: each batch's (tile, slot) pairs, then sorted by tile with a
     // counting sort that keeps slot order (no container per tile).
@@ -246,13 +249,16 @@ struct TilePlanner::Impl {
 };
 
 TilePlanner::TilePlanner(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
-                         int lights_per_pass, int batch_size, const TileDepth* depth) {
+                         int lights_per_pass, int batch_size, const TileDepth* depth,
+                         const std::vector<std::vector<int>>* kept) {
     if (width <= 0 || height <= 0 || tile_size <= 0 || lights_per_pass <= 0 || batch_size <= 0) return;
+    if (kept && kept->size() != rects.size()) throw std::logic_error("TilePlanner: one kept list per rectangle");
     const int tx = (width + tile_size - 1) / tile_size, ty = (height + tile_size - 1) / tile_size;
     impl_ = std::make_unique<Impl>(depth, tx, ty);
     Impl& m = *impl_;
     m.width = width, m.height = height, m.ts = tile_size, m.n = lights_per_pass, m.tx = tx, m.ty = ty;
-    const std::vector<int> order = morton_order(rects, width, height, tile_size, m.clipped, m.culler);
+    m.kept = kept;
+    const std::vector<int> order = morton_order(rects, width, height, tile_size, m.clipped, m.culler, kept);
     for (size_t s = 0; s < order.size(); s += size_t(batch_size))
         m.batches.emplace_back(order.begin() + long(s), order.begin() + long(std::min(order.size(), s + size_t(batch_size))));
     m.start.resize(size_t(tx) * ty + 1);
@@ -272,6 +278,10 @@ long long TilePlanner::plan_batch(int b, std::vector<TileDraw>& out) {
     m.pairs.clear();
     for (int slot = 0; slot < int(batch.size()); ++slot) {
         const int l = batch[size_t(slot)];
+        if (m.kept) {  // the order of a light's tiles does not matter: the sort below is by tile, stable in slot
+            for (int t : (*m.kept)[size_t(l)]) m.pairs.emplace_back(t, slot);
+            continue;
+        }
         m.culler.each(l, m.clipped[size_t(l)], ts, [&](int x, int y) {
             m.pairs.emplace_back(y * tx + x, slot);
             return false;
