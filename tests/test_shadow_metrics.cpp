@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/analytic_reference.h"
 #include "analysis/shadow_metrics.h"
 #include "dsr_error.h"
 
@@ -104,4 +105,56 @@ TEST(ShadowMetrics, AcneBandAndContact) {
     EXPECT_EQ(c.contact, 3 * H);  // x = 7, 8, 9 are within 3 of the occluder
     EXPECT_EQ(c.leaked, 2 * H);
     EXPECT_EQ(contact_leak(half(10), half(10), all, rec, occ, W, H, 3).leaked, 0);
+}
+
+// measure_shadow on the trace itself (nothing wrong), on the trace without its shadow (all of the
+// contact leaks, every traced shadow pixel is wrong) and with a dark blotch on a lit floor (acne).
+TEST(ShadowMetrics, MeasureShadowAgainstTheTrace) {
+    Scene s;
+    s.camera.pos = {0, 4, 5};
+    s.camera.target = {0, 0.3f, 0};
+    s.camera.near_plane = 0.5f;
+    s.camera.far_plane = 30;
+    s.ambient = glm::vec3(0.1f);
+    Material m;
+    m.name = "m";
+    m.diffuse = glm::vec3(0.7f);
+    m.specular = glm::vec3(0);
+    s.materials.push_back(m);
+    add_plane(s, 10, {0, 0, 0}, 0);
+    add_box(s, {1, 1, 1}, {0, 0.5f, 0}, 0);
+    Light l;
+    l.pos = {1, 3, -2};
+    l.radius = 10;
+    l.color = glm::vec3(0.8f);
+    l.shadow.on = true;
+    s.lights.push_back(l);
+    const int n = 96;
+    const AnalyticTrace t = analytic_trace(s, n, n);
+    const ShadowMeasure same = measure_shadow(s, t, t.image, 0, 1);
+    EXPECT_EQ(same.edge.mismatched, 0);
+    EXPECT_GT(same.edge.ref_shadowed, 100);
+    EXPECT_EQ(same.acne.darker, 0);
+    EXPECT_GT(same.leak.contact, 5);
+    EXPECT_EQ(same.leak.leaked, 0);
+    AnalyticOptions off;
+    off.shadows = false;
+    const ShadowMeasure none = measure_shadow(s, t, analytic_trace(s, n, n, off).image, 0, 1);
+    EXPECT_EQ(none.edge.mismatched, none.edge.ref_shadowed);
+    EXPECT_EQ(none.edge.got_shadowed, 0);
+    EXPECT_EQ(none.leak.leaked, none.leak.contact);
+    EXPECT_EQ(none.acne.darker, 0);
+    Image blotch = t.image;
+    int darkened = 0;
+    for (int y = 5; y < 9; ++y)
+        for (int x = 5; x < 9; ++x)
+            if (t.mesh[size_t(y) * n + x] == 0 && !t.occluded[0][size_t(y) * n + x]) {
+                blotch.at(x, y)[0] -= 20.0f / 255;
+                ++darkened;
+            }
+    ASSERT_GT(darkened, 0);
+    EXPECT_EQ(measure_shadow(s, t, blotch, 0, 1).acne.darker, darkened);
+    Scene two = s;
+    two.lights.push_back(l);
+    EXPECT_THROW(measure_shadow(two, t, t.image, 0, 1), Error);
 }

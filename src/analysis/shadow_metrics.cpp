@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "analysis/analytic_reference.h"
 #include "dsr_error.h"
 
 namespace dsr {
@@ -161,6 +162,37 @@ ContactLeak contact_leak(const Mask& ref, const Mask& got, const Mask& considere
         c.leaked += !got[p];
     }
     return c;
+}
+
+ShadowMeasure measure_shadow(const Scene& scene, const AnalyticTrace& trace, const Image& rendered, int receiver,
+                             int occluder, double min_contrast) {
+    if (scene.lights.size() != 1 || trace.occluded.size() != 1 || trace.occluded[0].empty())
+        throw Error("measure_shadow: the scene must have one light, traced with its shadow");
+    const int w = rendered.width, h = rendered.height;
+    check(rendered, trace.image);
+    AnalyticOptions unshadowed;
+    unshadowed.shadows = false;
+    const Image lit = analytic_trace(scene, w, h, unshadowed).image;
+    Scene none = scene;
+    none.lights.clear();
+    const Image dark = analytic_trace(none, w, h).image;
+    const Mask interior = interior_mask(trace, w, h);
+    const Mask considered = shadow_considered(lit, dark, interior, min_contrast);
+    const Mask got = shadow_class(rendered, lit, dark);
+    const Mask& ref = trace.occluded[0];
+    ShadowMeasure m;
+    m.edge = shadow_edge_error(ref, got, considered, w, h);
+    const Mask band = dilate(occlusion_edges(ref, w, h), w, h, 2);
+    Mask where(ref.size());
+    for (size_t p = 0; p < where.size(); ++p) where[p] = interior[p] && !band[p] && trace.mesh[p] >= 0;
+    m.acne = acne(rendered, trace.image, where, 8);
+    Mask rec(ref.size()), occ(ref.size());
+    for (size_t p = 0; p < ref.size(); ++p) {
+        rec[p] = trace.mesh[p] == receiver;
+        occ[p] = trace.mesh[p] == occluder;
+    }
+    m.leak = contact_leak(ref, got, considered, rec, occ, w, h, 3);
+    return m;
 }
 
 }  // namespace dsr

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "scene/image.h"
+#include "scene/scene.h"
 
 namespace dsr {
 
@@ -77,5 +78,21 @@ struct ContactLeak {
 // receiver / occluder: per-pixel masks of the two meshes (from AnalyticTrace::mesh).
 ContactLeak contact_leak(const Mask& ref, const Mask& got, const Mask& considered, const Mask& receiver,
                          const Mask& occluder, int w, int h, double reach);
+
+// The three measures of one light's shadow in one rendered image, against the trace: what the
+// stress sweep's shadow cases record (stress_cases.h). `scene` has one light, with shadow.on;
+// `trace` is analytic_trace(scene) at the image's size; `rendered` the renderer's final image.
+// The renderer's class comes from `rendered` against the reference's images with the light
+// unshadowed and without it (one render per case; the light's term is at least min_contrast
+// where it is judged, far above the deferred path's few LSB, so the half cut is not moved by them).
+// receiver / occluder: the objects (Scene::objects indices) the shadow falls on and is cast by.
+struct ShadowMeasure {
+    ShadowEdgeError edge;
+    AcneCount acne;     // darker than the trace by more than 8 LSB, 2 pixels or more from an edge
+    ContactLeak leak;   // within 3 pixels of the occluder
+};
+struct AnalyticTrace;
+ShadowMeasure measure_shadow(const Scene& scene, const AnalyticTrace& trace, const Image& rendered, int receiver,
+                             int occluder, double min_contrast = 24.0 / 255.0);
 
 }  // namespace dsr
