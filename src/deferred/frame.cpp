@@ -29,6 +29,7 @@ namespace {
 void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_empty, bool shadows) {
     const auto frustum = frustum_planes(f.proj * f.view);
     const int w = f.width, h = f.height;
+    const EyeTransform eye_of(f.camera);
     f.lights.reserve(lights.size());
     f.lights_total = int(lights.size());
     for (size_t i = 0; i < lights.size(); ++i) {
@@ -44,7 +45,7 @@ void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_emp
         }
         // In double, rounded once (Camera::to_eye): far from the origin, view * pos in float would
         // lose the light's position to the world coordinates' rounding (stress case coords).
-        const LightVolume eye = to_eye(volume, f.camera);
+        const LightVolume eye = to_eye(volume, eye_of);
         ScissorRect r = volume_scissor(eye, f.proj[0][0], f.proj[1][1], f.camera.near_plane, w, h);
         long long n = r.area();
         if (n <= 0) {
@@ -58,7 +59,7 @@ void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_emp
         const bool full = !f.scissors || n == (long long)w * h;
         if (full) r = ScissorRect{0, 0, w, h};
         f.scissor_pixels += r.area();
-        f.lights.push_back(LightDraw{&light, i, light_params(light, f.camera), eye, r, full});
+        f.lights.push_back(LightDraw{&light, i, light_params(light, eye_of), eye, r, full});
         // Maps only for the visible shadowed lights: the shadow stage draws one per index.
         if (shadows && light.shadow.on) f.lights.back().shadow = f.shadowed_lights++;
     }

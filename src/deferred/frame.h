@@ -41,6 +41,19 @@ struct LightDraw {
     }
 };
 
+// One light's shadow map as the light passes read it (glsl120/shadow.glsl): what the shadow stage
+// drew this frame (shadow_stage.h), in numbers. The map's layout is shadow_math.h's ShadowLayout.
+struct ShadowLookup {
+    unsigned texture = 0;        // the GL texture: depth compared by ARB_shadow, or depth packed in RGB8
+    int kind = 0;                // ShadowKind: 0 perspective (spot), 1 orthographic (directional), 2 six faces
+    glm::mat4 eye_to_light{1};   // this frame's eye space -> the map's light space (q)
+    glm::mat4 proj{1};           // q -> the map's clip space (perspective, orthographic)
+    glm::vec3 depth{0};          // stored depth = depth.x |q| + depth.y (-q.z) + depth.z
+    glm::vec2 texel{0};          // a texel's world size at q = texel.x + texel.y * (depth along the map's axis)
+    float bias = 0, slope = 0;   // the light's LightShadow
+    int width = 0, height = 0, face = 0;  // the texture's texels, and one view's per side
+};
+
 // What make_frame needs besides the scene.
 struct FrameSetup {
     int width = 0, height = 0;         // the deferred buffers (G-buffer and P-buffer 0)
@@ -72,6 +85,9 @@ struct FrameDef {
     int lights_total = 0, lights_culled = 0;
     long long scissor_pixels = 0;      // the rectangles' area, summed
     int shadowed_lights = 0;           // lights with LightDraw::shadow >= 0
+    // Their maps, by LightDraw::shadow: filled by the shadow stage before the light passes read them
+    // (empty until then, and in frames without shadows).
+    std::vector<ShadowLookup> shadows;
 
     // The eye-space view ray (x, y, -1) at window position (x, y): bilinear in the corner rays.
     glm::vec3 view_ray_at(float x, float y) const;

@@ -22,9 +22,11 @@ LightParams light_params(const Light& light, const glm::mat4& view) {
     return p;
 }
 
-LightParams light_params(const Light& light, const Camera& camera) {
-    LightParams p = light_params(light, camera.view());
-    p.pos = glm::vec4(camera.to_eye(light.pos), light.radius);
+LightParams light_params(const Light& light, const Camera& camera) { return light_params(light, EyeTransform(camera)); }
+
+LightParams light_params(const Light& light, const EyeTransform& eye) {
+    LightParams p = light_params(light, eye.view);
+    p.pos = glm::vec4(eye.to_eye(light.pos), light.radius);
     return p;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include "deferred/eye_transform.h"
 #include "scene/scene.h"
 
 namespace dsr {
@@ -21,5 +22,6 @@ LightParams light_params(const Light& light, const glm::mat4& view);
 // The same with the position moved to eye space in double (Camera::to_eye, rounded once), so a
 // light far from the origin keeps its position: what the renderers use.
 LightParams light_params(const Light& light, const Camera& camera);
+LightParams light_params(const Light& light, const EyeTransform& eye);
 
 }  // namespace dsr

@@ -199,9 +199,11 @@ LightVolume transformed(const LightVolume& v, const glm::mat4& m) {
     return t;
 }
 
-LightVolume to_eye(const LightVolume& v, const Camera& camera) {
-    LightVolume t = transformed(v, camera.view());
-    t.pos = camera.to_eye(v.pos);
+LightVolume to_eye(const LightVolume& v, const Camera& camera) { return to_eye(v, EyeTransform(camera)); }
+
+LightVolume to_eye(const LightVolume& v, const EyeTransform& eye) {
+    LightVolume t = transformed(v, eye.view);
+    t.pos = eye.to_eye(v.pos);
     return t;
 }
 

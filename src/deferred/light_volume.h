@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "deferred/culling.h"
+#include "deferred/eye_transform.h"
 #include "deferred/scissor.h"
 #include "scene/scene.h"
 
@@ -39,6 +40,7 @@ LightVolume transformed(const LightVolume& v, const glm::mat4& rigid);
 // The volume in the camera's eye space, its position moved in double and rounded once
 // (Camera::to_eye): what the renderers pass to volume_scissor.
 LightVolume to_eye(const LightVolume& v, const Camera& camera);
+LightVolume to_eye(const LightVolume& v, const EyeTransform& eye);
 
 struct BoundingSphere {
     glm::vec3 centre{0};
