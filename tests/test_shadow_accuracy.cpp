@@ -87,18 +87,24 @@ LightResult measure_light(const Scene& full, size_t k, const DepthPathCase& path
     const Image ref_lit = analytic_trace(one, kSize, kSize, no_shadows).image;
     const Image ref_dark = analytic_trace(none, kSize, kSize).image;
     LightResult r;
-    r.considered = shadow_considered(ref_lit, ref_dark, interior_mask(tr, kSize, kSize), kMinContrast);
+    const Mask interior = interior_mask(tr, kSize, kSize);
+    r.considered = shadow_considered(ref_lit, ref_dark, interior, kMinContrast);
     const Image on = render_scene(one, kSize, kSize, shadowed_options(one, true, path), path.caps_off).image;
     const Image off = render_scene(one, kSize, kSize, shadowed_options(one, false, path), path.caps_off).image;
     const Image dark = render_scene(none, kSize, kSize, shadowed_options(none, false, path), path.caps_off).image;
     r.got = shadow_class(on, off, dark);
-    r.edge = shadow_edge_error(tr.occluded[0], r.got, r.considered, kSize, kSize);
+    r.edge = shadow_edge_error(tr.occluded[0], r.got, r.considered, kSize, kSize, &interior);
     r.leak = contact_leak(tr.occluded[0], r.got, r.considered, mesh_mask(tr, 0), mesh_mask(tr, 1), kSize, kSize, 3);
     std::printf("[ shadow   ] %-26s %-11s considered %6lld, traced shadow %5lld, rendered %5lld; wrong %4lld, "
                 "max %.2f px (mean %.2f) from the traced edge, %lld beyond 1.5 px; contact %lld px, %lld lit (%.1f%%)\n",
                 path.name, light_name(full.lights[k]), r.edge.considered, r.edge.ref_shadowed, r.edge.got_shadowed,
                 r.edge.mismatched, r.edge.max_px, r.edge.mean_px, r.edge.beyond(1.5), r.leak.contact, r.leak.leaked,
                 100 * r.leak.fraction());
+    for (size_t i = 0; i < r.edge.pixels.size(); ++i)
+        if (r.edge.distances[i] > 1.5)
+            std::printf("[ shadow   ]   wrong at (%zu, %zu), %.2f px from the traced edge, %s in the trace\n",
+                        r.edge.pixels[i] % kSize, r.edge.pixels[i] / kSize, r.edge.distances[i],
+                        tr.occluded[0][r.edge.pixels[i]] ? "shadowed" : "lit");
     if (r.edge.max_px > 1.5 || r.leak.fraction() > 0.05) {
         write_failure_images(std::string("shadow_") + light_name(full.lights[k]) + (path.caps_off.empty() ? "" : "_packed"),
                              on, analytic_trace(one, kSize, kSize).image);

@@ -57,6 +57,14 @@ TEST(ShadowMetrics, EdgeErrorIsTheDistanceToTheTracedEdge) {
     Mask some = all;
     for (int y = 0; y < H; ++y) some[size_t(y) * W + 10] = 0;
     EXPECT_EQ(shadow_edge_error(ref, ref, some, W, H).boundary, 0);
+    // The boundary's domain can be wider than the pixels judged: the edge at x = 10 with only
+    // x >= 12 considered is 2 pixels from a wrong pixel at x = 12 (the domain everything), and
+    // no boundary at all in the considered pixels alone.
+    Mask right(size_t(W) * H, 0);
+    for (size_t p = 0; p < right.size(); ++p) right[p] = p % W >= 12;
+    const Mask wrong12 = half(13);
+    EXPECT_DOUBLE_EQ(shadow_edge_error(ref, wrong12, right, W, H, &all).max_px, 2.0);
+    EXPECT_TRUE(std::isinf(shadow_edge_error(ref, wrong12, right, W, H).max_px));
     // No boundary at all and a mismatch: infinitely far.
     EXPECT_TRUE(std::isinf(shadow_edge_error(half(0), spot, all, W, H).max_px));
     EXPECT_THROW(shadow_edge_error(ref, Mask(3, 0), all, W, H), Error);

@@ -55,7 +55,7 @@ long long ShadowEdgeError::beyond(double px) const {
 
 Mask shadow_boundary(const Mask& ref, const Mask& considered, int w, int h) {
     check(ref, w, h, "the reference mask");
-    check(considered, w, h, "the considered mask");
+    check(considered, w, h, "the boundary's domain");
     Mask b(ref.size(), 0);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
@@ -72,9 +72,11 @@ Mask shadow_boundary(const Mask& ref, const Mask& considered, int w, int h) {
     return b;
 }
 
-ShadowEdgeError shadow_edge_error(const Mask& ref, const Mask& got, const Mask& considered, int w, int h) {
+ShadowEdgeError shadow_edge_error(const Mask& ref, const Mask& got, const Mask& considered, int w, int h,
+                                  const Mask* domain) {
     check(got, w, h, "the renderer's mask");
-    const Mask b = shadow_boundary(ref, considered, w, h);
+    check(considered, w, h, "the considered mask");
+    const Mask b = shadow_boundary(ref, domain ? *domain : considered, w, h);
     std::vector<std::pair<int, int>> edge;
     ShadowEdgeError e;
     for (int y = 0; y < h; ++y)
@@ -96,6 +98,7 @@ ShadowEdgeError shadow_edge_error(const Mask& ref, const Mask& got, const Mask& 
             double best = std::numeric_limits<double>::infinity();
             for (const auto& [bx, by] : edge) best = std::min(best, std::hypot(double(bx - x), double(by - y)));
             e.distances.push_back(best);
+            e.pixels.push_back(p);
             e.max_px = std::max(e.max_px, best);
             sum += best;
         }
@@ -181,7 +184,7 @@ ShadowMeasure measure_shadow(const Scene& scene, const AnalyticTrace& trace, con
     const Mask got = shadow_class(rendered, lit, dark);
     const Mask& ref = trace.occluded[0];
     ShadowMeasure m;
-    m.edge = shadow_edge_error(ref, got, considered, w, h);
+    m.edge = shadow_edge_error(ref, got, considered, w, h, &interior);
     const Mask band = dilate(occlusion_edges(ref, w, h), w, h, 2);
     Mask where(ref.size());
     for (size_t p = 0; p < where.size(); ++p) where[p] = interior[p] && !band[p] && trace.mesh[p] >= 0;

@@ -10,8 +10,11 @@
 //     adds (off - on > (off - dark) / 2, summed over RGB): a filtered edge is cut where its
 //     coverage crosses one half, as the traced edge is where the ray grazes the occluder;
 //   - the reference's class: the trace's occluded mask;
-//   - boundary pixels: considered pixels with a 4-neighbour, also considered, of the other
-//     reference class (both sides of the traced edge);
+//   - boundary pixels: pixels of the edge's domain with a 4-neighbour, also in it, of the other
+//     reference class (both sides of the traced edge). The domain is every interior pixel, not
+//     only the considered ones: where the light is too faint to judge the renderer the traced
+//     edge still runs on, and a wrong pixel beside it is that far from it, not from where the
+//     considered region ends;
 //   - boundary error: for each considered pixel the two classes disagree on, the distance in
 //     pixels (between centres) to the nearest boundary pixel; its max is the shadow edge's error.
 // Acne and peter-panning are the two ways a depth bias goes wrong:
@@ -47,12 +50,16 @@ struct ShadowEdgeError {
                                              // pixel (infinite when there is no boundary)
     long long beyond(double px) const;       // mismatches further than px
     std::vector<double> distances;           // one per mismatch
+    std::vector<size_t> pixels;              // the mismatches' pixels (y * w + x), as distances
 };
 
-// Boundary pixels of `ref` among `considered` (width w, height h).
-Mask shadow_boundary(const Mask& ref, const Mask& considered, int w, int h);
+// Boundary pixels of `ref` among `domain` (width w, height h).
+Mask shadow_boundary(const Mask& ref, const Mask& domain, int w, int h);
 
-ShadowEdgeError shadow_edge_error(const Mask& ref, const Mask& got, const Mask& considered, int w, int h);
+// Mismatches counted on `considered`, their distances to the boundary among `domain` (null:
+// considered itself).
+ShadowEdgeError shadow_edge_error(const Mask& ref, const Mask& got, const Mask& considered, int w, int h,
+                                  const Mask* domain = nullptr);
 
 // Pixels within `radius` (Euclidean, between centres) of a set pixel of `m`.
 Mask dilate(const Mask& m, int w, int h, double radius);
