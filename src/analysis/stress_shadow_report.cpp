@@ -69,30 +69,35 @@ std::vector<ShadowPairSummary> shadow_pair_summaries(const std::vector<StressRes
 ShadowBiasChoice choose_shadow_bias(const std::vector<StressResult>& results) {
     ShadowBiasChoice c;
     const std::vector<ShadowPairSummary> pairs = shadow_pair_summaries(results);
-    const ShadowPairSummary* best = nullptr;
-    auto better = [](const ShadowPairSummary& a, const ShadowPairSummary& b) {
+    const double default_slope = LightShadow{}.slope;
+    auto better = [&](const ShadowPairSummary& a, const ShadowPairSummary& b) {
+        if (a.acne_cases != b.acne_cases) return a.acne_cases < b.acne_cases;
         if (a.mean_leak != b.mean_leak) return a.mean_leak < b.mean_leak;
         if (a.mean_edge != b.mean_edge) return a.mean_edge < b.mean_edge;
         if (a.bias != b.bias) return a.bias < b.bias;
+        const double da = std::fabs(a.slope - default_slope), db = std::fabs(b.slope - default_slope);
+        if (da != db) return da < db;
         return a.slope < b.slope;
     };
-    int clean = 0;
+    const ShadowPairSummary* best = nullptr;
     for (const ShadowPairSummary& p : pairs) {
-        if (p.acne_cases || p.maps_missing) continue;
-        ++clean;
+        if (p.maps_missing) continue;
         if (!best || better(p, *best)) best = &p;
     }
     if (!best) {
-        c.why = pairs.empty() ? "no shadow cases ran" : "every pair shows acne in some case (or drew no map)";
+        c.why = pairs.empty() ? "no shadow cases ran" : "no pair drew every map";
         return c;
     }
+    int fewest = 0;
+    for (const ShadowPairSummary& p : pairs) fewest += !p.maps_missing && p.acne_cases == best->acne_cases;
     c.found = true;
     c.bias = best->bias;
     c.slope = best->slope;
-    c.why = std::to_string(clean) + " of " + std::to_string(pairs.size()) +
-            " pairs show no acne in any case; of those, bias " + num(best->bias) + ", slope " + num(best->slope) +
-            " leaks least at the contact (mean " + pct(best->mean_leak) + ", worst " + pct(best->worst_leak) +
-            ") with the edge's error at mean " + px(best->mean_edge) + " px, worst " + px(best->worst_edge) + " px";
+    c.why = std::to_string(fewest) + " of " + std::to_string(pairs.size()) + " pairs show acne in the fewest cases (" +
+            std::to_string(best->acne_cases) + " of " + std::to_string(best->cases) + "); of those, bias " +
+            num(best->bias) + ", slope " + num(best->slope) + " leaks least at the contact (mean " +
+            pct(best->mean_leak) + ", worst " + pct(best->worst_leak) + ") with the edge's error at mean " +
+            px(best->mean_edge) + " px, worst " + px(best->worst_edge) + " px";
     return c;
 }
 

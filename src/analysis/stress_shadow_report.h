@@ -21,9 +21,12 @@ struct ShadowPairSummary {
 };
 std::vector<ShadowPairSummary> shadow_pair_summaries(const std::vector<StressResult>& results);
 
-// The sweep's choice: of the pairs with no acne in any case (and every map drawn), the one whose
-// mean contact leak is least, then whose mean edge error is least, then the smaller bias, then
-// the smaller slope. found is false when no pair qualifies; `why` says what decided.
+// The sweep's choice, among the pairs that drew every map: acne in the fewest cases (a case no
+// pair keeps clean, where the map's texels are larger than the band the acne measure leaves
+// around an edge, then decides nothing), then the least mean contact leak, then the least mean
+// edge error, then the smaller bias, then the slope nearest LightShadow's (a tie is no evidence
+// to move it), then the smaller slope. found is false when no pair qualifies; `why` says what
+// decided.
 struct ShadowBiasChoice {
     bool found = false;
     double bias = 0, slope = 0;

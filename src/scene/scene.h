@@ -45,7 +45,7 @@ struct Camera {
 struct LightShadow {
     bool on = false;
     int size = 1024;       // texels per side (per cube face for point lights): a power of two in [64, 8192]
-    float bias = 0.001f;   // >= 0
+    float bias = 0.0001f;  // >= 0
     float slope = 2.0f;    // >= 0
 };
 
