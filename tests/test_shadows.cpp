@@ -124,3 +124,25 @@ TEST(Shadows, OffIgnoresTheScene) {
     EXPECT_EQ(a.image.rgba, b.image.rgba);
     EXPECT_EQ(a.stats.shadow_maps, 0);
 }
+
+// A still frame keeps the last frame's map (nothing drawn, the same image); --shadow-reuse off
+// draws it again; moving the light draws it again.
+TEST(Shadows, StillFramesReuseTheMaps) {
+    Scene s = box_scene(Light::Type::spot);
+    for (bool reuse : {true, false}) {
+        auto ctx = create_context(ContextDesc{"osmesa", kSize, kSize});
+        ShaderOptions o = shadowed();
+        o.shadows.reuse = reuse;
+        DeferredShader ds(probe_caps(), kSize, kSize, o, resource_dir("glsl120"));
+        ds.set_scene(s);
+        EXPECT_EQ(ds.render(s, kSize, kSize).shadow_maps, 1);
+        const Image first = read_pixels(kSize, kSize);
+        const FrameStats again = ds.render(s, kSize, kSize);
+        EXPECT_EQ(again.shadow_maps, reuse ? 0 : 1);
+        EXPECT_EQ(again.shadow_triangles, reuse ? 0 : 14);
+        EXPECT_EQ(read_pixels(kSize, kSize).rgba, first.rgba);
+        Scene moved = s;
+        moved.lights[0].pos.x += 0.25f;
+        EXPECT_EQ(ds.render(moved, kSize, kSize).shadow_maps, 1);
+    }
+}

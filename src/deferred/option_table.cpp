@@ -252,6 +252,11 @@ std::vector<RenderOption> make_table() {
         "what a shadow lookup averages: one comparison with the nearest texel (hard), 2x2 comparisons "
         "weighted bilinearly (pcf2: ARB_shadow's filtered compare where the GL has it), or 3x3 or 5x5 "
         "texels of those, averaged (pcf3, pcf5)");
+    RenderOption reuse{"shadow-reuse", OptionKind::on_off, {"on", "off"}, 0, 0, true,
+                       [](const RenderOptions& r) { return on_off(r.shader.shadows.reuse); },
+                       [](RenderOptions& r, const std::string& v) { r.shader.shadows.reuse = v == "on"; }};
+    add(reuse, "keep a light's shadow map from the last frame while neither the light nor anything in its "
+               "views moved (on), or draw every map every frame (off: what the shadow stage costs)");
     return t;
 }
 

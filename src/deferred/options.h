@@ -102,6 +102,9 @@ const char* shadow_filter_name(ShadowFilter f);  // "hard", "pcf2", "pcf3", "pcf
 struct ShadowOptions {
     bool on = true;  // --shadows on honours the scene's `shadow` lights; off ignores them
     ShadowFilter filter = ShadowFilter::pcf2;
+    // A light's map kept from an earlier frame while neither the light nor anything in its views
+    // moved (the viewer's still frames); off draws every map every frame (timing the stage).
+    bool reuse = true;
 };
 
 struct ShaderOptions {

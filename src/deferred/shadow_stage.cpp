@@ -33,7 +33,8 @@ void view_viewport(const ShadowLayout& s, size_t view) {
 ShadowStage::ShadowStage(const ShaderConfig& c, ProgramSet& programs)
     : caster_(programs.take("shadow_caster")),
       packed_(!(c.caps.depth_texture && c.caps.shadow)),
-      hard_(c.opts.shadows.filter == ShadowFilter::hard) {
+      hard_(c.opts.shadows.filter == ShadowFilter::hard),
+      reuse_(c.opts.shadows.reuse) {
     if (!c.caps.fbo) throw Error("shadow maps need EXT_framebuffer_object (--shadows off draws without them)");
     GLint max = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
@@ -129,7 +130,7 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
             key.objects.push_back(std::move(objs));
         }
         Map& m = maps_[l.index];
-        const bool same = m.texture && m.width == layout.width && m.height == layout.height && m.clips == key.clips &&
+        const bool same = reuse_ && m.texture && m.width == layout.width && m.height == layout.height && m.clips == key.clips &&
                           m.objects == key.objects && m.models == key.models;
         if (!same) {
             allocate(m, layout.width, layout.height);

@@ -59,6 +59,7 @@ private:
     Program caster_;
     bool packed_ = false;
     bool hard_ = false;
+    bool reuse_ = true;  // ShadowOptions::reuse
     int max_texture_ = 0;
     std::vector<ObjectBounds> bounds_;
     std::map<size_t, Map> maps_;  // by the light's index in Scene::lights
