@@ -9,10 +9,12 @@
 // reconstructed eye-space position instead of light: accuracy measurements), BATCH (many lights'
 // quads in one draw, each light's parameters from uniform arrays by the quad's slot), AMBIENT_FOLD (a
 // full-screen light's pass that also writes the background and Listing 15's ambient term, blending
-// off: lighting_stage.cpp; with QUANTIZE_8BIT each term rounded as its own pass would be).
+// off: lighting_stage.cpp; with QUANTIZE_8BIT each term rounded as its own pass would be), SHADOW
+// (the light's shadow map scales its term: shadow.glsl).
 #include "depth_codec.glsl"
 #include "lighting.glsl"
 #include "quantize.glsl"
+#include "shadow.glsl"
 
 uniform sampler2D normal_map;    // unit 0
 uniform sampler2D diffuse_map;   // unit 1
@@ -123,6 +125,10 @@ void main()
     vec4 specular = texture2D(specular_map, texcoord);
     vec3 c = light_contribution(lightpos, lightcolor, lightdir, lightspot, lightatt, pos, view_vector(pos), normal, diffuse,
                                 specular.rgb, decode_shininess(specular.a));
+#ifdef SHADOW
+    vec3 to_light = lightcolor.w > 1.5 ? -lightdir.xyz : normalize(lightpos.xyz - pos);
+    c *= shadow_factor(pos, normal, to_light);
+#endif
 #ifdef AMBIENT_FOLD
 #ifdef QUANTIZE_8BIT
     c = quantize8(c);  // as the light's own additive pass would have been rounded

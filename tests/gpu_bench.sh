@@ -12,7 +12,7 @@
 #                                    (GPU_BENCH_SMOKE=1: build, info and one small render only;
 #                                    GPU_BENCH_SIZES, _FRAMES, _LIGHTS: the bench's sweep;
 #                                    GPU_BENCH_PARTS: some of renders geometry targets ssao
-#                                    forward tiles auto groups bench, default all)
+#                                    forward tiles auto groups shadows bench, default all)
 #
 # The build links the system's libEGL/libOpenGL (glvnd, the NVIDIA driver behind them), never
 # libOSMesa; it is the same renderer objects as the headless build.
@@ -187,6 +187,27 @@ run)
             --lights ${GPU_BENCH_GROUP_LIGHTS:-own,1024,4096,1024-overlap,32-large} --light-geometry quad,tiles \
             --tile-plan groups --json "$out/gpu_bench_groups_1920x1080.json" \
             --report "$out/gpu_bench_groups_1920x1080.md" > "$out/gpu_bench_groups_1920x1080.txt"
+    fi
+    # Shadow maps (docs/shadows.md): 1, 8 and 32 shadowed spot lights and the default scene's
+    # lights as shadowed point lights, each against the same lights unshadowed (--shadows off),
+    # with every map drawn every frame (--shadow-reuse off: the stage's cost) and kept (on: a still
+    # frame); both map formats on the 8 spots; and the bench's rows with their error columns.
+    if part shadows; then
+        for l in 1-shadow 8-shadow 32-shadow own-shadow; do
+            for v in "on:--shadows on --shadow-reuse off" "reuse:--shadows on" "off:--shadows off"; do
+                $dsr render $src/data/default.scene --context egl --size 1920x1080 --no-bloom --no-aa --lights $l \
+                    ${v#*:} --frames 30 --stats "$out/shadows_${l}_${v%%:*}.json" -o "$out/shadows_${l}_${v%%:*}.png"
+            done
+        done
+        $dsr render $src/data/default.scene --context egl --size 1920x1080 --no-bloom --no-aa --lights 8-shadow \
+            --shadow-reuse off --caps no-depth-texture --frames 30 --stats "$out/shadows_8-shadow_packed.json" \
+            -o "$out/shadows_8-shadow_packed.png"
+        echo "8-shadow, depth texture vs packed maps: $($dsr compare "$out/shadows_8-shadow_on.png" \
+            "$out/shadows_8-shadow_packed.png" 2>&1 | tail -1)" | tee "$out/shadows_compare.txt"
+        $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-30} \
+            --lights 1-shadow,8-shadow,32-shadow,own-shadow --light-geometry auto,quad \
+            --json "$out/gpu_bench_shadows_1920x1080.json" --report "$out/gpu_bench_shadows_1920x1080.md" \
+            | tee "$out/gpu_bench_shadows_1920x1080.txt"
     fi
     if part bench; then
     for s in ${GPU_BENCH_SIZES:-1920x1080}; do

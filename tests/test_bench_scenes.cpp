@@ -157,3 +157,33 @@ TEST(BenchScenes, LightSpecs) {
 }
 
 }  // namespace
+
+// The shadow rows' sets: N spot lights casting shadows down on the floor, or the scene's own.
+TEST(BenchScenes, ShadowSets) {
+    const auto s8 = dsr::parse_light_spec("8-shadow");
+    ASSERT_TRUE(s8);
+    EXPECT_EQ(s8->count, 8);
+    EXPECT_EQ(s8->set, dsr::LightSet::shadow);
+    const auto own = dsr::parse_light_spec("own-shadow");
+    ASSERT_TRUE(own);
+    EXPECT_EQ(own->count, -1);
+    EXPECT_EQ(own->set, dsr::LightSet::shadow);
+    EXPECT_FALSE(dsr::parse_light_spec("-shadow"));
+    EXPECT_FALSE(dsr::parse_light_spec("x-shadow"));
+    const dsr::Scene base = dsr::load_scene(dsr::resource_dir("data") + "/default.scene");
+    const dsr::Scene spots = dsr::bench_scene(base, *s8);
+    ASSERT_EQ(spots.lights.size(), 8u);
+    const dsr::Scene plain = dsr::with_generated_lights(base, 8);
+    for (size_t i = 0; i < spots.lights.size(); ++i) {
+        EXPECT_EQ(spots.lights[i].type, dsr::Light::Type::spot);
+        EXPECT_TRUE(spots.lights[i].shadow.on);
+        EXPECT_FLOAT_EQ(spots.lights[i].pos.y, plain.lights[i].pos.y + 0.5f * plain.lights[i].radius);
+    }
+    const dsr::Scene mine = dsr::bench_scene(base, *own);
+    ASSERT_EQ(mine.lights.size(), base.lights.size());
+    for (const dsr::Light& l : mine.lights) {
+        EXPECT_TRUE(l.shadow.on);
+        EXPECT_EQ(l.type, dsr::Light::Type::point);
+    }
+    EXPECT_EQ(dsr::bench_scene_name("default", *own), "default-shadow");
+}

@@ -414,4 +414,49 @@ TEST_F(LightLines, BadValuesNameTheLine) {
     expect_error(header() + "light area pos 0 1 0\n", 3, {"expected light kind 'point', 'spot' or 'directional'", "got 'area'"});
 }
 
+// `shadow [size N] [bias B] [slope S]` on any light: off by default, the defaults of LightShadow
+// where not given, the three in any order right after `shadow`.
+TEST_F(LightLines, ShadowOnAnyLight) {
+    const std::string path = write("shadows.scene",
+                                   header() +
+                                       "light spot pos 0 3 0 dir 0 -1 0 color 1 1 1 radius 5 angle 30 shadow\n"
+                                       "light directional shadow size 2048 bias 0.01 slope 0 dir 0 -1 0 color 1 1 1\n"
+                                       "light point pos 0 1 0 color 1 1 1 shadow slope 3 size 64 radius 4\n"
+                                       "light point pos 0 1 0 color 1 1 1 radius 4\n");
+    const dsr::Scene s = dsr::load_scene(path);
+    ASSERT_EQ(s.lights.size(), 4u);
+    const dsr::LightShadow d;
+    EXPECT_TRUE(s.lights[0].shadow.on);
+    EXPECT_EQ(s.lights[0].shadow.size, d.size);
+    EXPECT_FLOAT_EQ(s.lights[0].shadow.bias, d.bias);
+    EXPECT_FLOAT_EQ(s.lights[0].shadow.slope, d.slope);
+    EXPECT_TRUE(s.lights[1].shadow.on);
+    EXPECT_EQ(s.lights[1].shadow.size, 2048);
+    EXPECT_FLOAT_EQ(s.lights[1].shadow.bias, 0.01f);
+    EXPECT_FLOAT_EQ(s.lights[1].shadow.slope, 0.0f);
+    EXPECT_EQ(s.lights[1].type, dsr::Light::Type::directional);
+    EXPECT_TRUE(s.lights[2].shadow.on);
+    EXPECT_EQ(s.lights[2].shadow.size, 64);
+    EXPECT_FLOAT_EQ(s.lights[2].shadow.slope, 3.0f);
+    EXPECT_FLOAT_EQ(s.lights[2].radius, 4.0f);
+    EXPECT_FALSE(s.lights[3].shadow.on);
+}
+
+TEST_F(LightLines, BadShadowsNameTheLine) {
+    const std::string point = "light point pos 0 1 0 color 1 1 1 radius 4 ";
+    expect_error(header() + point + "shadow size 100\n", 3, {"expected shadow size a power of two in [64, 8192]", "got '100'"});
+    expect_error(header() + point + "shadow size 32\n", 3, {"expected shadow size a power of two in [64, 8192]", "got '32'"});
+    expect_error(header() + point + "shadow size 16384\n", 3, {"expected shadow size a power of two", "got '16384'"});
+    expect_error(header() + point + "shadow size 512.5\n", 3, {"expected shadow size a power of two", "got '512.5'"});
+    expect_error(header() + point + "shadow size\n", 3, {"expected a number for shadow size", "got end of line"});
+    expect_error(header() + point + "shadow bias -0.1\n", 3, {"expected shadow bias >= 0", "got '-0.1'"});
+    expect_error(header() + point + "shadow slope -1\n", 3, {"expected shadow slope >= 0", "got '-1'"});
+    expect_error(header() + point + "shadow bias 0.1 bias 0.2\n", 3, {"expected each of shadow's size, bias, slope at most once", "got 'bias'"});
+    expect_error(header() + point + "shadow shadow\n", 3, {"at most once", "got 'shadow'"});
+    expect_error(header() + point + "size 512 shadow\n", 3, {"expected shadow before size", "got 'size'"});
+    expect_error(header() + point + "bias 0.1\n", 3, {"expected shadow before bias", "got 'bias'"});
+    expect_error(header() + "light point pos 0 1 0 shadow color 1 1 1 slope 2 radius 4\n", 3, {"expected shadow before slope", "got 'slope'"});
+    expect_error(header() + point + "shadow size 512 blur 2\n", 3, {"expected one of pos, color", "shadow", "got 'blur'"});
+}
+
 }  // namespace

@@ -187,6 +187,104 @@ void intersect_exact(const TracedMesh& s, const dvec3& o, const dvec3& d, double
     }
 }
 
+// ---- Shadow rays ----
+// A light with shadow.on reaches p only if nothing lies on the segment from p to it (point and
+// spot: to its position; directional: along -dir, unbounded). Unlike the camera rays these see
+// both faces: a plane shades what is under it as well as what is over it, and the far side of a
+// closed shape stops the ray as its near side does (a point on a face turned from the light
+// sends its ray into its own shape: the exit hides the light, as the shadow map's nearer front
+// face does). Each test asks whether any part of the open interval (t_min, t_max) of the ray
+// o + t d (d unit) lies on or in the shape.
+
+bool blocks_exact(const TracedMesh& s, const dvec3& o, const dvec3& d, double t_min, double t_max) {
+    switch (s.kind) {
+    case ShapeDesc::Kind::plane: {
+        if (d.y == 0) return false;  // parallel: a point on the plane's own level is that plane
+        const double t = (s.centre.y - o.y) / d.y;
+        if (!(t > t_min && t < t_max)) return false;
+        const dvec3 p = o + t * d;
+        return std::fabs(p.x - s.centre.x) <= s.half.x && std::fabs(p.z - s.centre.z) <= s.half.z;
+    }
+    case ShapeDesc::Kind::box: {
+        // The solid box: the ray's interval inside every slab, met with (t_min, t_max).
+        double t0 = t_min, t1 = t_max;
+        for (int a = 0; a < 3; ++a) {
+            const double lo = s.centre[a] - s.half[a], hi = s.centre[a] + s.half[a];
+            if (d[a] == 0) {
+                if (o[a] < lo || o[a] > hi) return false;
+                continue;
+            }
+            double ta = (lo - o[a]) / d[a], tb = (hi - o[a]) / d[a];
+            if (ta > tb) std::swap(ta, tb);
+            t0 = std::max(t0, ta);
+            t1 = std::min(t1, tb);
+            if (!(t0 < t1)) return false;
+        }
+        return true;
+    }
+    case ShapeDesc::Kind::sphere: {
+        // The solid ball: roots of |o + t d - c|^2 = r^2 (|d| = 1), met with (t_min, t_max).
+        const dvec3 oc = o - s.centre;
+        const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - s.radius * s.radius;
+        const double disc = b * b - c;
+        if (!(disc > 0)) return false;
+        const double q = -b + (b <= 0 ? std::sqrt(disc) : -std::sqrt(disc));  // no cancellation
+        double r0 = q != 0 ? c / q : 0, r1 = q;                                    // the two roots
+        if (r0 > r1) std::swap(r0, r1);
+        return std::max(r0, t_min) < std::min(r1, t_max);
+    }
+    }
+    return false;
+}
+
+// Möller-Trumbore with both faces: det of either sign, t in (t_min, t_max).
+bool blocks_tri(const Tri& tr, const dvec3& o, const dvec3& d, double t_min, double t_max) {
+    const dvec3 pv = glm::cross(d, tr.e2);
+    const double det = glm::dot(tr.e1, pv);
+    if (det == 0) return false;
+    const double inv = 1 / det;
+    const dvec3 tv = o - tr.p0;
+    const double u = glm::dot(tv, pv) * inv;
+    if (u < 0 || u > 1) return false;
+    const dvec3 qv = glm::cross(tv, tr.e1);
+    const double v = glm::dot(d, qv) * inv;
+    if (v < 0 || u + v > 1) return false;
+    const double t = glm::dot(tr.e2, qv) * inv;
+    return t > t_min && t < t_max;
+}
+
+// Is anything between p and the light (unit direction l, distance t_max, infinite for a
+// directional light)? `scale` bounds the magnitudes p was computed from (see t_min).
+bool shadow_ray_blocked(const std::vector<TracedMesh>& meshes, const dvec3& p, const dvec3& l, double t_max,
+                        double scale) {
+    // t_min, the epsilon that keeps p's own surface from hiding it. p = eye + t d is rounded: its
+    // distance from the true surface is a few ulps of the magnitudes that made it, below
+    // 1e-15 * scale (scale = |eye| + t |d| + 1, the 1 for scenes around the origin). A ray leaving
+    // the surface at an angle a to it meets that surface again at t <= 1e-15 scale / sin(a), so
+    // t_min = 1e-9 scale misses the self-hit whenever sin(a) > 1e-6; below that n.l < 1e-6 and the
+    // light's diffuse term is under 3e-4 LSB, so a wrongly blocked grazing light changes nothing
+    // visible (the specular term at such a point is gated the same way by the renderer's shadow).
+    // What t_min can hide: an occluder closer than 1e-9 scale to p (1e-9 units in a unit scene,
+    // 1e-3 at 1e6 from the origin, still far below a pixel there), and what it may wrongly keep:
+    // nothing, since a hit at t <= t_min is the surface p lies on or one touching it.
+    const double t_min = 1e-9 * scale;
+    const dvec3 inv_d = 1.0 / l;
+    for (const TracedMesh& tm : meshes) {
+        if (tm.exact) {
+            if (blocks_exact(tm, p, l, t_min, t_max)) return true;
+            continue;
+        }
+        if (!tm.box.hit(p, inv_d, t_max)) continue;
+        for (size_t c = 0; c < tm.chunks.size(); ++c) {
+            if (!tm.chunks[c].hit(p, inv_d, t_max)) continue;
+            const size_t end = std::min(tm.tris.size(), (c + 1) * kChunk);
+            for (size_t k = c * kChunk; k < end; ++k)
+                if (blocks_tri(tm.tris[k], p, l, t_min, t_max)) return true;
+        }
+    }
+    return false;
+}
+
 double unorm8(double c) { return std::round(std::clamp(c, 0.0, 1.0) * 255.0) / 255.0; }
 dvec3 unorm8(const dvec3& c) { return dvec3(unorm8(c.x), unorm8(c.y), unorm8(c.z)); }
 
@@ -320,6 +418,14 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
     out.mesh.assign(size_t(width) * height, -1);
     out.eye_depth.assign(size_t(width) * height, 0.0);
 
+    // Which lights cast shadows here: those the scene marks, unless the options turn them off.
+    std::vector<bool> shadow_rays(scene.lights.size());
+    out.occluded.resize(scene.lights.size());
+    for (size_t li = 0; li < scene.lights.size(); ++li) {
+        shadow_rays[li] = opts.shadows && scene.lights[li].shadow.on;
+        if (shadow_rays[li]) out.occluded[li].assign(size_t(width) * height, 0);
+    }
+
     for (int j = 0; j < height; ++j) {
         for (int i = 0; i < width; ++i) {
             const dvec3 d = ray(i + 0.5, j + 0.5);
@@ -400,7 +506,8 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
             auto pass = [&](const dvec3& x) { return opts.passes_8bit ? unorm8(x) : x; };
             const dvec3 v = glm::normalize(eye - p);     // Eq. 5: from p to the viewer
             dvec3 c = pass(Mdiff * dvec3(scene.ambient));  // Eq. 6
-            for (const Light& light : scene.lights) {
+            for (size_t li = 0; li < scene.lights.size(); ++li) {
+                const Light& light = scene.lights[li];
                 // The laws of docs/scene-format.md, written again here from their
                 // definitions rather than taken from scene/light_law.h.
                 dvec3 l;
@@ -424,6 +531,15 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
                         const double co = std::cos(a), ci = std::cos(0.8 * a), ct = std::cos(theta);
                         const double t = std::clamp((ct - co) / (ci - co), 0.0, 1.0);
                         att *= t * t * (3 - 2 * t) * (light.exponent > 0 ? std::pow(ct, double(light.exponent)) : 1.0);
+                    }
+                }
+                if (shadow_rays[li]) {
+                    const double t_max = light.type == Light::Type::directional
+                                             ? std::numeric_limits<double>::infinity()
+                                             : glm::length(dvec3(light.pos) - p);
+                    if (shadow_ray_blocked(meshes, p, l, t_max, glm::length(eye) + hit.t * glm::length(d) + 1)) {
+                        out.occluded[li][size_t(j) * width + i] = 1;
+                        continue;  // an occluded light adds nothing, its specular term included
                     }
                 }
                 const dvec3 hv = l + v;

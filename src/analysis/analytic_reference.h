@@ -7,6 +7,12 @@
 // clamped to [0, 1]; the background colour where nothing is hit. No GL, and none of the
 // renderer's code: the camera, shapes, texture filtering and shading are written here again.
 //
+// Shadows. For each light with shadow.on (and AnalyticOptions::shadows), a shadow ray from the
+// hit towards the light (point and spot: to its position; directional: along -dir, unbounded)
+// against the same exact shapes, or triangles, both faces: if anything lies on it, the light adds
+// nothing at that pixel. The epsilon that keeps the hit's own surface out is argued where it is
+// set (shadow_ray_blocked).
+//
 // Geometry. An object added by add_plane/add_box/add_sphere carries its ShapeDesc, and the trace
 // intersects that shape (ray-plane, ray-box slabs, ray-sphere) with the shape's exact normal at
 // the hit. An object without one (hand-made, OBJ) is traced as its mesh's triangles, moved to
@@ -65,6 +71,8 @@ struct AnalyticOptions {
                                           // pass are rounded to 8 bits before they are added
     bool triangles = false;               // trace every mesh's triangles, not its exact shape
     bool bilinear_diffuse_maps = false;   // allow diffuse maps on planes (GL_LINEAR, level 0)
+    bool shadows = true;                  // a shadow ray for each light with shadow.on; false:
+                                          // every light passes through everything (--shadows off)
     std::map<int, BumpMap> bump_maps;     // texture index -> the formula its normal map was made from
 };
 
@@ -77,6 +85,11 @@ struct AnalyticTrace {
     // renderer minifies (mipmaps) and the level-0 bilinear reference does not hold there.
     // 0 when no map was sampled.
     double max_texel_footprint = 0;
+    // Per light (Scene::lights' order): for the lights traced with shadow rays, per pixel 1 where
+    // the light's law reaches the hit (attenuation > 0, inside a spot's cone) and something lies
+    // between the hit and the light, so the light adds nothing there; 0 elsewhere. Empty for a
+    // light without shadow rays.
+    std::vector<std::vector<uint8_t>> occluded;
 };
 
 // Throws dsr::Error for a texture map the options do not allow (see above), a mesh without a

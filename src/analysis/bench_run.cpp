@@ -115,6 +115,7 @@ std::unique_ptr<RowRun> deferred(const Setup& st, const Variant& v, const Row& w
     o.skip = want.skip;
     o.gbuffer_half = want.gbuffer_half;
     o.post.bloom = o.post.aa = false;  // the tutorial's core passes only; post costs the same on every row
+    for (const Light& l : v.scene.lights) o.shadow_lights = o.shadow_lights || l.shadow.on;  // the shadow rows
     auto run = std::make_unique<RowRun>();
     run->ds = std::make_unique<DeferredShader>(st.caps, v.w, v.h, o, st.shaders);
     run->ds->set_scene(v.scene);
@@ -173,10 +174,11 @@ Variant make_variant(const Setup& st, const std::string& path, const std::string
     std::tie(v.w, v.h) = variant_size(st.cfg, spec.set);
     v.scene = bench_scene(load_scene(path), spec);
     v.sweep_index = sweep_index;
-    v.lights_label = spec.count < 0 ? "own"
-                     : std::to_string(spec.count) + (spec.set == LightSet::overlap ? "-overlap"
-                                                     : spec.set == LightSet::large ? "-large"
-                                                                                   : "");
+    v.lights_label = (spec.count < 0 ? std::string("own") : std::to_string(spec.count)) +
+                     (spec.set == LightSet::overlap ? "-overlap"
+                      : spec.set == LightSet::large ? "-large"
+                      : spec.set == LightSet::shadow ? "-shadow"
+                                                     : "");
     if (analytic_capable(v.scene)) {
         const double t0 = now_ms();
         v.trace = analytic_trace(v.scene, v.w, v.h);

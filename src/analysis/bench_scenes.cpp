@@ -102,8 +102,13 @@ Scene with_generated_lights(const Scene& scene, int n) {
 std::optional<LightSpec> parse_light_spec(const std::string& item) {
     LightSpec s;
     if (item == "own") return s;
+    if (item == "own-shadow") {
+        s.set = LightSet::shadow;
+        return s;
+    }
     std::string num = item;
-    for (auto [suffix, set] : {std::pair<const char*, LightSet>{"-overlap", LightSet::overlap}, {"-large", LightSet::large}}) {
+    for (auto [suffix, set] : {std::pair<const char*, LightSet>{"-overlap", LightSet::overlap}, {"-large", LightSet::large},
+                               {"-shadow", LightSet::shadow}}) {
         const std::string suf(suffix);
         if (item.size() > suf.size() && item.compare(item.size() - suf.size(), suf.size(), suf) == 0) {
             num = item.substr(0, item.size() - suf.size());
@@ -118,8 +123,26 @@ std::optional<LightSpec> parse_light_spec(const std::string& item) {
     return s;
 }
 
+Scene with_shadowed_spots(const Scene& scene, int n) {
+    Scene s = with_generated_lights(scene, n);
+    for (Light& l : s.lights) {
+        l.type = Light::Type::spot;
+        l.pos.y += 0.5f * l.radius;
+        l.dir = glm::vec3(0, -1, 0);
+        l.angle_deg = 50;
+        l.shadow.on = true;
+    }
+    return s;
+}
+
+Scene with_shadowed_lights(Scene scene) {
+    for (Light& l : scene.lights) l.shadow.on = true;
+    return scene;
+}
+
 Scene bench_scene(const Scene& base, const LightSpec& spec) {
     if (spec.set == LightSet::large) return large_lights_scene(spec.count);
+    if (spec.set == LightSet::shadow) return spec.count < 0 ? with_shadowed_lights(base) : with_shadowed_spots(base, spec.count);
     if (spec.count < 0) return base;
     if (spec.set == LightSet::overlap) return with_overlapping_lights(base, spec.count);
     return with_generated_lights(base, spec.count);
@@ -128,6 +151,7 @@ Scene bench_scene(const Scene& base, const LightSpec& spec) {
 std::string bench_scene_name(const std::string& base_name, const LightSpec& spec) {
     if (spec.set == LightSet::large) return "large";
     if (spec.set == LightSet::overlap) return base_name + "-overlap";
+    if (spec.set == LightSet::shadow) return base_name + "-shadow";
     return base_name;
 }
 

@@ -23,12 +23,14 @@ Scene with_generated_lights(const Scene& scene, int n);
 //   spread   N         with_generated_lights (above)
 //   overlap  N-overlap with_overlapping_lights: every lit pixel inside at least 8 lights
 //   large    N-large   large_lights_scene: LearnOpenGL's demo, the base scene replaced
-enum class LightSet { spread, overlap, large };
+//   shadow   N-shadow  with_shadowed_spots: N spot lights casting shadows (docs/shadows.md);
+//            own-shadow: the scene's own lights, each casting shadows
+enum class LightSet { spread, overlap, large, shadow };
 struct LightSpec {
     int count = -1;  // -1: the scene's own lights ("own")
     LightSet set = LightSet::spread;
 };
-// "own", "N", "N-overlap" or "N-large" with N in [0, 65536] (overlap: a multiple of 8); nullopt
+// "own", "own-shadow", "N", "N-overlap", "N-large" or "N-shadow" with N in [0, 65536] (overlap: a multiple of 8); nullopt
 // for anything else.
 std::optional<LightSpec> parse_light_spec(const std::string& item);
 // The bench variant of `base` a spec stands for, and its name in the tables: the base name,
@@ -52,6 +54,13 @@ Scene with_overlapping_lights(const Scene& scene, int n);
 // (1, 0.7, 1.8) cut at the threshold 5/256 (radii 3.9-5.1, rectangles over most of the screen:
 // tests/test_bench_scenes.cpp). n = 32 is the demo's own set; larger n continue the same sequence.
 Scene large_lights_scene(int n);
+
+// with_generated_lights' n lights made spot lights with `shadow` (the default map): each at its
+// place raised by half its radius, shining straight down with a 50-degree half-angle, so the
+// objects between it and the floor cast shadows on it. The bench's shadow rows.
+Scene with_shadowed_spots(const Scene& scene, int n);
+// `scene` with every light casting shadows (the default scene's point lights: six faces each).
+Scene with_shadowed_lights(Scene scene);
 // The demo's window (its SCR_WIDTH x SCR_HEIGHT): the size `dsr bench` runs N-large at unless
 // --size is given (bench_run.h variant_size).
 constexpr int kDemoWidth = 800, kDemoHeight = 600;

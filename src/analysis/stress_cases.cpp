@@ -139,6 +139,26 @@ Scene zero_normal_scene() {
     return sc;
 }
 
+// data/shadow.scene, written here so the sweep needs no file: a box resting on a floor, seen from
+// the front and above, and the file's three lights, each casting the box's shadow towards the
+// camera. Objects: 0 the floor, 1 the box.
+Scene shadow_base(double range) {
+    Scene sc;
+    sc.camera.pos = {0, 4.2f, 6.2f};
+    sc.camera.target = {0, 0.2f, 0.4f};
+    sc.camera.up = {0, 1, 0};
+    sc.camera.fov_deg = 45;
+    sc.camera.near_plane = 0.5f;
+    sc.camera.far_plane = float(30 * range);
+    sc.ambient = glm::vec3(0.08f);
+    sc.background = {0.02f, 0.02f, 0.05f};
+    sc.materials = {material("floor", {0.7f, 0.7f, 0.68f}, glm::vec3(0), 1),
+                    material("crate", {0.6f, 0.45f, 0.3f}, glm::vec3(0.2f), 16)};
+    add_plane(sc, float(10 * range), {0, 0, 0}, 0);
+    add_box(sc, glm::vec3(1), {0, 0.5f, 0}, 1);
+    return sc;
+}
+
 StressCase make_case(const std::string& category, const std::string& variant, const std::string& path,
                      Scene scene) {
     StressCase c;
@@ -152,7 +172,95 @@ StressCase make_case(const std::string& category, const std::string& variant, co
     return c;
 }
 
+std::string short_number(double v) {  // 0, 1e-4, 3e-4, 0.001, 2: the shadow cases' names
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+// The bias sweep (stress_cases.h): each light at each (range, size) setting with every pair of a
+// bias and a slope on the depth-texture maps, and at range 1 and the default size on the packed
+// maps too. Quick: the defaults (LightShadow's) on both paths at range 1, the default size.
+std::vector<StressCase> shadow_cases(bool quick) {
+    const LightShadow defaults;
+    const ShadowSweep& sw = shadow_sweep();
+    struct Setting {
+        double range;
+        int size;
+        bool packed_too;
+    };
+    std::vector<Setting> settings;
+    for (double r : sw.ranges) settings.push_back({r, defaults.size, r == 1});
+    for (int z : sw.sizes) settings.push_back({1, z, false});
+    std::vector<std::pair<double, double>> pairs;
+    if (quick) pairs = {{defaults.bias, defaults.slope}};
+    else
+        for (double b : sw.biases)
+            for (double sl : sw.slopes) pairs.push_back({b, sl});
+    std::vector<StressCase> out;
+    for (const char* light : {"spot", "directional", "point"})
+        for (const Setting& st : settings) {
+            if (quick && (st.range != 1 || st.size != defaults.size)) continue;
+            for (const auto& [bias, slope] : pairs)
+                for (const char* path : {"texture", "packed"}) {
+                    const bool packed = std::string(path) == "packed";
+                    if (packed && !st.packed_too) continue;
+                    LightShadow sh;
+                    sh.size = st.size;
+                    sh.bias = float(bias);
+                    sh.slope = float(slope);
+                    const std::string variant = std::string(light) + "/x" + short_number(st.range) + "/" +
+                                                std::to_string(st.size) + "/b" + short_number(bias) + ",s" +
+                                                short_number(slope);
+                    StressCase c = make_case("shadow", variant, packed ? "corrected" : "texture",
+                                             shadow_case_scene(light, st.range, sh));
+                    c.path = path;
+                    c.name = "shadow/" + variant + "/" + path;
+                    if (packed) c.caps_off = {"no-depth-texture"};
+                    c.opts.shadows.on = true;
+                    c.opts.shadow_lights = true;
+                    c.shadow = true;
+                    c.shadow_light = light;
+                    c.shadow_range = st.range;
+                    out.push_back(std::move(c));
+                }
+        }
+    return out;
+}
+
 }  // namespace
+
+Scene shadow_case_scene(const std::string& light, double range, const LightShadow& shadow) {
+    Scene sc = shadow_base(light == "directional" ? range : 1);
+    Light l;
+    if (light == "spot") {
+        l.type = Light::Type::spot;
+        l.pos = {-2, 4, -2.5f};
+        l.dir = glm::normalize(glm::vec3(0.45f, -0.8f, 0.55f));
+        l.color = {0.55f, 0.5f, 0.45f};
+        l.radius = float(12 * range);
+        l.angle_deg = 40;
+    } else if (light == "directional") {
+        l.type = Light::Type::directional;
+        l.dir = glm::normalize(glm::vec3(0.05f, -0.75f, 0.65f));
+        l.color = {0.3f, 0.32f, 0.35f};
+    } else if (light == "point") {
+        l.pos = {1.8f, 3.2f, -1.8f};
+        l.color = {0.5f, 0.5f, 0.55f};
+        l.radius = float(9 * range);
+    } else {
+        throw Error("shadow_case_scene: no light '" + light + "' (spot, directional, point)");
+    }
+    l.shadow = shadow;
+    l.shadow.on = true;
+    sc.lights = {l};
+    return sc;
+}
+
+const ShadowSweep& shadow_sweep() {
+    static const ShadowSweep s = {{1, 10, 100}, {256, 2048}, {0, 1e-4, 3e-4, 1e-3, 3e-3}, {0, 1, 2, 4}};
+    return s;
+}
 
 const std::vector<std::string>& stress_paths() {
     static const std::vector<std::string> p = {"texture", "literal", "corrected", "linear", "log", "position16",
@@ -294,6 +402,7 @@ std::vector<StressCase> stress_cases(bool quick) {
         z.opts.scissor = false;                // ... all of them
         out.push_back(std::move(z));
     }
+    for (StressCase& c : shadow_cases(quick)) out.push_back(std::move(c));
     return out;
 }
 

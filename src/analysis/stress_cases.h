@@ -20,6 +20,15 @@
 //   zero-normal/<path>        a quad whose vertex normals are (0,0,0); light depth and sphere
 //                             tests and scissor off, so every background pixel (zero normal in
 //                             the G-buffer) also runs through Listing 20's len > 0.1 branch
+//   shadow/<light>/x<m>/<size>/b<bias>,s<slope>/<path>
+//                             the bias sweep: data/shadow.scene's box on a floor under one shadowed
+//                             light (spot, directional, point) whose depth range is m times the
+//                             scene's (spot, point: the light's radius; directional: the floor and
+//                             the camera's far plane, which the fitted map spans), its map `size`
+//                             texels a side, with LightShadow's bias and slope; measured against
+//                             the traced shadow (shadow_metrics.h: edge, acne, contact leak).
+//                             <path> is texture (depth-texture maps, ARB_shadow) or packed (RGB8
+//                             maps and G-buffer, `--caps no-depth-texture`)
 //
 // <path> is texture (24-bit depth texture), one of the packed target's encodings: literal,
 // corrected, linear, log, or a stored position: position16 (RGBA16F), position32 (RGBA32F)
@@ -51,6 +60,13 @@ struct StressCase {
     std::vector<int> no_reference_meshes;   // meshes left out of the LSB comparison (zero normals
                                             // have no defined shading in the reference)
     bool limit = false;     // beyond the required range: its invariants are reported, not required
+    std::vector<std::string> caps_off;  // capabilities forced off (probe_caps): the packed shadow maps
+    // Shadow cases: the scene's one light casts the shadow of object shadow_occluder onto object
+    // shadow_receiver; shadow_range is the depth range's multiple of the base scene's.
+    bool shadow = false;
+    std::string shadow_light;  // "spot", "directional", "point"
+    int shadow_receiver = 0, shadow_occluder = 1;
+    double shadow_range = 1;
 };
 
 // Depth paths in table order: texture, literal, corrected, linear, log, position16, position32.
@@ -67,5 +83,17 @@ std::vector<StressCase> stress_cases(bool quick);
 
 // The tile scene of the ratio cases (exposed for tests): near 0.1, far 0.1 * far_near.
 Scene depth_range_scene(double far_near);
+
+// The bias sweep's grid (the shadow cases): depth-range multiples, map sizes, and the bias and
+// slope values; every pair of a bias and a slope is run at each (range, size) setting.
+struct ShadowSweep {
+    std::vector<double> ranges;                 // with the default map size
+    std::vector<int> sizes;                     // at range 1
+    std::vector<double> biases, slopes;
+};
+const ShadowSweep& shadow_sweep();
+// The shadow cases' scene: data/shadow.scene's box on a floor with one of its lights ("spot",
+// "directional", "point"; throws dsr::Error otherwise), its depth range `range` times the file's.
+Scene shadow_case_scene(const std::string& light, double range, const LightShadow& shadow);
 
 }  // namespace dsr

@@ -148,6 +148,26 @@ nlohmann::ordered_json stress_case_json(const StressResult& r) {
     j["max_lsb"] = r.max_lsb < 0 ? json(nullptr) : num(r.max_lsb);
     j["mean_lsb"] = r.mean_lsb < 0 ? json(nullptr) : num(r.mean_lsb);
     j["ms"] = r.ms;
+    if (r.shadow) {  // the bias sweep's cases (stress_shadow_report.h)
+        const ShadowMeasure& m = r.shadow_measure;
+        j["shadow"] = {{"light", r.shadow_light},
+                       {"range", r.shadow_range},
+                       {"size", r.shadow_size},
+                       {"bias", r.shadow_bias},
+                       {"slope", r.shadow_slope},
+                       {"maps", r.shadow_maps},
+                       {"considered", m.edge.considered},
+                       {"traced_shadow", m.edge.ref_shadowed},
+                       {"rendered_shadow", m.edge.got_shadowed},
+                       {"edge_mismatched", m.edge.mismatched},
+                       {"edge_max_px", num(m.edge.max_px)},
+                       {"edge_mean_px", num(m.edge.mean_px)},
+                       {"edge_beyond_1_5_px", m.edge.beyond(1.5)},
+                       {"acne_pixels", m.acne.darker},
+                       {"acne_max_darker_lsb", num(m.acne.max_darker_lsb)},
+                       {"contact_pixels", m.leak.contact},
+                       {"contact_lit", m.leak.leaked}};
+    }
     j["limit"] = r.limit;
     j["passed"] = r.passed();
     j["failures"] = r.failures();

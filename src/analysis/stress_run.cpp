@@ -111,20 +111,33 @@ StressResult StressRunner::run(const StressCase& c) {
 
     ShaderOptions opts = c.opts;
     opts.float_accum = true;  // P-buffers 0 and 1 in RGBA32F: NaN and Inf survive to be counted
-    char key[160];
-    std::snprintf(key, sizeof key, "%dx%d %d %d skip%d%d%d%d scissor%d geometry%d", w, h, int(opts.depth),
-                  int(opts.encoding), opts.skip.material_variants, opts.skip.empty_lights, opts.skip.light_depth_test,
-                  opts.skip.light_sphere_test, opts.scissor, int(opts.light_geometry));
+    char key[200];
+    std::snprintf(key, sizeof key, "%dx%d %d %d skip%d%d%d%d scissor%d geometry%d shadows%d%d%d", w, h,
+                  int(opts.depth), int(opts.encoding), opts.skip.material_variants, opts.skip.empty_lights,
+                  opts.skip.light_depth_test, opts.skip.light_sphere_test, opts.scissor, int(opts.light_geometry),
+                  opts.shadows.on, opts.shadow_lights, int(opts.shadows.filter));
+    std::string cache_key = key;
+    for (const std::string& off : c.caps_off) cache_key += " " + off;
+    r.shadow = c.shadow;
+    if (c.shadow) {
+        const LightShadow& sh = c.scene.lights.at(0).shadow;
+        r.shadow_light = c.shadow_light;
+        r.shadow_range = c.shadow_range;
+        r.shadow_bias = sh.bias;
+        r.shadow_slope = sh.slope;
+        r.shadow_size = sh.size;
+    }
 
     Image final_img, p0, pos;
     bool rendered = false;
     try {
         ctx_.make_current();  // another context may have been made current since the last case
         drain_gl_errors();  // nothing left over from an earlier case counts against this one
-        std::unique_ptr<DeferredShader>& ds = shaders_[key];
-        if (!ds) ds = std::make_unique<DeferredShader>(probe_caps(), w, h, opts, shader_dir_);
+        std::unique_ptr<DeferredShader>& ds = shaders_[cache_key];
+        if (!ds) ds = std::make_unique<DeferredShader>(probe_caps(c.caps_off), w, h, opts, shader_dir_);
         ds->set_scene(c.scene);
         const FrameStats st = ds->render(c.scene, w, h);
+        r.shadow_maps = st.shadow_maps;
         r.lights_drawn = st.lights_drawn;
         r.lights_total = st.lights_total;
         r.light_fragments = st.light_fragments;
@@ -137,10 +150,10 @@ StressResult StressRunner::run(const StressCase& c) {
     } catch (const Error& e) {
         if (is_gl_error(e)) ++r.gl_errors;
         else r.exception = e.what();
-        shaders_.erase(key);  // its GL state is unknown now
+        shaders_.erase(cache_key);  // its GL state is unknown now
     } catch (const std::exception& e) {
         r.exception = e.what();
-        shaders_.erase(key);
+        shaders_.erase(cache_key);
     }
 
     if (rendered) {
@@ -203,6 +216,7 @@ StressResult StressRunner::run(const StressCase& c) {
                 r.lost_pixels += 1;
         }
         if (d.pixels) r.max_lsb = d.max_lsb(), r.mean_lsb = d.mean_lsb();
+        if (c.shadow) r.shadow_measure = measure_shadow(c.scene, trace, final_img, c.shadow_receiver, c.shadow_occluder);
     }
     r.ms = now_ms() - t0;
     return r;

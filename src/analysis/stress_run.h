@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/shadow_metrics.h"
 #include "analysis/stress_cases.h"
 #include "analysis/z_accuracy.h"
 #include "deferred/scissor.h"
@@ -49,6 +50,14 @@ struct StressResult {
     double max_lsb = -1, mean_lsb = -1;  // -1: no pixel compared
     long long lsb_pixels = 0, lsb_over_2 = 0;  // pixels compared; of them, over 2 LSB
     double ms = 0;                     // wall time of the case (render, read-backs, checks)
+    // Shadow cases (StressCase::shadow): the light, the range multiple, the map's settings, and
+    // the shadow measured against the trace (recorded, not invariants: the sweep runs bad biases
+    // on purpose). shadow_maps: FrameStats' count (0 while the renderer draws none).
+    bool shadow = false;
+    std::string shadow_light;
+    double shadow_range = 0, shadow_bias = 0, shadow_slope = 0;
+    int shadow_size = 0, shadow_maps = 0;
+    ShadowMeasure shadow_measure;
 
     std::vector<std::string> failures() const;  // the invariants broken, empty when it passes
     bool passed() const { return failures().empty(); }

@@ -87,16 +87,17 @@ std::vector<Flag> gl_debug_flags() {
 }
 
 Flag lights_flag(std::optional<LightSpec>& field) {
-    return Flag{{"--lights"}, "SPEC", "own, N, N-overlap or N-large; N in 0..65536", "own",
+    return Flag{{"--lights"}, "SPEC", "own, N, N-overlap, N-large, N-shadow or own-shadow; N in 0..65536", "own",
                 "the scene's lights replaced by one of the bench's generated sets: N spread over the floor, "
                 "N-overlap (clusters of 8; N a multiple of 8) or N-large (LearnOpenGL's demo: its 9 boxes and "
-                "camera replace the scene too), so a bench row's scene can be rendered and looked at",
+                "camera replace the scene too), N-shadow (N spot lights casting shadows) or own-shadow (the "
+                "scene's own lights casting shadows), so a bench row's scene can be rendered and looked at",
                 {}, [&field](Args& a, const std::string& flag) {
                     const std::string v = a.value(flag);
                     field = parse_light_spec(v);
                     if (!field)
-                        a.fail(flag + ": expected 'own', a count N in [0, 65536], N-overlap (N a multiple of 8) or "
-                                      "N-large, got " + quote(v));
+                        a.fail(flag + ": expected 'own', a count N in [0, 65536], N-overlap (N a multiple of 8), "
+                                      "N-large, N-shadow or own-shadow, got " + quote(v));
                 }};
 }
 
@@ -178,11 +179,12 @@ Command bench_command(BenchSettings& s) {
               "written), with one line on stderr saying which.\n"};
     const bench::Config full;
     const std::vector<std::string>& geometries = find_render_option("light-geometry")->values;
-    Flag lights{{"--lights"}, "LIST", "own, N, N-overlap or N-large, comma-separated",
+    Flag lights{{"--lights"}, "LIST", "own, N, N-overlap, N-large, N-shadow or own-shadow, comma-separated",
                 std::string(BenchSettings::kBenchLights) + "; --quick " + BenchSettings::kQuickLights,
                 "light counts of the sweep: own, the scene's own lights; N lights spread over the floor; N-overlap, "
                 "N lights (a multiple of 8) in clusters of 8, every lit pixel inside at least 8; N-large, 9 boxes "
-                "and N lights covering most of the screen, as LearnOpenGL's demo, at its 800x600 unless --size is given",
+                "and N lights covering most of the screen, as LearnOpenGL's demo, at its 800x600 unless --size is given; "
+                "N-shadow, N spot lights casting shadows; own-shadow, the scene's own lights casting shadows",
                 {}, [&s](Args& a, const std::string& flag) {
                     const std::string v = a.value(flag);
                     std::stringstream ss(v);

@@ -102,6 +102,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
         save("fig9_closeup_without_aa.png", closeup(f, cx, cy, cs, 4));
         save("fig11_without_bloom.png", f);
         save("ssao_without.png", f);
+        if (default_scene) save("shadows_without.png", f);
     });
     ShaderOptions bloom = plain;
     bloom.post.bloom = true;
@@ -127,6 +128,21 @@ int cmd_figures(const std::vector<std::string>& argv) {
         save("ssao_with.png", view(ds, View::final));
         save("ssao_buffer.png", view(ds, View::ssao));
     });
+    // Shadows (docs/accuracy.md, "Shadows"): the default scene with `shadow` on each of its three
+    // point lights (six faces each, the default map size, bias, slope and filter), beside the scene
+    // as it is (shadows_without, saved above), and the first light's map as --view shadow-map shows
+    // it; only with the default scene.
+    if (default_scene) {
+        Scene shadowed = scene;
+        for (Light& l : shadowed.lights) l.shadow.on = true;
+        ShaderOptions o = plain;
+        o.shadow_lights = true;  // as RenderOptions::resolved sets it for a scene with `shadow`
+        DeferredShader ds(caps, n, n, o, shaders);
+        ds.set_scene(shadowed);
+        ds.render(shadowed, n, n);
+        save("shadows_with.png", view(ds, View::final));
+        save("shadows_map.png", view(ds, View::shadow_map));
+    }
     // Transparency (docs/forward.md, the tutorial's §4 answer to its "major limitation"): the panes and
     // the glass ball are left out of the G-buffer (its diffuse view shows the wall through them)
     // and blended after the lights by the forward stage, with --show-lights markers that bloom

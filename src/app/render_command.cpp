@@ -142,6 +142,15 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["transparent_objects"] = last.transparent_objects;
     j["transparent_passes"] = last.transparent_passes;
     j["lights_as_quads"] = last.lights_as_quads;
+    // The shadow stage (docs/shadows.md): maps drawn in the counted frame (a point light's six
+    // faces count six) and the triangles drawn into them; the filter and the maps' format.
+    j["shadows"] = opts.shadow_lights;
+    j["shadow_filter"] = shadow_filter_name(opts.shadows.filter);
+    j["shadow_maps"] = last.shadow_maps;
+    j["shadow_triangles"] = last.shadow_triangles;
+    j["shadow_map_format"] = !opts.shadow_lights ? nlohmann::json(nullptr)
+                             : caps.depth_texture && caps.shadow ? nlohmann::json("depth-texture")
+                                                                 : nlohmann::json("packed-rgb8");
     if (!stats_path.empty()) {  // reads the G-buffer back: only when asked for
         const FrameIdeal ideal = frame_ideal_fragments(ds, scene);
         j["ideal_fragments"] = ideal.fragments ? nlohmann::json(*ideal.fragments) : nlohmann::json(nullptr);
@@ -157,7 +166,7 @@ int cmd_render(const std::vector<std::string>& argv) {
                {"lights", med(&StageTimes::lights)},     {"bloom", med(&StageTimes::bloom)},
                {"aa", med(&StageTimes::aa)},             {"final", med(&StageTimes::final)},
                {"depth_copy", med(&StageTimes::depth_copy)}, {"ssao", med(&StageTimes::ssao)},
-               {"forward", med(&StageTimes::forward)},
+               {"forward", med(&StageTimes::forward)}, {"shadows", med(&StageTimes::shadows)},
                {"cpu", med(&StageTimes::cpu)}, {"frame", med(&StageTimes::frame)}};
     const size_t triangles = scene.triangle_count();
     struct rusage usage {};

@@ -10,6 +10,7 @@
 #include "dsr_clock.h"
 #include "analysis/stress_report.h"
 #include "analysis/stress_run.h"
+#include "analysis/stress_shadow_report.h"
 #include "app/command_table.h"
 #include "app/commands.h"
 #include "app/files.h"
@@ -23,15 +24,17 @@ namespace dsr {
 
 namespace {
 
-// The report file's text, checked for its generated block.
-std::string read_report(const std::string& path) {
+// The report file's text, checked for the generated blocks this run rewrites: the main one when
+// cases other than the shadow ones run, the bias sweep's when shadow cases do.
+std::string read_report(const std::string& path, bool main_block, bool shadow_block) {
     std::string text;
     try {
         text = read_user_text(path, "report", kMaxSceneBytes);  // a regular file, never a FIFO
     } catch (const Error& e) {
         throw Error(std::string("dsr stress: --report: ") + e.what());
     }
-    check_report_block(text, path);
+    if (main_block) check_report_block(text, path);
+    if (shadow_block) check_shadow_report_block(text, path);
     return text;
 }
 
@@ -43,7 +46,6 @@ int cmd_stress(const std::vector<std::string>& argv) {
     const bool quick = flags.quick;
     const std::string json_path = flags.json, report_path = flags.report, plot_path = flags.plot, only = flags.only,
                       geometry = flags.geometry;
-    if (!report_path.empty()) read_report(report_path);  // a wrong file fails before the sweep
     // The report is rewritten in place (its generated block); no other output may be it.
     OutputSet outputs("dsr stress");
     if (!json_path.empty()) outputs.add("--json", json_path);
@@ -57,6 +59,9 @@ int cmd_stress(const std::vector<std::string>& argv) {
         cases = std::move(kept);
         if (cases.empty()) throw Error("dsr stress: --only: no case name contains " + quote(only));
     }
+    bool main_cases = false, shadow_cases = false;
+    for (const StressCase& c : cases) (c.shadow ? shadow_cases : main_cases) = true;
+    if (!report_path.empty()) read_report(report_path, main_cases, shadow_cases);  // a wrong file fails before the sweep
     // --light-geometry: every case through that geometry instead of the tutorial's quad, so its
     // depth hand-off, meshes and stencil meet the same far/near ratios and coordinates.
     if (!geometry.empty())
@@ -85,18 +90,27 @@ int cmd_stress(const std::vector<std::string>& argv) {
     std::printf("\n%zu cases, %d failed (and %d limit cases past the required range fail, not counted), %.1f s on %s\n",
                 results.size(), failed, stress_limit_failures(results), seconds, runner.renderer().c_str());
 
+    const std::string command = std::string("dsr stress") + (quick ? " --quick" : "") +
+                                (only.empty() ? "" : " --only " + only) +
+                                (geometry.empty() ? "" : " --light-geometry " + geometry);
     if (!json_path.empty()) {
-        const std::string command =
-            std::string("dsr stress") + (quick ? " --quick" : "") + (only.empty() ? "" : " --only " + only) +
-            (geometry.empty() ? "" : " --light-geometry " + geometry);
         outputs.put_text("--json", json_path,
                          stress_json(results, command, runner.renderer(), seconds)
                                  .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     }
-    if (!report_path.empty())
-        outputs.put_text("--report", report_path,
-                         splice_report_block(read_report(report_path), report_path,
-                                             stress_report_block(results, quick, runner.renderer())));
+    std::vector<StressResult> main_results, shadow_results;
+    for (const StressResult& r : results) (r.shadow ? shadow_results : main_results).push_back(r);
+    const std::string sweep = shadow_sweep_tables(shadow_results);
+    if (!sweep.empty()) std::printf("\n%s", sweep.c_str());
+    if (!report_path.empty()) {
+        std::string doc = read_report(report_path, main_cases, shadow_cases);
+        if (main_cases) doc = splice_report_block(doc, report_path, stress_report_block(main_results, quick, runner.renderer()));
+        if (shadow_cases)
+            doc = splice_shadow_report_block(doc, report_path,
+                                             shadow_report_block(shadow_results, command + " --report " + report_path,
+                                                                 runner.renderer()));
+        outputs.put_text("--report", report_path, doc);
+    }
     if (!plot_path.empty()) outputs.put_image("--plot", plot_path, stress_accuracy_plot(results));
     outputs.commit();
     return failed ? 1 : 0;

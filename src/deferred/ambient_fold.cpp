@@ -5,7 +5,7 @@ namespace dsr {
 
 std::optional<size_t> full_screen_light(const FrameDef& f) {
     for (size_t i = 0; i < f.lights.size(); ++i)
-        if (f.lights[i].full) return i;
+        if (f.lights[i].full && f.lights[i].shadow < 0) return i;  // the fold's pass has no shadow lookup
     return std::nullopt;
 }
 

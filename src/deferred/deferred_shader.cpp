@@ -7,6 +7,7 @@
 #include "deferred/gpu_scene.h"
 #include "deferred/lighting_stage.h"
 #include "deferred/post_stage.h"
+#include "deferred/shadow_stage.h"
 #include "deferred/ssao_stage.h"
 #include "dsr_clock.h"
 #include "dsr_error.h"
@@ -30,6 +31,7 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     : config_(shader_config(caps, opts)), shader_dir_(shader_dir), final_(config_.paths.fbo) {
     targets_ = std::make_unique<RenderTargets>(config_.paths, config_.opts, width, height);
     ProgramSet programs(shader_dir, config_);  // the whole table, compiled and linked now
+    if (config_.opts.shadow_lights) shadows_ = std::make_unique<ShadowStage>(config_, programs);
     geometry_ = std::make_unique<GeometryStage>(config_, programs);
     if (config_.opts.ssao.on) ssao_ = std::make_unique<SsaoStage>(config_, programs);
     lighting_ = std::make_unique<LightingStage>(config_, programs, width, height);
@@ -65,6 +67,7 @@ void DeferredShader::set_scene(const Scene& scene) {
         lighting_->set_handoff(config_, handoff);
     }
     forward_->set_scene(scene, *gpu_);
+    if (shadows_) shadows_->set_scene(scene);
 }
 
 FrameDef DeferredShader::frame_of(const Camera& camera, const std::vector<Light>& lights, bool scissors) const {
@@ -75,6 +78,7 @@ FrameDef DeferredShader::frame_of(const Camera& camera, const std::vector<Light>
     s.gbuffer_extent = targets_->gbuffer_extent();
     s.scissors = scissors;
     s.skip_empty = config_.opts.skip.empty_lights;
+    s.shadows = shadows_ != nullptr;
     return make_frame(camera, lights, s);
 }
 
@@ -90,8 +94,11 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     const double cpu0 = thread_cpu_ms();
     timer_.begin_frame(S_COUNT);
     set_output_size(out_w, out_h);
-    const FrameDef f = frame_of(scene.camera, scene.lights, config_.opts.scissor);
+    FrameDef f = frame_of(scene.camera, scene.lights, config_.opts.scissor);
     camera_ = scene.camera;
+    // 0. the shadow maps of the frame's shadowed lights, handed to the light passes in the frame.
+    if (shadows_ && f.shadowed_lights > 0)
+        timed(timer_, S_SHADOWS, [&] { f.shadows = shadows_->draw(f, scene, *gpu_, st); });
     timed(timer_, S_GEOMETRY, [&] { geometry_->draw(f, *gpu_, *targets_, st); });  // 1. geometry stage
     draw_lights(f, scene, st);                                          // 2. lighting stage
     post_stage(f);                                                      // 3. post-processing
@@ -113,6 +120,7 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     st.ms.depth_copy = ms[S_DEPTH_COPY];
     st.ms.ssao = ms[S_SSAO];
     st.ms.forward = ms[S_FORWARD];
+    st.ms.shadows = ms[S_SHADOWS];
     st.timing = timer_.source();
     check_gl("frame");  // per stage too with --debug-gl (check_gl_stage)
     return st;
@@ -174,7 +182,9 @@ void DeferredShader::geometry_stage(const Scene& scene) {
 
 void DeferredShader::draw_lights(const Scene& scene, bool scissors, FrameStats& stats) {
     camera_ = scene.camera;
-    draw_lights(frame_of(scene.camera, scene.lights, scissors), scene, stats);
+    FrameDef f = frame_of(scene.camera, scene.lights, scissors);
+    if (shadows_ && f.shadowed_lights > 0) f.shadows = shadows_->draw(f, scene, *gpu_, stats);
+    draw_lights(f, scene, stats);
 }
 
 void DeferredShader::post_stage(FrameStats&) { post_stage(last_frame()); }

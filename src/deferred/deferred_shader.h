@@ -33,6 +33,7 @@ class SsaoStage;
 class LightingStage;
 class ForwardStage;
 class PostStage;
+class ShadowStage;
 
 class DeferredShader {
 public:
@@ -108,7 +109,7 @@ public:
 
 private:
     // Stage slots of the frame timer, in StageTimes order.
-    enum Slot { S_GEOMETRY, S_AMBIENT, S_LIGHTS, S_BLOOM, S_AA, S_FINAL, S_DEPTH_COPY, S_SSAO, S_FORWARD, S_COUNT };
+    enum Slot { S_GEOMETRY, S_AMBIENT, S_LIGHTS, S_BLOOM, S_AA, S_FINAL, S_DEPTH_COPY, S_SSAO, S_FORWARD, S_SHADOWS, S_COUNT };
     FrameDef frame_of(const Camera& camera, const std::vector<Light>& lights, bool scissors) const;
     FrameDef last_frame() const;  // camera_'s, no lights
     void draw_lights(const FrameDef& f, const Scene& scene, FrameStats& stats);
@@ -118,6 +119,7 @@ private:
     std::string shader_dir_;
     std::unique_ptr<RenderTargets> targets_;  // G-buffer and P-buffers 0-3
     std::unique_ptr<GpuScene> gpu_;
+    std::unique_ptr<ShadowStage> shadows_;  // scenes with shadowed lights (ShaderOptions::shadow_lights)
     std::unique_ptr<GeometryStage> geometry_;
     std::unique_ptr<SsaoStage> ssao_;  // with --ssao
     std::unique_ptr<LightingStage> lighting_;

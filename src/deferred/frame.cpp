@@ -26,7 +26,7 @@ namespace {
 // rectangle (Listing 16), whatever geometry then draws the light. Culling and the rectangle come
 // from the light's volume (light_volume.h): a sphere as in the tutorial, a spot's cone, or a
 // directional light's full screen (never culled, never scissored).
-void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_empty) {
+void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_empty, bool shadows) {
     const auto frustum = frustum_planes(f.proj * f.view);
     const int w = f.width, h = f.height;
     const EyeTransform eye_of(f.camera);
@@ -60,6 +60,8 @@ void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_emp
         if (full) r = ScissorRect{0, 0, w, h};
         f.scissor_pixels += r.area();
         f.lights.push_back(LightDraw{&light, i, light_params(light, eye_of), eye, r, full});
+        // Maps only for the visible shadowed lights: the shadow stage draws one per index.
+        if (shadows && light.shadow.on) f.lights.back().shadow = f.shadowed_lights++;
     }
 }
 
@@ -84,7 +86,7 @@ FrameDef make_frame(const Camera& camera, const std::vector<Light>& lights, cons
     f.gbuffer_extent = s.gbuffer_extent;
     f.uv_scale = glm::vec2(s.gbuffer_extent.x / float(s.width), s.gbuffer_extent.y / float(s.height));
     f.scissors = s.scissors;
-    visible_lights(f, lights, s.skip_empty);
+    visible_lights(f, lights, s.skip_empty, s.shadows);
     return f;
 }
 

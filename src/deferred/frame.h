@@ -29,6 +29,9 @@ struct LightDraw {
     LightVolume eye;               // light_volume.h, in eye space
     ScissorRect rect;              // the whole viewport when `full`
     bool full = false;
+    // Its shadow map among the frame's (shadow_stage.h), in order of the shadowed lights; -1
+    // where it casts none (no `shadow`, or FrameSetup::shadows off).
+    int shadow = -1;
     // The tutorial's point light with Equation 2 (no type or law selection): the light shaders'
     // cheaper LIGHT_POINT_ONLY variant shades it.
     bool tutorial() const { return light->type == Light::Type::point && !light->attenuation; }
@@ -36,6 +39,19 @@ struct LightDraw {
         if (light->type != Light::Type::point) return LightShader::any;
         return light->attenuation ? LightShader::point_inverse : LightShader::point_linear;
     }
+};
+
+// One light's shadow map as the light passes read it (glsl120/shadow.glsl): what the shadow stage
+// drew this frame (shadow_stage.h), in numbers. The map's layout is shadow_math.h's ShadowLayout.
+struct ShadowLookup {
+    unsigned texture = 0;        // the GL texture: depth compared by ARB_shadow, or depth packed in RGB8
+    int kind = 0;                // ShadowKind: 0 perspective (spot), 1 orthographic (directional), 2 six faces
+    glm::mat4 eye_to_light{1};   // this frame's eye space -> the map's light space (q)
+    glm::mat4 proj{1};           // q -> the map's clip space (perspective, orthographic)
+    glm::vec3 depth{0};          // stored depth = depth.x |q| + depth.y (-q.z) + depth.z
+    glm::vec2 texel{0};          // a texel's world size at q = texel.x + texel.y * (depth along the map's axis)
+    float bias = 0, slope = 0;   // the light's LightShadow
+    int width = 0, height = 0, face = 0;  // the texture's texels, and one view's per side
 };
 
 // What make_frame needs besides the scene.
@@ -47,6 +63,7 @@ struct FrameSetup {
     glm::vec2 gbuffer_extent{1, 1};    // the G-buffer's content in texture coordinates (pow2 padding)
     bool scissors = true;              // §3.4.2's rectangles; off: every light over the whole screen
     bool skip_empty = true;            // SkipOptions::empty_lights: no pass for a light that adds nothing
+    bool shadows = false;              // the lights' `shadow` honoured (ShadowOptions::on and a shadow stage)
 };
 
 struct FrameDef {
@@ -67,6 +84,10 @@ struct FrameDef {
     std::vector<LightDraw> lights;
     int lights_total = 0, lights_culled = 0;
     long long scissor_pixels = 0;      // the rectangles' area, summed
+    int shadowed_lights = 0;           // lights with LightDraw::shadow >= 0
+    // Their maps, by LightDraw::shadow: filled by the shadow stage before the light passes read them
+    // (empty until then, and in frames without shadows).
+    std::vector<ShadowLookup> shadows;
 
     // The eye-space view ray (x, y, -1) at window position (x, y): bilinear in the corner rays.
     glm::vec3 view_ray_at(float x, float y) const;

@@ -15,6 +15,7 @@ struct StageTimes {
     double ssao = 0;        // the SSAO pass and its blur (0 with --ssao off)
     double depth_copy = 0;  // the depth hand-off: the G-buffer's depth onto P-buffer 0 (0 where not needed)
     double forward = 0;     // the forward stage: light markers and transparent surfaces (0 where not run)
+    double shadows = 0;     // the shadow stage: every shadow map of the frame (0 where none is drawn)
     // CPU time of the rendering thread from the start of render() to its end-of-frame wait: the
     // submission cost (draw calls, state, uniforms). With glFinish-timed stages (llvmpipe) the
     // waits in between are in it as far as they spin; with timer queries (a GPU) they are not there.
@@ -58,6 +59,10 @@ struct FrameStats {
     int light_markers = 0;
     int transparent_objects = 0;
     int transparent_passes = 0;
+    // The shadow stage (shadow_stage.h): maps drawn this frame (a point light's six faces count
+    // six; maps reused from an earlier frame count none) and the triangles drawn into them.
+    int shadow_maps = 0;
+    long long shadow_triangles = 0;
     // The pass skips (SkipOptions): whether this frame ran the depth pre-pass (§3.3.1) and the
     // final pass (§3.6), and whether its ambient pass (Listing 15) was folded into a full-screen
     // light's pass.

@@ -1,6 +1,7 @@
 // The light geometries' factory (light_geometry.h): the one place that names every geometry's class.
 #include "deferred/light_geometry.h"
 
+#include "deferred/light_pass.h"
 #include "dsr_error.h"
 
 namespace dsr {
@@ -15,8 +16,68 @@ std::unique_ptr<LightGeometryPass> make_auto_geometry(const ShaderConfig& c, Pro
                                                       int height);
 std::unique_ptr<LightGeometryPass> make_screen_geometry(const ShaderConfig& c, ProgramSet& programs);
 
+namespace {
+
+// A copy of f without its shadowed lights.
+FrameDef unshadowed(const FrameDef& f) {
+    FrameDef out = f;
+    out.lights.clear();
+    for (const LightDraw& l : f.lights)
+        if (l.shadow < 0) out.lights.push_back(l);
+    return out;
+}
+
+// The geometries that shade many lights in one pass out of uniform arrays (tiles, screen, auto's
+// batched quads) have one shadow map unit, not one a light: their shadowed lights are drawn one by
+// one as the tutorial's scissored quads, through the light program's shadow form, after the
+// others. Only in frames with shadowed lights; a scene without them never builds this.
+class ShadowedAsQuads : public LightGeometryPass {
+public:
+    ShadowedAsQuads(std::unique_ptr<LightGeometryPass> inner, ProgramSet& programs, bool depth_bounds)
+        : inner_(std::move(inner)), quads_(programs, depth_bounds, true), depth_bounds_(depth_bounds) {}
+
+    bool prepare(const FrameDef& f, RenderTargets& t, FrameStats& stats) override {
+        if (f.shadowed_lights == 0) return inner_->prepare(f, t, stats);
+        const bool inner = inner_->prepare(unshadowed(f), t, stats);
+        return inner || depth_bounds_;
+    }
+
+    void draw(const FrameDef& f, RenderTargets& t, LightQueries& q, FrameStats& stats) override {
+        if (f.shadowed_lights == 0) return inner_->draw(f, t, q, stats);
+        inner_->draw(unshadowed(f), t, q, stats);
+        quads_.begin(f);
+        for (const LightDraw& l : f.lights)
+            if (l.shadow >= 0) {
+                quads_.draw(f, l, q);
+                ++stats.light_passes;
+            }
+    }
+
+    void resize(int width, int height) override { inner_->resize(width, height); }
+
+private:
+    std::unique_ptr<LightGeometryPass> inner_;
+    LightQuads quads_;
+    bool depth_bounds_;
+};
+
+std::unique_ptr<LightGeometryPass> make_geometry(const ShaderConfig& c, ProgramSet& programs, int width, int height);
+
+}  // namespace
+
 std::unique_ptr<LightGeometryPass> make_light_geometry(const ShaderConfig& c, ProgramSet& programs, int width,
                                                        int height) {
+    std::unique_ptr<LightGeometryPass> g = make_geometry(c, programs, width, height);
+    const LightGeometry k = c.paths.light_geometry;
+    const bool batched = k == LightGeometry::tiles || k == LightGeometry::screen || k == LightGeometry::automatic;
+    if (c.opts.shadow_lights && batched)
+        g = std::make_unique<ShadowedAsQuads>(std::move(g), programs, c.paths.depth_bounds);
+    return g;
+}
+
+namespace {
+
+std::unique_ptr<LightGeometryPass> make_geometry(const ShaderConfig& c, ProgramSet& programs, int width, int height) {
     switch (c.paths.light_geometry) {
         case LightGeometry::quad: return make_quad_geometry(c, programs);
         case LightGeometry::volume: return make_volume_geometry(c, programs);
@@ -27,5 +88,7 @@ std::unique_ptr<LightGeometryPass> make_light_geometry(const ShaderConfig& c, Pr
     }
     return nullptr;
 }
+
+}  // namespace
 
 }  // namespace dsr

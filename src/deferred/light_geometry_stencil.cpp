@@ -74,10 +74,12 @@ public:
                 gl_state().apply(mark_);
                 meshes_.draw(l);
             }
-            Program& prog = progs_[l.shader()];
+            Program& prog = progs_.form(l);
             light_.program = prog.id();
             gl_state().apply(light_);
+            bind_shadow(prog, f, l);
             meshes_.shade(l, prog, q, stats);
+            unbind_shadow(l);
         }
     }
 

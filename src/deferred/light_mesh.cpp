@@ -87,10 +87,12 @@ void LightMeshes::shade_volumes(const FrameDef& f, const std::vector<const Light
     s.depth_func = GL_GREATER;  // the volume's far side behind the scene surface
     s.depth_write = false;
     for (const LightDraw* l : lights) {
-        Program& prog = progs[l->shader()];
+        Program& prog = progs.form(*l);
         s.program = prog.id();
         gl_state().apply(s);
+        bind_shadow(prog, f, *l);
         shade(*l, prog, q, stats);
+        unbind_shadow(*l);
     }
 }
 

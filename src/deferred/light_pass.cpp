@@ -61,14 +61,42 @@ void LightArrays::set(Program& prog, const char* const (&names)[5]) const {
     prog.set_array(names[4], att_.data(), n);
 }
 
-LightPrograms::LightPrograms(ProgramSet& programs, const std::string& family) {
-    forms_[int(LightShader::point_linear)] = programs.take(family + "_point");
-    forms_[int(LightShader::point_inverse)] = programs.take(family + "_point_inverse");
-    forms_[int(LightShader::any)] = programs.take(family);
+void bind_shadow(Program& prog, const FrameDef& f, const LightDraw& l) {
+    if (l.shadow < 0) return;
+    const ShadowLookup& m = f.shadows.at(size_t(l.shadow));
+    prog.set_array("shadow_view", &m.eye_to_light[0], 4);
+    prog.set_array("shadow_proj", &m.proj[0], 4);
+    prog.set("shadow_depth", m.depth);
+    prog.set("shadow_params", glm::vec4(m.bias, m.slope, m.texel.x, m.texel.y));
+    prog.set("shadow_size", glm::vec4(float(m.kind), float(m.face), float(m.width), float(m.height)));
+    glActiveTexture(GL_TEXTURE4);
+    glBindTexture(GL_TEXTURE_2D, m.texture);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+void unbind_shadow(const LightDraw& l) {
+    if (l.shadow < 0) return;
+    glActiveTexture(GL_TEXTURE4);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+LightPrograms::LightPrograms(ProgramSet& programs, const std::string& family, bool shadow_only) {
+    if (!shadow_only) {
+        forms_[int(LightShader::point_linear)] = programs.take(family + "_point");
+        forms_[int(LightShader::point_inverse)] = programs.take(family + "_point_inverse");
+        forms_[int(LightShader::any)] = programs.take(family);
+    }
+    if (programs.has(family + "_shadow")) shadow_ = programs.take(family + "_shadow");
 }
 
 void LightPrograms::begin(const FrameDef& f) {
-    for (Program& p : forms_) set_light_uniforms(p, f);
+    for (Program& p : forms_)
+        if (p.id()) set_light_uniforms(p, f);
+    if (shadow_.id()) {
+        set_light_uniforms(shadow_, f);
+        shadow_.set("shadow_map", 4);
+    }
 }
 
 LightShader LightPrograms::common(const FrameDef& f, const std::vector<int>& lights) {
@@ -79,7 +107,8 @@ LightShader LightPrograms::common(const FrameDef& f, const std::vector<int>& lig
     return first;
 }
 
-LightQuads::LightQuads(ProgramSet& programs, bool depth_bounds) : progs_(programs, "light"), depth_bounds_(depth_bounds) {}
+LightQuads::LightQuads(ProgramSet& programs, bool depth_bounds, bool shadow_only)
+    : progs_(programs, "light", shadow_only), depth_bounds_(depth_bounds) {}
 
 void LightQuads::begin(const FrameDef& f) {
     gl_state().set_camera(f.pixels());
@@ -87,7 +116,7 @@ void LightQuads::begin(const FrameDef& f) {
 }
 
 void LightQuads::draw(const FrameDef& f, const LightDraw& l, LightQueries& q) {
-    Program& prog = progs_[l.shader()];
+    Program& prog = progs_.form(l);
     RenderState s = light_pass_state(prog.id(), !l.full);
     if (!l.full) glScissor(l.rect.x0, l.rect.y0, l.rect.x1 - l.rect.x0, l.rect.y1 - l.rect.y0);  // set_light_scissor
     if (depth_bounds_ && l.eye.kind != LightVolume::Kind::full_screen) {
@@ -104,9 +133,11 @@ void LightQuads::draw(const FrameDef& f, const LightDraw& l, LightQueries& q) {
     }
     gl_state().apply(s);
     set_light_params(prog, l.params);
+    bind_shadow(prog, f, l);
     q.begin();
     draw_rect(f, 0, 0, float(f.width), float(f.height), true);
     q.end();
+    unbind_shadow(l);
 }
 
 LightQuadBatch::LightQuadBatch(ProgramSet& programs, int batch) : progs_(programs, "light_batch"), batch_(batch) {}

@@ -40,27 +40,38 @@ private:
     std::vector<glm::vec4> pos_, color_, dir_, spot_, att_;
 };
 
+// A shadowed light's map (f.shadows[l.shadow]) on unit 4 and its uniforms (glsl120/shadow.glsl)
+// in `prog`, in use; nothing for a light without one. unbind_shadow takes the map off unit 4.
+void bind_shadow(Program& prog, const FrameDef& f, const LightDraw& l);
+void unbind_shadow(const LightDraw& l);
+
 // A light program in its three forms (the shader table's rows FAMILY, FAMILY_point and
 // FAMILY_point_inverse): each light is drawn by the form of its LightShader, so the type and law
-// selection is paid only by the lights that need it.
+// selection is paid only by the lights that need it; and, where the scene has shadowed lights,
+// FAMILY_shadow (any light, with the shadow lookup) for those.
 class LightPrograms {
 public:
-    LightPrograms(ProgramSet& programs, const std::string& family);
+    // shadow_only: just FAMILY_shadow (a geometry that draws only its shadowed lights as quads).
+    LightPrograms(ProgramSet& programs, const std::string& family, bool shadow_only = false);
     // set_light_uniforms on every form, before a frame's first draw.
     void begin(const FrameDef& f);
     Program& operator[](LightShader s) { return forms_[int(s)]; }
+    // The form that draws light l: the shadow form for a shadowed light, else its LightShader's.
+    Program& form(const LightDraw& l) { return l.shadow >= 0 ? shadow_ : forms_[int(l.shader())]; }
     // The form that serves every light of `lights` (indices into f.lights): their common one, else any.
     static LightShader common(const FrameDef& f, const std::vector<int>& lights);
 
 private:
     Program forms_[3];  // LightShader's order: point_linear, point_inverse, any
+    Program shadow_;    // FAMILY_shadow, where the table built it
 };
 
 // The light's quad over its scissor rectangle, through the light's form of "light".
 class LightQuads {
 public:
-    // depth_bounds: EXT_depth_bounds_test on each quad (Paths::depth_bounds).
-    LightQuads(ProgramSet& programs, bool depth_bounds);
+    // depth_bounds: EXT_depth_bounds_test on each quad (Paths::depth_bounds). shadow_only: only
+    // shadowed lights are drawn (the batched geometries' shadowed lights, light_geometry.cpp).
+    LightQuads(ProgramSet& programs, bool depth_bounds, bool shadow_only = false);
     // Before the first quad of a frame: the pixel camera and both programs' frame uniforms.
     void begin(const FrameDef& f);
     // set_light_scissor, then the light shader over the rectangle; one counted pass.

@@ -237,10 +237,35 @@ std::vector<RenderOption> make_table() {
             [](RenderOptions& r, const std::string& v) { r.shader.depth_handoff = depth_handoff_from_name(v); }),
         "how the G-buffer's depth reaches P-buffer 0 for the passes that test against it: "
         "EXT_framebuffer_blit or a gl_FragDepth pass; auto: blit where present (docs/forward.md)");
+    // Shadow maps (docs/shadows.md): the scene's `shadow` lights, and what one lookup averages.
+    RenderOption shadows{"shadows", OptionKind::on_off, {"on", "off"}, 0, 0, true,
+                         [](const RenderOptions& r) { return on_off(r.shader.shadows.on); },
+                         [](RenderOptions& r, const std::string& v) { r.shader.shadows.on = v == "on"; }};
+    add(shadows, "shadow maps for the scene's lights that say `shadow` (on), or none whatever the scene says (off)");
+    add(choice(
+            "shadow-filter", {"hard", "pcf2", "pcf3", "pcf5"},
+            [](const RenderOptions& r) { return std::string(shadow_filter_name(r.shader.shadows.filter)); },
+            [](RenderOptions& r, const std::string& v) {
+                r.shader.shadows.filter = v == "hard" ? ShadowFilter::hard : v == "pcf3" ? ShadowFilter::pcf3
+                                          : v == "pcf5" ? ShadowFilter::pcf5 : ShadowFilter::pcf2;
+            }),
+        "what a shadow lookup averages: one comparison with the nearest texel (hard), 2x2 comparisons "
+        "weighted bilinearly (pcf2: ARB_shadow's filtered compare where the GL has it), or 3x3 or 5x5 "
+        "texels of those, averaged (pcf3, pcf5)");
+    RenderOption reuse{"shadow-reuse", OptionKind::on_off, {"on", "off"}, 0, 0, true,
+                       [](const RenderOptions& r) { return on_off(r.shader.shadows.reuse); },
+                       [](RenderOptions& r, const std::string& v) { r.shader.shadows.reuse = v == "on"; }};
+    add(reuse, "keep a light's shadow map from the last frame while neither the light nor anything in its "
+               "views moved (on), or draw every map every frame (off: what the shadow stage costs)");
     return t;
 }
 
 }  // namespace
+
+const char* shadow_filter_name(ShadowFilter f) {
+    static const char* names[] = {"hard", "pcf2", "pcf3", "pcf5"};
+    return names[int(f)];
+}
 
 RenderOption switch_option(std::string name, bool ShaderOptions::*field) {
     return RenderOption{std::move(name), OptionKind::on_off, {"on", "off"}, 0, 0, true,
@@ -267,6 +292,7 @@ ShaderOptions RenderOptions::resolved(const Scene& scene) const {
     if (view == View::bloom) s.post.bloom = true;  // the view shows the bloom blur
     if (view == View::ssao) s.ssao.on = true;      // the view shows the AO buffer
     for (const Material& m : scene.materials) s.forward_surfaces = s.forward_surfaces || m.transparent();
+    for (const Light& l : scene.lights) s.shadow_lights = s.shadow_lights || (s.shadows.on && l.shadow.on);
     return s;
 }
 

@@ -92,6 +92,21 @@ struct SsaoOptions {
     int samples = 16;       // kernel size (ssao_kernel.h), 4..64
 };
 
+// Shadow maps (shadow_stage.h, docs/shadows.md). `filter` is what one lookup averages:
+//  hard  one comparison with the nearest texel
+//  pcf2  2x2 comparisons weighted bilinearly: ARB_shadow's GL_LINEAR compare where the GL filters
+//        compares (one shadow2D), the same four in the shader on the packed map
+//  pcf3, pcf5  3x3, 5x5 texels, each a 2x2-filtered comparison, averaged
+enum class ShadowFilter { hard, pcf2, pcf3, pcf5 };
+const char* shadow_filter_name(ShadowFilter f);  // "hard", "pcf2", "pcf3", "pcf5"
+struct ShadowOptions {
+    bool on = true;  // --shadows on honours the scene's `shadow` lights; off ignores them
+    ShadowFilter filter = ShadowFilter::pcf2;
+    // A light's map kept from an earlier frame while neither the light nor anything in its views
+    // moved (the viewer's still frames); off draws every map every frame (timing the stage).
+    bool reuse = true;
+};
+
 struct ShaderOptions {
     DepthPath depth = DepthPath::texture;
     DepthEncoding encoding = DepthEncoding::corrected;  // what the packed target holds
@@ -125,6 +140,10 @@ struct ShaderOptions {
     // forward stage draws them, so P-buffer 0 needs the scene's depth. Not a user option.
     bool forward_surfaces = false;
     DepthHandoff depth_handoff = DepthHandoff::automatic;
+    ShadowOptions shadows;
+    // Set by RenderOptions::resolved when the scene has lights with `shadow` and shadows are on:
+    // the shadow stage and the light programs' shadowed forms are built. Not a user option.
+    bool shadow_lights = false;
 };
 
 // "auto", "blit", "pass"; from_name throws dsr::Error listing them otherwise.

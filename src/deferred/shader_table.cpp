@@ -167,6 +167,20 @@ bool tile_depth(const ShaderConfig& c) {
     return uses_tiles(c) && c.opts.tile_depth && c.caps.fbo && c.caps.texture_float && c.paths.fbo;
 }
 
+// Shadow maps (shadow_stage.h, glsl120/shadow.glsl): built only for scenes with shadowed lights.
+bool shadows(const ShaderConfig& c) { return c.opts.shadow_lights; }
+// Depth textures compared by ARB_shadow where the GL has both, else depth packed in RGB8.
+bool shadow_packed(const ShaderConfig& c) { return !(c.caps.depth_texture && c.caps.shadow); }
+Defines shadow_defines(Defines d, const ShaderConfig& c) {
+    d.push_back("SHADOW");
+    if (shadow_packed(c)) d.push_back("SHADOW_PACKED");
+    const ShadowFilter k = c.opts.shadows.filter;
+    if (k == ShadowFilter::hard) d.push_back("SHADOW_HARD");
+    if (k == ShadowFilter::pcf3) d.push_back("SHADOW_TAPS 3");
+    if (k == ShadowFilter::pcf5) d.push_back("SHADOW_TAPS 5");
+    return d;
+}
+
 std::string tile_size(const ShaderConfig& c) { return "TILE_SIZE " + std::to_string(c.opts.tile_size); }
 
 }  // namespace
@@ -224,6 +238,19 @@ const std::vector<ShaderRow>& shader_rows() {
          [](C c) { return point_linear(with(light_defines(c, false), {"VOLUME"})); }},
         {"light_stencil_point_inverse", "light.vert", "light.frag", "stencil mask, point lights, attenuation law",
          uses_stencil, [](C c) { return point_inverse(with(light_defines(c, false), {"VOLUME"})); }},
+        // Shadowed lights (a scene's `shadow` lights): the light pass with the shadow lookup, any
+        // light, drawn as the light's quad by every geometry but volume and stencil, which have
+        // their own. Scenes without shadows build none of these.
+        {"light_shadow", "light.vert", "light.frag", "light pass with its shadow map, any light", shadows,
+         [](C c) { return shadow_defines(light_defines(c), c); }},
+        {"light_volume_shadow", "light.vert", "light.frag", "volume mesh with its shadow map",
+         [](C c) { return shadows(c) && geometry_is(c, LightGeometry::volume); },
+         [](C c) { return shadow_defines(with(light_defines(c), {"VOLUME"}), c); }},
+        {"light_stencil_shadow", "light.vert", "light.frag", "stencil mask with its shadow map",
+         [](C c) { return shadows(c) && uses_stencil(c); },
+         [](C c) { return shadow_defines(with(light_defines(c, false), {"VOLUME"}), c); }},
+        {"shadow_caster", "shadow_caster.vert", "shadow_caster.frag", "shadow maps: depth from the light", shadows,
+         [](C c) { return shadow_packed(c) ? Defines{"SHADOW_PACKED"} : Defines{}; }},
         {"light_tiles", "light.vert", "light_tiles.frag", "tiles: several lights a pass, any type", uses_tiles,
          tiles_defines},
         {"light_tiles_point", "light.vert", "light_tiles.frag", "tiles: the tutorial's point lights", uses_tiles,

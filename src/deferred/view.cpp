@@ -6,7 +6,8 @@ namespace dsr {
 
 const std::vector<std::string>& view_names() {
     static const std::vector<std::string> names = {"final", "normal", "diffuse", "specular",
-                                                   "depth", "blur-factor", "bloom", "ssao"};
+                                                   "depth", "blur-factor", "bloom", "ssao",
+                                                   "shadow-map"};
     return names;
 }
 

@@ -1,9 +1,10 @@
 // Debug views of every buffer, with the same names everywhere (`--view`, the viewer's keys),
 // drawn into the main frame buffer by the final stage's fixed-function pass: the G-buffer targets
-// of Figure 4, the blur factor of Figure 8, the bloom blur of Figure 10, the SSAO buffer.
+// of Figure 4, the blur factor of Figure 8, the bloom blur of Figure 10, the SSAO buffer, a shadow map.
 #include "deferred/deferred_shader.h"
 #include "deferred/depth_codec.h"
 #include "deferred/post_stage.h"
+#include "deferred/shadow_stage.h"
 #include "dsr_error.h"
 #include "gl/check.h"
 #include "gl/texture.h"
@@ -61,6 +62,14 @@ void DeferredShader::draw_view(View view, int out_w, int out_h) {
             if (!post_->bloom()) throw Error("the bloom view needs bloom enabled");
             show(targets_->pbuffer(P_BLOOM_V));
             return;
+        case View::shadow_map: {  // the first shadowed light's map, depth as grey (white: far)
+            const ShadowLookup* m = shadows_ ? shadows_->last_first() : nullptr;
+            if (!m) throw Error("the shadow-map view needs a visible light with `shadow` (and --shadows on)");
+            const Image d = shadows_->read_map(*m);
+            Texture tex(d.width, d.height, GL_RGBA8, GL_RGBA, GL_FLOAT, d.rgba.data());
+            final_.draw_texture(tex.id(), out_w, out_h, glm::vec2(1, 1));
+            return;
+        }
         case View::ssao:  // the blurred AO buffer the ambient pass multiplies by (docs/ssao.md)
             if (!config_.opts.ssao.on) throw Error("the ssao view needs --ssao");
             show(targets_->ssao(SSAO_BLURRED));

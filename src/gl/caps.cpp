@@ -55,6 +55,10 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
     if (c.max_draw_buffers < 2) c.draw_buffers = false;
     c.depth_texture = (at_least(c.gl_major, c.gl_minor, 1, 4) || has_extension("GL_ARB_depth_texture")) &&
                       !off("no-depth-texture");
+    // ARB_shadow (core in 1.4): the shadow maps' comparison in the lookup; without depth textures
+    // there is nothing to compare, and the maps are packed (shadow_stage.h).
+    c.shadow = c.depth_texture && (at_least(c.gl_major, c.gl_minor, 1, 4) || has_extension("GL_ARB_shadow")) &&
+               !off("no-shadow");
     c.fbo = has_extension("GL_EXT_framebuffer_object") && !off("no-fbo");
     // no-arb-fbo leaves EXT_framebuffer_object's one-format rule (what a 2005 driver enforced).
     c.fbo_mixed_formats = c.fbo && (at_least(c.gl_major, c.gl_minor, 3, 0) || has_extension("GL_ARB_framebuffer_object")) &&
@@ -101,6 +105,7 @@ std::string describe(const Caps& c) {
       << "  " << yn(c.draw_buffers) << " multiple render targets  (ARB_draw_buffers), max "
       << c.max_draw_buffers << "\n"
       << "  " << yn(c.depth_texture) << " depth textures           (ARB_depth_texture)\n"
+      << "  " << yn(c.shadow) << " depth comparison         (ARB_shadow)\n"
       << "  " << yn(c.fbo) << " render to texture        (EXT_framebuffer_object)\n"
       << "  " << yn(c.fbo_mixed_formats) << " mixed target formats     (ARB_framebuffer_object)\n"
       << "  " << yn(c.npot) << " non-power-of-two         (ARB_texture_non_power_of_two)\n"

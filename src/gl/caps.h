@@ -15,6 +15,7 @@ struct Caps {
     bool draw_buffers = false;       // ARB_draw_buffers (core in 2.0): MRT, §3.2
     int max_draw_buffers = 1;        // GL_MAX_DRAW_BUFFERS
     bool depth_texture = false;      // ARB_depth_texture: the depth-texture path, §3.3.2
+    bool shadow = false;             // ARB_shadow: depth textures compared in the lookup (shadow2D)
     bool fbo = false;                // EXT_framebuffer_object: render to texture
     bool fbo_mixed_formats = false;  // ARB_framebuffer_object (core in 3.0): colour attachments of one
                                      // framebuffer in different formats (EXT wants one format)

@@ -33,6 +33,22 @@ struct Camera {
 // color_max / (kc + kl d + kq d^2) falls to `threshold` (attenuation_radius), beyond which the
 // light adds nothing.
 // The first three fields stay pos, color, radius so {pos, color, radius} still makes a point light.
+// A light's shadow map (`shadow [size N] [bias B] [slope S]`, docs/scene-format.md; the
+// renderer's shadow stage, src/deferred/shadow_stage.h). The map stores each surface's depth from
+// the light as a fraction of the map's depth range: the distance from the light over `radius` for
+// spot and point lights, the depth across the fitted orthographic box for directional ones. A
+// pixel is lit where its own depth, less the bias, is at most the map's:
+//   bias   constant part, as a fraction of that depth range (0.001 of a radius 10 light: 0.01 units)
+//   slope  slope-scaled part, in map texels: slope x (the world size of one texel at the pixel)
+//          x tan(angle between the surface's normal and the light), over the depth range
+// The defaults are the bias sweep's (`dsr stress`, docs/accuracy.md).
+struct LightShadow {
+    bool on = false;
+    int size = 1024;       // texels per side (per cube face for point lights): a power of two in [64, 8192]
+    float bias = 0.0001f;  // >= 0
+    float slope = 2.0f;    // >= 0
+};
+
 struct Light {
     enum class Type { point, spot, directional };
     glm::vec3 pos{0}, color{1};
@@ -44,6 +60,7 @@ struct Light {
     bool attenuation = false;     // false: Equation 2's 1 - d / S_radius
     float kc = 1.0f, kl = 0.0f, kq = 0.0f;  // attenuation law, each >= 0
     float threshold = 5.0f / 256.0f;        // LearnOpenGL's 5/256
+    LightShadow shadow;                     // off unless the light line says `shadow`
 };
 
 // Texture maps are indices into Scene::textures, -1 when absent.

@@ -535,10 +535,14 @@ private:
         } else {
             line.expected_last("light kind 'point', 'spot' or 'directional'");
         }
+        keys.push_back("shadow");
         std::set<std::string> seen;
         while (!line.done()) {
+            for (const char* sub : {"size", "bias", "slope"})
+                if (line.accept(sub)) line.expected_last("shadow before " + std::string(sub) + " (shadow [size N] [bias B] [slope S])");
             const std::string k = line.key(keys, seen);
             if (k == "pos") l.pos = line.vec3("light pos");
+            else if (k == "shadow") shadow(line, l.shadow);
             else if (k == "color") l.color = line.colour("light color");
             else if (k == "radius") {
                 if (seen.count("attenuation")) line.expected_last("radius or attenuation, not both");
@@ -581,6 +585,30 @@ private:
                           ") is within 1e12, got " + fmt(l.radius));
         }
         scene_.lights.push_back(l);
+    }
+
+    // `shadow [size N] [bias B] [slope S]` (scene.h LightShadow): the three right after `shadow`,
+    // each at most once, in any order.
+    void shadow(Line& line, LightShadow& sh) {
+        sh.on = true;
+        std::set<std::string> seen;
+        for (;;) {
+            std::string k;
+            for (const char* sub : {"size", "bias", "slope"})
+                if (k.empty() && line.accept(sub)) k = sub;
+            if (k.empty()) return;
+            if (!seen.insert(k).second) line.expected_last("each of shadow's size, bias, slope at most once");
+            if (k == "size") {
+                const float n = line.number("shadow size");
+                const bool pow2 = n >= 64 && n <= 8192 && n == std::floor(n) && (int(n) & (int(n) - 1)) == 0;
+                if (!pow2) line.expected_last("shadow size a power of two in [64, 8192]");
+                sh.size = int(n);
+            } else if (k == "bias") {
+                sh.bias = line.non_negative("shadow bias");
+            } else {
+                sh.slope = line.non_negative("shadow slope");
+            }
+        }
     }
 
     void post(Line& line) {

@@ -1,0 +1,201 @@
+// The shadow stage (shadow_stage.h).
+#include "deferred/shadow_stage.h"
+
+#include <algorithm>
+
+#include "deferred/depth_codec.h"
+#include "deferred/gpu_scene.h"
+#include "dsr_error.h"
+#include "gl/check.h"
+#include "gl/state.h"
+
+namespace dsr {
+
+namespace {
+
+// Every view of a map: its clip volume's culling, a cube's faces against the light's sphere too.
+bool casts_into(const Light& light, const ShadowLayout& s, const ShadowView& v, const ObjectBounds& b) {
+    if (s.kind == ShadowKind::cube && glm::length(b.centre - light.pos) > light.radius + b.radius) return false;
+    return !shadow_view_culls(v, b);
+}
+
+// The view's place in the texture: the whole of it, or a cube face's tile of the 3 x 2.
+void view_viewport(const ShadowLayout& s, size_t view) {
+    if (s.kind != ShadowKind::cube) {
+        glViewport(0, 0, s.width, s.height);
+        return;
+    }
+    glViewport(int(view % 3) * s.face, int(view / 3) * s.face, s.face, s.face);
+}
+
+}  // namespace
+
+ShadowStage::ShadowStage(const ShaderConfig& c, ProgramSet& programs)
+    : caster_(programs.take("shadow_caster")),
+      packed_(!(c.caps.depth_texture && c.caps.shadow)),
+      hard_(c.opts.shadows.filter == ShadowFilter::hard),
+      reuse_(c.opts.shadows.reuse) {
+    if (!c.caps.fbo) throw Error("shadow maps need EXT_framebuffer_object (--shadows off draws without them)");
+    GLint max = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+    max_texture_ = std::max(64, int(max));
+}
+
+ShadowStage::~ShadowStage() {
+    for (auto& m : maps_) release(m.second);
+}
+
+void ShadowStage::release(Map& m) {
+    if (m.fbo) glDeleteFramebuffersEXT(1, &m.fbo);
+    if (m.depth_rb) glDeleteRenderbuffersEXT(1, &m.depth_rb);
+    if (m.texture) glDeleteTextures(1, &m.texture);
+    m = Map{};
+}
+
+void ShadowStage::set_scene(const Scene& scene) {
+    bounds_ = object_bounds(scene);
+    for (auto& m : maps_) release(m.second);
+    maps_.clear();
+}
+
+void ShadowStage::allocate(Map& m, int width, int height) {
+    if (m.texture && m.width == width && m.height == height) return;
+    release(m);
+    m.width = width, m.height = height;
+    glGenTextures(1, &m.texture);
+    glBindTexture(GL_TEXTURE_2D, m.texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glGenFramebuffersEXT(1, &m.fbo);
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, m.fbo);
+    if (packed_) {
+        // The shader filters (shadow.glsl): each texel's code must come back whole.
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, width, height, 0, GL_RGB, GL_UNSIGNED_BYTE, nullptr);
+        glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_TEXTURE_2D, m.texture, 0);
+        glGenRenderbuffersEXT(1, &m.depth_rb);
+        glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, m.depth_rb);
+        glRenderbufferStorageEXT(GL_RENDERBUFFER_EXT, GL_DEPTH_COMPONENT24, width, height);
+        glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, 0);
+        glFramebufferRenderbufferEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT, m.depth_rb);
+    } else {
+        // ARB_shadow: the lookup compares; GL_LINEAR asks the GL to filter the 2x2 comparisons.
+        const GLint filter = hard_ ? GL_NEAREST : GL_LINEAR;
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE_ARB, GL_COMPARE_R_TO_TEXTURE_ARB);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC_ARB, GL_LEQUAL);
+        glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE_ARB, GL_LUMINANCE);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, width, height, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
+        glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_TEXTURE_2D, m.texture, 0);
+        glDrawBuffer(GL_NONE);  // the framebuffer object's own state: depth only
+        glReadBuffer(GL_NONE);
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    const GLenum status = glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT);
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE_EXT)
+        throw Error("shadow map of " + std::to_string(width) + "x" + std::to_string(height) +
+                    (packed_ ? " (RGB8 and a depth renderbuffer)" : " (a depth texture)") + ": framebuffer incomplete");
+}
+
+std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scene, GpuScene& gpu, FrameStats& stats) {
+    std::vector<ShadowLookup> out(size_t(f.shadowed_lights));
+    last_.clear();
+    if (f.shadowed_lights == 0) return out;
+    if (bounds_.size() != scene.objects.size()) bounds_ = object_bounds(scene);
+    const ShadowFit fit = shadow_fit(f.camera, f.aspect, bounds_);
+    const glm::dmat4 eye_to_world = glm::inverse(f.camera.view_d());
+    RenderState s = opaque_geometry();
+    s.cull = false;         // open surfaces (planes) cast from either side
+    s.color_write = packed_;
+    s.program = caster_.id();
+    bool bound = false;
+    for (const LightDraw& l : f.lights) {
+        if (l.shadow < 0) continue;
+        const Light& light = *l.light;
+        const ShadowLayout layout = shadow_layout(light, light.shadow.size, fit, max_texture_);
+        // Which objects each view draws: opaque ones (transparent surfaces receive, not cast)
+        // whose bounds reach it.
+        Map key;
+        for (const ShadowView& v : layout.views) {
+            key.clips.push_back(v.proj * v.view);
+            std::vector<size_t> objs;
+            for (size_t o = 0; o < scene.objects.size() && o < bounds_.size(); ++o)
+                if (!gpu.transparent(o) && casts_into(light, layout, v, bounds_[o])) {
+                    objs.push_back(o);
+                    key.models.push_back(scene.objects[o].model);
+                }
+            key.objects.push_back(std::move(objs));
+        }
+        Map& m = maps_[l.index];
+        const bool same = reuse_ && m.texture && m.width == layout.width && m.height == layout.height && m.clips == key.clips &&
+                          m.objects == key.objects && m.models == key.models;
+        if (!same) {
+            allocate(m, layout.width, layout.height);
+            m.clips = key.clips, m.objects = key.objects, m.models = key.models;
+            glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, m.fbo);
+            if (!bound) {
+                gpu.bind_positions();
+                bound = true;
+            }
+            glViewport(0, 0, m.width, m.height);
+            gl_state().apply(s);
+            glClearDepth(1.0);
+            glClearColor(1, 1, 1, 1);  // pack_depth(1): far, wherever nothing is drawn
+            glClear(GL_DEPTH_BUFFER_BIT | (packed_ ? GL_COLOR_BUFFER_BIT : 0));
+            caster_.set("shadow_depth", layout.depth);
+            for (size_t v = 0; v < layout.views.size(); ++v) {
+                view_viewport(layout, v);
+                gl_state().set_camera(glm::mat4(layout.views[v].proj));
+                gpu.set_view(layout.views[v].view);
+                for (size_t o : m.objects[v]) {
+                    const DrawRange& r = gpu.object_range(o);
+                    gpu.draw(r);
+                    stats.shadow_triangles += r.count / 3;
+                }
+                ++stats.shadow_maps;
+            }
+            glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+        }
+        ShadowLookup& k = out[size_t(l.shadow)];
+        k.texture = m.texture;
+        k.kind = int(layout.kind);
+        k.eye_to_light = glm::mat4(layout.light * eye_to_world);
+        k.proj = glm::mat4(layout.views[0].proj);
+        k.depth = layout.depth;
+        k.texel = layout.texel;
+        k.bias = light.shadow.bias;
+        k.slope = light.shadow.slope;
+        k.width = layout.width, k.height = layout.height, k.face = layout.face;
+    }
+    if (bound) gpu.unbind();
+    check_gl_stage("shadow stage");
+    last_ = out;
+    return out;
+}
+
+Image ShadowStage::read_map(const ShadowLookup& m) const {
+    Image img;
+    img.width = m.width, img.height = m.height;
+    img.rgba.assign(size_t(m.width) * size_t(m.height) * 4, 1.0f);
+    glBindTexture(GL_TEXTURE_2D, m.texture);
+    std::vector<float> depth(size_t(m.width) * size_t(m.height));
+    if (packed_) {
+        std::vector<unsigned char> rgb(depth.size() * 3);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+        for (size_t i = 0; i < depth.size(); ++i)
+            depth[i] = float((rgb[3 * i] * 65536.0 + rgb[3 * i + 1] * 256.0 + rgb[3 * i + 2]) / 16777215.0);
+    } else {
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    for (size_t i = 0; i < depth.size(); ++i)
+        for (int c = 0; c < 3; ++c) img.rgba[i * 4 + size_t(c)] = depth[i];
+    check_gl("reading a shadow map");
+    return img;
+}
+
+}  // namespace dsr

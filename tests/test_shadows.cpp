@@ -1,0 +1,148 @@
+// Shadow maps through the whole renderer (shadow_stage.h, glsl120/shadow.glsl): a box floating
+// over a plane under a spot, a point and a directional light darkens the plane where the light is
+// blocked and nowhere else; the depth-texture maps and the packed ones agree; every light geometry
+// gives the same image; a scene whose lights say no `shadow` (or --shadows off) is untouched; the
+// stage draws only the maps and objects it needs.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "render_fixture.h"
+
+using namespace dsr;
+using namespace dsr::test;
+
+namespace {
+
+constexpr int kSize = 96;
+
+// A grey plane, a box floating over its centre (bottom at y = 1), a small sphere far off to the
+// side, and one light of `type` with a shadow.
+Scene box_scene(Light::Type type) {
+    Scene s;
+    s.camera.pos = {0, 6, 6};
+    s.camera.target = {0, 0, 0};
+    s.camera.near_plane = 0.1f;
+    s.camera.far_plane = 60;
+    s.ambient = glm::vec3(0.1f);
+    Material m;
+    m.name = "grey";
+    m.diffuse = glm::vec3(0.8f);
+    s.materials.push_back(m);
+    add_plane(s, 8, {0, 0, 0}, 0);
+    add_box(s, {1, 1, 1}, {0, 1.5f, 0}, 0);
+    add_sphere(s, 0.5f, {30, 0, 0}, 0, 8, 4);  // outside every map but the directional one's scene box
+    Light l;
+    l.type = type;
+    l.pos = {0, 5, 0};
+    l.dir = {0, -1, 0};
+    l.angle_deg = 40;
+    l.radius = 10;
+    if (type == Light::Type::directional) l.dir = glm::normalize(glm::vec3(0.3f, -1, 0));
+    l.shadow.on = true;
+    s.lights.push_back(l);
+    return s;
+}
+
+ShaderOptions shadowed(LightGeometry g = LightGeometry::quad) {
+    ShaderOptions o;
+    o.depth = DepthPath::texture;
+    o.light_geometry = g;
+    o.shadow_lights = true;  // what RenderOptions::resolved sets for such a scene
+    return o;
+}
+
+// The red channel (0..255) where world point p shows (GL rows: 0 at the bottom).
+float lsb_at(const Image& img, const Scene& s, glm::vec3 p) {
+    const glm::vec4 c = s.camera.projection(1.0f) * s.camera.view() * glm::vec4(p, 1);
+    const int x = int((c.x / c.w * 0.5f + 0.5f) * float(img.width));
+    const int y = int((c.y / c.w * 0.5f + 0.5f) * float(img.height));
+    return img.at(x, y)[0] * 255.0f;
+}
+
+float max_lsb(const Image& a, const Image& b) {
+    float m = 0;
+    for (size_t i = 0; i < a.rgba.size(); ++i) m = std::max(m, std::fabs(a.rgba[i] - b.rgba[i]) * 255.0f);
+    return m;
+}
+
+}  // namespace
+
+// Under the box the plane gets only the ambient term; away from it, exactly the unshadowed light.
+TEST(Shadows, TheBoxShadowsThePlaneUnderEveryLightType) {
+    for (Light::Type t : {Light::Type::spot, Light::Type::point, Light::Type::directional}) {
+        const Scene s = box_scene(t);
+        Scene unshadowed = s;
+        unshadowed.lights[0].shadow.on = false;
+        const Image lit = render_scene(unshadowed, kSize, kSize, shadowed()).image;
+        const RenderResult r = render_scene(s, kSize, kSize, shadowed());
+        // The directional light leans +x: its shadow falls 0.3 x 1.5 off the centre.
+        const glm::vec3 under = t == Light::Type::directional ? glm::vec3(0.45f, 0, 0) : glm::vec3(0);
+        const float ambient = 0.1f * 0.8f * 255.0f;
+        EXPECT_GT(lsb_at(lit, s, under), ambient + 40) << int(t);
+        EXPECT_NEAR(lsb_at(r.image, s, under), ambient, 1.5f) << int(t);
+        for (glm::vec3 p : {glm::vec3(2.5f, 0, 1.5f), glm::vec3(-2.2f, 0, 2), glm::vec3(1, 0, 3)})
+            EXPECT_NEAR(lsb_at(r.image, s, p), lsb_at(lit, s, p), 1.0f) << int(t) << " at " << p.x << " " << p.z;
+        EXPECT_EQ(r.stats.shadow_maps, t == Light::Type::point ? 6 : 1);
+    }
+}
+
+// Only the objects inside the light's views are drawn into its map: the spot's cone holds the
+// plane (2 triangles) and the box (12), not the far sphere.
+TEST(Shadows, OnlyTheObjectsInTheLightsVolumeAreDrawn) {
+    const RenderResult r = render_scene(box_scene(Light::Type::spot), kSize, kSize, shadowed());
+    EXPECT_EQ(r.stats.shadow_maps, 1);
+    EXPECT_EQ(r.stats.shadow_triangles, 14);
+}
+
+// The packed RGB8 maps (no depth textures) compare in the shader what ARB_shadow compares in the
+// texture unit: the same image within 1 LSB; and every light geometry draws the same pixels.
+TEST(Shadows, DepthPathsAndGeometriesAgree) {
+    const Scene s = box_scene(Light::Type::spot);
+    const Image ref = render_scene(s, kSize, kSize, shadowed()).image;
+    ShaderOptions no_depth = shadowed();
+    no_depth.depth = DepthPath::packed;
+    const RenderResult packed = render_scene(s, kSize, kSize, no_depth, {"no-depth-texture"});
+    EXPECT_LE(max_lsb(ref, packed.image), 1.0f);
+    const RenderResult maps_only = render_scene(s, kSize, kSize, shadowed(), {"no-shadow"});  // depth G-buffer, packed maps
+    EXPECT_LE(max_lsb(ref, maps_only.image), 1.0f);
+    for (LightGeometry g : {LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles, LightGeometry::automatic})
+        EXPECT_EQ(max_lsb(ref, render_scene(s, kSize, kSize, shadowed(g)).image), 0.0f) << light_geometry_name(g);
+}
+
+// --shadows off (shadow_lights false) ignores the scene's `shadow`: the image of the scene without
+// it, byte for byte, and no map drawn.
+TEST(Shadows, OffIgnoresTheScene) {
+    const Scene s = box_scene(Light::Type::spot);
+    Scene none = s;
+    none.lights[0].shadow.on = false;
+    ShaderOptions off = shadowed();
+    off.shadow_lights = false;
+    const RenderResult a = render_scene(s, kSize, kSize, off);
+    const RenderResult b = render_scene(none, kSize, kSize, off);
+    EXPECT_EQ(a.image.rgba, b.image.rgba);
+    EXPECT_EQ(a.stats.shadow_maps, 0);
+}
+
+// A still frame keeps the last frame's map (nothing drawn, the same image); --shadow-reuse off
+// draws it again; moving the light draws it again.
+TEST(Shadows, StillFramesReuseTheMaps) {
+    Scene s = box_scene(Light::Type::spot);
+    for (bool reuse : {true, false}) {
+        auto ctx = create_context(ContextDesc{"osmesa", kSize, kSize});
+        ShaderOptions o = shadowed();
+        o.shadows.reuse = reuse;
+        DeferredShader ds(probe_caps(), kSize, kSize, o, resource_dir("glsl120"));
+        ds.set_scene(s);
+        EXPECT_EQ(ds.render(s, kSize, kSize).shadow_maps, 1);
+        const Image first = read_pixels(kSize, kSize);
+        const FrameStats again = ds.render(s, kSize, kSize);
+        EXPECT_EQ(again.shadow_maps, reuse ? 0 : 1);
+        EXPECT_EQ(again.shadow_triangles, reuse ? 0 : 14);
+        EXPECT_EQ(read_pixels(kSize, kSize).rgba, first.rgba);
+        Scene moved = s;
+        moved.lights[0].pos.x += 0.25f;
+        EXPECT_EQ(ds.render(moved, kSize, kSize).shadow_maps, 1);
+    }
+}
