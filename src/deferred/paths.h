@@ -58,6 +58,12 @@ struct Paths {
 
 Paths choose_paths(const Caps& caps, const ShaderOptions& opts);
 
+// --accum: what this GL lacks for accumulation format `a` in one phrase ("needs float targets
+// (ARB_texture_float), which this GL lacks"), "" when it can (rgba8 always); `fbo`: the paths
+// render to texture. `dsr info` and choose_paths' refusal say it.
+std::string accum_format_missing(const Caps& caps, bool fbo, AccumFormat a);
+bool accum_format_ok(const Caps& caps, bool fbo, AccumFormat a);
+
 // One line per decision with its reason, for `dsr info`.
 std::string describe(const Paths& paths);
 const char* stencil_faces_name(Paths::StencilFaces f);  // "separate" | "two-side-ext" | "one-sided"
