@@ -442,6 +442,9 @@ TEST(Cli, FiguresWritesEveryFile) {
     // that is gone afterwards.
     for (const char* f : {"windmill_final", "windmill_normal", "windmill_specular"})
         EXPECT_TRUE(exists(d + "/" + f + ".png")) << f;
+    // Light beyond 1.0 (docs/hdr.md): the lights x4 in RGBA8 and in half floats with each operator.
+    for (const char* f : {"hdr_rgba8", "hdr_half_none", "hdr_half_reinhard", "hdr_half_aces", "hdr_half_aces_srgb"})
+        EXPECT_TRUE(exists(d + "/" + f + ".png")) << f;
     EXPECT_EQ(r.output.find("skipped"), std::string::npos) << r.output;
 }
 

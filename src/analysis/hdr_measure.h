@@ -39,11 +39,12 @@ struct Result {
     double clipped = 0;
     double ms_median = 0;  // whole frame, wall clock around glFinish on llvmpipe (FrameTimer)
     double exposure_scale = 1;
+    double accum_max = 0;  // the largest channel of P-buffer 0: 1 at most in RGBA8
 };
 
 // Renders every case at size x size in rgba8, half and float (none) and in half with reinhard and
-// aces, `frames` timed frames after one warm-up; formats the GL refuses are left out and said
-// through `say`. Needs a current context of at least size x size.
+// aces, `frames` timed frames each after one warm-up, interleaved across the configurations of a
+// scene; formats the GL refuses are left out and said through `say`. Needs a current context of at least size x size.
 std::vector<Result> measure(const Caps& caps, const std::string& shader_dir, const std::vector<Case>& cases, int size,
                             int frames, const std::function<void(const std::string&)>& say);
 

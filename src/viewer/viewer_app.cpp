@@ -262,6 +262,9 @@ bool Viewer::frame(const std::string* shot) {
         st_.luminance_histogram = lh.bins;
         st_.luminance_above_one = lh.above_one;
     }
+    // Dear ImGui's GL 2 backend draws by fixed function and binds no program of its own: the last
+    // pass may have left one (the tone-mapping final pass, the luminance reduction).
+    gl_state().apply(fixed_function_2d());
     ImGui_ImplOpenGL2_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
