@@ -5,6 +5,9 @@
 // colour: the first pass (SELECT) weights each tap by its mean squared intensity dot(t,t)/3,
 // which selects "regions with intense colors" (a contrast stretch), and the second pass is a
 // plain average. LISTING reproduces the listing in both passes (docs/errata.md).
+// SELECT_THRESHOLD (float accumulation, docs/hdr.md): the first pass keeps the part of each tap
+// whose luminance lies above `threshold`, t x max(L - T, 0) / L: light beyond the display's range,
+// not the clipped colour.
 #ifndef NUMPOINTS
 #define NUMPOINTS 7
 #endif
@@ -13,6 +16,9 @@ uniform vec2 offset[NUMPOINTS];
 uniform vec4 uv_clamp;  // content texels' centres: (min, max); keeps taps off power-of-two padding
 
 varying vec2 texcoord;
+#ifdef SELECT_THRESHOLD
+uniform float threshold;
+#endif
 
 void main()
 {
@@ -21,6 +27,9 @@ void main()
         vec3 t = texture2D(source, clamp(texcoord + offset[i], uv_clamp.xy, uv_clamp.zw)).rgb;
 #if defined(LISTING)
         sum += vec3(dot(t, t));
+#elif defined(SELECT_THRESHOLD)
+        float l = dot(t, vec3(0.2126, 0.7152, 0.0722));
+        sum += l > threshold ? t * ((l - threshold) / l) : vec3(0.0);
 #elif defined(SELECT)
         sum += t * (dot(t, t) / 3.0);
 #else

@@ -51,8 +51,11 @@ void shade(int i, vec3 pos, vec3 v, vec3 normal, vec3 diffuse, vec4 specular, fl
         return;
 #endif
 #endif
-    vec3 t = clamp(light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, v, normal,
-                                      diffuse, specular.rgb, shininess), 0.0, 1.0);
+    vec3 t = light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, v, normal,
+                                diffuse, specular.rgb, shininess);
+#ifndef ACCUM_FLOAT
+    t = clamp(t, 0.0, 1.0);  // a float P-buffer 0 (ACCUM_FLOAT) clamps nothing: the term as its pass would add it
+#endif
     // Each light's term clamped to [0, 1] as its own pass's blend would be and, into the RGBA8
     // P-buffer 0, rounded to the 8-bit step that pass would have written, as this GL rounds: the
     // sum then matches the quad geometry's image instead of differing by up to N/2 LSB.

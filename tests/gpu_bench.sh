@@ -12,7 +12,7 @@
 #                                    (GPU_BENCH_SMOKE=1: build, info and one small render only;
 #                                    GPU_BENCH_SIZES, _FRAMES, _LIGHTS: the bench's sweep;
 #                                    GPU_BENCH_PARTS: some of renders geometry targets ssao
-#                                    forward tiles auto groups shadows bench, default all)
+#                                    forward tiles auto groups shadows hdr bench, default all)
 #
 # The build links the system's libEGL/libOpenGL (glvnd, the NVIDIA driver behind them), never
 # libOSMesa; it is the same renderer objects as the headless build.
@@ -208,6 +208,16 @@ run)
             --lights 1-shadow,8-shadow,32-shadow,own-shadow --light-geometry auto,quad \
             --json "$out/gpu_bench_shadows_1920x1080.json" --report "$out/gpu_bench_shadows_1920x1080.md" \
             | tee "$out/gpu_bench_shadows_1920x1080.txt"
+    fi
+    # Light beyond 1.0 (docs/hdr.md): clipped pixels and frame ms per accumulation format and
+    # operator; the default scene x4 in each format at 1920x1080; `info`'s float blending lines.
+    if part hdr; then
+    $dsr info --context egl | grep -E "blending|--accum|sRGB" | tee "$out/hdr_info.txt"
+    $dsr hdr --context egl --size 1024 --frames ${GPU_BENCH_FRAMES:-50} | tee "$out/hdr.md"
+    for a in rgba8 half float; do
+        $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --accum $a --frames 60 \
+            --stats "$out/hdr_accum_$a.json" -o "$out/hdr_accum_$a.png"
+    done
     fi
     if part bench; then
     for s in ${GPU_BENCH_SIZES:-1920x1080}; do

@@ -80,6 +80,7 @@ std::string parse(const std::string& name, const std::vector<std::string>& argv)
         dsr::GenModelSettings gen_model;
         dsr::CompareSettings compare;
         dsr::ViewerConfig view;
+        dsr::HdrSettings hdr;
         const dsr::Command c = name == "render"    ? dsr::render_command(render)
                                : name == "figures" ? dsr::figures_command(figures)
                                : name == "bench"   ? dsr::bench_command(bench)
@@ -88,6 +89,7 @@ std::string parse(const std::string& name, const std::vector<std::string>& argv)
                                : name == "compare" ? dsr::compare_command(compare)
                                : name == "view"    ? dsr::view_command(view)
                                : name == "gen-model" ? dsr::gen_model_command(gen_model)
+                               : name == "hdr"     ? dsr::hdr_command(hdr)
                                                    : dsr::gen_textures_command(gen);
         dsr::parse_command_line(c, argv);
         return "";
@@ -101,7 +103,7 @@ std::string parse(const std::string& name, const std::vector<std::string>& argv)
 // command's table printed (help_text.h), so it lists every flag of the table, and for `render`
 // and `view` every renderer option.
 TEST(Cli, EveryCommandHasHelpListingItsTable) {
-    ASSERT_EQ(dsr::command_table().size(), 9u);
+    ASSERT_EQ(dsr::command_table().size(), 10u);
     for (const dsr::Command& c : dsr::command_table()) {
         RunResult r = run(c.name + " --help");
         EXPECT_EQ(r.status, 0) << c.name << ": " << r.output;
@@ -266,7 +268,7 @@ TEST(Cli, UnknownCommandOrOptionIsOneLine) {
     RunResult r = run("frobnicate");
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.output, "dsr: unknown command 'frobnicate' (expected render, figures, bench, stress, info, "
-                        "gen-textures, gen-model, compare, view; dsr --help lists them)\n");
+                        "gen-textures, gen-model, compare, view, hdr; dsr --help lists them)\n");
     for (const char* c : {"render --frobnicate", "stress --frobnicate"}) {
         RunResult o = run(c);
         EXPECT_EQ(o.status, 1) << c;
@@ -439,6 +441,9 @@ TEST(Cli, FiguresWritesEveryFile) {
     // Beside Figure 6, the windmill `dsr gen-model` writes, generated into a temporary folder
     // that is gone afterwards.
     for (const char* f : {"windmill_final", "windmill_normal", "windmill_specular"})
+        EXPECT_TRUE(exists(d + "/" + f + ".png")) << f;
+    // Light beyond 1.0 (docs/hdr.md): the lights x4 in RGBA8 and in half floats with each operator.
+    for (const char* f : {"hdr_rgba8", "hdr_half_none", "hdr_half_reinhard", "hdr_half_aces", "hdr_half_aces_srgb"})
         EXPECT_TRUE(exists(d + "/" + f + ".png")) << f;
     EXPECT_EQ(r.output.find("skipped"), std::string::npos) << r.output;
 }

@@ -120,6 +120,11 @@ TEST(ShaderTable, EveryRowCompilesWhereItIsUsed) {
         build(t);
     }
     build(ShaderOptions{}, {"no-mrt"});  // one material program per G-buffer target
+    ShaderOptions hdr;  // the final stage's program and auto exposure's reduction (docs/hdr.md)
+    hdr.hdr.accum = AccumFormat::half;
+    hdr.hdr.tonemap = ToneMap::aces;
+    hdr.hdr.exposure_auto = hdr.hdr.output_srgb = true;
+    build(hdr);
     for (const ShaderRow& r : shader_rows()) EXPECT_TRUE(used.count(r.name)) << r.name << " is used by none";
 }
 

@@ -21,6 +21,7 @@ Caps caps_for(int mask) {
     c.fbo = !(mask & 4);
     c.npot = !(mask & 8);
     c.texture_float = c.half_float = true;
+    c.half_float_blend = c.float_blend = true;
     c.occlusion_query = true;
     return c;
 }
@@ -88,9 +89,33 @@ TEST(Paths, FloatOptionsNeedFloatTargets) {
     o.gbuffer_half = true;
     EXPECT_NE(choose_paths(c, o).refused.find("half-float"), std::string::npos);
     o.gbuffer_half = false;
-    o.float_accum = true;
-    EXPECT_NE(choose_paths(c, o).refused.find("float accumulation"), std::string::npos);
+    o.hdr.accum = AccumFormat::float32;
+    EXPECT_NE(choose_paths(c, o).refused.find("--accum float"), std::string::npos);
     EXPECT_TRUE(choose_paths(caps_for(0), o).refused.empty());
+}
+
+// --accum half/float: refused in one line naming what is missing (targets, blending, render to
+// texture), and the stress runner's float accumulation where all are present.
+TEST(Paths, AccumFormatsNeedFloatTargetsAndBlending) {
+    ShaderOptions o;
+    EXPECT_TRUE(accum_format_ok(caps_for(0), true, AccumFormat::rgba8));
+    for (AccumFormat a : {AccumFormat::half, AccumFormat::float32}) {
+        o.hdr.accum = a;
+        SCOPED_TRACE(accum_format_name(a));
+        EXPECT_TRUE(choose_paths(caps_for(0), o).refused.empty());
+        Caps no_blend = caps_for(0);
+        (a == AccumFormat::half ? no_blend.half_float_blend : no_blend.float_blend) = false;
+        const std::string r = choose_paths(no_blend, o).refused;
+        EXPECT_NE(r.find("blending"), std::string::npos) << r;
+        EXPECT_EQ(r.find('\n'), std::string::npos) << "one line";
+        EXPECT_NE(choose_paths(caps_for(4), o).refused.find("EXT_framebuffer_object"), std::string::npos);
+    }
+    Caps half_only = caps_for(0);
+    half_only.float_blend = false;  // an NV40: half floats blend, 32-bit ones do not
+    o.hdr.accum = AccumFormat::half;
+    EXPECT_TRUE(choose_paths(half_only, o).refused.empty());
+    o.hdr.accum = AccumFormat::float32;
+    EXPECT_FALSE(choose_paths(half_only, o).refused.empty());
 }
 
 TEST(Paths, DescribeNamesEveryDecision) {

@@ -446,9 +446,8 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
             }
             float* px = out.image.at(i, j);
             if (hit.mesh < 0 || hit.t > far_plane) {
-                px[0] = scene.background.r;
-                px[1] = scene.background.g;
-                px[2] = scene.background.b;
+                const dvec3 bg = analytic_output(dvec3(scene.background), opts);
+                for (int k = 0; k < 3; ++k) px[k] = float(bg[k]);
                 continue;
             }
             out.mesh[size_t(j) * width + i] = hit.mesh;
@@ -550,10 +549,26 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
                 const dvec3 Ispec = std::pow(std::max(0.0, glm::dot(h, n)), Mshi) * Mspec * S;  // Eq. 4
                 c += pass(att * (Idiff + Ispec));                                                // Eq. 1
             }
-            for (int k = 0; k < 3; ++k) px[k] = float(std::clamp(c[k], 0.0, 1.0));
+            c = analytic_output(c, opts);
+            for (int k = 0; k < 3; ++k) px[k] = float(c[k]);
         }
     }
     return out;
+}
+
+glm::dvec3 analytic_output(glm::dvec3 c, const AnalyticOptions& opts) {
+    using glm::dvec3;
+    c = glm::max(c, dvec3(0.0)) * std::exp2(opts.exposure);
+    if (opts.tonemap == ToneMap::reinhard) {  // Reinhard et al. 2002, Eq. 3, on Rec. 709 luminance
+        const double L = glm::dot(c, dvec3(0.2126, 0.7152, 0.0722));
+        c = L > 0 ? c / (1.0 + L) : dvec3(0.0);
+    } else if (opts.tonemap == ToneMap::aces) {  // Narkowicz 2016's fit, per channel
+        c = (c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14);
+    }
+    c = glm::clamp(c, 0.0, 1.0);
+    if (opts.srgb_output)  // IEC 61966-2-1
+        for (int k = 0; k < 3; ++k) c[k] = c[k] <= 0.0031308 ? 12.92 * c[k] : 1.055 * std::pow(c[k], 1.0 / 2.4) - 0.055;
+    return c;
 }
 
 Image analytic_reference(const Scene& scene, int width, int height) {

@@ -43,6 +43,7 @@
 #include <glm/glm.hpp>
 
 #include "analysis/image_metrics.h"
+#include "deferred/options.h"
 #include "scene/image.h"
 #include "scene/scene.h"
 
@@ -74,7 +75,16 @@ struct AnalyticOptions {
     bool shadows = true;                  // a shadow ray for each light with shadow.on; false:
                                           // every light passes through everything (--shadows off)
     std::map<int, BumpMap> bump_maps;     // texture index -> the formula its normal map was made from
+    // The final stage's mapping (docs/hdr.md), written again here from the formulas, in double:
+    // the unclamped sum (background included) scaled by 2^exposure, mapped by the operator and
+    // clamped, then sRGB-encoded with srgb_output. The defaults are the clamp of the plain trace.
+    ToneMap tonemap = ToneMap::none;
+    double exposure = 0;                  // stops
+    bool srgb_output = false;
 };
+
+// That mapping of one linear colour (pure; analytic_trace applies it to every pixel).
+glm::dvec3 analytic_output(glm::dvec3 c, const AnalyticOptions& opts);
 
 struct AnalyticTrace {
     Image image;             // RGBA, alpha 1, row 0 = bottom (like dsr::read_pixels)

@@ -175,7 +175,7 @@ std::string forward_bound(const std::vector<Row>& rows, const std::string& label
     for (const Row& r : rows)
         if (r.lights_label == label) {
             if (r.renderer == Renderer::deferred && skips_off(r.skip).empty() && !r.gbuffer_half &&
-                r.light_geometry != LightGeometry::screen && (!best || r.ms_median < best->ms_median))
+                r.accum_format == AccumFormat::rgba8 && r.light_geometry != LightGeometry::screen && (!best || r.ms_median < best->ms_median))
                 best = &r;
             if (r.renderer == Renderer::forward_single && (!fwd || r.ms_median < fwd->ms_median)) fwd = &r;
         }

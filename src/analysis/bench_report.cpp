@@ -23,7 +23,8 @@ json row_json(const Row& r) {
     json j;
     j["scene"] = r.scene;
     j["renderer"] = renderer_name(r.renderer);
-    j["accum"] = !deferred && r.float_accum ? json(*r.float_accum ? "float" : "rgba8") : json(nullptr);
+    j["accum"] = deferred ? json(accum_format_name(r.accum_format))
+                 : r.float_accum ? json(*r.float_accum ? "float" : "rgba8") : json(nullptr);
     j["depth"] = deferred ? json(depth_path_name(r.depth)) : json(nullptr);
     j["encoding"] = deferred && r.depth == DepthPath::packed ? json(encoding_name(r.encoding)) : json(nullptr);
     j["gbuffer"] = deferred ? json(r.gbuffer_half ? "half" : "rgba8") : json(nullptr);
@@ -320,7 +321,8 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
        << light_geometry_markdown(s.rows)
        << "## Table\n\n"
        << "- *configuration*: `deferred DEPTH[/ENCODING] sc|-` (scissor on or off), `half` for half-float "
-          "G-buffer targets (RGBA8 otherwise, as the tutorial), and `no-SKIP` for a skip turned off (all "
+          "G-buffer targets (RGBA8 otherwise, as the tutorial), `accum-half` / `accum-float` for P-buffer 0 in "
+          "RGBA16F / RGBA32F (docs/hdr.md; JSON `accum`), and `no-SKIP` for a skip turned off (all "
           "are on otherwise); `forward-single` is Listing 3 (all of an object's lights "
           "in one pass), `forward-multi` Listing 4 (one additive pass per light and object); `float`: they "
           "accumulate in an RGBA32F target copied to the main buffer once, `rgba8`: straight into the RGBA8 main "

@@ -114,6 +114,7 @@ std::unique_ptr<RowRun> deferred(const Setup& st, const Variant& v, const Row& w
     o.scissor = want.scissor;
     o.skip = want.skip;
     o.gbuffer_half = want.gbuffer_half;
+    o.hdr.accum = want.accum_format;
     o.post.bloom = o.post.aa = false;  // the tutorial's core passes only; post costs the same on every row
     for (const Light& l : v.scene.lights) o.shadow_lights = o.shadow_lights || l.shadow.on;  // the shadow rows
     auto run = std::make_unique<RowRun>();
@@ -124,6 +125,7 @@ std::unique_ptr<RowRun> deferred(const Setup& st, const Variant& v, const Row& w
     r.depth = want.depth;
     r.encoding = want.encoding;
     r.gbuffer_half = want.gbuffer_half;
+    r.accum_format = want.accum_format;
     r.scissor = want.scissor;
     r.skip = want.skip;
     r.gbuffer_bytes_per_pixel = run->ds->paths().gbuffer_bytes_per_pixel;
@@ -236,6 +238,15 @@ Runs build_runs(const Setup& st, const Variant& v, bool first, std::vector<std::
         const std::string refused = choose_paths(st.caps, probe).refused;
         if (refused.empty()) add(config(d, true));
         else if (first) notes.push_back(std::string(depth_path_name(d)) + " rows left out: " + refused);
+    }
+    // P-buffer 0 in half or float (--accum, docs/hdr.md) on the default configuration, where the GL
+    // renders into and blends float targets: what accumulation beyond 1.0 costs.
+    for (AccumFormat a : {AccumFormat::half, AccumFormat::float32}) {
+        const std::string missing = accum_format_missing(st.caps, st.caps.fbo, a);
+        Row r = config(DepthPath::texture, true);
+        r.accum_format = a;
+        if (missing.empty()) add(r);
+        else if (first) notes.push_back(std::string("--accum ") + accum_format_name(a) + " rows left out: " + missing);
     }
     // Higher-precision G-buffer targets where the GL has them.
     if (st.caps.texture_float && st.caps.half_float) {
@@ -389,7 +400,7 @@ std::vector<std::string> skips_off(const SkipOptions& skip) {
 
 bool default_configuration(const Row& r) {
     return r.renderer == Renderer::deferred && r.depth == DepthPath::texture && r.scissor &&
-           skips_off(r.skip).empty() && !r.gbuffer_half;
+           skips_off(r.skip).empty() && !r.gbuffer_half && r.accum_format == AccumFormat::rgba8;
 }
 
 std::string config_text(const Row& r) {
@@ -399,6 +410,7 @@ std::string config_text(const Row& r) {
     if (r.depth == DepthPath::packed) s += std::string("/") + encoding_name(r.encoding);
     s += r.scissor ? " sc" : " -";
     if (r.gbuffer_half) s += " half";
+    if (r.accum_format != AccumFormat::rgba8) s += std::string(" accum-") + accum_format_name(r.accum_format);
     for (auto& k : skips_off(r.skip)) s += " no-" + k;
     if (r.light_geometry != LightGeometry::quad) s += std::string(" ") + light_geometry_name(r.light_geometry);
     if (r.tile_size && r.tile_lights) s += " " + std::to_string(*r.tile_size) + "/" + std::to_string(*r.tile_lights);

@@ -64,6 +64,7 @@ struct Row {
     DepthPath depth = DepthPath::texture;
     DepthEncoding encoding = DepthEncoding::corrected;
     bool gbuffer_half = false;
+    AccumFormat accum_format = AccumFormat::rgba8;  // deferred rows: P-buffer 0 (--accum, docs/hdr.md); JSON `accum`
     LightGeometry light_geometry = LightGeometry::quad;
     std::optional<int> tile_size, tile_lights;
     bool scissor = false;

@@ -48,7 +48,7 @@ struct StressCase {
     std::string path;       // "texture" or an encoding name
     Scene scene;
     int width = 256, height = 256;
-    // depth path, encoding, skips, scissor (the runner sets float_accum); the tutorial's quad per
+    // depth path, encoding, skips, scissor (the runner sets --accum float); the tutorial's quad per
     // light unless `dsr stress --light-geometry` says otherwise
     ShaderOptions opts = [] {
         ShaderOptions o;

@@ -110,7 +110,7 @@ StressResult StressRunner::run(const StressCase& c) {
     if (w > max_w_ || h > max_h_) throw Error("stress case " + c.name + " is larger than the context");
 
     ShaderOptions opts = c.opts;
-    opts.float_accum = true;  // P-buffers 0 and 1 in RGBA32F: NaN and Inf survive to be counted
+    opts.hdr.accum = AccumFormat::float32;  // P-buffers in RGBA32F: NaN and Inf survive to be counted
     char key[200];
     std::snprintf(key, sizeof key, "%dx%d %d %d skip%d%d%d%d scissor%d geometry%d shadows%d%d%d", w, h,
                   int(opts.depth), int(opts.encoding), opts.skip.material_variants, opts.skip.empty_lights,

@@ -241,6 +241,17 @@ Command info_command(InfoSettings& s) {
     return c;
 }
 
+Command hdr_command(HdrSettings& s) {
+    Command c{"hdr",
+              "light beyond 1.0 (docs/hdr.md): clipped pixels and frame ms with P-buffer 0 in RGBA8, half and float, "
+              "and each tone-mapping operator, on three scenes with lights brighter than 1",
+              {}, nullptr, {}, nullptr, ""};
+    c.flags = {int_flag("--size", "N", 64, 4096, s.size, "square size of the frames"),
+               int_flag("--frames", "N", 1, 1000, s.frames, "timed frames per configuration (the median is printed)"),
+               caps_flag(s.caps), context_flag(s.context), egl_device_flag(s.context)};
+    return c;
+}
+
 Command gen_textures_command(GenTexturesSettings& s) {
     return Command{"gen-textures", "write the default scene's procedural textures",
                    {Operand{"DIR", "folder to write the textures into", false}},
@@ -309,13 +320,15 @@ const std::vector<Command>& command_table() {
     static BenchSettings bench;
     static StressSettings stress;
     static InfoSettings info;
+    static HdrSettings hdr;
     static GenTexturesSettings gen_textures;
     static GenModelSettings gen_model;
     static CompareSettings compare;
     static ViewerConfig view;
     static const std::vector<Command> t = {render_command(render), figures_command(figures), bench_command(bench),
                                            stress_command(stress),  info_command(info),       gen_textures_command(gen_textures),
-                                           gen_model_command(gen_model), compare_command(compare), view_command(view)};
+                                           gen_model_command(gen_model), compare_command(compare), view_command(view),
+                                           hdr_command(hdr)};
     return t;
 }
 

@@ -80,6 +80,13 @@ struct InfoSettings {
     ContextSettings context;
 };
 
+struct HdrSettings {
+    int size = 256;               // square
+    int frames = 5;               // timed frames per configuration, after one warm-up
+    std::string caps;
+    ContextSettings context;
+};
+
 struct CompareSettings {
     std::vector<std::string> files;
     double threshold_lsb = 2.0;
@@ -99,6 +106,7 @@ Command figures_command(FiguresSettings& s);
 Command bench_command(BenchSettings& s);
 Command stress_command(StressSettings& s);
 Command info_command(InfoSettings& s);
+Command hdr_command(HdrSettings& s);
 Command gen_textures_command(GenTexturesSettings& s);
 Command gen_model_command(GenModelSettings& s);
 Command compare_command(CompareSettings& s);

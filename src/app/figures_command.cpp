@@ -183,6 +183,35 @@ int cmd_figures(const std::vector<std::string>& argv) {
         save("windmill_normal.png", view(ds, View::normal));
         save("windmill_specular.png", view(ds, View::specular));
     }
+    // Light beyond 1.0 (docs/hdr.md): the default scene with its lights x4, with the tutorial's RGBA8
+    // P-buffer 0 (sums clip at 1) and in half floats with each operator of the final stage; last, the
+    // linear pipeline whole (sRGB colour maps decoded, ACES, sRGB output). Only with the default scene.
+    if (default_scene) {
+        Scene bright = scene;
+        for (Light& l : bright.lights) l.color *= 4.0f;
+        struct HdrFigure {
+            const char* file;
+            AccumFormat accum;
+            ToneMap tonemap;
+            bool srgb;
+        };
+        const HdrFigure figures[] = {{"hdr_rgba8.png", AccumFormat::rgba8, ToneMap::none, false},
+                                     {"hdr_half_none.png", AccumFormat::half, ToneMap::none, false},
+                                     {"hdr_half_reinhard.png", AccumFormat::half, ToneMap::reinhard, false},
+                                     {"hdr_half_aces.png", AccumFormat::half, ToneMap::aces, false},
+                                     {"hdr_half_aces_srgb.png", AccumFormat::half, ToneMap::aces, true}};
+        for (const HdrFigure& h : figures) {
+            if (!accum_format_ok(caps, caps.fbo, h.accum)) continue;  // a GL without float targets: left out
+            ShaderOptions o = plain;
+            o.hdr.accum = h.accum;
+            o.hdr.tonemap = h.tonemap;
+            o.hdr.output_srgb = o.hdr.textures_srgb = h.srgb;
+            DeferredShader ds(caps, n, n, o, shaders);
+            ds.set_scene(bright);
+            ds.render(bright, n, n);
+            save(h.file, view(ds, View::final));
+        }
+    }
     outputs.commit();
     for (auto& w : outputs.written()) std::printf("wrote %s\n", w.c_str());
     return 0;

@@ -58,6 +58,15 @@ int cmd_info(const std::vector<std::string>& argv) {
     std::printf("  --render-target pbuffer: %s\n",
                 offscreen_surfaces() ? ("EGL pbuffer surfaces; " + offscreen_surfaces()->bind_tex_image_note()).c_str()
                                      : "refused (this context has no pbuffer surfaces: --context egl)");
+    for (AccumFormat a : {AccumFormat::half, AccumFormat::float32}) {  // docs/hdr.md
+        const std::string missing = accum_format_missing(caps, paths.fbo, a);
+        std::printf("  --accum %-5s   %s\n", accum_format_name(a),
+                    missing.empty() ? (a == AccumFormat::half ? "RGBA16F P-buffer 0, additive blending measured unclamped"
+                                                              : "RGBA32F P-buffer 0, additive blending measured unclamped")
+                                    : ("refused: " + missing).c_str());
+    }
+    std::printf("  --textures srgb %s\n", caps.texture_srgb ? "EXT_texture_sRGB: colour maps decoded when sampled"
+                                                           : "no EXT_texture_sRGB: colour maps decoded on upload into RGBA16");
     if (caps.fbo) std::fputs(describe(probe_unorm8_rounding()).c_str(), stdout);
     const TimingCheck& t = choose_timing(caps, ctx->width(), ctx->height());
     std::printf("  timing         %s (%s", timing_name(t.source), t.reason.c_str());

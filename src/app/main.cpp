@@ -22,7 +22,7 @@ const Run kRuns[] = {
     {"render", dsr::cmd_render}, {"figures", dsr::cmd_figures}, {"bench", dsr::cmd_bench},
     {"stress", dsr::cmd_stress}, {"info", dsr::cmd_info},       {"gen-textures", dsr::cmd_gen_textures},
     {"compare", dsr::cmd_compare},      {"view", dsr::cmd_view},
-    {"gen-model", dsr::cmd_gen_model},
+    {"gen-model", dsr::cmd_gen_model},  {"hdr", dsr::cmd_hdr},
 };
 
 }  // namespace

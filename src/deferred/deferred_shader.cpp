@@ -37,6 +37,7 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
     lighting_ = std::make_unique<LightingStage>(config_, programs, width, height);
     forward_ = std::make_unique<ForwardStage>(shader_dir, config_.opts);
     post_ = std::make_unique<PostStage>(config_, programs);
+    final_.set_up(config_, programs);
     timer_.set_source(choose_timing(caps, width, height).source);
     check_gl("creating the deferred shader");
 }
@@ -53,7 +54,10 @@ void DeferredShader::resize(int width, int height) {
 }
 
 void DeferredShader::set_scene(const Scene& scene) {
-    gpu_ = std::make_unique<GpuScene>(scene, !config_.caps.npot);
+    const ColourMaps maps = !config_.opts.hdr.textures_srgb ? ColourMaps::as_stored
+                            : config_.caps.texture_srgb    ? ColourMaps::srgb_texture
+                                                           : ColourMaps::decoded_on_upload;
+    gpu_ = std::make_unique<GpuScene>(scene, !config_.caps.npot, maps);
     // Transparent materials are drawn by the forward stage, which needs the scene's depth in
     // P-buffer 0: where the options did not foresee them (RenderOptions::resolved does), the paths
     // are chosen again, the buffers reallocated and the depth hand-off built; no other shader is.
@@ -103,9 +107,10 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     draw_lights(f, scene, st);                                          // 2. lighting stage
     post_stage(f);                                                      // 3. post-processing
     // 4. final stage, unless the caller reads P-buffer 0 itself at its own size (read_output): then
-    // the fixed-function copy into the main frame buffer would give it the same bytes.
+    // the fixed-function copy into the main frame buffer would give it the same bytes. Not with a
+    // float P-buffer 0, nor where the final pass maps or encodes (docs/hdr.md).
     final_skipped_ = config_.opts.skip.final_pass && read_back_ && out_w == width() && out_h == height() &&
-                     !config_.opts.float_accum;
+                     !config_.opts.hdr.float_accum() && !config_.opts.hdr.final_program();
     st.final_pass_ran = !final_skipped_;
     if (!final_skipped_) timed(timer_, S_FINAL, [&] { final_.draw(*targets_, out_w, out_h); });
     std::vector<double> ms;

@@ -76,6 +76,12 @@ public:
     void draw_bloom();
     void draw_anti_alias(bool factor_only = false);
 
+    // High dynamic range (docs/hdr.md): the exposure scale the last final pass applied (1 on the
+    // fixed-function path), and P-buffer 0's luminance reduced to (mean log2, max) per block
+    // (FinalStage::reduce_luminance; empty without the log_luminance program), after render().
+    float exposure_scale() const { return final_.exposure_scale(); }
+    std::vector<glm::vec2> reduce_luminance() { return final_.reduce_luminance(*targets_); }
+
     // Read-back (views and tests): a G-buffer target or its depth texture (PBuffer::DEPTH, grey).
     Image read_gbuffer(int target);
     // The depth texture's raw GL_UNSIGNED_INT codes (24-bit depth in the high bits), w x h, row 0

@@ -9,6 +9,13 @@
 
 namespace dsr {
 
+float srgb_to_linear(float c) {
+    // IEC 61966-2-1: linear below 0.04045, else ((c + 0.055) / 1.055)^2.4. The 8-bit code first,
+    // as EXT_texture_sRGB decodes the stored byte.
+    c = std::round(std::clamp(c, 0.0f, 1.0f) * 255.0f) / 255.0f;
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
 float encode_shininess(float shininess) {
     return std::clamp(std::log2(std::max(shininess, 1.0f)) / 11.0f, 0.0f, 1.0f);
 }
@@ -36,7 +43,7 @@ static Image resample_wrapped(const Image& src, int w, int h) {
 
 static bool is_pow2(int v) { return v > 0 && (v & (v - 1)) == 0; }
 
-GpuScene::GpuScene(const Scene& scene, bool pow2_textures) {
+GpuScene::GpuScene(const Scene& scene, bool pow2_textures, ColourMaps colour_maps) {
     // Every mesh once, in object space (instances of one OBJ group share it).
     std::vector<Vertex> verts;
     std::vector<uint32_t> idx;
@@ -75,18 +82,35 @@ GpuScene::GpuScene(const Scene& scene, bool pow2_textures) {
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 
-    // Material maps: RGBA8 with mipmaps, repeating (tile > 1 wraps, Listing 13).
-    for (const Image& img : scene.textures) {
+    // Material maps: RGBA8 with mipmaps, repeating (tile > 1 wraps, Listing 13). With --textures
+    // srgb the diffuse maps (only they hold colour) are decoded (ColourMaps).
+    std::vector<bool> colour(scene.textures.size(), false);
+    if (colour_maps != ColourMaps::as_stored)
+        for (const Material& m : scene.materials)
+            if (m.diffuse_map >= 0) colour.at(size_t(m.diffuse_map)) = true;
+    for (size_t t = 0; t < scene.textures.size(); ++t) {
+        const Image& img = scene.textures[t];
+        Image r;
+        const Image* up = &img;
         if (pow2_textures && !(is_pow2(img.width) && is_pow2(img.height))) {
             int w = 1, h = 1;
             while (w * 2 <= img.width) w *= 2;  // nearest power of two at or below
             while (h * 2 <= img.height) h *= 2;
-            Image r = resample_wrapped(img, w, h);
-            textures_.emplace_back(w, h, GL_RGBA8, GL_RGBA, GL_FLOAT, r.rgba.data(), GL_LINEAR, GL_REPEAT, true);
-        } else {
-            textures_.emplace_back(img.width, img.height, GL_RGBA8, GL_RGBA, GL_FLOAT, img.rgba.data(), GL_LINEAR,
-                                   GL_REPEAT, true);
+            r = resample_wrapped(img, w, h);
+            up = &r;
         }
+        GLenum internal = GL_RGBA8;
+        Image decoded;
+        if (colour[t] && colour_maps == ColourMaps::srgb_texture) {
+            internal = GL_SRGB8_ALPHA8;  // stored as the file's codes, decoded by the GL when sampled
+        } else if (colour[t]) {
+            decoded = *up;  // decoded here; alpha is linear in sRGB images
+            for (size_t i = 0; i < decoded.rgba.size(); ++i)
+                if (i % 4 != 3) decoded.rgba[i] = srgb_to_linear(decoded.rgba[i]);
+            up = &decoded;
+            internal = GL_RGBA16;
+        }
+        textures_.emplace_back(up->width, up->height, internal, GL_RGBA, GL_FLOAT, up->rgba.data(), GL_LINEAR, GL_REPEAT, true);
     }
     // A missing diffuse or specular map is a white texel: map x colour = colour exactly.
     const float one[4] = {1, 1, 1, 1};

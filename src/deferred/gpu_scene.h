@@ -23,12 +23,20 @@ struct GpuMaterial {
     float opacity = 1;         // below 1: transparent, drawn by the forward stage (docs/forward.md)
 };
 
+// --textures srgb: the diffuse maps decoded from sRGB to linear when sampled, by the GL
+// (EXT_texture_sRGB: GL_SRGB8_ALPHA8) or on upload (into GL_RGBA16, where 8 linear bits would band
+// the dark end); as_stored: RGBA8, as the tutorial.
+enum class ColourMaps { as_stored, srgb_texture, decoded_on_upload };
+
 struct DrawRange {
     GLsizei count = 0;        // indices
     size_t first = 0;         // first index
     int material = 0;
     size_t object = 0;        // index into Scene::objects
 };
+
+// IEC 61966-2-1's decoding of a value stored as an 8-bit sRGB code (rounded to one first).
+float srgb_to_linear(float c);
 
 // Inverse of decode_shininess in glsl120/lighting.glsl.
 float encode_shininess(float shininess);
@@ -37,7 +45,9 @@ class GpuScene {
 public:
     // pow2_textures: without ARB_texture_non_power_of_two, material maps are rescaled to
     // powers of two (texture coordinates are unchanged: maps repeat).
-    explicit GpuScene(const Scene& scene, bool pow2_textures = false);
+    // colour_maps: how the diffuse maps are stored (--textures, docs/hdr.md); normal and specular
+    // maps are always uploaded as they are.
+    explicit GpuScene(const Scene& scene, bool pow2_textures = false, ColourMaps colour_maps = ColourMaps::as_stored);
     ~GpuScene();
     GpuScene(const GpuScene&) = delete;
     GpuScene& operator=(const GpuScene&) = delete;

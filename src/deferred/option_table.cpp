@@ -257,6 +257,45 @@ std::vector<RenderOption> make_table() {
                        [](RenderOptions& r, const std::string& v) { r.shader.shadows.reuse = v == "on"; }};
     add(reuse, "keep a light's shadow map from the last frame while neither the light nor anything in its "
                "views moved (on), or draw every map every frame (off: what the shadow stage costs)");
+    // High dynamic range (docs/hdr.md): P-buffer 0's format, the final stage's tone mapping and
+    // encodings, the colour maps' decoding.
+    add(choice(
+            "accum", {"rgba8", "half", "float"}, [](const RenderOptions& r) { return std::string(accum_format_name(r.shader.hdr.accum)); },
+            [](RenderOptions& r, const std::string& v) {
+                r.shader.hdr.accum = v == "half" ? AccumFormat::half : v == "float" ? AccumFormat::float32 : AccumFormat::rgba8;
+            }),
+        "P-buffer 0's format (and the post buffers that read it): RGBA8 as the tutorial, where light sums clip "
+        "at 1, or RGBA16F / RGBA32F, where they add without clamping (needs float targets and float blending)");
+    add(choice(
+            "tonemap", {"none", "reinhard", "aces"}, [](const RenderOptions& r) { return std::string(tone_map_name(r.shader.hdr.tonemap)); },
+            [](RenderOptions& r, const std::string& v) {
+                r.shader.hdr.tonemap = v == "reinhard" ? ToneMap::reinhard : v == "aces" ? ToneMap::aces : ToneMap::none;
+            }),
+        "the final stage's operator: none (clamp; with the other defaults the tutorial's fixed-function final "
+        "pass), Reinhard et al. 2002's L/(1+L) on luminance, or Narkowicz's fit of the ACES filmic curve");
+    RenderOption exposure{"exposure", OptionKind::number, {"auto"}, -16.0f, 16.0f, true,
+                          [](const RenderOptions& r) {
+                              return r.shader.hdr.exposure_auto ? std::string("auto") : format_number(r.shader.hdr.exposure);
+                          },
+                          [](RenderOptions& r, const std::string& v) {
+                              r.shader.hdr.exposure_auto = v == "auto";
+                              r.shader.hdr.exposure = v == "auto" ? 0.0f : std::strtof(v.c_str(), nullptr);
+                          }};
+    exposure.arg = "E";
+    add(exposure, "stops the linear colour is scaled by (2^E) before the operator; auto: the frame's mean log "
+                  "luminance, from a reduced copy of P-buffer 0, brought to 0.18 (needs float targets)");
+    add(choice(
+            "output-encoding", {"linear", "srgb"}, [](const RenderOptions& r) { return r.shader.hdr.output_srgb ? "srgb" : "linear"; },
+            [](RenderOptions& r, const std::string& v) { r.shader.hdr.output_srgb = v == "srgb"; }),
+        "the image's encoding: linear values written as they are (the tutorial's), or sRGB-encoded in the final pass");
+    add(choice(
+            "textures", {"linear", "srgb"}, [](const RenderOptions& r) { return r.shader.hdr.textures_srgb ? "srgb" : "linear"; },
+            [](RenderOptions& r, const std::string& v) { r.shader.hdr.textures_srgb = v == "srgb"; }),
+        "colour maps as stored (linear, the tutorial's) or decoded from sRGB when sampled (EXT_texture_sRGB, else "
+        "converted on upload into 16-bit targets); normal and specular maps are never decoded");
+    add(number("bloom-threshold", "T", 0.0f, 64.0f, &ShaderOptions::post, &PostOptions::bloom_threshold),
+        "with float accumulation, bloom's bright pass keeps the part of each colour whose luminance is above T "
+        "(the RGBA8 path keeps Listing 22's selection)");
     return t;
 }
 
@@ -316,11 +355,13 @@ std::string check_render_option(const RenderOption& o, const std::string& v) {
                 if (v == a) return "";
             return "expected " + joined(o.values, "|") + ", got " + quote(v);
         case OptionKind::number: {
+            for (const std::string& a : o.values)  // words it also takes (auto)
+                if (v == a) return "";
             char* end = nullptr;
             errno = 0;
             const double d = v.empty() ? 0 : std::strtod(v.c_str(), &end);
             if (v.empty() || errno != 0 || *end != '\0' || !(d >= o.lo && d <= o.hi))
-                return "expected a number in [" + std::to_string(o.lo) + ", " + std::to_string(o.hi) + "], got " + quote(v);
+                return "expected " + (o.values.empty() ? std::string() : joined(o.values, "|") + " or ") + "a number in [" + std::to_string(o.lo) + ", " + std::to_string(o.hi) + "], got " + quote(v);
             return "";
         }
         case OptionKind::integer: {
@@ -361,7 +402,7 @@ std::string option_arg(const RenderOption& o) {
         case OptionKind::choice:
         case OptionKind::on_off: return joined(o.values, "|");
         case OptionKind::toggle: return "";
-        case OptionKind::number: return o.arg.empty() ? "X" : o.arg;
+        case OptionKind::number: return (o.values.empty() ? "" : joined(o.values, "|") + "|") + (o.arg.empty() ? "X" : o.arg);
         case OptionKind::integer: return (o.values.empty() ? "" : joined(o.values, "|") + "|") + (o.arg.empty() ? "N" : o.arg);
         case OptionKind::subset: return "LIST";
     }

@@ -50,6 +50,29 @@ enum class TileGrouping { lists, groups };
 // writing gl_FragDepth from the G-buffer's depth, decoding the packed target on the packed path).
 enum class DepthHandoff { automatic, blit, pass };
 
+// High dynamic range (docs/hdr.md). P-buffer 0's format: the tutorial's RGBA8, whose sums clip at
+// 1.0, or RGBA16F / RGBA32F (ARB_texture_float, ARB_half_float_pixel, float blending), where light
+// sums above 1 survive to the final stage's tone mapping.
+enum class AccumFormat { rgba8, half, float32 };
+const char* accum_format_name(AccumFormat a);  // "rgba8", "half", "float"
+// The final stage's operator on the exposed linear colour: none (clamped, the tutorial's
+// fixed-function final pass when nothing else is asked), Reinhard et al. 2002's global operator
+// on luminance, or Narkowicz's fit of the ACES filmic curve per channel.
+enum class ToneMap { none, reinhard, aces };
+const char* tone_map_name(ToneMap t);  // "none", "reinhard", "aces"
+
+struct HdrOptions {
+    AccumFormat accum = AccumFormat::rgba8;
+    ToneMap tonemap = ToneMap::none;
+    float exposure = 0;          // stops: the colour is scaled by 2^exposure before the operator
+    bool exposure_auto = false;  // the scale from the frame's mean log luminance (key 0.18) instead
+    bool output_srgb = false;    // the final pass encodes to sRGB (IEC 61966-2-1); default linear
+    bool textures_srgb = false;  // colour maps decoded from sRGB to linear when sampled
+    bool float_accum() const { return accum != AccumFormat::rgba8; }
+    // The final pass is a program (tonemap.frag), not the tutorial's fixed-function copy.
+    bool final_program() const { return tonemap != ToneMap::none || output_srgb || exposure_auto || exposure != 0; }
+};
+
 enum class AaSource { normal, depth, both };
 enum class AaKernel { text, listing };
 
@@ -60,6 +83,7 @@ struct PostOptions {
     int bloom_taps = 7;            // NUMPOINTS of Listing 22 (odd, 3..15)
     float bloom_strength = 1.0f;   // weight of the fixed-function add into P-buffer 0
     bool bloom_listing = false;    // Listing 22's grey dot(t,t) in both passes; default keeps colour
+    float bloom_threshold = 1.0f;  // float accumulation: the bright pass keeps what lies above this luminance
     bool aa = false;
     AaSource aa_source = AaSource::normal;  // Eq. 7 over the normal target, depth, or both
     AaKernel aa_kernel = AaKernel::text;    // text: all 8 neighbours; listing: Listing 21's table
@@ -114,7 +138,7 @@ struct ShaderOptions {
     bool scissor = true;            // §3.4.2 light scissor rectangles
     PostOptions post;
     SkipOptions skip;
-    bool float_accum = false;       // P-buffer 0 as RGBA32F (stress tests: NaN/Inf survive)
+    HdrOptions hdr;                 // P-buffer 0's format, tone mapping, output and texture encodings
     // G-buffer target precision: the tutorial's RGBA8 everywhere (Figure 3), or half-float
     // targets (ARB_texture_float + ARB_half_float_pixel) where 8-bit normals are the largest
     // error of the deferred image.

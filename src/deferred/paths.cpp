@@ -38,6 +38,22 @@ void choose_gbuffer_formats(const Caps& caps, const ShaderOptions& opts, Paths& 
 
 }  // namespace
 
+std::string accum_format_missing(const Caps& caps, bool fbo, AccumFormat a) {
+    if (a == AccumFormat::rgba8) return "";
+    const bool half = a == AccumFormat::half;
+    if (!fbo) return "needs render to texture (EXT_framebuffer_object): without it P-buffer 0 is copied from the 8-bit main frame buffer" +
+                     forced_note(caps, "no-fbo");
+    if (!caps.texture_float || (half && !caps.half_float))
+        return std::string("needs float targets (ARB_texture_float") + (half ? " and ARB_half_float_pixel" : "") +
+               "), which this GL lacks" + forced_note(caps, "no-float");
+    if (half ? !caps.half_float_blend : !caps.float_blend)
+        return std::string("needs additive blending into ") + (half ? "RGBA16F" : "RGBA32F") +
+               " targets, which this GL does not do (measured)" + forced_note(caps, "no-float-blend");
+    return "";
+}
+
+bool accum_format_ok(const Caps& caps, bool fbo, AccumFormat a) { return accum_format_missing(caps, fbo, a).empty(); }
+
 Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     Paths p;
     if (opts.depth == DepthPath::automatic)
@@ -108,8 +124,11 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
                     "), which this GL lacks" + forced_note(caps, "no-float") + " (use --depth texture or packed)";
     else if (p.depth_path == DepthPath::texture && !caps.depth_texture)
         p.refused = "--depth texture needs ARB_depth_texture, which is missing (use --depth packed)";
-    else if (opts.float_accum && !(caps.texture_float && p.fbo))
-        p.refused = "float accumulation needs ARB_texture_float and EXT_framebuffer_object";
+    else if (opts.hdr.float_accum() && !accum_format_ok(caps, p.fbo, opts.hdr.accum))
+        p.refused = "--accum " + std::string(accum_format_name(opts.hdr.accum)) + " " + accum_format_missing(caps, p.fbo, opts.hdr.accum);
+    else if (opts.hdr.exposure_auto && !(caps.texture_float && p.fbo))
+        p.refused = "--exposure auto reduces P-buffer 0's log luminance into a float target: it needs ARB_texture_float and "
+                    "EXT_framebuffer_object" + forced_note(caps, "no-float") + forced_note(caps, "no-fbo");
     else if (opts.gbuffer_half && !(caps.half_float && caps.texture_float))
         p.refused = "half-float G-buffer targets need ARB_texture_float and ARB_half_float_pixel";
     else if (opts.depth_bounds && !caps.depth_bounds)
@@ -212,6 +231,12 @@ int target_format_bytes(TargetFormat f) {
 const char* target_format_name(TargetFormat f) {
     return f == TargetFormat::rgba8 ? "RGBA8" : f == TargetFormat::rgba16f ? "RGBA16F" : "RGBA32F";
 }
+
+const char* accum_format_name(AccumFormat a) {
+    return a == AccumFormat::rgba8 ? "rgba8" : a == AccumFormat::half ? "half" : "float";
+}
+
+const char* tone_map_name(ToneMap t) { return t == ToneMap::none ? "none" : t == ToneMap::reinhard ? "reinhard" : "aces"; }
 
 const char* depth_handoff_name(DepthHandoff h) {
     switch (h) {

@@ -61,6 +61,12 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts);
 // Whether the geometry draws lights through the tiles: tiles, and auto, which sends some there.
 inline bool draws_tiles(LightGeometry g) { return g == LightGeometry::tiles || g == LightGeometry::automatic; }
 
+// --accum: what this GL lacks for accumulation format `a` in one phrase ("needs float targets
+// (ARB_texture_float), which this GL lacks"), "" when it can (rgba8 always); `fbo`: the paths
+// render to texture. `dsr info` and choose_paths' refusal say it.
+std::string accum_format_missing(const Caps& caps, bool fbo, AccumFormat a);
+bool accum_format_ok(const Caps& caps, bool fbo, AccumFormat a);
+
 // One line per decision with its reason, for `dsr info`.
 std::string describe(const Paths& paths);
 const char* stencil_faces_name(Paths::StencilFaces f);  // "separate" | "two-side-ext" | "one-sided"

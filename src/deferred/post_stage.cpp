@@ -49,6 +49,7 @@ void PostStage::blur(RenderTargets& t, int src, int dst, glm::vec2 dir, bool sel
     }
     glUniform2fv(glGetUniformLocation(prog.id(), "offset"), n, &offs[0].x);
     prog.set("uv_clamp", uv_clamp(s));
+    if (select) prog.set("threshold", p_.bloom_threshold);  // SELECT_THRESHOLD (float accumulation) reads it
     t.fb_bind_texture(src, 0);
     draw_quad(float(dw), float(dh), sx, sy);
     t.fb_unbind_texture(src, 0);

@@ -12,6 +12,10 @@ GLenum gl_format(TargetFormat f) {
                                                                                      : GLenum(GL_RGBA32F_ARB);
 }
 
+GLenum accum_gl_format(AccumFormat a) {
+    return a == AccumFormat::rgba8 ? GLenum(GL_RGBA8) : a == AccumFormat::half ? GLenum(GL_RGBA16F_ARB) : GLenum(GL_RGBA32F_ARB);
+}
+
 RenderTargets::RenderTargets(const Paths& paths, const ShaderOptions& opts, int width, int height)
     : paths_(paths), opts_(opts), w_(width), h_(height) {
     allocate();
@@ -52,8 +56,10 @@ void RenderTargets::allocate() {
         PBufferDesc p;
         p.width = bloom ? std::max(1, w_ / bs) : w_;
         p.height = bloom ? std::max(1, h_ / bs) : h_;
-        // P-buffers 0 and 1 in float for stress runs, so NaN and Inf survive to be counted.
-        p.color_formats = {opts_.float_accum && !bloom ? GLenum(GL_RGBA32F_ARB) : GLenum(GL_RGBA8)};
+        // --accum (docs/hdr.md): every P-buffer in its format, so the post passes that read P-buffer 0
+        // (anti-alias into 1, bloom's blurs into 2 and 3) keep what lies above 1; the stress runs
+        // take float so NaN and Inf survive to be counted.
+        p.color_formats = {accum_gl_format(opts_.hdr.accum)};
         p.filter = GL_LINEAR;
         p.use_fbo = paths_.fbo;
         p.use_pbuffer = paths_.pbuffer;

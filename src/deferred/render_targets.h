@@ -21,6 +21,8 @@ inline int depth_target(DepthPath d) { return d == DepthPath::texture ? PBuffer:
 
 // The GL internal format of a G-buffer target format (GL_RGBA8, GL_RGBA16F_ARB, GL_RGBA32F_ARB).
 GLenum gl_format(TargetFormat f);
+// The P-buffers' GL internal format for --accum (GL_RGBA8, GL_RGBA16F_ARB, GL_RGBA32F_ARB).
+GLenum accum_gl_format(AccumFormat a);
 
 // P-buffer roles (§3.2: "four P-buffers"); the values are the tutorial's buffer numbers.
 enum PRole {

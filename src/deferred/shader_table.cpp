@@ -38,7 +38,7 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
     // up later than the half by as much as 0.06 of a step, and over the dozens of lights a pixel of
     // 1024-overlap gets the difference reached 16 LSB. The ambient fold likewise rounds the ambient
     // term and the light's as the ambient pass and the light's own pass would.
-    if (!c.opts.float_accum && ((tiles && c.opts.tile_lights > 1) || fold) && c.paths.fbo) {
+    if (!c.opts.hdr.float_accum() && ((tiles && c.opts.tile_lights > 1) || fold) && c.paths.fbo) {
         const Unorm8Rounding& r = unorm8_rounding();
         c.rounding_measured = true;
         c.rounding_bits = unorm8_truncate_bits(r);
@@ -103,8 +103,10 @@ Defines tiles_defines(const ShaderConfig& c) {
     if (c.opts.tile_plan == TileGrouping::lists)  // groups: the light count is a uniform instead
         d.push_back("ID_VECS " + std::to_string(tile_id_vecs(c.opts.tile_lights)));
     d.push_back("BATCH " + std::to_string(c.tile_batch));
+    // A float P-buffer 0 clamps no pass (docs/hdr.md): each term is added as it is.
+    if (c.opts.hdr.float_accum()) d.push_back("ACCUM_FLOAT");
     // One light a pass needs no emulation: the blend rounds it as quad's does.
-    if (!c.opts.float_accum && c.opts.tile_lights > 1) {
+    if (!c.opts.hdr.float_accum() && c.opts.tile_lights > 1) {
         d.push_back("QUANTIZE_8BIT");
         if (c.rounding_measured && c.rounding_bits > 0)
             d.push_back("QUANTIZE_TRUNCATE " + std::to_string(1 << c.rounding_bits) + ".0");
@@ -122,6 +124,7 @@ Defines blur_defines(const ShaderConfig& c, bool select) {
     const PostOptions& p = c.opts.post;
     Defines d = {"NUMPOINTS " + std::to_string(p.bloom_taps)};
     if (p.bloom_listing) d.push_back("LISTING");
+    else if (select && c.opts.hdr.float_accum()) d.push_back("SELECT_THRESHOLD");  // docs/hdr.md
     else if (select) d.push_back("SELECT");
     return d;
 }
@@ -132,6 +135,15 @@ Defines aa_defines(const ShaderConfig& c) {
     if (p.aa_source != AaSource::depth) d.push_back("SOURCE_NORMAL");
     if (p.aa_source != AaSource::normal) d.push_back("SOURCE_DEPTH");
     if (p.aa_kernel == AaKernel::listing) d.push_back("LISTING_KERNEL");
+    return d;
+}
+
+// tonemap.frag: the operator and the output encoding.
+Defines tonemap_defines(const ShaderConfig& c) {
+    Defines d;
+    if (c.opts.hdr.tonemap == ToneMap::reinhard) d.push_back("TONEMAP_REINHARD");
+    if (c.opts.hdr.tonemap == ToneMap::aces) d.push_back("TONEMAP_ACES");
+    if (c.opts.hdr.output_srgb) d.push_back("OUTPUT_SRGB");
     return d;
 }
 
@@ -159,7 +171,7 @@ bool uses_screen(const ShaderConfig& c) { return geometry_is(c, LightGeometry::s
 // pass would be; without framebuffer objects (no probe) it would round once instead of twice, and
 // bloom's bright pass made that 1 LSB into 3.
 bool ambient_fold(const ShaderConfig& c) {
-    return c.opts.skip.ambient_pass && !c.opts.ssao.on && (c.opts.float_accum || c.rounding_measured);
+    return c.opts.skip.ambient_pass && !c.opts.ssao.on && (c.opts.hdr.float_accum() || c.rounding_measured);
 }
 // The tiles' depth spans need a float target behind a framebuffer object; without them the plan
 // runs without depth culling.
@@ -289,6 +301,14 @@ const std::vector<ShaderRow>& shader_rows() {
         {"anti_alias", "post.vert", "anti_alias.frag", "anti-alias (Listing 21, Equation 7)", always, aa_defines},
         {"aa_factor", "post.vert", "anti_alias.frag", "anti-alias factor (Figure 8)", always,
          [](C c) { return with(aa_defines(c), {"FACTOR_ONLY"}); }},
+        // The final stage with tone mapping or an output encoding (docs/hdr.md); without them the
+        // tutorial's fixed-function copy (§3.6). The reduction of P-buffer 0's log luminance for
+        // --exposure auto, and with float accumulation for the viewer's histogram.
+        {"tonemap", "post.vert", "tonemap.frag", "final pass: exposure, tone mapping, output encoding",
+         [](C c) { return c.opts.hdr.final_program(); }, tonemap_defines},
+        {"log_luminance", "post.vert", "log_luminance.frag", "P-buffer 0's mean log2 luminance per block",
+         [](C c) { return (c.opts.hdr.exposure_auto || c.opts.hdr.float_accum()) && c.caps.fbo && c.caps.texture_float && c.paths.fbo; },
+         [](C) { return Defines{"TAPS " + std::to_string(kLogLuminanceTaps)}; }},
         // The light pass's arithmetic written out as eye-space positions (reconstructed_positions).
         {"position", "light.vert", "light.frag", "read-back of the reconstructed positions",
          [](C c) { return c.caps.fbo && c.caps.texture_float; },

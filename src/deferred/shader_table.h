@@ -37,6 +37,9 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& opts);
 
 using Defines = std::vector<std::string>;
 
+// log_luminance.frag's taps per side of each block it reduces (final_stage.h).
+constexpr int kLogLuminanceTaps = 4;
+
 struct ShaderRow {
     const char* name;
     const char* vert;

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "dsr_error.h"
+#include "gl/float_blend_probe.h"
 #include "gl/gl.h"
 
 namespace dsr {
@@ -68,6 +69,12 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
                       !off("no-float");
     c.half_float = (at_least(c.gl_major, c.gl_minor, 3, 0) || has_extension("GL_ARB_half_float_pixel")) &&
                    !off("no-float");
+    // Measured, not read off a version: blending into float targets (float_blend_probe.h).
+    if (c.fbo && c.texture_float && !off("no-float-blend")) {
+        c.float_blend = probe_float_blend(GL_RGBA32F_ARB);
+        c.half_float_blend = c.half_float && probe_float_blend(GL_RGBA16F_ARB);
+    }
+    c.texture_srgb = (at_least(c.gl_major, c.gl_minor, 2, 1) || has_extension("GL_EXT_texture_sRGB")) && !off("no-srgb-texture");
     c.occlusion_query = (at_least(c.gl_major, c.gl_minor, 1, 5) || has_extension("GL_ARB_occlusion_query")) &&
                         !off("no-occlusion-query");
     // GL_FRAGMENT_SHADER_INVOCATIONS_ARB through the GL 1.5 query calls: no entry point of its own.
@@ -111,6 +118,9 @@ std::string describe(const Caps& c) {
       << "  " << yn(c.npot) << " non-power-of-two         (ARB_texture_non_power_of_two)\n"
       << "  " << yn(c.texture_float) << " float targets            (ARB_texture_float)\n"
       << "  " << yn(c.half_float) << " half-float targets       (ARB_half_float_pixel)\n"
+      << "  " << yn(c.half_float_blend) << " half-float blending      (measured: 0.75 + 0.75 read back as 1.5)\n"
+      << "  " << yn(c.float_blend) << " float blending           (measured, RGBA32F)\n"
+      << "  " << yn(c.texture_srgb) << " sRGB textures            (EXT_texture_sRGB)\n"
       << "  " << yn(c.occlusion_query) << " occlusion queries        (ARB_occlusion_query)\n"
       << "  " << yn(c.pipeline_statistics) << " pipeline statistics      (ARB_pipeline_statistics_query)\n"
       << "  " << yn(c.timer_query) << " timer queries            (ARB_timer_query)\n"

@@ -22,6 +22,11 @@ struct Caps {
     bool npot = false;               // ARB_texture_non_power_of_two
     bool texture_float = false;      // ARB_texture_float
     bool half_float = false;         // ARB_half_float_pixel
+    // Additive blending into RGBA16F / RGBA32F targets without clamping, measured (gl/float_blend_probe.h):
+    // NV40-class GPUs blended half floats but not 32-bit ones.
+    bool half_float_blend = false;
+    bool float_blend = false;
+    bool texture_srgb = false;       // EXT_texture_sRGB (core in 2.1): colour maps decoded when sampled
     bool occlusion_query = false;    // ARB_occlusion_query (core in 1.5): light_fragments
     bool pipeline_statistics = false;  // ARB_pipeline_statistics_query (core in 4.6): light_invocations
     bool timer_query = false;        // ARB_timer_query / EXT_timer_query

@@ -29,6 +29,7 @@
 #include "scene/output_set.h"
 #include "viewer/script.h"
 #include "viewer/viewer.h"
+#include "viewer/luminance_histogram.h"
 #include "viewer/viewer_state.h"
 
 namespace dsr {
@@ -253,6 +254,17 @@ bool Viewer::frame(const std::string* shot) {
         st_.ideal.reset();
     }
 
+    // P-buffer 0's luminance for the panel's histogram and the exposure applied (docs/hdr.md).
+    st_.exposure_scale = ds_->exposure_scale();
+    if (st_.panel) {
+        const LuminanceHistogram lh = luminance_histogram(ds_->reduce_luminance(), 48, ViewerState::kHistogramLo,
+                                                          ViewerState::kHistogramHi);
+        st_.luminance_histogram = lh.bins;
+        st_.luminance_above_one = lh.above_one;
+    }
+    // Dear ImGui's GL 2 backend draws by fixed function and binds no program of its own: the last
+    // pass may have left one (the tone-mapping final pass, the luminance reduction).
+    gl_state().apply(fixed_function_2d());
     ImGui_ImplOpenGL2_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();

@@ -40,11 +40,20 @@ void option_widget(ViewerState& st, const RenderOption& o) {
         }
         case OptionKind::number: {
             // The slider edits a copy; the option changes when the slider is let go (each change
-            // builds the shader's programs anew).
+            // builds the shader's programs anew). An entry that also takes a word (exposure: auto)
+            // has a checkbox for it, as the integer entries below.
+            const bool is_word = !o.values.empty() && value == o.values.front();
+            if (!o.values.empty()) {
+                const float width = ImGui::CalcItemWidth(), x0 = ImGui::GetCursorPosX();
+                bool word = is_word;
+                if (ImGui::Checkbox((o.values.front() + "##" + o.name).c_str(), &word)) request(word ? o.values.front() : "0");
+                ImGui::SameLine();
+                ImGui::SetNextItemWidth(std::max(40.0f, width - (ImGui::GetCursorPosX() - x0)));
+            }
             static std::map<std::string, float> editing;
             const auto it = editing.find(o.name);
-            float f = it != editing.end() ? it->second : std::strtof(value.c_str(), nullptr);
-            ImGui::SliderFloat(o.name.c_str(), &f, o.lo, o.hi, "%.2f");
+            float f = it != editing.end() ? it->second : is_word ? 0.0f : std::strtof(value.c_str(), nullptr);
+            ImGui::SliderFloat(o.name.c_str(), &f, o.lo, o.hi, is_word && it == editing.end() ? value.c_str() : "%.2f");
             if (ImGui::IsItemDeactivatedAfterEdit()) {
                 char buf[32];
                 std::snprintf(buf, sizeof buf, "%g", double(f));
@@ -190,6 +199,24 @@ void draw_panel(ViewerState& st, const DeferredShader& ds, const Scene& frame_sc
                              ImVec2(0, 60));
             ImGui::PlotLines("lights ms", lights_ms.data(), int(lights_ms.size()), 0, nullptr, 0, top * 1.1f,
                              ImVec2(0, 40));
+        }
+    }
+    // P-buffer 0's luminance (docs/hdr.md), from the reduced copy the final stage reads for
+    // --exposure auto: log2 of each block's mean, with float accumulation or --exposure auto.
+    if (ImGui::CollapsingHeader("light (P-buffer 0)", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const ShaderOptions& o = st.options.shader;
+        ImGui::TextWrapped("accum %s, tonemap %s, exposure x%.3f%s", accum_format_name(o.hdr.accum),
+                           tone_map_name(o.hdr.tonemap), double(st.exposure_scale), o.hdr.exposure_auto ? " (auto)" : "");
+        if (!st.luminance_histogram.empty()) {
+            float top = 1;
+            for (float v : st.luminance_histogram) top = std::max(top, v);
+            char over[64];
+            std::snprintf(over, sizeof over, "log2 L %g..%g, %.1f%% above 1", double(ViewerState::kHistogramLo),
+                          double(ViewerState::kHistogramHi), 100.0 * st.luminance_above_one);
+            ImGui::PlotHistogram("luminance", st.luminance_histogram.data(), int(st.luminance_histogram.size()), 0, over,
+                                 0, top * 1.1f, ImVec2(0, 60));
+        } else {
+            ImGui::TextWrapped("histogram: with --accum half or float, or --exposure auto");
         }
     }
     if (ImGui::CollapsingHeader("options (the render flags)")) {

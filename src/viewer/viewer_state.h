@@ -35,6 +35,13 @@ struct ViewerState {
     double loop_ms = 0;         // the last frame's whole loop: render, panel, swap
     std::optional<long long> ideal;  // ideal light fragments of a recent frame (depth-texture path)
     std::deque<FrameSample> history;  // the last few seconds
+    // P-buffer 0's luminance (docs/hdr.md): blocks of the final stage's reduced copy by their mean
+    // log2 L, in bins over [kHistogramLo, kHistogramHi]; the share of blocks whose largest L is above
+    // 1 (what RGBA8 would clip); the exposure scale of the last final pass.
+    static constexpr float kHistogramLo = -8, kHistogramHi = 4;
+    std::vector<float> luminance_histogram;
+    double luminance_above_one = 0;
+    float exposure_scale = 1;
     int builds = 0;             // DeferredShaders built (option changes), not resizes
     int resizes = 0;
     std::string renderer;       // GL_RENDERER
