@@ -10,6 +10,12 @@
 // the transparent pass, src/deferred/transparent_pass.cpp, blends with alpha = the material's
 // opacity; without it alpha is 1 as before).
 #include "lighting.glsl"
+#ifdef SHADOW
+// SHADOW: the pass's light (one) scaled by its shadow map's lookup (the transparent pass's
+// shadowed lights, docs/shadows.md).
+#include "depth_codec.glsl"
+#include "shadow.glsl"
+#endif
 
 #ifndef MAX_LIGHTS
 #define MAX_LIGHTS 1
@@ -55,8 +61,15 @@ void main()
     vec3 v = view_vector(vpos);
     for (int i = 0; i < MAX_LIGHTS; ++i) {
         if (i >= nlights) break;
+#ifdef SHADOW
+        vec3 to_light = lightcolor[i].w > 1.5 ? -lightdir[i].xyz : normalize(lightpos[i].xyz - vpos);
+        c += shadow_factor(vpos, n, to_light) *
+             light_contribution(lightpos[i], lightcolor[i], lightdir[i], lightspot[i], lightatt[i], vpos, v, n, Mdiff,
+                                Mspec, shininess);
+#else
         c += light_contribution(lightpos[i], lightcolor[i], lightdir[i], lightspot[i], lightatt[i], vpos, v, n, Mdiff,
                                 Mspec, shininess);
+#endif
     }
 #ifdef OPACITY
     gl_FragColor = vec4(c, opacity);

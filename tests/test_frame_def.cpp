@@ -117,7 +117,9 @@ TEST(ShaderTable, EveryRowCompilesWhereItIsUsed) {
         t.show_lights = true;  // the depth hand-off
         t.depth_handoff = DepthHandoff::pass;
         t.depth = DepthPath::packed;
-        build(t);
+        t.shadow_lights = true;  // a scene with shadowed lights: the shadow forms
+        t.shadows.filter = g == LightGeometry::volume ? ShadowFilter::pcf5 : ShadowFilter::hard;
+        build(t, g == LightGeometry::stencil ? std::vector<std::string>{"no-depth-texture"} : std::vector<std::string>{});
     }
     build(ShaderOptions{}, {"no-mrt"});  // one material program per G-buffer target
     ShaderOptions hdr;  // the final stage's program and auto exposure's reduction (docs/hdr.md)

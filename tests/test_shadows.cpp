@@ -146,3 +146,31 @@ TEST(Shadows, StillFramesReuseTheMaps) {
         EXPECT_EQ(ds.render(moved, kSize, kSize).shadow_maps, 1);
     }
 }
+
+// Transparent surfaces (the forward stage) receive shadows: a glass slab on the plane under the
+// box is darker there with the shadow than without it, and unchanged where the light reaches it.
+TEST(Shadows, TransparentSurfacesReceiveThem) {
+    Scene s = box_scene(Light::Type::spot);
+    Material glass;
+    glass.name = "glass";
+    glass.diffuse = {0.3f, 0.5f, 0.9f};
+    glass.opacity = 0.6f;
+    s.materials.push_back(glass);
+    add_box(s, {6, 0.2f, 1}, {0, 0.1f, 0}, 1);
+    // The plane behind the glass black, so the glass alone makes the pixel: what it blends over
+    // is the same with the shadow and without.
+    Material black;
+    black.name = "black";
+    black.diffuse = glm::vec3(0);
+    s.materials.push_back(black);
+    s.objects[0].material = 2;
+    Scene unshadowed = s;
+    unshadowed.lights[0].shadow.on = false;
+    ShaderOptions o = shadowed();
+    o.forward_surfaces = true;
+    const RenderResult lit = render_scene(unshadowed, kSize, kSize, o);
+    const RenderResult r = render_scene(s, kSize, kSize, o);
+    EXPECT_EQ(r.stats.transparent_passes, 2);  // the ambient pass, then the shadowed light's
+    EXPECT_LT(lsb_at(r.image, s, {0, 0.2f, 0}), lsb_at(lit.image, s, {0, 0.2f, 0}) - 20);
+    EXPECT_NEAR(lsb_at(r.image, s, {2.5f, 0.2f, 0}), lsb_at(lit.image, s, {2.5f, 0.2f, 0}), 1.0f);
+}

@@ -85,7 +85,7 @@ TEST(ViewerScript, BadLineIsOneErrorNamingFileAndLine) {
         {"frames -1\n", "s.txt:1: frames: expected an integer in [1, 1000000], got '-1'"},
         {"frames 2x\n", "s.txt:1: frames: expected an integer"},
         {"set scissor maybe\n", "s.txt:1: set scissor: expected on|off, got 'maybe'"},
-        {"set view albedo\n", "s.txt:1: set view: expected final|normal|diffuse|specular|depth|blur-factor|bloom|ssao, got 'albedo'"},
+        {"set view albedo\n", "s.txt:1: set view: expected final|normal|diffuse|specular|depth|blur-factor|bloom|ssao|shadow-map, got 'albedo'"},
         {"set bloom-strength 99\n", "s.txt:1: set bloom-strength: expected a number in [0.000000, 16.000000], got '99'"},
         {"set no-skip fast\n", "s.txt:1: set no-skip: expected variants, empty-lights, light-depth-test, light-sphere-test"},
         {"set frobnicate 1\n", "s.txt:1: set: expected an option name (depth, depth-encoding,"},

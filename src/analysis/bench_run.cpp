@@ -116,7 +116,9 @@ std::unique_ptr<RowRun> deferred(const Setup& st, const Variant& v, const Row& w
     o.gbuffer_half = want.gbuffer_half;
     o.hdr.accum = want.accum_format;
     o.post.bloom = o.post.aa = false;  // the tutorial's core passes only; post costs the same on every row
-    for (const Light& l : v.scene.lights) o.shadow_lights = o.shadow_lights || l.shadow.on;  // the shadow rows
+    // The shadow rows: every map drawn every frame, so a row's time holds the shadow stage.
+    for (const Light& l : v.scene.lights) o.shadow_lights = o.shadow_lights || l.shadow.on;
+    o.shadows.reuse = false;
     auto run = std::make_unique<RowRun>();
     run->ds = std::make_unique<DeferredShader>(st.caps, v.w, v.h, o, st.shaders);
     run->ds->set_scene(v.scene);

@@ -10,7 +10,10 @@
 namespace dsr {
 
 ForwardStage::ForwardStage(const std::string& shader_dir, const ShaderOptions& opts)
-    : shader_dir_(shader_dir), listing2_literal_(opts.listing2_literal), show_lights_(opts.show_lights) {}
+    : shader_dir_(shader_dir),
+      listing2_literal_(opts.listing2_literal),
+      show_lights_(opts.show_lights),
+      shadow_filter_(opts.shadows.filter) {}
 
 void ForwardStage::set_scene(const Scene& scene, const GpuScene& gpu) {
     bounds_ = object_bounds(scene);
@@ -31,7 +34,14 @@ void ForwardStage::draw(const FrameDef& f, const Scene& scene, GpuScene& gpu, Fr
             visible[l.index] = 1;
         }
         gpu.set_view(f.camera.view_d());  // the objects' modelviews, for this frame's camera
-        const TransparentStats ts = transparent_->draw(scene, gpu, bounds_, params, visible);
+        // Shadowed lights' maps by scene index: the transparent surfaces receive their shadows.
+        std::vector<const ShadowLookup*> maps;
+        if (!f.shadows.empty()) {
+            maps.assign(scene.lights.size(), nullptr);
+            for (const LightDraw& l : f.lights)
+                if (l.shadow >= 0) maps[l.index] = &f.shadows[size_t(l.shadow)];
+        }
+        const TransparentStats ts = transparent_->draw(scene, gpu, bounds_, params, visible, maps, shadow_filter_);
         stats.transparent_objects = ts.objects;
         stats.transparent_passes = ts.passes;
     }

@@ -36,6 +36,7 @@ private:
     void draw_light_markers(const FrameDef& f, const Scene& scene, FrameStats& stats);
     std::string shader_dir_;
     bool listing2_literal_, show_lights_;
+    ShadowFilter shadow_filter_;  // the transparent surfaces' shadow lookups (ShadowOptions::filter)
     std::vector<ObjectBounds> bounds_;              // object_bounds(scene)
     std::unique_ptr<TransparentPass> transparent_;  // scenes with transparent materials
     Mesh marker_mesh_;                              // the unit sphere

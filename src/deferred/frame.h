@@ -52,6 +52,7 @@ struct ShadowLookup {
     glm::vec2 texel{0};          // a texel's world size at q = texel.x + texel.y * (depth along the map's axis)
     float bias = 0, slope = 0;   // the light's LightShadow
     int width = 0, height = 0, face = 0;  // the texture's texels, and one view's per side
+    bool packed = false;         // RGB8 (compared in the shader), else a depth texture (ARB_shadow)
 };
 
 // What make_frame needs besides the scene.

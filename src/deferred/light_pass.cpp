@@ -63,7 +63,10 @@ void LightArrays::set(Program& prog, const char* const (&names)[5]) const {
 
 void bind_shadow(Program& prog, const FrameDef& f, const LightDraw& l) {
     if (l.shadow < 0) return;
-    const ShadowLookup& m = f.shadows.at(size_t(l.shadow));
+    bind_shadow_map(prog, f.shadows.at(size_t(l.shadow)));
+}
+
+void bind_shadow_map(Program& prog, const ShadowLookup& m) {
     prog.set_array("shadow_view", &m.eye_to_light[0], 4);
     prog.set_array("shadow_proj", &m.proj[0], 4);
     prog.set("shadow_depth", m.depth);
@@ -75,7 +78,10 @@ void bind_shadow(Program& prog, const FrameDef& f, const LightDraw& l) {
 }
 
 void unbind_shadow(const LightDraw& l) {
-    if (l.shadow < 0) return;
+    if (l.shadow >= 0) unbind_shadow_map();
+}
+
+void unbind_shadow_map() {
     glActiveTexture(GL_TEXTURE4);
     glBindTexture(GL_TEXTURE_2D, 0);
     glActiveTexture(GL_TEXTURE0);

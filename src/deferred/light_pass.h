@@ -43,6 +43,9 @@ private:
 // A shadowed light's map (f.shadows[l.shadow]) on unit 4 and its uniforms (glsl120/shadow.glsl)
 // in `prog`, in use; nothing for a light without one. unbind_shadow takes the map off unit 4.
 void bind_shadow(Program& prog, const FrameDef& f, const LightDraw& l);
+// The same for one map (the transparent pass's shadowed lights); unbind with unbind_shadow_map.
+void bind_shadow_map(Program& prog, const ShadowLookup& m);
+void unbind_shadow_map();
 void unbind_shadow(const LightDraw& l);
 
 // A light program in its three forms (the shader table's rows FAMILY, FAMILY_point and

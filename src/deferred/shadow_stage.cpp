@@ -169,6 +169,7 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
         k.bias = light.shadow.bias;
         k.slope = light.shadow.slope;
         k.width = layout.width, k.height = layout.height, k.face = layout.face;
+        k.packed = packed_;
     }
     if (bound) gpu.unbind();
     check_gl_stage("shadow stage");

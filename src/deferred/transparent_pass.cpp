@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "deferred/gpu_scene.h"
+#include "deferred/light_pass.h"
 #include "deferred/light_volume.h"
 #include "deferred/forward_material.h"
 #include "deferred/transparent_order.h"
@@ -36,6 +37,30 @@ Program& TransparentPass::program(bool normal_map, bool any_light) {
     return p;
 }
 
+Program& TransparentPass::shadow_program(bool normal_map, bool packed, ShadowFilter filter) {
+    Program& p = shadow_progs_[normal_map][packed];
+    if (!p.id() || filter != shadow_filter_) {
+        for (auto& row : shadow_progs_)
+            for (Program& q : row)
+                if (filter != shadow_filter_) q = Program();
+        shadow_filter_ = filter;
+        std::vector<std::string> defs = {"MAX_LIGHTS 1", "OPACITY", "SHADOW"};
+        if (normal_map) defs.push_back("NORMAL_MAP");
+        if (listing2_literal_) defs.push_back("LISTING2_LITERAL");
+        if (packed) defs.push_back("SHADOW_PACKED");
+        if (filter == ShadowFilter::hard) defs.push_back("SHADOW_HARD");
+        if (filter == ShadowFilter::pcf3) defs.push_back("SHADOW_TAPS 3");
+        if (filter == ShadowFilter::pcf5) defs.push_back("SHADOW_TAPS 5");
+        p = Program(shader_dir_, "forward.vert", "forward.frag", defs);
+        p.use();
+        p.set("normaltex", 0);
+        p.set("colortex", 1);
+        p.set("speculartex", 2);
+        p.set("shadow_map", 4);
+    }
+    return p;
+}
+
 namespace {
 
 // The first pass of an object: blended over what lies behind it, a * colour + (1 - a) * dst.
@@ -54,23 +79,29 @@ RenderState transparent_state(GLuint program, bool first) {
 }  // namespace
 
 TransparentStats TransparentPass::draw(const Scene& scene, const GpuScene& gpu, const std::vector<ObjectBounds>& bounds,
-                                       const std::vector<LightParams>& lights, const std::vector<char>& visible) {
+                                       const std::vector<LightParams>& lights, const std::vector<char>& visible,
+                                       const std::vector<const ShadowLookup*>& shadows, ShadowFilter filter) {
     TransparentStats st;
     const std::vector<size_t> order = transparent_order(gpu.transparent_objects(), bounds, glm::dvec3(scene.camera.pos));
     if (order.empty()) return st;
     gpu.bind_all();
-    std::vector<int> reach;
+    std::vector<int> reach, shadowed;
     std::vector<glm::vec4> v[5];
     for (size_t o : order) {
         reach.clear();
+        shadowed.clear();
         bool any_light = false;
         for (size_t i = 0; i < scene.lights.size(); ++i) {
             const Light& l = scene.lights[i];
             if (!visible[i] || !volume_reaches(light_volume(l), bounds[o].centre, bounds[o].radius)) continue;
+            if (i < shadows.size() && shadows[i]) {  // a pass of its own, after the others
+                shadowed.push_back(int(i));
+                continue;
+            }
             reach.push_back(int(i));
             any_light = any_light || l.type != Light::Type::point || l.attenuation;
         }
-        st.light_object_pairs += (long long)reach.size();
+        st.light_object_pairs += (long long)(reach.size() + shadowed.size());
         const int mi = gpu.object_range(o).material;
         const GpuMaterial& m = gpu.material(mi);
         Program& prog = program(m.normal_map, any_light);
@@ -100,6 +131,26 @@ TransparentStats TransparentPass::draw(const Scene& scene, const GpuScene& gpu, 
             ++st.passes;
             k += n;
         } while (k < reach.size());
+        // Each shadowed light added by its own pass, the light's term scaled by its map's lookup.
+        for (int i : shadowed) {
+            const ShadowLookup& map = *shadows[size_t(i)];
+            Program& sp = shadow_program(m.normal_map, map.packed, filter);
+            gl_state().apply(transparent_state(sp.id(), false));
+            set_forward_material(sp, m, scene.materials[size_t(mi)].shininess);
+            sp.set("opacity", m.opacity);
+            sp.set("nlights", 1);
+            sp.set("ambient", glm::vec3(0));
+            const LightParams& lp = lights[size_t(i)];
+            sp.set_array("lightpos", &lp.pos, 1);
+            sp.set_array("lightcolor", &lp.color, 1);
+            sp.set_array("lightdir", &lp.dir, 1);
+            sp.set_array("lightspot", &lp.spot, 1);
+            sp.set_array("lightatt", &lp.att, 1);
+            bind_shadow_map(sp, map);
+            gpu.draw(gpu.object_range(o));
+            unbind_shadow_map();
+            ++st.passes;
+        }
         ++st.objects;
     }
     for (int u = 2; u >= 0; --u) {

@@ -11,13 +11,16 @@
 //
 // What is approximate (docs/guide.md, "Transparent surfaces"): the order is per object, not per pixel;
 // back faces are culled (a closed object shows its near side only); transparent surfaces cast no
-// shadows (nothing does) and get no SSAO; nothing is written to the depth buffer, so a transparent
-// surface never hides another.
+// shadows and get no SSAO; nothing is written to the depth buffer, so a transparent surface never
+// hides another. They receive shadows: each shadowed light is a pass of its own, through
+// forward.frag's SHADOW form with the light's map (glsl120/shadow.glsl, docs/shadows.md).
 #pragma once
 #include <string>
 #include <vector>
 
+#include "deferred/frame.h"
 #include "deferred/light_params.h"
+#include "deferred/options.h"
 #include "gl/program.h"
 #include "scene/bounds.h"
 #include "scene/scene.h"
@@ -42,18 +45,26 @@ public:
     // camera's projection, gpu.set_view(camera) was called, the depth buffer holds the opaque
     // surfaces' depth. `bounds`: object_bounds(scene); `lights`: every scene light's
     // light_params (eye space) and `visible`: whether it survived frustum culling.
+    // `shadows`: per scene light, its map this frame (null: none); empty for no shadowed lights.
+    // `filter`: the lookup's (options.h).
     TransparentStats draw(const Scene& scene, const GpuScene& gpu, const std::vector<ObjectBounds>& bounds,
-                          const std::vector<LightParams>& lights, const std::vector<char>& visible);
+                          const std::vector<LightParams>& lights, const std::vector<char>& visible,
+                          const std::vector<const ShadowLookup*>& shadows = {},
+                          ShadowFilter filter = ShadowFilter::pcf2);
 
     int lights_per_pass() const { return batch_; }
 
 private:
     Program& program(bool normal_map, bool any_light);
+    // The form with one shadowed light's lookup, for maps packed or not.
+    Program& shadow_program(bool normal_map, bool packed, ShadowFilter filter);
 
     std::string shader_dir_;
     bool listing2_literal_;
     int batch_ = 1;
     Program progs_[2][2];  // [normal map][any light]
+    Program shadow_progs_[2][2];  // [normal map][packed]
+    ShadowFilter shadow_filter_ = ShadowFilter::pcf2;  // what shadow_progs_ were built with
 };
 
 }  // namespace dsr

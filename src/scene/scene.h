@@ -60,7 +60,7 @@ struct Light {
     bool attenuation = false;     // false: Equation 2's 1 - d / S_radius
     float kc = 1.0f, kl = 0.0f, kq = 0.0f;  // attenuation law, each >= 0
     float threshold = 5.0f / 256.0f;        // LearnOpenGL's 5/256
-    LightShadow shadow;                     // off unless the light line says `shadow`
+    LightShadow shadow{};                   // off unless the light line says `shadow`
 };
 
 // Texture maps are indices into Scene::textures, -1 when absent.

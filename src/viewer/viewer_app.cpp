@@ -237,7 +237,13 @@ bool Viewer::frame(const std::string* shot) {
         for (Light& l : frame_scene_.lights) l.pos = pivot + glm::vec3(r * glm::vec4(l.pos - pivot, 0));
     }
     st_.last = ds_->render(frame_scene_, w, h);
-    if (st_.options.view != View::final) ds_->draw_view(st_.options.view, w, h);
+    if (st_.options.view != View::final) {
+        try {
+            ds_->draw_view(st_.options.view, w, h);
+        } catch (const Error&) {
+            ds_->final_stage(w, h);  // a view the frame has nothing for (shadow-map, no shadowed light visible)
+        }
+    }
     check_gl("viewer frame");
     if (shot) screenshot(*shot, w, h);
     if (!pending_shot_.empty()) {
