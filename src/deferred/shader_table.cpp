@@ -184,18 +184,23 @@ bool shadows(const ShaderConfig& c) { return c.opts.shadow_lights; }
 // Depth textures compared by ARB_shadow where the GL has both, else depth packed in RGB8.
 bool shadow_packed(const ShaderConfig& c) { return !(c.caps.depth_texture && c.caps.shadow); }
 Defines shadow_defines(Defines d, const ShaderConfig& c) {
-    d.push_back("SHADOW");
-    if (shadow_packed(c)) d.push_back("SHADOW_PACKED");
-    const ShadowFilter k = c.opts.shadows.filter;
-    if (k == ShadowFilter::hard) d.push_back("SHADOW_HARD");
-    if (k == ShadowFilter::pcf3) d.push_back("SHADOW_TAPS 3");
-    if (k == ShadowFilter::pcf5) d.push_back("SHADOW_TAPS 5");
+    const Defines s = shadow_lookup_defines(shadow_packed(c), c.opts.shadows.filter);
+    d.insert(d.end(), s.begin(), s.end());
     return d;
 }
 
 std::string tile_size(const ShaderConfig& c) { return "TILE_SIZE " + std::to_string(c.opts.tile_size); }
 
 }  // namespace
+
+Defines shadow_lookup_defines(bool packed, ShadowFilter filter) {
+    Defines d = {"SHADOW"};
+    if (packed) d.push_back("SHADOW_PACKED");
+    if (filter == ShadowFilter::hard) d.push_back("SHADOW_HARD");
+    if (filter == ShadowFilter::pcf3) d.push_back("SHADOW_TAPS 3");
+    if (filter == ShadowFilter::pcf5) d.push_back("SHADOW_TAPS 5");
+    return d;
+}
 
 const std::vector<ShaderRow>& shader_rows() {
     using C = const ShaderConfig&;

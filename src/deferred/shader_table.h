@@ -37,6 +37,11 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& opts);
 
 using Defines = std::vector<std::string>;
 
+// glsl120/shadow.glsl's lookup: SHADOW, SHADOW_PACKED for maps packed in RGB8, and the filter's
+// define (options.h ShadowFilter). The light programs' shadow rows and the transparent pass's
+// shadow form both compile it with these.
+Defines shadow_lookup_defines(bool packed, ShadowFilter filter);
+
 // log_luminance.frag's taps per side of each block it reduces (final_stage.h).
 constexpr int kLogLuminanceTaps = 4;
 

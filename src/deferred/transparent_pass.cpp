@@ -5,6 +5,7 @@
 #include "deferred/gpu_scene.h"
 #include "deferred/light_pass.h"
 #include "deferred/light_volume.h"
+#include "deferred/shader_table.h"
 #include "deferred/forward_material.h"
 #include "deferred/transparent_order.h"
 #include "gl/check.h"
@@ -38,19 +39,17 @@ Program& TransparentPass::program(bool normal_map, bool any_light) {
 }
 
 Program& TransparentPass::shadow_program(bool normal_map, bool packed, ShadowFilter filter) {
-    Program& p = shadow_progs_[normal_map][packed];
-    if (!p.id() || filter != shadow_filter_) {
+    if (filter != shadow_filter_) {  // the forms of another filter are of no more use
         for (auto& row : shadow_progs_)
-            for (Program& q : row)
-                if (filter != shadow_filter_) q = Program();
+            for (Program& q : row) q = Program();
         shadow_filter_ = filter;
-        std::vector<std::string> defs = {"MAX_LIGHTS 1", "OPACITY", "SHADOW"};
+    }
+    Program& p = shadow_progs_[normal_map][packed];
+    if (!p.id()) {
+        std::vector<std::string> defs = {"MAX_LIGHTS 1", "OPACITY"};
         if (normal_map) defs.push_back("NORMAL_MAP");
         if (listing2_literal_) defs.push_back("LISTING2_LITERAL");
-        if (packed) defs.push_back("SHADOW_PACKED");
-        if (filter == ShadowFilter::hard) defs.push_back("SHADOW_HARD");
-        if (filter == ShadowFilter::pcf3) defs.push_back("SHADOW_TAPS 3");
-        if (filter == ShadowFilter::pcf5) defs.push_back("SHADOW_TAPS 5");
+        for (const std::string& d : shadow_lookup_defines(packed, filter)) defs.push_back(d);
         p = Program(shader_dir_, "forward.vert", "forward.frag", defs);
         p.use();
         p.set("normaltex", 0);
@@ -86,7 +85,7 @@ TransparentStats TransparentPass::draw(const Scene& scene, const GpuScene& gpu, 
     if (order.empty()) return st;
     gpu.bind_all();
     std::vector<int> reach, shadowed;
-    std::vector<glm::vec4> v[5];
+    LightArrays arrays;
     for (size_t o : order) {
         reach.clear();
         shadowed.clear();
@@ -112,21 +111,12 @@ TransparentStats TransparentPass::draw(const Scene& scene, const GpuScene& gpu, 
         size_t k = 0;
         do {
             const size_t n = std::min(reach.size() - k, size_t(batch_));
-            for (auto& a : v) a.resize(std::max<size_t>(n, 1));
-            for (size_t i = 0; i < n; ++i) {
-                const LightParams& lp = lights[size_t(reach[k + i])];
-                v[0][i] = lp.pos, v[1][i] = lp.color, v[2][i] = lp.dir, v[3][i] = lp.spot, v[4][i] = lp.att;
-            }
+            arrays.clear();
+            for (size_t i = 0; i < n; ++i) arrays.add(lights[size_t(reach[k + i])]);
             gl_state().apply(transparent_state(prog.id(), k == 0));
             prog.set("nlights", int(n));
             prog.set("ambient", k == 0 ? scene.ambient : glm::vec3(0));
-            if (n) {
-                prog.set_array("lightpos", v[0].data(), int(n));
-                prog.set_array("lightcolor", v[1].data(), int(n));
-                prog.set_array("lightdir", v[2].data(), int(n));
-                prog.set_array("lightspot", v[3].data(), int(n));
-                prog.set_array("lightatt", v[4].data(), int(n));
-            }
+            if (n) arrays.set(prog, LightArrays::kLight);
             gpu.draw(gpu.object_range(o));
             ++st.passes;
             k += n;
@@ -140,12 +130,7 @@ TransparentStats TransparentPass::draw(const Scene& scene, const GpuScene& gpu, 
             sp.set("opacity", m.opacity);
             sp.set("nlights", 1);
             sp.set("ambient", glm::vec3(0));
-            const LightParams& lp = lights[size_t(i)];
-            sp.set_array("lightpos", &lp.pos, 1);
-            sp.set_array("lightcolor", &lp.color, 1);
-            sp.set_array("lightdir", &lp.dir, 1);
-            sp.set_array("lightspot", &lp.spot, 1);
-            sp.set_array("lightatt", &lp.att, 1);
+            set_light_params(sp, lights[size_t(i)]);  // element 0 of forward.frag's arrays
             bind_shadow_map(sp, map);
             gpu.draw(gpu.object_range(o));
             unbind_shadow_map();
