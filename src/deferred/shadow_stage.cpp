@@ -7,6 +7,7 @@
 #include "deferred/gpu_scene.h"
 #include "dsr_error.h"
 #include "gl/check.h"
+#include "gl/readback.h"
 #include "gl/state.h"
 
 namespace dsr {
@@ -178,24 +179,13 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
 }
 
 Image ShadowStage::read_map(const ShadowLookup& m) const {
-    Image img;
-    img.width = m.width, img.height = m.height;
-    img.rgba.assign(size_t(m.width) * size_t(m.height) * 4, 1.0f);
-    glBindTexture(GL_TEXTURE_2D, m.texture);
-    std::vector<float> depth(size_t(m.width) * size_t(m.height));
-    if (packed_) {
-        std::vector<unsigned char> rgb(depth.size() * 3);
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
-        for (size_t i = 0; i < depth.size(); ++i)
-            depth[i] = float((rgb[3 * i] * 65536.0 + rgb[3 * i + 1] * 256.0 + rgb[3 * i + 2]) / 16777215.0);
-    } else {
-        glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
-    }
-    glBindTexture(GL_TEXTURE_2D, 0);
-    for (size_t i = 0; i < depth.size(); ++i)
-        for (int c = 0; c < 3; ++c) img.rgba[i * 4 + size_t(c)] = depth[i];
-    check_gl("reading a shadow map");
+    // A depth texture reads back as grey; a packed map's codes go through the codec's CPU twin.
+    Image img = read_texture(m.texture, m.width, m.height, m.width, m.height, !packed_);
+    if (packed_)
+        for (size_t i = 0; i < img.rgba.size(); i += 4) {
+            const float d = unpack_depth(glm::vec3(img.rgba[i], img.rgba[i + 1], img.rgba[i + 2]));
+            img.rgba[i] = img.rgba[i + 1] = img.rgba[i + 2] = d, img.rgba[i + 3] = 1.0f;
+        }
     return img;
 }
 
