@@ -17,6 +17,7 @@ uniform vec4 uv_clamp;  // content texels' centres: (min, max); keeps taps off p
 
 varying vec2 texcoord;
 #ifdef SELECT_THRESHOLD
+#include "luminance.glsl"
 uniform float threshold;
 #endif
 
@@ -28,7 +29,7 @@ void main()
 #if defined(LISTING)
         sum += vec3(dot(t, t));
 #elif defined(SELECT_THRESHOLD)
-        float l = dot(t, vec3(0.2126, 0.7152, 0.0722));
+        float l = luminance(t);
         sum += l > threshold ? t * ((l - threshold) / l) : vec3(0.0);
 #elif defined(SELECT)
         sum += t * (dot(t, t) / 3.0);

@@ -6,6 +6,8 @@
 #ifndef TAPS
 #define TAPS 4
 #endif
+#include "luminance.glsl"
+
 uniform sampler2D source;
 uniform vec2 block;      // a destination texel's extent in source texture coordinates
 uniform vec4 uv_clamp;   // content texels' centres: (min, max)
@@ -18,7 +20,7 @@ void main()
     for (int j = 0; j < TAPS; ++j)
         for (int i = 0; i < TAPS; ++i) {
             vec2 uv = clamp(texcoord + block * ((vec2(float(i), float(j)) + 0.5) / float(TAPS) - 0.5), uv_clamp.xy, uv_clamp.zw);
-            float l = max(dot(texture2D(source, uv).rgb, vec3(0.2126, 0.7152, 0.0722)), 0.0);
+            float l = max(luminance(texture2D(source, uv).rgb), 0.0);
             sum += log2(1e-4 + l);
             top = max(top, l);
         }

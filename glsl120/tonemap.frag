@@ -13,7 +13,7 @@ uniform float exposure_scale;  // 2^E, or auto's 0.18 / the frame's geometric me
 
 varying vec2 texcoord;
 
-float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }  // Rec. 709 primaries
+#include "luminance.glsl"
 
 void main()
 {
