@@ -8,6 +8,7 @@
 #include "analysis/bench_scenes.h"
 #include "deferred/deferred_shader.h"
 #include "deferred/paths.h"
+#include "dsr_clock.h"
 #include "gl/readback.h"
 #include "platform/resources.h"
 
@@ -93,12 +94,11 @@ std::vector<Result> measure(const Caps& caps, const std::string& shader_dir, con
         for (size_t i = 0; i < shaders.size(); ++i) {
             DeferredShader& ds = *shaders[i];
             ds.render(c.scene, size, size);  // the frame whose buffers are read
-            std::sort(ms[i].begin(), ms[i].end());
             Result r;
             r.scene = c.name;
             r.accum = ran[i].accum;
             r.tonemap = ran[i].tonemap;
-            r.ms_median = ms[i].empty() ? 0 : ms[i][ms[i].size() / 2];
+            r.ms_median = median(ms[i]);
             r.exposure_scale = ds.exposure_scale();
             const Image accum = ds.read_pbuffer(0);
             for (size_t k = 0; k < accum.rgba.size(); ++k)

@@ -370,14 +370,9 @@ void Viewer::on_key(int key, int mods) {
 }
 
 void Viewer::print_summary() const {
-    auto med = [](std::vector<double> v) {
-        if (v.empty()) return 0.0;
-        std::sort(v.begin(), v.end());
-        return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-    };
     std::printf("dsr view: %zu frames, frame %.2f ms median (renderer), loop %.2f ms median (with panel and swap); "
                 "%d resizes, deferred shader built %d time%s, %lld programs built since\n",
-                frame_ms_.size(), med(frame_ms_), med(loop_ms_), st_.resizes, st_.builds, st_.builds == 1 ? "" : "s",
+                frame_ms_.size(), median(frame_ms_), median(loop_ms_), st_.resizes, st_.builds, st_.builds == 1 ? "" : "s",
                 Program::built() - programs_after_build_);
     std::fflush(stdout);
 }
