@@ -69,7 +69,7 @@ std::unique_ptr<LightGeometryPass> make_light_geometry(const ShaderConfig& c, Pr
                                                        int height) {
     std::unique_ptr<LightGeometryPass> g = make_geometry(c, programs, width, height);
     const LightGeometry k = c.paths.light_geometry;
-    const bool batched = k == LightGeometry::tiles || k == LightGeometry::screen || k == LightGeometry::automatic;
+    const bool batched = draws_tiles(k) || k == LightGeometry::screen;
     if (c.opts.shadow_lights && batched)
         g = std::make_unique<ShadowedAsQuads>(std::move(g), programs, c.paths.depth_bounds);
     return g;
