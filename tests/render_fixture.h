@@ -3,6 +3,8 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <sys/stat.h>
@@ -32,6 +34,16 @@ inline ShaderOptions with_depth(DepthPath p) {
 }
 
 inline Scene default_scene() { return load_scene(resource_dir("data") + "/default.scene"); }
+// tests/data/analytic.scene: planes and spheres with constant materials, for the analytic reference.
+inline Scene analytic_scene() { return load_scene(resource_dir("tests") + "/data/analytic.scene"); }
+
+// The best an 8-bit image can do: each value rounded to the nearest code. Measuring an 8-bit
+// render against it counts whole codes; against the float reference the unavoidable output
+// rounding (<= 0.5 LSB) is included.
+inline Image rounded(Image img) {
+    for (float& v : img.rgba) v = std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f;
+    return img;
+}
 
 // A white sphere lit head-on by one large light, on background (0.2, 0.4, 0.6) with ambient
 // 0.5: the corners show the background, the centre saturates.

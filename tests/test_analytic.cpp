@@ -17,16 +17,6 @@ namespace {
 constexpr int kSize = 128;
 constexpr double kLsb = 1.0 / 255.0;
 
-Scene analytic_scene() { return load_scene(resource_dir("tests") + "/data/analytic.scene"); }
-
-// The best an 8-bit image can do: the reference rounded to the nearest code. Measuring an 8-bit
-// render against it counts whole codes; against the float reference the unavoidable output
-// rounding (<= 0.5 LSB) is included.
-Image rounded(Image img) {
-    for (float& v : img.rgba) v = std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f;
-    return img;
-}
-
 double excluded_fraction(const std::vector<uint8_t>& mask) {
     size_t n = 0;
     for (uint8_t m : mask) n += !m;

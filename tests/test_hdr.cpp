@@ -19,13 +19,6 @@ namespace {
 constexpr int kSize = 128;
 constexpr double kLsb = 1.0 / 255.0;
 
-Scene analytic_scene() { return load_scene(resource_dir("tests") + "/data/analytic.scene"); }
-
-Image rounded(Image img) {
-    for (float& v : img.rgba) v = std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f;
-    return img;
-}
-
 // A DeferredShader's frame with P-buffer 0 read back as it is (float where it is float).
 struct Frame {
     Image output, accum;

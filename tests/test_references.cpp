@@ -77,8 +77,7 @@ TEST(References, DefaultReferenceMatchesExactTraceOnConstantMaterials) {
     }
     const AnalyticTrace tr = analytic_trace(plain, kSize, kSize);
     const std::vector<uint8_t> interior = interior_mask(tr, kSize, kSize);
-    Image rounded = tr.image;
-    for (float& v : rounded.rgba) v = std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f;
+    const Image rounded = test::rounded(tr.image);
     const Image ref = load_reference("default_texture_256");
     std::vector<uint8_t> boxes(interior.size(), 0), spheres(interior.size(), 0);
     for (size_t p = 0; p < interior.size(); ++p) {
@@ -98,8 +97,7 @@ TEST(References, DefaultReferenceMatchesExactTraceOnConstantMaterials) {
     // triangles the same pixels are within the deferred path's quantisation.
     AnalyticOptions tri;
     tri.triangles = true;
-    Image tri_rounded = analytic_trace(plain, kSize, kSize, tri).image;
-    for (float& v : tri_rounded.rgba) v = std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f;
+    const Image tri_rounded = test::rounded(analytic_trace(plain, kSize, kSize, tri).image);
     const ImageDiff st = compare_images_masked(ref, tri_rounded, spheres, 2 * kLsb);
     std::printf("[ image    ] default_texture_256.png vs trace of the triangles, spheres' interior: max %.2f LSB, "
                 "mean %.4f LSB, %lld/%lld pixels over 2 LSB\n",
