@@ -37,6 +37,30 @@ inline Scene default_scene() { return load_scene(resource_dir("data") + "/defaul
 // tests/data/analytic.scene: planes and spheres with constant materials, for the analytic reference.
 inline Scene analytic_scene() { return load_scene(resource_dir("tests") + "/data/analytic.scene"); }
 
+// For the analytic reference's hand checks: a plane seen from straight above, one light above its
+// centre. At the centre pixel (odd size, so its ray is the axis) l = v = h = n = +Y, and
+// everything is computable by hand.
+inline Scene plane_from_above() {
+    Scene s;
+    s.camera.pos = {0, 5, 0};
+    s.camera.target = {0, 0, 0};
+    s.camera.up = {0, 0, -1};
+    s.camera.fov_deg = 60;
+    s.camera.near_plane = 0.5f;
+    s.camera.far_plane = 20;
+    s.ambient = glm::vec3(0.1f);
+    s.background = {0.25f, 0.5f, 0.75f};
+    Material m;
+    m.name = "m";
+    m.diffuse = glm::vec3(0.5f);
+    m.specular = glm::vec3(0.25f);
+    m.shininess = 10;
+    s.materials.push_back(m);
+    add_plane(s, 4, {0, 0, 0}, 0);
+    s.lights.push_back({{0, 1, 0}, {1, 1, 1}, 2.0f});
+    return s;
+}
+
 // The best an 8-bit image can do: each value rounded to the nearest code. Measuring an 8-bit
 // render against it counts whole codes; against the float reference the unavoidable output
 // rounding (<= 0.5 LSB) is included.

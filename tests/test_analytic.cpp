@@ -64,28 +64,6 @@ std::vector<uint8_t> same_surface(const Scene& s, const AnalyticTrace& exact) {
     return mask;
 }
 
-// A plane seen from straight above, one light above its centre: at the centre pixel (odd size,
-// so its ray is the axis) l = v = h = n = +Y, and everything is computable by hand.
-Scene plane_from_above() {
-    Scene s;
-    s.camera.pos = {0, 5, 0};
-    s.camera.target = {0, 0, 0};
-    s.camera.up = {0, 0, -1};
-    s.camera.fov_deg = 60;
-    s.camera.near_plane = 0.5f;
-    s.camera.far_plane = 20;
-    s.ambient = glm::vec3(0.1f);
-    s.background = {0.25f, 0.5f, 0.75f};
-    Material m;
-    m.name = "m";
-    m.diffuse = glm::vec3(0.5f);
-    m.specular = glm::vec3(0.25f);
-    m.shininess = 10;
-    s.materials.push_back(m);
-    add_plane(s, 4, {0, 0, 0}, 0);
-    s.lights.push_back({{0, 1, 0}, {1, 1, 1}, 2.0f});
-    return s;
-}
 }  // namespace
 
 TEST(Analytic, HandComputedPixels) {

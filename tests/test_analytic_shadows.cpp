@@ -8,8 +8,10 @@
 #include <cmath>
 
 #include "analysis/analytic_reference.h"
+#include "render_fixture.h"
 
 using namespace dsr;
+using namespace dsr::test;
 using dvec3 = glm::dvec3;
 
 namespace {
@@ -107,23 +109,8 @@ std::vector<glm::dvec2> convex_hull(std::vector<glm::dvec2> p) {
 // 0.098 at the bottom face and 0.080 at the top (lit). Pixel 32 sees the box's top, facing the
 // light: lit, not hidden by its own box.
 TEST(AnalyticShadows, HandComputedPixels) {
-    Scene s;
-    s.camera.pos = {0, 5, 0};
-    s.camera.target = {0, 0, 0};
-    s.camera.up = {0, 0, -1};
-    s.camera.fov_deg = 60;
-    s.camera.near_plane = 0.5f;
-    s.camera.far_plane = 20;
-    s.ambient = glm::vec3(0.1f);
-    Material m;
-    m.name = "m";
-    m.diffuse = glm::vec3(0.5f);
-    m.specular = glm::vec3(0.25f);
-    m.shininess = 10;
-    s.materials.push_back(m);
-    add_plane(s, 4, {0, 0, 0}, 0);
+    Scene s = plane_from_above();  // the light 1 above the centre (render_fixture.h)
     add_box(s, {0.1f, 0.1f, 0.1f}, {0, 0.5f, 0}, 0);
-    s.lights.push_back(point_light({0, 1, 0}, {1, 1, 1}, 2.0f));
     const int n = 65;
     auto at = [&](int i) { return size_t(32) * n + i; };
     const AnalyticTrace plain = analytic_trace(s, n, n);
