@@ -81,6 +81,13 @@ int cmd_render(const std::vector<std::string>& argv) {
         for (auto& s : all) v.push_back(s.ms.*field);
         return median(v);
     };
+    // The same for a FrameStats field: the timed frames', not the counted frame's (its queries
+    // around every light draw slow it).
+    auto med_stat = [&](double FrameStats::*field) {
+        std::vector<double> v;
+        for (auto& s : all) v.push_back(s.*field);
+        return median(v);
+    };
     nlohmann::ordered_json j;
     j["scene"] = scene_path;
     j["size"] = {w, h};
@@ -126,13 +133,20 @@ int cmd_render(const std::vector<std::string>& argv) {
     if (!paths.light_geometry_note.empty()) j["light_geometry_note"] = paths.light_geometry_note;
     if (paths.light_geometry == LightGeometry::stencil) j["stencil_faces"] = stencil_faces_name(paths.stencil_faces);
     if (draws_tiles(paths.light_geometry))
-        j["tiles"] = {{"size", paths.tile_size}, {"lights_per_pass", paths.tile_lights}, {"tile_light_pairs", last.tile_light_pairs}, {"depth_culling", last.tile_depth}, {"depth_ms", last.tile_depth_ms}, {"plan_ms", last.tile_plan_ms}};
-    if (last.auto_geometry)  // what the cost model chose (light_cost.h), against the light stage as measured
+        j["tiles"] = {{"size", paths.tile_size}, {"lights_per_pass", paths.tile_lights}, {"tile_light_pairs", last.tile_light_pairs}, {"depth_culling", last.tile_depth}, {"depth_ms", med_stat(&FrameStats::tile_depth_ms)}, {"plan_ms", med_stat(&FrameStats::tile_plan_ms)}};
+    // What the cost model chose (light_cost.h), against the light stage as measured: both medians
+    // of the timed frames.
+    if (last.auto_geometry)
         j["auto"] = {{"lights", {{"quad", last.auto_lights[0]}, {"volume", last.auto_lights[1]}, {"tiles", last.auto_lights[2]}}},
                      {"depth_spans", last.auto_spans},
-                     {"predicted_lights_ms", last.auto_predicted_ms},
-                     {"measured_lights_ms", last.ms.lights},
+                     {"predicted_lights_ms", med_stat(&FrameStats::auto_predicted_ms)},
+                     {"measured_lights_ms", med(&StageTimes::lights)},
                      {"scale", {{"quad", last.auto_scale[0]}, {"volume", last.auto_scale[1]}, {"tiles", last.auto_scale[2]}}}};
+    // High dynamic range (docs/hdr.md): the accumulation format, the operator and the exposure,
+    // with the scale the counted frame's final pass applied (2^stops, or --exposure auto's).
+    j["hdr"] = {{"accum", accum_format_name(opts.hdr.accum)}, {"tonemap", tone_map_name(opts.hdr.tonemap)},
+                {"exposure_stops", opts.hdr.exposure}, {"exposure_auto", opts.hdr.exposure_auto},
+                {"exposure_scale", ds.exposure_scale()}, {"output_srgb", opts.hdr.output_srgb}};
     j["depth_bounds"] = paths.depth_bounds;
     j["light_passes"] = last.light_passes;
     // The depth hand-off as run (docs/forward.md) (null: nothing needed it) and the forward stage's work.
