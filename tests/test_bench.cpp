@@ -581,6 +581,20 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     EXPECT_EQ(bench::geometry_goals(rows, "default", 3)[3],
               "dsr's default >= 3x faster than screen (LearnOpenGL's lighting pass) on 32-large: screen 30.00 ms / "
               "auto 12.00 ms = 2.50x (dsr's default geometry: auto; 800x600, the demo's size) -> NOT met");
+    // With the light stages' ms, the estimate at the screen row's cost per evaluation follows:
+    // 28.8 ms over 32 x 480000 evaluations is 1.875 ns each; auto's frame outside its light stage
+    // 2 ms, plus 3840000 ideal pairs at that cost (7.2 ms) is 9.2 ms, 30 / 9.2 = 3.26x; auto's
+    // light stage 10 ms is 1.39x that ideal.
+    rows[rows.size() - 2].lights_ms = 28.8;
+    rows.back().lights_ms = 10.0;
+    rows.back().ideal_fragments = 3840000;
+    const std::vector<std::string> e = bench::geometry_goals(rows, "default", 3);
+    EXPECT_EQ(e[4], "  (information: the screen row's light stage 28.80 ms over 32 x 480000 evaluations is 1.88 ns "
+                    "each; the default row's frame outside its light stage 2.00 ms plus 3840000 ideal pairs at that "
+                    "cost (7.20 ms) is 9.20 ms, 3.26x faster than screen; the default row's light stage is 10.00 ms, "
+                    "1.39x that ideal)");
+    EXPECT_EQ(e[5].rfind("  (information, withdrawn as a goal", 0), 0u) << e[5];
+    rows.back().lights_ms.reset();
     rows[rows.size() - 2].w = 512, rows[rows.size() - 2].h = 512;
     EXPECT_NE(bench::geometry_goals(rows, "default", 3)[3].find("(dsr's default geometry: auto; 512x512, not the "
                                                                 "demo's 800x600) -> NOT met"),
@@ -690,7 +704,7 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
         "ideal_fragments", "fragments_ratio", "scissor_pixels", "lights_drawn", "passes", "max_lsb", "mean_lsb",
         "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic", "light_invocations",
         "invocations_ratio", "ideal_source", "floor_fill_ms", "floor_light_ns", "floor_post_ms", "floor_ms",
-        "floor_ratio", "light_passes", "depth_copy_ms", "max_lsb_vs_quad"};
+        "floor_ratio", "light_passes", "depth_copy_ms", "lights_ms", "max_lsb_vs_quad"};
     std::vector<std::string> got;
     for (auto it = f.begin(); it != f.end(); ++it) got.push_back(it.key());
     EXPECT_EQ(got, keys);

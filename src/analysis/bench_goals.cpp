@@ -206,6 +206,31 @@ std::string forward_bound(const std::vector<Row>& rows, const std::string& label
     return s + ")";
 }
 
+// How far the demo goal could go on this GL: the default row's frame with its light stage replaced
+// by the ideal pixel-light pairs at the screen row's cost per evaluation (its light stage over
+// lights x pixels; on llvmpipe every light covering every pixel costs the screen pass about as
+// much, so the figure is the cost of one light evaluated at one pixel there), and the screen row
+// over that. An estimate, not a bound: a loop over fewer lights a pixel pays its per-pixel set-up
+// over fewer evaluations.
+std::string demo_estimate(const std::vector<Row>& rows, const std::string& on) {
+    std::string scene;
+    int n = 0;
+    if (!variant_of(rows, on, scene, n)) return "";
+    const Row* s = find_geometry_row(rows, scene, n, LightGeometry::screen);
+    const Row* d = find_default_row(rows, scene, n);
+    if (!s || !d || !s->lights_ms || !d->lights_ms || !d->ideal_fragments || n <= 0) return "";
+    const double per_eval_ns = *s->lights_ms * 1e6 / (double(n) * s->w * s->h);
+    const double fixed = d->ms_median - *d->lights_ms;
+    const double ideal_lights = double(*d->ideal_fragments) * per_eval_ns * 1e-6;
+    return "(information: the screen row's light stage " + ms(*s->lights_ms) + " over " + std::to_string(n) + " x " +
+           std::to_string(s->w * s->h) + " evaluations is " + format_number("%.2f", per_eval_ns) +
+           " ns each; the default row's frame outside its light stage " + ms(fixed) + " plus " +
+           std::to_string(*d->ideal_fragments) + " ideal pairs at that cost (" + ms(ideal_lights) + ") is " +
+           ms(fixed + ideal_lights) + ", " + format_number("%.2f", s->ms_median / (fixed + ideal_lights)) +
+           "x faster than screen; the default row's light stage is " + ms(*d->lights_ms) + ", " +
+           format_number("%.2f", *d->lights_ms / ideal_lights) + "x that ideal)";
+}
+
 // dsr's default (find_default_row: auto, else quad) against the screen geometry, LearnOpenGL's
 // deferred demo's lighting pass, on the demo's scene (the goal's --lights entry, 32-large), with
 // the size the rows ran at (the demo's is 800x600). The withdrawn forward goal follows as
@@ -228,6 +253,8 @@ Figure demo(const Goal& g, const GoalInput& in) {
                            (demo_size ? ", the demo's size" : ", not the demo's 800x600") + ")");
         }
     }
+    const std::string estimate = demo_estimate(in.rows, g.on);
+    if (!estimate.empty()) f.info.push_back(estimate);
     const std::string bound = forward_bound(in.rows, g.on);
     if (!bound.empty()) f.info.push_back(bound);
     return f;

@@ -69,6 +69,7 @@ json row_json(const Row& r) {
     j["floor_ratio"] = opt(r.floor_ratio);
     j["light_passes"] = opt(r.light_passes);
     j["depth_copy_ms"] = opt(r.depth_copy_ms);
+    j["lights_ms"] = opt(r.lights_ms);
     j["max_lsb_vs_quad"] = r.err_quad ? json(r.err_quad->max_lsb()) : json(nullptr);
     return j;
 }

@@ -65,7 +65,7 @@ struct RowRun {
     Row row;
     std::unique_ptr<DeferredShader> ds;
     std::unique_ptr<ForwardRenderer> fr;
-    std::vector<double> ms, depth_copy_ms, cpu_ms;
+    std::vector<double> ms, depth_copy_ms, lights_ms, cpu_ms;
     FrameStats last;
     ForwardStats last_forward;
     Image image;
@@ -74,6 +74,7 @@ struct RowRun {
         if (ds) {
             last = ds->render(s, w, h);
             depth_copy_ms.push_back(last.ms.depth_copy);
+            lights_ms.push_back(last.ms.lights);
             cpu_ms.push_back(last.ms.cpu);
             return last.ms.frame;
         }
@@ -362,6 +363,7 @@ void finish_row(const Config& cfg, const Variant& v, RowRun& run, const IdealCou
         r.lights_drawn = run.last.lights_drawn;
         r.light_passes = run.last.light_passes;
         r.depth_copy_ms = median(run.depth_copy_ms);
+        r.lights_ms = median(run.lights_ms);
         if (quad) r.err_quad = compare_images(run.image, *quad, 1.0 / 255.0);
         r.ideal_fragments = ideal.fragments;
         r.ideal_source = ideal.source;

@@ -87,6 +87,7 @@ struct Row {
     std::optional<ImageDiff> err_quad;      // deferred rows: vs the default quad row's image
     std::optional<int> light_passes;        // deferred rows: light-shader draws per frame
     std::optional<double> depth_copy_ms;    // deferred rows: the depth hand-off's median ms (0: not run)
+    std::optional<double> lights_ms;        // deferred rows: the light stage's median ms (FrameStats ms.lights)
     int gbuffer_bytes_per_pixel = 0;        // deferred rows: the G-buffer's colour targets + depth, from the
                                             // formats allocated (Paths::gbuffer_bytes_per_pixel); forward rows: 0
 };
