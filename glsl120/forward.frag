@@ -11,8 +11,8 @@
 // opacity; without it alpha is 1 as before).
 #include "lighting.glsl"
 #ifdef SHADOW
-// SHADOW: the pass's light (one) scaled by its shadow map's lookup (the transparent pass's
-// shadowed lights, docs/shadows.md).
+// SHADOW: the pass's light (one) scaled by its shadow map's lookup (the shadowed lights of the
+// transparent pass and of the forward renderers' passes, docs/shadows.md).
 #include "depth_codec.glsl"
 #include "shadow.glsl"
 #endif

@@ -13,10 +13,11 @@ struct ForwardResult {
 };
 
 // as_gpu: the capabilities as probed, but not a CPU rasteriser, so the renderer takes the shader
-// forms it picks for GPUs (forward.frag's VIEW_PER_LIGHT).
-inline ForwardResult render_forward(const Scene& scene, int w, int h, const ForwardOptions& opts, bool as_gpu = false) {
+// forms it picks for GPUs (forward.frag's VIEW_PER_LIGHT). force_off: as render_scene's (--caps).
+inline ForwardResult render_forward(const Scene& scene, int w, int h, const ForwardOptions& opts, bool as_gpu = false,
+                                    const std::vector<std::string>& force_off = {}) {
     auto ctx = create_context(ContextDesc{"osmesa", w, h});
-    Caps caps = probe_caps();
+    Caps caps = probe_caps(force_off);
     if (as_gpu) caps.software_rasterizer = false;
     ForwardRenderer fr(caps, w, h, opts, resource_dir("glsl120"));
     fr.set_scene(scene);

@@ -145,6 +145,7 @@ std::unique_ptr<RowRun> forward(const Setup& st, const Variant& v, ForwardMode m
     ForwardOptions o;
     o.mode = mode;
     o.float_target = float_target;
+    o.shadows.reuse = false;  // as the deferred rows: the shadow rows' maps drawn in every timed frame
     auto run = std::make_unique<RowRun>();
     run->fr = std::make_unique<ForwardRenderer>(st.caps, v.w, v.h, o, st.shaders);
     run->fr->set_scene(v.scene);

@@ -7,8 +7,12 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "deferred/culling.h"
+#include "deferred/frame_stats.h"
 #include "deferred/gpu_scene.h"
+#include "deferred/light_pass.h"
 #include "deferred/light_volume.h"
+#include "deferred/shader_table.h"
+#include "deferred/shadow_stage.h"
 #include "dsr_error.h"
 #include "gl/blit.h"
 #include "gl/check.h"
@@ -96,10 +100,79 @@ void ForwardRenderer::set_scene(const Scene& scene) {
     if (needs_any_light(scene) != any_light_) build_programs(!any_light_);
     gpu_ = std::make_unique<GpuScene>(scene);
     bounds_ = object_bounds(scene);  // per object, world space (scene/bounds.h)
+    update_shadow_stage(scene);
+    if (shadow_stage_) shadow_stage_->set_scene(scene);
     transparent_.reset();
     if (!gpu_->transparent_objects().empty())
         transparent_ = std::make_unique<TransparentPass>(shader_dir_, opts_.listing2_literal);
     check_gl("forward: uploading the scene");
+}
+
+bool ForwardRenderer::wants_shadows(const Scene& scene) const {
+    for (const Light& l : scene.lights)
+        if (opts_.shadows.on && l.shadow.on) return true;
+    return false;
+}
+
+// The deferred renderer's shadow stage, built as DeferredShader builds it (its caster program from
+// the shader table, the map format from the capabilities: depth textures compared by ARB_shadow,
+// else RGB8 packed) while the scene has a light with `shadow` and ShadowOptions::on; and
+// forward.frag's SHADOW form with the same lookup defines the transparent pass compiles.
+void ForwardRenderer::update_shadow_stage(const Scene& scene) {
+    if (!wants_shadows(scene)) {
+        shadow_stage_.reset();
+        return;
+    }
+    if (shadow_stage_) return;
+    ShaderConfig c;
+    c.caps = caps_;
+    c.opts.shadows = opts_.shadows;
+    c.opts.shadow_lights = true;
+    ProgramSet programs(shader_dir_, c, {"shadow_caster"});
+    shadow_stage_ = std::make_unique<ShadowStage>(c, programs);
+    for (int nm = 0; nm < 2; ++nm) {
+        if (shadow_prog_[nm].id()) continue;
+        std::vector<std::string> defs = {"MAX_LIGHTS 1"};
+        if (nm) defs.push_back("NORMAL_MAP");
+        if (opts_.listing2_literal) defs.push_back("LISTING2_LITERAL");
+        for (const std::string& d : shadow_lookup_defines(shadow_stage_->packed(), opts_.shadows.filter))
+            defs.push_back(d);
+        shadow_prog_[nm] = Program(shader_dir_, "forward.vert", "forward.frag", defs);
+        shadow_prog_[nm].use();
+        shadow_prog_[nm].set("normaltex", 0);
+        shadow_prog_[nm].set("colortex", 1);
+        shadow_prog_[nm].set("speculartex", 2);
+        shadow_prog_[nm].set("shadow_map", 4);
+    }
+    gl_state().use_program(0);
+}
+
+// The maps of the frame's visible shadowed lights, drawn by the shadow stage from the frame the
+// deferred renderer would make (make_frame with shadows: the same culling and skips, so the same
+// lights get maps). A shadowed light that frame leaves out (it adds nothing, or its volume reaches
+// no pixel) is not drawn, as the deferred renderer does not draw it.
+void ForwardRenderer::draw_shadow_maps(const Scene& scene, ForwardStats& st) {
+    maps_.clear();
+    light_map_.clear();
+    if (!shadow_stage_) return;
+    FrameSetup setup;
+    setup.width = w_;
+    setup.height = h_;
+    setup.shadows = true;
+    const FrameDef f = make_frame(scene.camera, scene.lights, setup);
+    if (f.shadowed_lights == 0) return;
+    FrameStats fs;
+    maps_ = shadow_stage_->draw(f, scene, *gpu_, fs);
+    st.shadow_maps = fs.shadow_maps;
+    st.shadow_triangles = fs.shadow_triangles;
+    light_map_.assign(scene.lights.size(), nullptr);
+    for (const LightDraw& l : f.lights)
+        if (l.shadow >= 0) light_map_[l.index] = &maps_[size_t(l.shadow)];
+    for (size_t i = 0; i < scene.lights.size(); ++i)
+        if (scene.lights[i].shadow.on && !light_map_[i] && light_visible_[i]) {
+            light_visible_[i] = 0;
+            ++st.lights_culled;
+        }
 }
 
 // Equation 2 (and the attenuation cut, and a spot's cone) makes a light's contribution exactly
@@ -115,6 +188,19 @@ Program& ForwardRenderer::use_material(const Scene& scene, size_t object) {
     Program& prog = prog_[m.normal_map ? 1 : 0];
     prog.use();
     set_forward_material(prog, m, scene.materials[mi].shininess);  // exact, not GpuMaterial's 8-bit code
+    return prog;
+}
+
+Program& ForwardRenderer::use_shadowed(const Scene& scene, size_t object, size_t light) {
+    const int mi = gpu_->object_range(object).material;
+    const GpuMaterial& m = gpu_->material(mi);
+    Program& prog = shadow_prog_[m.normal_map ? 1 : 0];
+    prog.use();
+    set_forward_material(prog, m, scene.materials[mi].shininess);
+    prog.set("nlights", 1);
+    prog.set("ambient", glm::vec3(0));
+    set_light_params(prog, light_params_[light]);  // element 0 of forward.frag's arrays
+    bind_shadow_map(prog, *light_map_[light]);
     return prog;
 }
 
@@ -143,6 +229,7 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
     if (!gpu_) throw Error("forward: render before set_scene");
     if (scene.objects.size() != bounds_.size()) throw Error("forward: render with a scene other than set_scene's");
     if (needs_any_light(scene) != any_light_) build_programs(!any_light_);  // not set_scene's lights
+    if (wants_shadows(scene) != bool(shadow_stage_)) update_shadow_stage(scene);  // nor its `shadow`s
     ForwardStats st;
     const double t0 = now_ms(), cpu0 = thread_cpu_ms();
     const Camera& cam = scene.camera;
@@ -160,6 +247,8 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
         if (!light_visible_[i]) ++st.lights_culled;
         light_params_[i] = light_params(l, cam);  // in double: see draw_lighting
     }
+    // Before the target is bound: the shadow stage draws into framebuffer objects of its own.
+    draw_shadow_maps(scene, st);
 
     if (target_) {
         target_->bind_render();
@@ -185,7 +274,8 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
     }
     gpu_->unbind();
     if (transparent_) {  // blended over the opaque surfaces, as the deferred renderer's forward stage
-        const TransparentStats ts = transparent_->draw(scene, *gpu_, bounds_, light_params_, light_visible_);
+        const TransparentStats ts =
+            transparent_->draw(scene, *gpu_, bounds_, light_params_, light_visible_, light_map_, opts_.shadows.filter);
         st.passes += ts.passes;
         st.light_object_pairs += int(ts.light_object_pairs);
     }
@@ -209,25 +299,34 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
 // Listing 3: for each object, one pass with every light that reaches it. The first pass lays
 // the surface down (ambient + up to batch_ lights, depth written, no blending); when more
 // lights reach the object than the arrays hold, further passes add the rest on exactly the
-// same fragments (GL_EQUAL, the vertex stage is the same program's).
+// same fragments (GL_EQUAL, the vertex stage is the same program's). A shadowed light is one such
+// pass of its own (GLSL 1.20 cannot index an array of samplers by a light's slot), through
+// forward.frag's SHADOW form: the light's term times shadow_factor, after the object's other lights.
 void ForwardRenderer::draw_single(const Scene& scene, ForwardStats& st) {
-    std::vector<int> lights;
+    std::vector<int> lights, shadowed;
     for (size_t m = 0; m < scene.objects.size(); ++m) {
         if (gpu_->transparent(m)) continue;  // after the opaque ones (transparent_pass.h)
         lights.clear();
+        shadowed.clear();
         for (size_t i = 0; i < scene.lights.size(); ++i)
             if (light_visible_[i] && touches(m, scene.lights[i]))
-                lights.push_back(int(i));
-        st.light_object_pairs += int(lights.size());
+                (light_map_.empty() || !light_map_[i] ? lights : shadowed).push_back(int(i));
+        st.light_object_pairs += int(lights.size() + shadowed.size());
         Program& prog = use_material(scene, m);  // in render()'s surface state
         size_t first = std::min(lights.size(), size_t(batch_));
         set_lights(prog, lights, 0, first, scene.ambient);
         draw_object(m, st);
-        if (first < lights.size()) {
+        if (first < lights.size() || !shadowed.empty()) {
             gl_state().apply(add_state(prog.id()));
             for (size_t k = first; k < lights.size(); k += size_t(batch_)) {
                 set_lights(prog, lights, k, std::min(size_t(batch_), lights.size() - k), glm::vec3(0));
                 draw_object(m, st);
+            }
+            for (int i : shadowed) {
+                Program& sp = use_shadowed(scene, m, size_t(i));
+                gl_state().apply(add_state(sp.id()));
+                draw_object(m, st);
+                unbind_shadow_map();
             }
             RenderState lay = surface_state();
             lay.program = prog.id();
@@ -262,18 +361,25 @@ void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
     }
     check_gl_stage("forward: ambient pass");
 
+    // A shadowed light's passes take forward.frag's SHADOW form, its map on unit 4.
     gl_state().apply(add_state(0));
     std::vector<int> one(1);
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         if (!light_visible_[i]) continue;
         one[0] = int(i);
+        const bool shadowed = !light_map_.empty() && light_map_[i];
         for (size_t m = 0; m < scene.objects.size(); ++m) {
             if (gpu_->transparent(m) || !touches(m, scene.lights[i])) continue;
-            Program& prog = use_material(scene, m);
-            set_lights(prog, one, 0, 1, glm::vec3(0));
+            if (shadowed) {
+                use_shadowed(scene, m, i);
+            } else {
+                Program& prog = use_material(scene, m);
+                set_lights(prog, one, 0, 1, glm::vec3(0));
+            }
             draw_object(m, st);
             ++st.light_object_pairs;
         }
+        if (shadowed) unbind_shadow_map();
     }
 }
 

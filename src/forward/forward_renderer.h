@@ -11,6 +11,10 @@
 // output is the only rounding besides float math and texture filtering, and both forms give
 // the same image. Transparent objects (opacity < 1) are drawn after the opaque ones by the same
 // TransparentPass the deferred renderer's forward stage uses (transparent_pass.h).
+// Shadows (docs/shadows.md): the lights whose scene line says `shadow` get a map from the same
+// ShadowStage the deferred renderer draws them with, and are shaded by forward.frag's SHADOW form,
+// one light a pass: single adds each shadowed light that reaches an object by a pass of its own on
+// that object (GL_EQUAL, as its overflow passes), multi's pass of a shadowed light is that form.
 #pragma once
 #include <memory>
 #include <string>
@@ -18,7 +22,9 @@
 
 #include <glm/glm.hpp>
 
+#include "deferred/frame.h"
 #include "deferred/light_params.h"
+#include "deferred/options.h"
 #include "gl/caps.h"
 #include "gl/pbuffer.h"
 #include "gl/program.h"
@@ -29,6 +35,7 @@
 namespace dsr {
 
 class GpuScene;
+class ShadowStage;
 class TransparentPass;
 
 enum class ForwardMode { single, multi };
@@ -43,6 +50,9 @@ struct ForwardOptions {
     // Single mode: lights per pass (the uniform arrays' size), lowered to what
     // GL_MAX_FRAGMENT_UNIFORM_COMPONENTS holds.
     int max_lights_per_pass = 64;
+    // The deferred renderer's switches (options.h): on honours the scene's `shadow` lights, the
+    // filter is the lookup's, reuse keeps a still light's map between frames.
+    ShadowOptions shadows;
 };
 
 struct ForwardStats {
@@ -51,6 +61,8 @@ struct ForwardStats {
     int passes = 0;              // geometry submissions (draw calls), the depth pre-pass included
     int light_object_pairs = 0;  // (light, object) pairs shaded: §3's O(objects x lights)
     int lights_culled = 0;       // lights outside the view frustum (Listing 17's test)
+    int shadow_maps = 0;         // maps drawn this frame (a point light's six faces count six)
+    long long shadow_triangles = 0;
 };
 
 class ForwardRenderer {
@@ -79,6 +91,11 @@ private:
     Program& use_material(const Scene& scene, size_t object);
     void set_lights(Program& prog, const std::vector<int>& lights, size_t first, size_t count, glm::vec3 ambient);
     void draw_object(size_t object, ForwardStats& st);
+    // The SHADOW form for object `object`'s material, bound, with light i (one, its map on unit 4).
+    Program& use_shadowed(const Scene& scene, size_t object, size_t light);
+    bool wants_shadows(const Scene& scene) const;  // a light with `shadow`, and ShadowOptions::on
+    void update_shadow_stage(const Scene& scene);   // shadow_stage_ built or dropped to match
+    void draw_shadow_maps(const Scene& scene, ForwardStats& st);
     bool touches(size_t object, const Light& light) const;
     void build_programs(bool any_light);         // prog_ and loc_light_, with or without LIGHT_POINT_ONLY
     static bool needs_any_light(const Scene& scene);  // a light other than the tutorial's point light
@@ -95,6 +112,10 @@ private:
     std::unique_ptr<PBuffer> target_;  // RGBA32F accumulation, when opts_.float_target
     std::unique_ptr<GpuScene> gpu_;
     std::unique_ptr<TransparentPass> transparent_;  // scenes with transparent materials
+    std::unique_ptr<ShadowStage> shadow_stage_;     // scenes with `shadow` lights, shadows on
+    Program shadow_prog_[2];                        // forward.frag's SHADOW form [normal map?]
+    std::vector<ShadowLookup> maps_;                // this frame's, by LightDraw::shadow
+    std::vector<const ShadowLookup*> light_map_;    // per frame, per scene light: its map (null: none)
     std::vector<ObjectBounds> bounds_;  // per object, world space: light-object culling
     glm::mat4 view_{1};
     std::vector<LightParams> light_params_;  // per frame, eye space
