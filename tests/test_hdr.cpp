@@ -275,4 +275,6 @@ TEST(Hdr, LuminanceHistogramBins) {
     EXPECT_EQ(h.bins[2], 2);  // 0.5 in [0, 1)
     EXPECT_EQ(h.bins[3], 1);  // 9: above
     EXPECT_DOUBLE_EQ(h.above_one, 0.5);
+    // No reduction ran (RGBA8 without --exposure auto): no bins, so the panel says so.
+    EXPECT_TRUE(luminance_histogram({}, 4, -2, 2).bins.empty());
 }

@@ -7,7 +7,9 @@ namespace dsr {
 
 LuminanceHistogram luminance_histogram(const std::vector<glm::vec2>& blocks, int bins, float lo, float hi) {
     LuminanceHistogram h;
-    if (bins <= 0 || !(hi > lo)) return h;
+    // No blocks (no reduction ran: RGBA8 without --exposure auto): no bins, not empty ones, so the
+    // panel says why there is no histogram instead of drawing an empty one.
+    if (bins <= 0 || !(hi > lo) || blocks.empty()) return h;
     h.bins.assign(size_t(bins), 0.0f);
     size_t over = 0;
     for (const glm::vec2& b : blocks) {

@@ -8,7 +8,7 @@
 namespace dsr {
 
 struct LuminanceHistogram {
-    std::vector<float> bins;  // blocks per bin of mean log2 L over [lo, hi]; outside: the end bins
+    std::vector<float> bins;  // blocks per bin of mean log2 L over [lo, hi]; outside: the end bins; none without blocks
     double above_one = 0;     // share of blocks whose largest L is above 1: what RGBA8 clips
 };
 
