@@ -27,20 +27,24 @@ void test_size(int& w, int& h) {
         w = 120, h = 90;
     }
 }
-}  // namespace
-
-TEST(Fallbacks, EveryCombinationMatchesFullCapabilities) {
-    const char* names[4] = {"no-mrt", "no-depth-texture", "no-fbo", "no-npot"};
-    int w = 120, h = 90;
-    test_size(w, h);
-    Scene s = default_scene();
+// The default options of the matrix: bloom and anti-alias on, the tutorial's quads.
+ShaderOptions matrix_options() {
     ShaderOptions opts;
     opts.post.bloom = opts.post.aa = true;  // the post passes sample padded buffers too
     // The tutorial's quads: the light fragments below compare the work, and auto's choice of paths
     // follows the capabilities (without framebuffer objects the tiles cull nothing).
     opts.light_geometry = LightGeometry::quad;
+    return opts;
+}
+
+// Every combination of the four fallbacks against the all-capabilities image of s.
+void check_every_combination(const Scene& s, const ShaderOptions& opts) {
+    const char* names[4] = {"no-mrt", "no-depth-texture", "no-fbo", "no-npot"};
+    int w = 120, h = 90;
+    test_size(w, h);
     auto full = render_scene(s, w, h, opts);
-    std::printf("[ renderer ] %s, %dx%d, bloom + anti-alias on\n", full.renderer.c_str(), w, h);
+    std::printf("[ renderer ] %s, %dx%d, bloom + anti-alias on%s\n", full.renderer.c_str(), w, h,
+                opts.shadow_lights ? ", shadows" : "");
     std::printf("[ matrix   ] %-45s %-8s %-10s %-5s %-5s %8s %9s %8s\n", "forced off", "depth", "gbuffer", "rt",
                 "tex", "max LSB", "mean LSB", "> 2 LSB");
     for (int mask = 0; mask < 16; ++mask) {
@@ -73,6 +77,26 @@ TEST(Fallbacks, EveryCombinationMatchesFullCapabilities) {
         EXPECT_LE(d.max_lsb(), 8.0) << label;
         EXPECT_LE(d.failing_fraction(), 0.01) << label;
         if (d.max_lsb() > 8.0 || d.failing_fraction() > 0.01)
-            write_failure_images("fallback_" + std::to_string(mask), r.image, full.image);
+            write_failure_images(std::string(opts.shadow_lights ? "fallback_shadow_" : "fallback_") + std::to_string(mask),
+                                 r.image, full.image);
     }
+}
+}  // namespace
+
+TEST(Fallbacks, EveryCombinationMatchesFullCapabilities) { check_every_combination(default_scene(), matrix_options()); }
+
+// The same with the first light casting shadows (docs/shadows.md): without framebuffer objects its
+// six faces are drawn in the main frame buffer, piece by piece (a 768 x 512 atlas in 120 x 90), and
+// copied into the map; without depth textures they are packed.
+TEST(Fallbacks, EveryCombinationMatchesFullCapabilitiesWithShadows) {
+    Scene s = default_scene();
+    s.lights[0].shadow.on = true;
+    s.lights[0].shadow.size = 256;
+    ShaderOptions opts = matrix_options();
+    opts.shadow_lights = true;
+    check_every_combination(s, opts);
+    // The shadow is in the picture (149 pixels over 2 LSB at 120x90), so the maps are compared too.
+    Scene plain = s;
+    plain.lights[0].shadow.on = false;
+    EXPECT_GT(compare_images(render_scene(s, 120, 90, opts).image, render_scene(plain, 120, 90, opts).image, 2 * kLsb).failing, 50);
 }

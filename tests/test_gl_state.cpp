@@ -95,6 +95,7 @@ struct Config {
     const char* name;
     std::vector<std::string> caps_off;
     DepthPath depth;
+    bool shadows = false;  // the first light casts shadows (the shadow stage draws before the lights)
 };
 
 const Config kConfigs[] = {
@@ -103,23 +104,35 @@ const Config kConfigs[] = {
     {"no-mrt", {"no-mrt"}, DepthPath::texture},
     {"no-fbo (copy P-buffers)", {"no-fbo"}, DepthPath::texture},
     {"no-npot", {"no-npot"}, DepthPath::texture},
+    {"shadows", {}, DepthPath::texture, true},
+    {"no-fbo shadows (maps copied from the main buffer)", {"no-fbo"}, DepthPath::texture, true},
+    {"no-fbo packed shadows", {"no-fbo", "no-depth-texture"}, DepthPath::packed, true},
 };
 
+// The default scene, its first light casting shadows where c asks.
+Scene config_scene(const Config& c) {
+    Scene s = test::default_scene();
+    if (c.shadows) s.lights[0].shadow.on = true, s.lights[0].shadow.size = 256;
+    return s;
+}
+
 TEST(GlState, CacheMatchesGlAfterEveryStage) {
-    const Scene scene = test::default_scene();
     for (const Config& c : kConfigs) {
+        const Scene scene = config_scene(c);
         ShaderOptions o = with_post();
         o.depth = c.depth;
+        o.shadow_lights = c.shadows;
         StageRun r = run_stages(scene, 96, 64, o, c.caps_off, false);
         for (const auto& m : r.mismatches) ADD_FAILURE() << c.name << ", after " << m;
     }
 }
 
 TEST(GlState, NoStageReliesOnWhatThePreviousLeft) {
-    const Scene scene = test::default_scene();
     for (const Config& c : kConfigs) {
+        const Scene scene = config_scene(c);
         ShaderOptions o = with_post();
         o.depth = c.depth;
+        o.shadow_lights = c.shadows;
         StageRun clean = run_stages(scene, 96, 64, o, c.caps_off, false);
         StageRun scrambled = run_stages(scene, 96, 64, o, c.caps_off, true);
         ImageDiff d = compare_images(scrambled.image, clean.image, 0.5 / 255.0);

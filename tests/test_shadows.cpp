@@ -2,7 +2,8 @@
 // over a plane under a spot, a point and a directional light darkens the plane where the light is
 // blocked and nowhere else; the depth-texture maps and the packed ones agree; every light geometry
 // gives the same image; a scene whose lights say no `shadow` (or --shadows off) is untouched; the
-// stage draws only the maps and objects it needs.
+// stage draws only the maps and objects it needs; without framebuffer objects the maps drawn in
+// the main frame buffer, piece by piece, are the framebuffer objects' maps.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -81,6 +82,42 @@ TEST(Shadows, DepthPathsAndGeometriesAgree) {
     EXPECT_LE(max_lsb(ref, maps_only.image), 1.0f);
     for (LightGeometry g : {LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles, LightGeometry::automatic})
         EXPECT_EQ(max_lsb(ref, render_scene(s, kSize, kSize, shadowed(g)).image), 0.0f) << light_geometry_name(g);
+}
+
+// Without framebuffer objects (--caps no-fbo) each map is drawn in the main frame buffer and copied
+// into its texture, in pieces where the window is smaller than the map: 256-texel maps in a 96 x 96
+// window are 3 x 3 pieces (the last row and column 64 wide), a point light's 768 x 512 atlas 8 x 6,
+// on both depth paths. The copy render target draws the G-buffer and P-buffers the same way with
+// framebuffer-object maps: the image must be the same to the byte (a piece left uncopied, or one
+// drawn a texel off, is not). Against the framebuffer-object path the copied G-buffer alone differs,
+// by at most 1 LSB (docs/shadows.md measured data/shadow.scene at 320x240, 1200x1100, 3100x2100).
+TEST(Shadows, WithoutFramebufferObjectsTheMapsAreCopiedInPieces) {
+    for (Light::Type t : {Light::Type::spot, Light::Type::point}) {
+        Scene s = box_scene(t);
+        s.lights[0].shadow.size = 256;
+        for (bool packed : {false, true}) {
+            ShaderOptions o = shadowed();
+            std::vector<std::string> off;
+            if (packed) o.depth = DepthPath::packed, off = {"no-depth-texture"};
+            const std::string what = std::string(t == Light::Type::spot ? "spot" : "point") + (packed ? " packed" : " texture");
+            const RenderResult fbo = render_scene(s, kSize, kSize, o, off);
+            ShaderOptions copy = o;
+            copy.render_target = RenderTarget::copy;
+            const RenderResult copied = render_scene(s, kSize, kSize, copy, off);
+            off.push_back("no-fbo");
+            const RenderResult r = render_scene(s, kSize, kSize, o, off);
+            EXPECT_EQ(r.paths.render_target, "copy") << what;
+            EXPECT_EQ(max_lsb(r.image, copied.image), 0.0f) << what;
+            EXPECT_LE(max_lsb(r.image, fbo.image), 1.0f) << what;
+            EXPECT_EQ(r.stats.shadow_maps, fbo.stats.shadow_maps) << what;
+            // The spot's view spans every piece: its 14 triangles are drawn 9 times.
+            if (t == Light::Type::spot) {
+                EXPECT_EQ(r.stats.shadow_triangles, 9 * fbo.stats.shadow_triangles) << what;
+            }
+            if (max_lsb(r.image, copied.image) > 0)
+                write_failure_images("shadows_no_fbo_" + std::to_string(int(t)) + (packed ? "_packed" : ""), r.image, copied.image);
+        }
+    }
 }
 
 // --shadows off (shadow_lights false) ignores the scene's `shadow`: the image of the scene without

@@ -16,6 +16,7 @@
 #include "app/command_table.h"
 #include "app/stage.h"
 #include "deferred/deferred_shader.h"
+#include "deferred/main_buffer_map.h"
 #include "gl/caps.h"
 #include "gl/check.h"
 #include "gl/state.h"
@@ -157,14 +158,15 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["transparent_passes"] = last.transparent_passes;
     j["lights_as_quads"] = last.lights_as_quads;
     // The shadow stage (docs/shadows.md): maps drawn in the counted frame (a point light's six
-    // faces count six) and the triangles drawn into them; the filter and the maps' format.
+    // faces count six) and the triangles drawn into them (without framebuffer objects once per
+    // piece of the main frame buffer that draws them); the filter and the maps' format.
     j["shadows"] = opts.shadow_lights;
     j["shadow_filter"] = shadow_filter_name(opts.shadows.filter);
     j["shadow_maps"] = last.shadow_maps;
     j["shadow_triangles"] = last.shadow_triangles;
     j["shadow_map_format"] = !opts.shadow_lights ? nlohmann::json(nullptr)
-                             : caps.depth_texture && caps.shadow ? nlohmann::json("depth-texture")
-                                                                 : nlohmann::json("packed-rgb8");
+                             : !shadow_maps_packed(caps) ? nlohmann::json("depth-texture")
+                                                         : nlohmann::json("packed-rgb8");
     if (!stats_path.empty()) {  // reads the G-buffer back: only when asked for
         const FrameIdeal ideal = frame_ideal_fragments(ds, scene);
         j["ideal_fragments"] = ideal.fragments ? nlohmann::json(*ideal.fragments) : nlohmann::json(nullptr);

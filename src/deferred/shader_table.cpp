@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "deferred/main_buffer_map.h"
 #include "deferred/tile_plan.h"
 #include "dsr_error.h"
 #include "gl/rounding_probe.h"
@@ -181,8 +182,9 @@ bool tile_depth(const ShaderConfig& c) {
 
 // Shadow maps (shadow_stage.h, glsl120/shadow.glsl): built only for scenes with shadowed lights.
 bool shadows(const ShaderConfig& c) { return c.opts.shadow_lights; }
-// Depth textures compared by ARB_shadow where the GL has both, else depth packed in RGB8.
-bool shadow_packed(const ShaderConfig& c) { return !(c.caps.depth_texture && c.caps.shadow); }
+// Depth textures compared by ARB_shadow where the GL has both (and, without framebuffer objects, a
+// main frame buffer of 24 depth bits to copy them from), else depth packed in RGB8.
+bool shadow_packed(const ShaderConfig& c) { return shadow_maps_packed(c.caps); }
 Defines shadow_defines(Defines d, const ShaderConfig& c) {
     const Defines s = shadow_lookup_defines(shadow_packed(c), c.opts.shadows.filter);
     d.insert(d.end(), s.begin(), s.end());

@@ -5,6 +5,7 @@
 
 #include "deferred/depth_codec.h"
 #include "deferred/gpu_scene.h"
+#include "deferred/main_buffer_map.h"
 #include "dsr_error.h"
 #include "gl/check.h"
 #include "gl/readback.h"
@@ -21,22 +22,19 @@ bool casts_into(const Light& light, const ShadowLayout& s, const ShadowView& v, 
 }
 
 // The view's place in the texture: the whole of it, or a cube face's tile of the 3 x 2.
-void view_viewport(const ShadowLayout& s, size_t view) {
-    if (s.kind != ShadowKind::cube) {
-        glViewport(0, 0, s.width, s.height);
-        return;
-    }
-    glViewport(int(view % 3) * s.face, int(view / 3) * s.face, s.face, s.face);
+MapPiece view_rect(const ShadowLayout& s, size_t view) {
+    if (s.kind != ShadowKind::cube) return {0, 0, s.width, s.height};
+    return {int(view % 3) * s.face, int(view / 3) * s.face, s.face, s.face};
 }
 
 }  // namespace
 
 ShadowStage::ShadowStage(const ShaderConfig& c, ProgramSet& programs)
     : caster_(programs.take("shadow_caster")),
-      packed_(!(c.caps.depth_texture && c.caps.shadow)),
+      packed_(shadow_maps_packed(c.caps)),
+      main_buffer_(!c.caps.fbo),
       hard_(c.opts.shadows.filter == ShadowFilter::hard),
       reuse_(c.opts.shadows.reuse) {
-    if (!c.caps.fbo) throw Error("shadow maps need EXT_framebuffer_object (--shadows off draws without them)");
     GLint max = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
     max_texture_ = std::max(64, int(max));
@@ -67,13 +65,19 @@ void ShadowStage::allocate(Map& m, int width, int height) {
     glBindTexture(GL_TEXTURE_2D, m.texture);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glGenFramebuffersEXT(1, &m.fbo);
-    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, m.fbo);
+    if (!main_buffer_) {
+        glGenFramebuffersEXT(1, &m.fbo);
+        glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, m.fbo);
+    }
     if (packed_) {
         // The shader filters (shadow.glsl): each texel's code must come back whole.
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, width, height, 0, GL_RGB, GL_UNSIGNED_BYTE, nullptr);
+        if (main_buffer_) {  // the main frame buffer's depth serves the test
+            glBindTexture(GL_TEXTURE_2D, 0);
+            return;
+        }
         glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_TEXTURE_2D, m.texture, 0);
         glGenRenderbuffersEXT(1, &m.depth_rb);
         glBindRenderbufferEXT(GL_RENDERBUFFER_EXT, m.depth_rb);
@@ -89,6 +93,10 @@ void ShadowStage::allocate(Map& m, int width, int height) {
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC_ARB, GL_LEQUAL);
         glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE_ARB, GL_LUMINANCE);
         glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, width, height, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
+        if (main_buffer_) {  // filled from the main frame buffer's depth
+            glBindTexture(GL_TEXTURE_2D, 0);
+            return;
+        }
         glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_TEXTURE_2D, m.texture, 0);
         glDrawBuffer(GL_NONE);  // the framebuffer object's own state: depth only
         glReadBuffer(GL_NONE);
@@ -136,29 +144,48 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
         if (!same) {
             allocate(m, layout.width, layout.height);
             m.clips = key.clips, m.objects = key.objects, m.models = key.models;
-            glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, m.fbo);
             if (!bound) {
                 gpu.bind_positions();
                 bound = true;
             }
-            glViewport(0, 0, m.width, m.height);
-            gl_state().apply(s);
             glClearDepth(1.0);
             glClearColor(1, 1, 1, 1);  // pack_depth(1): far, wherever nothing is drawn
-            glClear(GL_DEPTH_BUFFER_BIT | (packed_ ? GL_COLOR_BUFFER_BIT : 0));
-            caster_.set("shadow_depth", layout.depth);
-            for (size_t v = 0; v < layout.views.size(); ++v) {
-                view_viewport(layout, v);
+            const GLbitfield clear = GL_DEPTH_BUFFER_BIT | (packed_ ? GL_COLOR_BUFFER_BIT : 0);
+            // View v's objects with its viewport moved by -(ox, oy).
+            auto draw_view = [&](size_t v, int ox, int oy) {
+                const MapPiece r = view_rect(layout, v);
+                glViewport(r.x - ox, r.y - oy, r.width, r.height);
                 gl_state().set_camera(glm::mat4(layout.views[v].proj));
                 gpu.set_view(layout.views[v].view);
                 for (size_t o : m.objects[v]) {
-                    const DrawRange& r = gpu.object_range(o);
-                    gpu.draw(r);
-                    stats.shadow_triangles += r.count / 3;
+                    const DrawRange& rg = gpu.object_range(o);
+                    gpu.draw(rg);
+                    stats.shadow_triangles += rg.count / 3;
                 }
-                ++stats.shadow_maps;
+            };
+            if (!main_buffer_) {
+                glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, m.fbo);
+                glViewport(0, 0, m.width, m.height);
+                gl_state().apply(s);
+                glClear(clear);
+                caster_.set("shadow_depth", layout.depth);
+                for (size_t v = 0; v < layout.views.size(); ++v) draw_view(v, 0, 0);
+                glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+            } else {
+                // Into the frame's own region of the main frame buffer (what the copy P-buffers
+                // take, so the drawable holds it), in pieces where the map is larger; each piece
+                // draws the views that reach it (its triangles count once per piece).
+                RenderState sp = s;
+                sp.scissor = true;
+                gl_state().apply(sp);
+                caster_.set("shadow_depth", layout.depth);
+                draw_through_main_buffer(m.texture, map_pieces(m.width, m.height, f.width, f.height), !packed_, clear,
+                                         [&](const MapPiece& p) {
+                                             for (size_t v = 0; v < layout.views.size(); ++v)
+                                                 if (pieces_overlap(view_rect(layout, v), p)) draw_view(v, p.x, p.y);
+                                         });
             }
-            glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
+            stats.shadow_maps += int(layout.views.size());
         }
         ShadowLookup& k = out[size_t(l.shadow)];
         k.texture = m.texture;

@@ -7,6 +7,9 @@
 //   depth-texture path  a depth texture (ARB_depth_texture) compared by ARB_shadow in the lookup
 //   packed path         depth packed into RGB8 by the G-buffer's codec (depth_codec.glsl
 //                       pack_depth), a depth renderbuffer for the test; compared in the shader
+// Without EXT_framebuffer_object each map is drawn into the main frame buffer, in pieces where it
+// is larger than the frame, and copied into its texture (main_buffer_map.h); the packed path
+// there where the main frame buffer's depth has fewer than 24 bits (map_pieces.h maps_packed).
 // Point lights (and spots wider than kSpotCubeAngle) draw six faces into one 2D texture, 3 x 2:
 // GL 2.x cannot attach a cube map face of depth, and one layout serves both paths.
 #pragma once
@@ -28,7 +31,7 @@ class GpuScene;
 
 class ShadowStage {
 public:
-    // Needs EXT_framebuffer_object (throws dsr::Error naming it otherwise).
+    // Framebuffer objects where the GL has them (c.caps.fbo), else the main frame buffer.
     ShadowStage(const ShaderConfig& c, ProgramSet& programs);
     ~ShadowStage();
     ShadowStage(const ShadowStage&) = delete;
@@ -46,7 +49,7 @@ public:
 
 private:
     struct Map {
-        GLuint texture = 0, fbo = 0, depth_rb = 0;
+        GLuint texture = 0, fbo = 0, depth_rb = 0;  // fbo, depth_rb: 0 in the main frame buffer
         int width = 0, height = 0;
         // What it was drawn with: each view's clip matrix and the objects drawn into it.
         std::vector<glm::dmat4> clips;
@@ -58,6 +61,7 @@ private:
 
     Program caster_;
     bool packed_ = false;
+    bool main_buffer_ = false;  // no framebuffer objects: drawn in the main frame buffer and copied
     bool hard_ = false;
     bool reuse_ = true;  // ShadowOptions::reuse
     int max_texture_ = 0;

@@ -10,7 +10,7 @@ const std::vector<CapName>& cap_names() {
         {"no-mrt", "ARB_draw_buffers", "one G-buffer target per pass (§3.2 without multiple render targets)"},
         {"no-depth-texture", "ARB_depth_texture", "--depth auto takes the packed path (Listings 11, 18)"},
         {"no-shadow", "ARB_shadow", "shadow maps are packed into RGB8 and compared in the shader, as without depth textures"},
-        {"no-fbo", "EXT_framebuffer_object", "buffers drawn in the main frame buffer and copied to textures"},
+        {"no-fbo", "EXT_framebuffer_object", "buffers and shadow maps drawn in the main frame buffer and copied to textures"},
         {"no-arb-fbo", "ARB_framebuffer_object", "EXT_framebuffer_object's one format for every target of a framebuffer"},
         {"no-npot", "ARB_texture_non_power_of_two", "targets padded to powers of two"},
         {"no-float", "ARB_texture_float and ARB_half_float_pixel", "--gbuffer half, the position paths and --accum half/float are refused"},
