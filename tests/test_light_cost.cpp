@@ -149,6 +149,35 @@ TEST(LightCost, TileCoverMatchesTileByTile) {
     }
 }
 
+// price_lights computes each tile's share once; its prices are light_prices' to the bit, over
+// random frames with and without tiles, volumes refused and tiles refused.
+TEST(LightCost, PriceLightsIsLightPrices) {
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<int> tile(0, 59), count(0, 40);
+    std::uniform_real_distribution<double> u(0, 1);
+    const LightCostModel m = test_model();
+    for (int trial = 0; trial < 50; ++trial) {
+        TileGrid grid;
+        grid.tile_px = 256;
+        grid.lights_per_pass = 1 + trial % 32;
+        grid.lights.resize(60);
+        for (int& k : grid.lights) k = count(rng);
+        std::vector<LightFeature> ls(20);
+        for (LightFeature& l : ls) {
+            l.rect_px = 1e5 * u(rng);
+            l.volume_ok = u(rng) < 0.8;
+            l.tiles_ok = u(rng) < 0.8;
+            for (int t = 0, n = count(rng); t < n; ++t) l.tiles.push_back(tile(rng));
+        }
+        const LightPrices p = price_lights(ls, grid, m);
+        ASSERT_EQ(p.size(), ls.size());
+        for (size_t i = 0; i < ls.size(); ++i) {
+            const std::array<double, kLightPaths> want = light_prices(ls[i], grid, m, {1, 1, 1});
+            for (int k = 0; k < kLightPaths; ++k) EXPECT_EQ(p[i][size_t(k)], want[size_t(k)]) << "trial " << trial << " light " << i;
+        }
+    }
+}
+
 // A tile's passes are shared among its lights: the same light is cheaper in tiles where more
 // lights keep its tiles (one pass for up to lights_per_pass of them).
 TEST(LightCost, TilesShareTheirPasses) {

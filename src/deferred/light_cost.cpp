@@ -100,8 +100,25 @@ std::array<double, kLightPaths> light_prices(const LightFeature& l, const TileGr
 }
 
 LightPrices price_lights(const std::vector<LightFeature>& lights, const TileGrid& grid, const LightCostModel& m) {
+    // light_prices' tile term once per tile, not once per (light, tile) pair: the same expression
+    // summed in the same order, so the same prices to the bit (LightCost.PriceLightsIsLightPrices).
+    std::vector<double> share(grid.lights.size());
+    for (size_t t = 0; t < share.size(); ++t) {
+        const int k = std::max(1, grid.lights[t]);
+        const double passes = std::ceil(double(k) / grid.lights_per_pass);
+        share[t] = grid.tile_px * (m.tile_pass_mpx_ms * passes / k + m.tile_light_mpx_ms);
+    }
     LightPrices p(lights.size());
-    for (size_t i = 0; i < lights.size(); ++i) p[i] = light_prices(lights[i], grid, m, {1, 1, 1});
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const LightFeature& l = lights[i];
+        LightFeature no_tiles;  // the quad and volume terms from light_prices itself
+        no_tiles.rect_px = l.rect_px, no_tiles.volume_ok = l.volume_ok, no_tiles.tiles_ok = false;
+        p[i] = light_prices(no_tiles, grid, m, {1, 1, 1});
+        if (!l.tiles_ok) continue;
+        double px = 0;
+        for (int t : l.tiles) px += share[size_t(t)];
+        p[i][int(LightPath::tiles)] = px * kMpx;
+    }
     return p;
 }
 

@@ -143,6 +143,38 @@ public:
             }
     }
 
+    // The tiles each() gives for light l and rectangle r, appended to `out` in row-major order
+    // (ascending tile index) without sorting: each block of the rectangle is tested once, then the
+    // rows are walked tile by tile within the blocks that passed.
+    void row_major(int l, const ScissorRect& r, int ts, std::vector<int>& out, std::vector<char>& scratch) const {
+        const int x0 = r.x0 / ts, x1 = (r.x1 - 1) / ts, y0 = r.y0 / ts, y1 = (r.y1 - 1) / ts;
+        if (!depth_) {
+            out.reserve(out.size() + size_t(x1 - x0 + 1) * size_t(y1 - y0 + 1));
+            for (int y = y0; y <= y1; ++y)
+                for (int x = x0; x <= x1; ++x) out.push_back(y * tx_ + x);
+            return;
+        }
+        const CullLight& light = lights_[size_t(l)];
+        const int bx0 = x0 / kBlock, bx1 = x1 / kBlock, by0 = y0 / kBlock, by1 = y1 / kBlock, nbx = bx1 - bx0 + 1;
+        scratch.assign(size_t(nbx) * size_t(by1 - by0 + 1), 0);
+        bool any = false;
+        for (int by = by0; by <= by1; ++by)
+            for (int bx = bx0; bx <= bx1; ++bx) {
+                const bool m = meets(light, blocks_[size_t(by) * bx_ + bx]);
+                scratch[size_t(by - by0) * nbx + (bx - bx0)] = m;
+                any |= m;
+            }
+        if (!any) return;
+        for (int y = y0; y <= y1; ++y) {
+            const char* row = &scratch[size_t(y / kBlock - by0) * nbx];
+            for (int bx = bx0; bx <= bx1; ++bx) {
+                if (!row[bx - bx0]) continue;
+                for (int x = std::max(x0, bx * kBlock); x <= std::min(x1, bx * kBlock + kBlock - 1); ++x)
+                    if (meets(light, tiles_[size_t(y) * tx_ + x])) out.push_back(y * tx_ + x);
+            }
+        }
+    }
+
 private:
     const TileDepth* depth_;
     int tx_, bx_ = 0;
@@ -157,15 +189,12 @@ std::vector<std::vector<int>> tiles_kept(const std::vector<ScissorRect>& rects, 
     const int tx = (width + tile_size - 1) / tile_size, ty = (height + tile_size - 1) / tile_size;
     const TileCuller culler(depth, tx, ty);
     std::vector<std::vector<int>> out(rects.size());
+    std::vector<char> scratch;
     for (size_t i = 0; i < rects.size(); ++i) {
         const ScissorRect r{std::max(0, rects[i].x0), std::max(0, rects[i].y0), std::min(width, rects[i].x1),
                             std::min(height, rects[i].y1)};
         if (r.x1 <= r.x0 || r.y1 <= r.y0) continue;
-        culler.each(int(i), r, tile_size, [&](int x, int y) {
-            out[i].push_back(y * tx + x);
-            return false;
-        });
-        std::sort(out[i].begin(), out[i].end());
+        culler.row_major(int(i), r, tile_size, out[i], scratch);  // ascending: no sort (it cost half the time)
     }
     return out;
 }
