@@ -38,7 +38,7 @@ LightCostModel default_light_costs(bool software_rasterizer) {
         // A path drawn at all: its programs and state, and on llvmpipe the scene it flushes (a
         // mix of 351 lights in tiles and 6 as volumes at 512x512 was slower than tiles alone).
         m.path_ms = 0.4;
-        m.shadow_mpx_ms = 20;  // provisional; set from the measurement below
+        m.shadow_mpx_ms = 13.5;  // estimated, not fitted: about a light term in the tiles loop
     } else {
         // An NVIDIA H200 through EGL at 1920x1080, each path forced (tests/gpu_bench.sh part auto,
         // docs/gpu.md): batched quads cost the CPU almost nothing a light (4096 lights, 8.5 Mpx of
