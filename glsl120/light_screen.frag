@@ -4,8 +4,10 @@
 // uniform arrays hold a batch of BATCH lights, light_count of them set; the G-buffer is read once,
 // then Listing 20's light term is summed over all of them with no depth test, no sphere test and
 // no discard, and the sum is blended once: one rounding to 8 bits per pixel, as the demo's.
+// SHADOW (with SHADOW_SLOTS K): up to K shadowed lights a batch, as light_tiles.frag holds them.
 #include "depth_codec.glsl"
 #include "lighting.glsl"
+#include "shadow.glsl"
 
 uniform sampler2D normal_map;    // unit 0
 uniform sampler2D diffuse_map;   // unit 1
@@ -37,8 +39,16 @@ void main()
     for (int k = 0; k < BATCH; ++k) {
         if (k >= light_count)
             break;
-        c += light_contribution(lightpos[k], lightcolor[k], lightdir[k], lightspot[k], lightatt[k], pos, v, normal,
-                                diffuse, specular.rgb, shininess);
+        vec3 t = light_contribution(lightpos[k], lightcolor[k], lightdir[k], lightspot[k], lightatt[k], pos, v, normal,
+                                    diffuse, specular.rgb, shininess);
+#ifdef SHADOW
+        float slot = lightspot[k].z;
+        if (slot > -0.5) {
+            vec3 to_light = lightcolor[k].w > 1.5 ? -lightdir[k].xyz : normalize(lightpos[k].xyz - pos);
+            t *= shadow_factor(int(slot + 0.5), pos, normal, to_light);
+        }
+#endif
+        c += t;
     }
     gl_FragColor = vec4(c, 1.0);
 }

@@ -5,10 +5,13 @@
 // lo, 255 for none). The G-buffer is read once, then Listing 20's light loop runs over the tile's
 // lights, with light.frag's per-light tests (LIGHT_DEPTH_TEST, LIGHT_SPHERE_TEST) as early returns
 // from shade(); the sum is blended once. A pixel no light reaches is discarded (nothing to add; light_fragments
-// counts the rest).
+// counts the rest). SHADOW (with SHADOW_SLOTS K): up to K of the batch's lights are shadowed, each
+// light's slot among the batch's maps in lightspot.z (-1: none), its term scaled by shadow.glsl's
+// lookup as light.frag's SHADOW form scales it.
 #include "depth_codec.glsl"
 #include "lighting.glsl"
 #include "quantize.glsl"
+#include "shadow.glsl"
 
 uniform sampler2D normal_map;    // unit 0
 uniform sampler2D diffuse_map;   // unit 1
@@ -53,6 +56,13 @@ void shade(int i, vec3 pos, vec3 v, vec3 normal, vec3 diffuse, vec4 specular, fl
 #endif
     vec3 t = light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, v, normal,
                                 diffuse, specular.rgb, shininess);
+#ifdef SHADOW
+    float slot = lightspot[i].z;
+    if (slot > -0.5) {
+        vec3 to_light = lightcolor[i].w > 1.5 ? -lightdir[i].xyz : normalize(lp.xyz - pos);  // light.frag's
+        t *= shadow_factor(int(slot + 0.5), pos, normal, to_light);
+    }
+#endif
 #ifndef ACCUM_FLOAT
     t = clamp(t, 0.0, 1.0);  // a float P-buffer 0 (ACCUM_FLOAT) clamps nothing: the term as its pass would add it
 #endif

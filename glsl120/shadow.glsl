@@ -8,61 +8,110 @@
 // comparisons bilinearly where the GL does); SHADOW_PACKED reads the RGB8 map through
 // depth_codec.glsl's unpack_depth and compares here, the same four texels with the same weights.
 // SHADOW_HARD: the nearest texel alone. SHADOW_TAPS N: N x N of those lookups a texel apart, averaged.
+// SHADOW_SLOTS K: the batched light passes (light_tiles.frag, light_screen.frag), which shade up to
+// K shadowed lights a draw: their maps on units 4 .. 4+K-1 (shadow_maps), the per-map uniforms as
+// arrays indexed by the light's shadow slot, shadow_factor(slot, ...). GLSL 1.20 indexes a sampler
+// array only with a constant, so shadow_compare(slot, ...) picks the sampler by an if-chain; the
+// lookup itself (shadow_lookup) is one function for both forms, its map a sampler or a slot.
 #ifdef SHADOW
 #ifndef SHADOW_TAPS
 #define SHADOW_TAPS 1
 #endif
 #ifdef SHADOW_PACKED
-uniform sampler2D shadow_map;        // unit 4: depth packed into RGB8
+#define SHADOW_SAMPLER sampler2D        // depth packed into RGB8
 #else
-uniform sampler2DShadow shadow_map;  // unit 4: depth texture, GL_COMPARE_R_TO_TEXTURE, GL_LEQUAL
+#define SHADOW_SAMPLER sampler2DShadow  // depth texture, GL_COMPARE_R_TO_TEXTURE, GL_LEQUAL
 #endif
+#ifdef SHADOW_SLOTS
+uniform SHADOW_SAMPLER shadow_maps[SHADOW_SLOTS];  // units 4 .. 4+K-1
+uniform vec4 shadow_view[4 * SHADOW_SLOTS];        // as below, slot s at [4s, 4s+3]
+uniform vec4 shadow_proj[4 * SHADOW_SLOTS];
+uniform vec3 shadow_depth[SHADOW_SLOTS];
+uniform vec4 shadow_params[SHADOW_SLOTS];
+uniform vec4 shadow_size[SHADOW_SLOTS];
+#define SHADOW_MAP int  // shadow_lookup's map: a slot
+#else
+uniform SHADOW_SAMPLER shadow_map;  // unit 4
 uniform vec4 shadow_view[4];  // eye space -> light space, by columns
 uniform vec4 shadow_proj[4];  // light space -> the map's clip space (perspective, orthographic)
 uniform vec3 shadow_depth;
 uniform vec4 shadow_params;   // (bias, slope, texel.x, texel.y): scene.h LightShadow, shadow_math.h
 uniform vec4 shadow_size;     // (kind: 0 perspective, 1 orthographic, 2 six faces; face texels; width; height)
+#define SHADOW_MAP SHADOW_SAMPLER  // shadow_lookup's map: the sampler
+#endif
 
 #ifdef SHADOW_PACKED
 // 1 where depth d is at most the texel's at texture coordinates uv (a texel centre).
-float shadow_texel(vec2 uv, float d)
+float shadow_texel(sampler2D m, vec2 uv, float d)
 {
-    return d <= unpack_depth(texture2D(shadow_map, uv).rgb) ? 1.0 : 0.0;
+    return d <= unpack_depth(texture2D(m, uv).rgb) ? 1.0 : 0.0;
 }
 #endif
 
-// One comparison at texture coordinates uv: the nearest texel, or its 2x2 weighted bilinearly.
-float shadow_compare(vec2 uv, float d)
+// One comparison at texture coordinates uv of map m (size: its texels): the nearest texel, or its
+// 2x2 weighted bilinearly.
+float shadow_compare(SHADOW_SAMPLER m, vec2 size, vec2 uv, float d)
 {
 #ifdef SHADOW_PACKED
-    vec2 size = shadow_size.zw;
 #ifdef SHADOW_HARD
-    return shadow_texel((floor(uv * size) + 0.5) / size, d);
+    return shadow_texel(m, (floor(uv * size) + 0.5) / size, d);
 #else
     vec2 t = uv * size - 0.5;
     vec2 i = floor(t);
     vec2 w = t - i;
     vec2 a = (i + 0.5) / size, b = (i + 1.5) / size;
-    return mix(mix(shadow_texel(a, d), shadow_texel(vec2(b.x, a.y), d), w.x),
-               mix(shadow_texel(vec2(a.x, b.y), d), shadow_texel(b, d), w.x), w.y);
+    return mix(mix(shadow_texel(m, a, d), shadow_texel(m, vec2(b.x, a.y), d), w.x),
+               mix(shadow_texel(m, vec2(a.x, b.y), d), shadow_texel(m, b, d), w.x), w.y);
 #endif
 #else
-    return shadow2D(shadow_map, vec3(uv, d)).r;
+    return shadow2D(m, vec3(uv, d)).r;
 #endif
 }
 
-// The fraction of the light reaching eye-space point p (unit normal n, unit l towards the light).
-float shadow_factor(vec3 p, vec3 n, vec3 l)
+#ifdef SHADOW_SLOTS
+// The same through slot s's map.
+#define SHADOW_CASE(k) if (s == k) return shadow_compare(shadow_maps[k], size, uv, d);
+float shadow_compare(int s, vec2 size, vec2 uv, float d)
 {
-    vec3 q = (mat4(shadow_view[0], shadow_view[1], shadow_view[2], shadow_view[3]) * vec4(p, 1.0)).xyz;
+    SHADOW_CASE(0)
+#if SHADOW_SLOTS > 1
+    SHADOW_CASE(1)
+#endif
+#if SHADOW_SLOTS > 2
+    SHADOW_CASE(2)
+#endif
+#if SHADOW_SLOTS > 3
+    SHADOW_CASE(3)
+#endif
+#if SHADOW_SLOTS > 4
+    SHADOW_CASE(4)
+#endif
+#if SHADOW_SLOTS > 5
+    SHADOW_CASE(5)
+#endif
+#if SHADOW_SLOTS > 6
+    SHADOW_CASE(6)
+#endif
+#if SHADOW_SLOTS > 7
+    SHADOW_CASE(7)
+#endif
+    return 1.0;
+}
+#endif
+
+// The fraction of the light reaching eye-space point p (unit normal n, unit l towards the light)
+// through map m and its uniforms (view: eye -> light space; proj; depth; params; size, as above).
+float shadow_lookup(SHADOW_MAP m, mat4 view, mat4 proj, vec3 depth, vec4 params, vec4 size, vec3 p, vec3 n, vec3 l)
+{
+    vec3 q = (view * vec4(p, 1.0)).xyz;
     vec3 a = abs(q);
-    bool cube = shadow_size.x > 1.5;
+    bool cube = size.x > 1.5;
     float axis = cube ? max(a.x, max(a.y, a.z)) : -q.z;
     float c = clamp(dot(n, l), 1e-6, 1.0);
     float tangent = min(sqrt(1.0 - c * c) / c, 8.0);  // shadow_math.h kMaxShadowTangent
-    float texel = shadow_params.z + shadow_params.w * axis;
-    float d = shadow_depth.x * length(q) + shadow_depth.y * -q.z + shadow_depth.z - shadow_params.x -
-              shadow_params.y * texel * tangent * (shadow_depth.x + shadow_depth.y);
+    float texel = params.z + params.w * axis;
+    float d = depth.x * length(q) + depth.y * -q.z + depth.z - params.x -
+              params.y * texel * tangent * (depth.x + depth.y);
     vec2 uv;        // on the view's own map, [0, 1]
     vec2 tile = vec2(0.0), tiles = vec2(1.0);  // a cube's face: its place among the 3 x 2
     if (cube) {
@@ -86,20 +135,39 @@ float shadow_factor(vec3 p, vec3 n, vec3 l)
         tile = vec2(mod(face, 3.0), floor(face / 3.0));
         tiles = vec2(3.0, 2.0);
     } else {
-        vec4 cl = mat4(shadow_proj[0], shadow_proj[1], shadow_proj[2], shadow_proj[3]) * vec4(q, 1.0);
+        vec4 cl = proj * vec4(q, 1.0);
         uv = cl.xy / cl.w * 0.5 + 0.5;
         if (cl.w <= 0.0 || any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))))
             return 1.0;  // off the map: nothing there casts
     }
     // Taps stay on their own view's texels (a face's neighbour in the texture is another face).
-    float face_texel = 1.0 / shadow_size.y;
+    float face_texel = 1.0 / size.y;
     float lit = 0.0;
     for (int j = 0; j < SHADOW_TAPS; ++j)
         for (int i = 0; i < SHADOW_TAPS; ++i) {
             vec2 o = vec2(float(i), float(j)) - float(SHADOW_TAPS - 1) * 0.5;
             vec2 t = clamp(uv + o * face_texel, 0.5 * face_texel, 1.0 - 0.5 * face_texel);
-            lit += shadow_compare((tile + t) / tiles, d);
+            lit += shadow_compare(m, size.zw, (tile + t) / tiles, d);
         }
     return lit / float(SHADOW_TAPS * SHADOW_TAPS);
 }
+
+#ifdef SHADOW_SLOTS
+// Slot s's map: a batched pass's shadowed light.
+float shadow_factor(int s, vec3 p, vec3 n, vec3 l)
+{
+    int v = 4 * s;
+    return shadow_lookup(s, mat4(shadow_view[v], shadow_view[v + 1], shadow_view[v + 2], shadow_view[v + 3]),
+                         mat4(shadow_proj[v], shadow_proj[v + 1], shadow_proj[v + 2], shadow_proj[v + 3]),
+                         shadow_depth[s], shadow_params[s], shadow_size[s], p, n, l);
+}
+#else
+// The one light's map (light.frag, forward.frag).
+float shadow_factor(vec3 p, vec3 n, vec3 l)
+{
+    return shadow_lookup(shadow_map, mat4(shadow_view[0], shadow_view[1], shadow_view[2], shadow_view[3]),
+                         mat4(shadow_proj[0], shadow_proj[1], shadow_proj[2], shadow_proj[3]), shadow_depth,
+                         shadow_params, shadow_size, p, n, l);
+}
+#endif
 #endif  // SHADOW

@@ -120,6 +120,48 @@ TEST(Shadows, WithoutFramebufferObjectsTheMapsAreCopiedInPieces) {
     }
 }
 
+// More shadowed lights than a batch holds maps (ShaderConfig::shadow_slots: 8 on llvmpipe): the
+// tiles and auto shade them inside their batches, each through its own map, and give quad's image
+// to the byte on both map formats; screen, which rounds its sum once, stays within a few LSB. The
+// tiles' passes are their batches', not a quad per shadowed light.
+TEST(Shadows, BatchedGeometriesShadeShadowedLightsInTheirBatches) {
+    Scene s = box_scene(Light::Type::spot);
+    s.lights[0].color = glm::vec3(0.3f);
+    const Light::Type types[] = {Light::Type::spot, Light::Type::point, Light::Type::spot, Light::Type::directional};
+    for (int i = 0; i < 11; ++i) {
+        Light l = s.lights[0];
+        l.type = types[i % 4];
+        const float a = 0.6f * float(i);
+        l.pos = {2.5f * std::cos(a), 4 + 0.2f * float(i % 3), 2.5f * std::sin(a)};
+        l.dir = glm::normalize(glm::vec3(-0.2f * std::cos(a), -1, -0.2f * std::sin(a)));
+        l.color = glm::vec3(0.12f + 0.01f * float(i), 0.1f, 0.15f);
+        l.shadow.on = i % 5 != 4;  // two without
+        s.lights.push_back(l);
+    }
+    int shadowed_lights = 0;
+    for (const Light& l : s.lights) shadowed_lights += l.shadow.on;
+    ASSERT_GT(shadowed_lights, 8);
+    for (bool packed : {false, true}) {
+        const std::vector<std::string> caps = packed ? std::vector<std::string>{"no-shadow"} : std::vector<std::string>{};
+        const Image ref = render_scene(s, kSize, kSize, shadowed(), caps).image;
+        Scene none = s;
+        for (Light& l : none.lights) l.shadow.on = false;
+        EXPECT_GT(max_lsb(ref, render_scene(none, kSize, kSize, shadowed(), caps).image), 20.0f) << "no shadow to see";
+        for (LightGeometry g : {LightGeometry::tiles, LightGeometry::automatic}) {
+            const RenderResult r = render_scene(s, kSize, kSize, shadowed(g), caps);
+            EXPECT_EQ(max_lsb(ref, r.image), 0.0f) << light_geometry_name(g) << (packed ? " packed" : "");
+            if (g == LightGeometry::tiles) {
+                EXPECT_LE(r.stats.light_passes, 3) << "a quad a shadowed light?";
+            }
+        }
+        const RenderResult screen = render_scene(s, kSize, kSize, shadowed(LightGeometry::screen), caps);
+        EXPECT_LE(max_lsb(ref, screen.image), 6.0f) << (packed ? "packed" : "");
+        // 12 lights, 10 shadowed: two batches (cut before the 9th shadowed), and the ambient fold's
+        // pass, which takes an unshadowed light whose sphere holds the camera.
+        EXPECT_EQ(screen.stats.light_passes, 3);
+    }
+}
+
 // --shadows off (shadow_lights false) ignores the scene's `shadow`: the image of the scene without
 // it, byte for byte, and no map drawn.
 TEST(Shadows, OffIgnoresTheScene) {

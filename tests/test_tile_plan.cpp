@@ -37,9 +37,31 @@ TileDepth random_depth(std::mt19937& rng, size_t lights, int tiles) {
     return d;
 }
 
+// The batches' cuts with shadowed lights (cut_batches): in the plan's order without them, no batch
+// holding more than k shadowed lights, and a batch cut only where it is full or where its next
+// light would be its (k+1)-th shadowed one.
+void check_shadow_cuts(const std::vector<std::vector<int>>& batches, const std::vector<std::vector<int>>& unlimited,
+                       const std::vector<bool>& shadowed, int b, int k) {
+    std::vector<int> order, want;
+    for (const auto& batch : unlimited) want.insert(want.end(), batch.begin(), batch.end());
+    for (size_t j = 0; j < batches.size(); ++j) {
+        const auto& batch = batches[j];
+        int in_batch = 0;
+        for (int l : batch) in_batch += shadowed[size_t(l)];
+        EXPECT_LE(in_batch, k) << "batch " << j;
+        if (j + 1 < batches.size()) {
+            const bool next_shadowed = shadowed[size_t(batches[j + 1][0])];
+            EXPECT_TRUE(int(batch.size()) == b || (next_shadowed && in_batch == k)) << "batch " << j << " cut early";
+        }
+        order.insert(order.end(), batch.begin(), batch.end());
+    }
+    EXPECT_EQ(order, want);
+}
+
 void check_plan(const std::vector<ScissorRect>& rects, int w, int h, int ts, int n, int b,
-                const TileDepth* depth = nullptr) {
-    const TilePlan plan = plan_tiles(rects, w, h, ts, n, b, depth);
+                const TileDepth* depth = nullptr, const std::vector<bool>* shadowed = nullptr, int k = 0) {
+    const TilePlan plan = plan_tiles(rects, w, h, ts, n, b, depth, shadowed, k);
+    if (shadowed) check_shadow_cuts(plan.batches, plan_tiles(rects, w, h, ts, n, b, depth).batches, *shadowed, b, k);
     // Batches: each non-empty (on screen) light exactly once, at most b lights each.
     std::multiset<int> in_batches;
     for (const auto& batch : plan.batches) {
@@ -116,6 +138,39 @@ TEST(TilePlan, EveryOverlapShadedOnceAgainstBruteForce) {
         const TileDepth depth = random_depth(rng, rects.size(), ((w + ts - 1) / ts) * ((h + ts - 1) / ts));
         check_plan(rects, w, h, ts, n, b, &depth);
     }
+}
+
+// A batch holds at most k shadowed lights (the shader's shadow map units, shadow.glsl
+// SHADOW_SLOTS): the plans cut a batch where a (k+1)-th would enter it, and only there or where it
+// is full; every pair is still shaded exactly once (check_plan's brute force).
+TEST(TilePlan, NoBatchHoldsMoreShadowedLightsThanItsMaps) {
+    std::mt19937 rng(23);
+    std::uniform_int_distribution<int> pos(-40, 300), size(0, 160);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int trial = 0; trial < 30; ++trial) {
+        const int w = 120 + trial * 5, h = 90 + trial * 3;
+        std::vector<ScissorRect> rects(size_t(2 + trial * 7));
+        for (ScissorRect& r : rects) {
+            r.x0 = pos(rng), r.y0 = pos(rng);
+            r.x1 = r.x0 + size(rng), r.y1 = r.y0 + size(rng);
+        }
+        const float share = float(trial % 5) / 4.0f;  // none, a quarter, ... every light shadowed
+        std::vector<bool> shadowed;
+        for (size_t i = 0; i < rects.size(); ++i) shadowed.push_back(unit(rng) < share);
+        const int ts = 8 << (trial % 3), n = 1 + trial % 9, b = 1 + (trial * 13) % 40, k = 1 + trial % 8;
+        SCOPED_TRACE(testing::Message() << "trial " << trial << " ts " << ts << " n " << n << " b " << b << " k " << k);
+        check_plan(rects, w, h, ts, n, b, nullptr, &shadowed, k);
+        const TileDepth depth = random_depth(rng, rects.size(), ((w + ts - 1) / ts) * ((h + ts - 1) / ts));
+        check_plan(rects, w, h, ts, n, b, &depth, &shadowed, k);
+        // The groups: the same cuts, at lights_per_pass lights a group.
+        const TilePlan groups = plan_tile_groups(rects, w, h, ts, n, &depth, &shadowed, k);
+        check_shadow_cuts(groups.batches, plan_tile_groups(rects, w, h, ts, n, &depth).batches, shadowed, n, k);
+        ASSERT_EQ(groups.draws.size(), groups.batches.size());
+        for (size_t g = 0; g < groups.batches.size(); ++g)
+            for (const TileQuad& q : groups.draws[g].quads) EXPECT_EQ(q.slots.size(), groups.batches[g].size());
+    }
+    const std::vector<bool> one{true};  // a shadowed light and no slot for it: a caller's bug
+    EXPECT_THROW(cut_batches({0}, 1, &one, 0), std::logic_error);
 }
 
 // The planner given tiles_kept's lists (auto's culling, done once to price the lights) plans

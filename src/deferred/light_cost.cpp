@@ -38,6 +38,7 @@ LightCostModel default_light_costs(bool software_rasterizer) {
         // A path drawn at all: its programs and state, and on llvmpipe the scene it flushes (a
         // mix of 351 lights in tiles and 6 as volumes at 512x512 was slower than tiles alone).
         m.path_ms = 0.4;
+        m.shadow_mpx_ms = 13.5;  // estimated, not fitted: about a light term in the tiles loop
     } else {
         // An NVIDIA H200 through EGL at 1920x1080, each path forced (tests/gpu_bench.sh part auto,
         // docs/gpu.md): batched quads cost the CPU almost nothing a light (4096 lights, 8.5 Mpx of
@@ -49,6 +50,7 @@ LightCostModel default_light_costs(bool software_rasterizer) {
         m.spans_mpx_ms = 0.35;
         m.tile_pass_mpx_ms = 0.3, m.tile_light_mpx_ms = 0.12;
         m.path_ms = 0.02;
+        m.shadow_mpx_ms = 0.05;  // not measured on the GPU: about a light term's
     }
     return m;
 }
@@ -61,7 +63,8 @@ std::string describe(const LightCostModel& m) {
       << "  tiles          " << m.tile_pass_mpx_ms << " ms per Mpx of tile pixels per pass + " << m.tile_light_mpx_ms
       << " ms per Mpx of (tile pixel, light) pairs; depth spans " << m.spans_mpx_ms << " ms per Mpx of screen,\n"
       << "                 measured where the lights would cost over " << m.spans_worth << "x that\n"
-      << "  each path used " << m.path_ms << " ms a frame\n";
+      << "  each path used " << m.path_ms << " ms a frame\n"
+      << "  shadowed light " << m.shadow_mpx_ms << " ms per Mpx of its rectangle more, on every path\n";
     return o.str();
 }
 
@@ -80,9 +83,12 @@ void tile_cover(const std::vector<ScissorRect>& rects, int width, int height, in
 
 std::array<double, kLightPaths> light_prices(const LightFeature& l, const TileGrid& grid, const LightCostModel& m,
                                              const std::array<double, kLightPaths>& scale) {
+    // A shadowed light's lookups: the same pixels (those inside its volume) on every path.
+    const double shadow = l.shadowed ? m.shadow_mpx_ms * l.rect_px * kMpx : 0;
     std::array<double, kLightPaths> p;
-    p[int(LightPath::quad)] = scale[0] * (m.quad_draw_ms + m.quad_mpx_ms * l.rect_px * kMpx);
-    p[int(LightPath::volume)] = l.volume_ok ? scale[1] * (m.volume_draw_ms + m.volume_mpx_ms * l.rect_px * kMpx) : kInf;
+    p[int(LightPath::quad)] = scale[0] * (m.quad_draw_ms + m.quad_mpx_ms * l.rect_px * kMpx) + scale[0] * shadow;
+    p[int(LightPath::volume)] =
+        l.volume_ok ? scale[1] * (m.volume_draw_ms + m.volume_mpx_ms * l.rect_px * kMpx) + scale[1] * shadow : kInf;
     if (!l.tiles_ok) {
         p[int(LightPath::tiles)] = kInf;
         return p;
@@ -95,7 +101,7 @@ std::array<double, kLightPaths> light_prices(const LightFeature& l, const TileGr
         const double passes = std::ceil(double(k) / grid.lights_per_pass);
         px += grid.tile_px * (m.tile_pass_mpx_ms * passes / k + m.tile_light_mpx_ms);
     }
-    p[int(LightPath::tiles)] = scale[2] * px * kMpx;
+    p[int(LightPath::tiles)] = scale[2] * px * kMpx + scale[2] * shadow;
     return p;
 }
 

@@ -34,6 +34,10 @@ struct LightCostModel {
     double tile_pass_mpx_ms = 0;                   // tiles: per Mpx of tile pixels per pass (read, blend)
     double tile_light_mpx_ms = 0;                  // tiles: per Mpx of (tile pixel, light) pairs
     double path_ms = 0;                            // once per path a frame uses (its state, its sync)
+    // A shadowed light's lookup (shadow.glsl), per Mpx of the pixels it is priced at on any path
+    // (its rectangle; the tiles it keeps): paid alike by every path, so it prices the frame more
+    // than it moves the choice.
+    double shadow_mpx_ms = 0;
     // The spans are measured only where the lights would cost more than this many times the spans
     // without tiles: below it, tiles cannot win back what finding out costs.
     double spans_worth = 4;
@@ -50,6 +54,7 @@ struct LightFeature {
     double rect_px = 0;        // its scissor rectangle's pixels (the whole screen for a full one)
     bool volume_ok = true;     // its mesh can serve it (light_mesh.h past_far: not directional, not past far)
     bool tiles_ok = true;      // the tiles geometry may take it
+    bool shadowed = false;     // it has a shadow map (LightCostModel::shadow_mpx_ms)
     // Tiles: the tiles it keeps (indices into the tile grid, row by row) after depth culling.
     std::vector<int> tiles;
 };

@@ -27,10 +27,12 @@ FrameDef unshadowed(const FrameDef& f) {
     return out;
 }
 
-// The geometries that shade many lights in one pass out of uniform arrays (tiles, screen, auto's
-// batched quads) have one shadow map unit, not one a light: their shadowed lights are drawn one by
-// one as the tutorial's scissored quads, through the light program's shadow form, after the
-// others. Only in frames with shadowed lights; a scene without them never builds this.
+// The geometries that shade many lights in one pass out of uniform arrays (tiles, screen, auto)
+// hold up to ShaderConfig::shadow_slots shadowed lights a batch, a texture unit each. Where the GL
+// leaves them none (fewer than five texture units, or no uniform room beside the batch's arrays),
+// their shadowed lights are drawn one by one as the tutorial's scissored quads, through the light
+// program's shadow form, after the others. Only in frames with shadowed lights; a scene without
+// them never builds this.
 class ShadowedAsQuads : public LightGeometryPass {
 public:
     ShadowedAsQuads(std::unique_ptr<LightGeometryPass> inner, ProgramSet& programs, bool depth_bounds)
@@ -70,7 +72,7 @@ std::unique_ptr<LightGeometryPass> make_light_geometry(const ShaderConfig& c, Pr
     std::unique_ptr<LightGeometryPass> g = make_geometry(c, programs, width, height);
     const LightGeometry k = c.paths.light_geometry;
     const bool batched = draws_tiles(k) || k == LightGeometry::screen;
-    if (c.opts.shadow_lights && batched)
+    if (c.opts.shadow_lights && batched && c.shadow_slots < 1)
         g = std::make_unique<ShadowedAsQuads>(std::move(g), programs, c.paths.depth_bounds);
     return g;
 }

@@ -7,6 +7,9 @@
 // light keeps; then it chooses (choose_light_paths). draw() draws each path's lights, the quads in
 // batches (LightQuadBatch: a few draws, not one per light). Each path's passes are timed (see
 // timed()) and the model's scale for that path follows what they took.
+// Shadowed lights take any path (the model prices their lookups, LightCostModel::shadow_mpx_ms):
+// the tiles hold them in their batches, a volume is drawn by its shadow form, and a quad, whose
+// batches cannot bind a map per light, alone through the light program's shadow form.
 #include <cmath>
 #include <cstdlib>
 
@@ -27,6 +30,7 @@ class AutoGeometry final : public LightGeometryPass {
 public:
     AutoGeometry(const ShaderConfig& c, ProgramSet& programs, int width, int height)
         : quads_(programs, c.tile_batch),
+          shadow_quads_(programs, false, true),  // no depth bounds: the hand-off is only for volumes here
           volume_progs_(programs, "light_volume"),
           tiles_(make_tiles_pass(c, programs, width, height)),
           model_(default_light_costs(c.caps.software_rasterizer)),
@@ -51,6 +55,7 @@ public:
             rects[i] = l.full ? ScissorRect{0, 0, f.width, f.height} : l.rect;
             features_[i].rect_px = double(rects[i].x1 - rects[i].x0) * double(rects[i].y1 - rects[i].y0);
             features_[i].volume_ok = volume_ok_ && !meshes_.past_far(f, l);
+            features_[i].shadowed = l.shadow >= 0;
         }
         const std::array<double, kLightPaths>& scale = calib_.scale();
         grid_ = TileGrid{};
@@ -121,7 +126,19 @@ public:
                 meshes_.shade_volumes(f, by_path[int(LightPath::volume)], volume_progs_, q, stats);
             });
         if (!by_path[int(LightPath::quad)].empty())
-            timed(LightPath::quad, raw, [&] { quads_.draw(f, by_path[int(LightPath::quad)], q, stats); });
+            timed(LightPath::quad, raw, [&] {
+                std::vector<const LightDraw*> batched;
+                for (const LightDraw* l : by_path[int(LightPath::quad)])
+                    if (l->shadow < 0) batched.push_back(l);
+                quads_.draw(f, batched, q, stats);
+                if (batched.size() == by_path[int(LightPath::quad)].size()) return;
+                shadow_quads_.begin(f);
+                for (const LightDraw* l : by_path[int(LightPath::quad)])
+                    if (l->shadow >= 0) {
+                        shadow_quads_.draw(f, *l, q);
+                        ++stats.light_passes;
+                    }
+            });
     }
 
 private:
@@ -199,6 +216,7 @@ private:
     }
 
     LightQuadBatch quads_;
+    LightQuads shadow_quads_;  // the quad path's shadowed lights, one by one
     LightMeshes meshes_;
     LightPrograms volume_progs_;
     std::unique_ptr<TilesPass> tiles_;

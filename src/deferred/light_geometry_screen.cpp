@@ -6,11 +6,14 @@
 // G-buffer once, sums every light of the batch and blends the sum once, so where the demo's 32
 // lights fit one batch a frame is one draw. The sum is rounded to 8 bits once, as the demo's
 // is, not per light as quad's passes are: its image is within a few LSB of quad's, not equal.
+// Shadowed lights ride in the batches too, up to ShaderConfig::shadow_slots a batch (a batch is cut
+// where one more would enter), their maps on units 4.. (light_screen.frag SHADOW).
 #include <algorithm>
 
 #include "deferred/light_geometry.h"
 #include "deferred/light_pass.h"
 #include "deferred/screen_quad.h"
+#include "deferred/tile_plan.h"
 
 namespace dsr {
 
@@ -18,37 +21,49 @@ namespace {
 
 class ScreenGeometry final : public LightGeometryPass {
 public:
-    ScreenGeometry(const ShaderConfig& c, ProgramSet& programs) : progs_(programs, "light_screen"), batch_(c.tile_batch) {}
+    ScreenGeometry(const ShaderConfig& c, ProgramSet& programs)
+        : progs_(programs, "light_screen", false, c.shadow_slots), batch_(c.tile_batch), shadow_slots_(c.shadow_slots) {}
 
     void draw(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats) override {
         gl_state().set_camera(f.pixels());
         progs_.begin(f);
-        std::vector<int> batch;
-        for (size_t first = 0; first < f.lights.size(); first += size_t(batch_)) {
-            const size_t last = std::min(f.lights.size(), first + size_t(batch_));
-            batch.clear();
+        std::vector<int> order(f.lights.size());
+        std::vector<bool> shadowed;
+        for (size_t i = 0; i < f.lights.size(); ++i) {
+            order[i] = int(i);
+            shadowed.push_back(f.lights[i].shadow >= 0);
+        }
+        const bool any_shadow = f.shadowed_lights > 0 && shadow_slots_ > 0;
+        for (const std::vector<int>& batch : cut_batches(order, batch_, any_shadow ? &shadowed : nullptr, shadow_slots_)) {
+            bool with_maps = false;
+            for (int i : batch) with_maps |= f.lights[size_t(i)].shadow >= 0;
             arrays_.clear();
-            for (size_t i = first; i < last; ++i) {
-                batch.push_back(int(i));
-                arrays_.add(f.lights[i].params);
+            shadows_.clear();
+            for (int i : batch) {
+                const LightDraw& l = f.lights[size_t(i)];
+                arrays_.add(with_maps ? with_shadow_slot(l.params, shadows_.add(f, l)) : l.params);
             }
             // The form the batch's lights allow, as the demo's shader is written for its one kind
-            // of light (its lights take the attenuation law's point-light form).
-            Program& prog = progs_[LightPrograms::common(f, batch)];
+            // of light (its lights take the attenuation law's point-light form); with shadow maps
+            // the shadow form.
+            Program& prog = with_maps ? progs_.shadow() : progs_[LightPrograms::common(f, batch)];
             gl_state().apply(light_pass_state(prog.id(), false));  // additive, the whole screen
             arrays_.set(prog, LightArrays::kLight);
+            shadows_.set(prog);
             prog.set("light_count", arrays_.size());
             q.begin();
             draw_rect(f, 0, 0, float(f.width), float(f.height), false);
             q.end();
+            shadows_.unbind();
             ++stats.light_passes;
         }
     }
 
 private:
     LightPrograms progs_;
-    int batch_;
+    int batch_, shadow_slots_;
     LightArrays arrays_;
+    ShadowSlots shadows_;
 };
 
 }  // namespace

@@ -7,6 +7,9 @@
 // each quad's vertices carrying its lights' indices (two per float, in texture coordinates 2..5).
 // With --tile-depth on, each tile's span of surface depth (tile_depth.h: a small pass read back,
 // a stall on a GPU) drops the tile's lights whose sphere misses its surfaces.
+// Shadowed lights: a batch holds up to ShaderConfig::shadow_slots of them (the plan cuts it where
+// one more would enter), their maps bound on units 4.. for its draws (ShadowSlots) and each light's
+// slot in lightspot.z, drawn by the program's shadow form (light_tiles.frag SHADOW).
 // A frame is: cull (the depth spans and the tiles' boxes), then per batch plan, upload and draw.
 #include <algorithm>
 
@@ -38,7 +41,8 @@ double wall_ms(F&& f) {
 class TilesGeometry final : public TilesPass {
 public:
     TilesGeometry(const ShaderConfig& c, ProgramSet& programs, int width, int height)
-        : progs_(programs, "light_tiles"),
+        : progs_(programs, "light_tiles", false, c.shadow_slots),
+          shadow_slots_(c.shadow_slots),
           tile_size_(c.opts.tile_size),
           tile_lights_(c.opts.tile_lights),
           batch_(c.tile_batch),
@@ -105,12 +109,18 @@ public:
         std::vector<ScissorRect> rects(f.lights.size());
         for (size_t i = 0; i < f.lights.size(); ++i) rects[i] = f.lights[i].rect;
 
+        // The shadowed lights, for the plans' cuts (none: the plans as without shadows).
+        std::vector<bool> shadowed;
+        if (f.shadowed_lights > 0 && shadow_slots_ > 0)
+            for (const LightDraw& l : f.lights) shadowed.push_back(l.shadow >= 0);
+        const std::vector<bool>* cut = shadowed.empty() ? nullptr : &shadowed;
+
         begin_draws(f);
         uploads_ = 0;
         stats.tile_light_pairs = 0;
         if (groups_) {
             TilePlan plan;
-            plan_ms += wall_ms([&] { plan = plan_tile_groups(rects, f.width, f.height, tile_size_, tile_lights_, cull); });
+            plan_ms += wall_ms([&] { plan = plan_tile_groups(rects, f.width, f.height, tile_size_, tile_lights_, cull, cut, shadow_slots_); });
             for (const TileDraw& d : plan.draws) {
                 plan_ms += wall_ms([&] { upload(&d, 1); });
                 draw_batch(f, plan.batches[size_t(d.batch)], q, stats);
@@ -122,7 +132,8 @@ public:
             // buffer fills.
             std::unique_ptr<TilePlanner> planner;
             plan_ms += wall_ms([&] {
-                planner = std::make_unique<TilePlanner>(rects, f.width, f.height, tile_size_, tile_lights_, batch_, cull, kept);
+                planner = std::make_unique<TilePlanner>(rects, f.width, f.height, tile_size_, tile_lights_, batch_, cull, kept,
+                                                        cut, shadow_slots_);
             });
             for (int b = 0; b < int(planner->batches().size()); ++b) {
                 plan_ms += wall_ms([&] {
@@ -148,6 +159,10 @@ private:
         for (LightShader k : {LightShader::point_linear, LightShader::point_inverse, LightShader::any}) {
             progs_[k].use();
             progs_[k].set("quantize_round", round_);  // ignored (optimised away) without QUANTIZE_8BIT
+        }
+        if (progs_.shadow().id()) {
+            progs_.shadow().use();
+            progs_.shadow().set("quantize_round", round_);
         }
         glEnableClientState(GL_VERTEX_ARRAY);
         for (int k = 0; k < id_vecs_; ++k) {
@@ -198,7 +213,16 @@ private:
     // The uploaded draws: the batch's lights into the uniform arrays (lighting.glsl's five vec4s
     // per light, one array each), then one draw per layer, each counted.
     void draw_batch(const FrameDef& f, const std::vector<int>& batch, LightQueries& q, FrameStats& stats) {
-        Program& prog = progs_[LightPrograms::common(f, batch)];
+        // A batch with shadow maps: each light's slot among them in lightspot.z (-1: none).
+        bool shadowed = false;
+        for (int l : batch) shadowed |= f.lights[size_t(l)].shadow >= 0;
+        shadows_.clear();
+        arrays_.clear();
+        for (int l : batch) {
+            const LightDraw& d = f.lights[size_t(l)];
+            arrays_.add(shadowed ? with_shadow_slot(d.params, shadows_.add(f, d)) : d.params);
+        }
+        Program& prog = shadows_.size() > 0 ? progs_.shadow() : progs_[LightPrograms::common(f, batch)];
         gl_state().apply(light_pass_state(prog.id(), false));
         const GLsizei bytes = GLsizei(stride_ * sizeof(float));
         auto at = [](int fl) { return reinterpret_cast<const void*>(size_t(fl) * sizeof(float)); };  // buffer offsets
@@ -207,9 +231,8 @@ private:
             glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
             glTexCoordPointer(4, GL_FLOAT, bytes, at(kFixedFloats + 4 * k));
         }
-        arrays_.clear();
-        for (int l : batch) arrays_.add(f.lights[size_t(l)].params);
         arrays_.set(prog, LightArrays::kLight);
+        shadows_.set(prog);
         if (groups_) prog.set("light_count", arrays_.size());
         const size_t n_draws = first_.size() - 1;
         for (size_t di = 0; di < n_draws; ++di) {
@@ -218,9 +241,12 @@ private:
             q.end();
         }
         stats.light_passes += int(n_draws);
+        shadows_.unbind();
     }
 
     LightPrograms progs_;
+    int shadow_slots_;  // shadowed lights a batch holds (0: the tiles get none)
+    ShadowSlots shadows_;
     int tile_size_, tile_lights_, batch_;
     bool groups_;
     int id_vecs_, stride_;

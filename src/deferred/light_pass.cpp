@@ -87,7 +87,53 @@ void unbind_shadow_map() {
     glActiveTexture(GL_TEXTURE0);
 }
 
-LightPrograms::LightPrograms(ProgramSet& programs, const std::string& family, bool shadow_only) {
+void ShadowSlots::clear() {
+    maps_.clear();
+}
+
+float ShadowSlots::add(const FrameDef& f, const LightDraw& l) {
+    if (l.shadow < 0) return -1.0f;
+    maps_.push_back(&f.shadows.at(size_t(l.shadow)));
+    return float(maps_.size() - 1);
+}
+
+void ShadowSlots::set(Program& prog) {
+    if (maps_.empty()) return;
+    view_.clear(), proj_.clear(), params_.clear(), size_.clear(), depth_.clear();
+    for (const ShadowLookup* m : maps_) {
+        for (int c = 0; c < 4; ++c) view_.push_back(m->eye_to_light[c]), proj_.push_back(m->proj[c]);
+        depth_.push_back(m->depth);
+        params_.push_back(glm::vec4(m->bias, m->slope, m->texel.x, m->texel.y));
+        size_.push_back(glm::vec4(float(m->kind), float(m->face), float(m->width), float(m->height)));
+    }
+    const int n = size();
+    prog.set_array("shadow_view", view_.data(), 4 * n);
+    prog.set_array("shadow_proj", proj_.data(), 4 * n);
+    prog.set_array("shadow_depth", depth_.data(), n);
+    prog.set_array("shadow_params", params_.data(), n);
+    prog.set_array("shadow_size", size_.data(), n);
+    for (int k = 0; k < n; ++k) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + kShadowUnit + k));
+        glBindTexture(GL_TEXTURE_2D, maps_[size_t(k)]->texture);
+    }
+    glActiveTexture(GL_TEXTURE0);
+}
+
+void ShadowSlots::unbind() const {
+    for (int k = 0; k < size(); ++k) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + kShadowUnit + k));
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    glActiveTexture(GL_TEXTURE0);
+}
+
+LightParams with_shadow_slot(LightParams p, float slot) {
+    p.spot.z = slot;
+    return p;
+}
+
+LightPrograms::LightPrograms(ProgramSet& programs, const std::string& family, bool shadow_only, int shadow_slots)
+    : shadow_slots_(shadow_slots) {
     if (!shadow_only) {
         forms_[int(LightShader::point_linear)] = programs.take(family + "_point");
         forms_[int(LightShader::point_inverse)] = programs.take(family + "_point_inverse");
@@ -101,7 +147,9 @@ void LightPrograms::begin(const FrameDef& f) {
         if (p.id()) set_light_uniforms(p, f);
     if (shadow_.id()) {
         set_light_uniforms(shadow_, f);
-        shadow_.set("shadow_map", 4);
+        if (shadow_slots_ == 0) shadow_.set("shadow_map", kShadowUnit);
+        for (int k = 0; k < shadow_slots_; ++k)
+            shadow_.set(("shadow_maps[" + std::to_string(k) + "]").c_str(), kShadowUnit + k);
     }
 }
 

@@ -48,6 +48,27 @@ void bind_shadow_map(Program& prog, const ShadowLookup& m);
 void unbind_shadow_map();
 void unbind_shadow(const LightDraw& l);
 
+// A batch's shadowed lights' maps (shadow.glsl SHADOW_SLOTS): each added light gets the next slot,
+// its map on unit kShadowUnit + slot; set() puts the maps' uniforms into a program's arrays and
+// binds them, unbind() takes them off their units so the next pass finds them empty.
+class ShadowSlots {
+public:
+    void clear();
+    // l's slot among the batch's maps (as a float, for lightspot.z), -1 for a light without one.
+    float add(const FrameDef& f, const LightDraw& l);
+    int size() const { return int(maps_.size()); }
+    void set(Program& prog);  // prog in use
+    void unbind() const;
+
+private:
+    std::vector<const ShadowLookup*> maps_;
+    std::vector<glm::vec4> view_, proj_, params_, size_;  // kept for their storage
+    std::vector<glm::vec3> depth_;
+};
+// The light's parameters with its shadow slot in lightspot.z, a component no light law reads
+// (lighting.glsl): the batched shaders' SHADOW forms read it.
+LightParams with_shadow_slot(LightParams p, float slot);
+
 // A light program in its three forms (the shader table's rows FAMILY, FAMILY_point and
 // FAMILY_point_inverse): each light is drawn by the form of its LightShader, so the type and law
 // selection is paid only by the lights that need it; and, where the scene has shadowed lights,
@@ -55,18 +76,22 @@ void unbind_shadow(const LightDraw& l);
 class LightPrograms {
 public:
     // shadow_only: just FAMILY_shadow (a geometry that draws only its shadowed lights as quads).
-    LightPrograms(ProgramSet& programs, const std::string& family, bool shadow_only = false);
+    // shadow_slots: FAMILY_shadow holds that many maps (shadow.glsl SHADOW_SLOTS); 0: one, on unit 4.
+    LightPrograms(ProgramSet& programs, const std::string& family, bool shadow_only = false, int shadow_slots = 0);
     // set_light_uniforms on every form, before a frame's first draw.
     void begin(const FrameDef& f);
     Program& operator[](LightShader s) { return forms_[int(s)]; }
     // The form that draws light l: the shadow form for a shadowed light, else its LightShader's.
     Program& form(const LightDraw& l) { return l.shadow >= 0 ? shadow_ : forms_[int(l.shader())]; }
+    // FAMILY_shadow (id 0 where the table did not build it).
+    Program& shadow() { return shadow_; }
     // The form that serves every light of `lights` (indices into f.lights): their common one, else any.
     static LightShader common(const FrameDef& f, const std::vector<int>& lights);
 
 private:
     Program forms_[3];  // LightShader's order: point_linear, point_inverse, any
     Program shadow_;    // FAMILY_shadow, where the table built it
+    int shadow_slots_ = 0;
 };
 
 // The light's quad over its scissor rectangle, through the light's form of "light".

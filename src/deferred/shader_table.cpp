@@ -32,6 +32,14 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
         glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
         const bool groups = tiles && c.opts.tile_plan == TileGrouping::groups;
         c.tile_batch = groups ? c.opts.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
+        // Shadowed lights in the batches (shadow.glsl SHADOW_SLOTS): a texture unit each after the
+        // G-buffer's four, and eleven vec4s each of uniforms beside the batch's arrays.
+        if (c.opts.shadow_lights) {
+            GLint units = 0;
+            glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+            const int room = (comps / 4 - 8 - 5 * c.tile_batch) / 11;
+            c.shadow_slots = std::max(0, std::min({kShadowSlots, int(units) - kShadowUnit, room}));
+        }
     }
     // P-buffer 0 is RGBA8: several lights summed in one pass are each rounded as their own pass
     // would be, as this GL rounds into RGBA8, measured once (gl/rounding_probe.h): llvmpipe rounds
@@ -185,6 +193,10 @@ bool shadows(const ShaderConfig& c) { return c.opts.shadow_lights; }
 // Depth textures compared by ARB_shadow where the GL has both (and, without framebuffer objects, a
 // main frame buffer of 24 depth bits to copy them from), else depth packed in RGB8.
 bool shadow_packed(const ShaderConfig& c) { return shadow_maps_packed(c.caps); }
+// The batched geometries' shadowed forms, where a batch can hold shadowed lights.
+bool tiles_shadow(const ShaderConfig& c) { return shadows(c) && uses_tiles(c) && c.shadow_slots > 0; }
+bool screen_shadow(const ShaderConfig& c) { return shadows(c) && uses_screen(c) && c.shadow_slots > 0; }
+std::string shadow_slots(const ShaderConfig& c) { return "SHADOW_SLOTS " + std::to_string(c.shadow_slots); }
 Defines shadow_defines(Defines d, const ShaderConfig& c) {
     const Defines s = shadow_lookup_defines(shadow_packed(c), c.opts.shadows.filter);
     d.insert(d.end(), s.begin(), s.end());
@@ -258,12 +270,14 @@ const std::vector<ShaderRow>& shader_rows() {
         {"light_stencil_point_inverse", "light.vert", "light.frag", "stencil mask, point lights, attenuation law",
          uses_stencil, [](C c) { return point_inverse(with(light_defines(c, false), {"VOLUME"})); }},
         // Shadowed lights (a scene's `shadow` lights): the light pass with the shadow lookup, any
-        // light, drawn as the light's quad by every geometry but volume and stencil, which have
-        // their own. Scenes without shadows build none of these.
+        // light, drawn as the light's quad by quad (and by auto for those it gives to quads, and
+        // by tiles and screen where a batch holds no shadow map); volume, stencil and auto's
+        // volumes have a volume form, tiles and screen a batched form with up to shadow_slots maps.
+        // Scenes without shadows build none of these.
         {"light_shadow", "light.vert", "light.frag", "light pass with its shadow map, any light", shadows,
          [](C c) { return shadow_defines(light_defines(c), c); }},
         {"light_volume_shadow", "light.vert", "light.frag", "volume mesh with its shadow map",
-         [](C c) { return shadows(c) && geometry_is(c, LightGeometry::volume); },
+         [](C c) { return shadows(c) && uses_volume(c); },
          [](C c) { return shadow_defines(with(light_defines(c), {"VOLUME"}), c); }},
         {"light_stencil_shadow", "light.vert", "light.frag", "stencil mask with its shadow map",
          [](C c) { return shadows(c) && uses_stencil(c); },
@@ -276,6 +290,8 @@ const std::vector<ShaderRow>& shader_rows() {
          [](C c) { return point_linear(tiles_defines(c)); }},
         {"light_tiles_point_inverse", "light.vert", "light_tiles.frag", "tiles: point lights, attenuation law",
          uses_tiles, [](C c) { return point_inverse(tiles_defines(c)); }},
+        {"light_tiles_shadow", "light.vert", "light_tiles.frag", "tiles: any light, some with shadow maps",
+         tiles_shadow, [](C c) { return with(shadow_defines(tiles_defines(c), c), {shadow_slots(c)}); }},
         // LearnOpenGL's deferred demo's lighting pass (light_geometry_screen.cpp): every light of a
         // batch at every pixel, no in-shader rejections; in the three forms, as the demo's shader
         // is written for its one kind of light.
@@ -285,6 +301,8 @@ const std::vector<ShaderRow>& shader_rows() {
          [](C c) { return point_linear(screen_defines(c)); }},
         {"light_screen_point_inverse", "light.vert", "light_screen.frag", "screen: point lights, attenuation law",
          uses_screen, [](C c) { return point_inverse(screen_defines(c)); }},
+        {"light_screen_shadow", "light.vert", "light_screen.frag", "screen: any light, some with shadow maps",
+         screen_shadow, [](C c) { return with(shadow_defines(screen_defines(c), c), {shadow_slots(c)}); }},
         {"tile_depth", "post.vert", "tile_depth.frag", "tiles: each tile column's depth span per row", tile_depth,
          [](C c) { return with(depth_defines(c), {tile_size(c)}); }},
         {"tile_depth_reduce", "post.vert", "tile_depth_reduce.frag", "tiles: a tile's rows together", tile_depth,

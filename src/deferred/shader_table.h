@@ -29,7 +29,16 @@ struct ShaderConfig {
     bool rounding_measured = false;
     int rounding_bits = -1;
     float tile_round = 0.5f;
+    // tiles, screen and auto in scenes with shadowed lights: the shadowed lights a batch holds
+    // (shadow.glsl SHADOW_SLOTS, their maps on units 4 ..), kShadowSlots or fewer where the texture
+    // units or the uniform budget hold fewer; 0: none (they are drawn as quads instead).
+    int shadow_slots = 0;
 };
+
+// The most shadowed lights a batched light pass holds (shadow.glsl SHADOW_SLOTS).
+constexpr int kShadowSlots = 8;
+// The first of the units the light passes bind shadow maps on (units 0-3: the G-buffer).
+constexpr int kShadowUnit = 4;
 
 // choose_paths and, for the tiles geometry, the two measurements. Needs a current context for
 // tiles; throws dsr::Error with choose_paths' refusal.

@@ -230,8 +230,26 @@ std::vector<int> morton_order(const std::vector<ScissorRect>& rects, int width, 
 
 }  // namespace
 
+std::vector<std::vector<int>> cut_batches(const std::vector<int>& order, int batch_size,
+                                          const std::vector<bool>* shadowed, int max_shadowed) {
+    if (shadowed && max_shadowed < 1) throw std::logic_error("cut_batches: shadowed lights need a slot a batch");
+    std::vector<std::vector<int>> out;
+    int in_batch = 0;  // shadowed lights in out.back()
+    for (int l : order) {
+        const bool s = shadowed && (*shadowed)[size_t(l)];
+        if (out.empty() || int(out.back().size()) >= batch_size || (s && in_batch >= max_shadowed)) {
+            out.emplace_back();
+            in_batch = 0;
+        }
+        out.back().push_back(l);
+        in_batch += s;
+    }
+    return out;
+}
+
 TilePlan plan_tile_groups(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
-                          int lights_per_pass, const TileDepth* depth) {
+                          int lights_per_pass, const TileDepth* depth, const std::vector<bool>* shadowed,
+                          int max_shadowed) {
     TilePlan plan;
     if (width <= 0 || height <= 0 || tile_size <= 0 || lights_per_pass <= 0) return plan;
     const int ts = tile_size, n = lights_per_pass;
@@ -240,14 +258,14 @@ TilePlan plan_tile_groups(const std::vector<ScissorRect>& rects, int width, int 
     const TileCuller culler(depth, tx, ty);
     const std::vector<int> order = morton_order(rects, width, height, ts, clipped, culler);
     std::vector<char> covered(size_t(tx) * ty);
-    for (size_t s = 0; s < order.size(); s += size_t(n)) {
-        plan.batches.emplace_back(order.begin() + long(s), order.begin() + long(std::min(order.size(), s + size_t(n))));
-        const std::vector<int>& group = plan.batches.back();
+    plan.batches = cut_batches(order, n, shadowed, max_shadowed);
+    for (size_t g = 0; g < plan.batches.size(); ++g) {
+        const std::vector<int>& group = plan.batches[g];
         std::fill(covered.begin(), covered.end(), 0);
         for (int l : group)
             culler.each(l, clipped[size_t(l)], ts, [&](int x, int y) { return !(covered[size_t(y) * tx + x] = 1); });
         TileDraw d;
-        d.batch = int(plan.batches.size()) - 1;
+        d.batch = int(g);
         SlotList all;
         for (int k = 0; k < int(group.size()); ++k) all.push_back(k);
         for (int y = 0; y < ty; ++y)
@@ -279,7 +297,8 @@ struct TilePlanner::Impl {
 
 TilePlanner::TilePlanner(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
                          int lights_per_pass, int batch_size, const TileDepth* depth,
-                         const std::vector<std::vector<int>>* kept) {
+                         const std::vector<std::vector<int>>* kept, const std::vector<bool>* shadowed,
+                         int max_shadowed) {
     if (width <= 0 || height <= 0 || tile_size <= 0 || lights_per_pass <= 0 || batch_size <= 0) return;
     if (kept && kept->size() != rects.size()) throw std::logic_error("TilePlanner: one kept list per rectangle");
     const int tx = (width + tile_size - 1) / tile_size, ty = (height + tile_size - 1) / tile_size;
@@ -288,8 +307,7 @@ TilePlanner::TilePlanner(const std::vector<ScissorRect>& rects, int width, int h
     m.width = width, m.height = height, m.ts = tile_size, m.n = lights_per_pass, m.tx = tx, m.ty = ty;
     m.kept = kept;
     const std::vector<int> order = morton_order(rects, width, height, tile_size, m.clipped, m.culler, kept);
-    for (size_t s = 0; s < order.size(); s += size_t(batch_size))
-        m.batches.emplace_back(order.begin() + long(s), order.begin() + long(std::min(order.size(), s + size_t(batch_size))));
+    m.batches = cut_batches(order, batch_size, shadowed, max_shadowed);
     m.start.resize(size_t(tx) * ty + 1);
 }
 
@@ -380,8 +398,10 @@ long long TilePlanner::plan_batch(int b, std::vector<TileDraw>& out) {
 }
 
 TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
-                    int lights_per_pass, int batch_size, const TileDepth* depth) {
-    TilePlanner planner(rects, width, height, tile_size, lights_per_pass, batch_size, depth);
+                    int lights_per_pass, int batch_size, const TileDepth* depth, const std::vector<bool>* shadowed,
+                    int max_shadowed) {
+    TilePlanner planner(rects, width, height, tile_size, lights_per_pass, batch_size, depth, nullptr, shadowed,
+                        max_shadowed);
     TilePlan plan;
     plan.batches = planner.batches();
     for (int b = 0; b < int(plan.batches.size()); ++b) plan.tile_light_pairs += planner.plan_batch(b, plan.draws);

@@ -114,8 +114,12 @@ struct TileDepth {
 //          indexes the arrays with its counter, so the light data is uniform across the draw.
 // rects: each light's scissor rectangle (empty ones are left out); the screen width x height cut
 // into tile_size tiles. batch_size >= 1, lights_per_pass >= 1. depth: null for no depth culling.
+// shadowed, when given (one flag per rect): no batch holds more than max_shadowed of the flagged
+// lights (the shader's shadow map units, shadow.glsl SHADOW_SLOTS): a batch is cut where one more
+// would enter it, else where it is full (max_shadowed >= 1).
 TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
-                    int lights_per_pass, int batch_size, const TileDepth* depth = nullptr);
+                    int lights_per_pass, int batch_size, const TileDepth* depth = nullptr,
+                    const std::vector<bool>* shadowed = nullptr, int max_shadowed = 0);
 
 // plan_tiles a batch at a time, so that a renderer can draw a batch while it plans the next (on a
 // GPU the plan is CPU time the GPU would otherwise wait through: at 1920x1080 with 1024-overlap's
@@ -126,7 +130,8 @@ TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height
 class TilePlanner {
 public:
     TilePlanner(const std::vector<ScissorRect>& rects, int width, int height, int tile_size, int lights_per_pass,
-                int batch_size, const TileDepth* depth = nullptr, const std::vector<std::vector<int>>* kept = nullptr);
+                int batch_size, const TileDepth* depth = nullptr, const std::vector<std::vector<int>>* kept = nullptr,
+                const std::vector<bool>* shadowed = nullptr, int max_shadowed = 0);
     ~TilePlanner();
     const std::vector<std::vector<int>>& batches() const;
     // Appends batch b's draws (one per layer) to out; returns the (tile, light) pairs they shade.
@@ -148,8 +153,16 @@ inline int tile_id_vecs(int lights_per_pass) { return (lights_per_pass + 7) / 8;
 
 // The groups plan: batches are the groups (at most lights_per_pass each), one draw per group whose
 // quads cover every tile one of its lights overlaps, each quad's slots the whole group.
+// shadowed, max_shadowed: as plan_tiles', for the groups.
 TilePlan plan_tile_groups(const std::vector<ScissorRect>& rects, int width, int height, int tile_size,
-                          int lights_per_pass, const TileDepth* depth = nullptr);
+                          int lights_per_pass, const TileDepth* depth = nullptr,
+                          const std::vector<bool>* shadowed = nullptr, int max_shadowed = 0);
+
+// Light indices `order` cut into batches of at most batch_size, in order, none holding more than
+// max_shadowed of the lights flagged in `shadowed` (indexed by light; null: no such limit): a new
+// batch starts where the last is full or where one more flagged light would exceed the limit.
+std::vector<std::vector<int>> cut_batches(const std::vector<int>& order, int batch_size,
+                                          const std::vector<bool>* shadowed = nullptr, int max_shadowed = 0);
 
 // Morton (Z-order) code of tile (x, y), x and y < 2^16: interleaved bits.
 unsigned morton2(unsigned x, unsigned y);
