@@ -12,6 +12,7 @@
 
 #include "deferred/light_geometry.h"
 #include "deferred/light_pass.h"
+#include "deferred/main_buffer_map.h"
 #include "deferred/screen_quad.h"
 #include "deferred/tile_plan.h"
 
@@ -22,11 +23,15 @@ namespace {
 class ScreenGeometry final : public LightGeometryPass {
 public:
     ScreenGeometry(const ShaderConfig& c, ProgramSet& programs)
-        : progs_(programs, "light_screen", false, c.shadow_slots), batch_(c.tile_batch), shadow_slots_(c.shadow_slots) {}
+        : progs_(programs, "light_screen", false, c.shadow_slots),
+          batch_(c.tile_batch),
+          shadow_slots_(c.shadow_slots),
+          shadows_(shadow_maps_packed(c.caps), c.opts.shadows.filter == ShadowFilter::hard) {}
 
     void draw(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats) override {
         gl_state().set_camera(f.pixels());
         progs_.begin(f);
+        shadows_.begin_frame();
         std::vector<int> order(f.lights.size());
         std::vector<bool> shadowed;
         for (size_t i = 0; i < f.lights.size(); ++i) {
@@ -46,7 +51,7 @@ public:
             // The form the batch's lights allow, as the demo's shader is written for its one kind
             // of light (its lights take the attenuation law's point-light form); with shadow maps
             // the shadow form.
-            Program& prog = with_maps ? progs_.shadow() : progs_[LightPrograms::common(f, batch)];
+            Program& prog = shadows_.size() > 0 ? shadows_.prepare(progs_, stats) : progs_[LightPrograms::common(f, batch)];
             gl_state().apply(light_pass_state(prog.id(), false));  // additive, the whole screen
             arrays_.set(prog, LightArrays::kLight);
             shadows_.set(prog);

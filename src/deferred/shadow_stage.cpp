@@ -186,6 +186,7 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
                                          });
             }
             stats.shadow_maps += int(layout.views.size());
+            m.generation = ++generations_;
         }
         ShadowLookup& k = out[size_t(l.shadow)];
         k.texture = m.texture;
@@ -198,6 +199,7 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
         k.slope = light.shadow.slope;
         k.width = layout.width, k.height = layout.height, k.face = layout.face;
         k.packed = packed_;
+        k.generation = m.generation;
     }
     if (bound) gpu.unbind();
     check_gl_stage("shadow stage");

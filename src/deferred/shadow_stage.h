@@ -55,6 +55,7 @@ private:
         std::vector<glm::dmat4> clips;
         std::vector<std::vector<size_t>> objects;
         std::vector<glm::dmat4> models;  // of those objects, in their order
+        unsigned generation = 0;         // ShadowLookup::generation of its last drawing
     };
     void allocate(Map& m, int width, int height);
     void release(Map& m);
@@ -68,6 +69,7 @@ private:
     std::vector<ObjectBounds> bounds_;
     std::map<size_t, Map> maps_;  // by the light's index in Scene::lights
     std::vector<ShadowLookup> last_;  // the last draw's, for the view
+    unsigned generations_ = 0;        // maps drawn so far (ShadowLookup::generation)
 };
 
 }  // namespace dsr
