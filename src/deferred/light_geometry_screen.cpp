@@ -26,7 +26,7 @@ public:
         : progs_(programs, "light_screen", false, c.shadow_slots),
           batch_(c.tile_batch),
           shadow_slots_(c.shadow_slots),
-          shadows_(shadow_maps_packed(c.caps), c.opts.shadows.filter == ShadowFilter::hard) {}
+          shadows_(shadow_maps_packed(c.caps)) {}
 
     void draw(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats) override {
         gl_state().set_camera(f.pixels());

@@ -44,7 +44,7 @@ public:
     TilesGeometry(const ShaderConfig& c, ProgramSet& programs, int width, int height)
         : progs_(programs, "light_tiles", false, c.shadow_slots),
           shadow_slots_(c.shadow_slots),
-          shadows_(shadow_maps_packed(c.caps), c.opts.shadows.filter == ShadowFilter::hard),
+          shadows_(shadow_maps_packed(c.caps)),
           tile_size_(c.opts.tile_size),
           tile_lights_(c.opts.tile_lights),
           batch_(c.tile_batch),

@@ -88,7 +88,7 @@ void unbind_shadow_map() {
     glActiveTexture(GL_TEXTURE0);
 }
 
-ShadowSlots::ShadowSlots(bool packed, bool hard) : packed_(packed), hard_(hard) {}
+ShadowSlots::ShadowSlots(bool packed) : packed_(packed) {}
 
 ShadowSlots::~ShadowSlots() = default;
 
@@ -115,7 +115,7 @@ Program& ShadowSlots::prepare(LightPrograms& progs, FrameStats& stats) {
     for (const ShadowLookup* m : maps_) sizes_.push_back(AtlasRegion{0, 0, m->width, m->height});
     layout_ = place_atlas(sizes_, max_texture_);
     if (!layout_.fits()) return progs.shadow();  // larger than the GL's textures: the chain
-    if (next_ == atlases_.size()) atlases_.push_back(std::make_unique<ShadowAtlas>(packed_, hard_));
+    if (next_ == atlases_.size()) atlases_.push_back(std::make_unique<ShadowAtlas>(packed_));
     atlas_ = atlases_[next_++].get();
     stats.shadow_atlas_texels += atlas_->update(layout_, maps_, kShadowUnit);
     return progs.shadow_atlas();

@@ -61,8 +61,8 @@ class ShadowAtlas;
 // program's arrays and binds the textures, unbind() takes them off their units.
 class ShadowSlots {
 public:
-    // packed: RGB8 maps; hard: --shadow-filter hard (the atlas's format and filtering).
-    ShadowSlots(bool packed, bool hard);
+    // packed: RGB8 maps, else depth textures (the atlas's format).
+    explicit ShadowSlots(bool packed);
     ~ShadowSlots();
     // Before a frame's first batch: the first batch takes the first atlas.
     void begin_frame() { next_ = 0; }
@@ -78,7 +78,7 @@ public:
     void unbind() const;
 
 private:
-    bool packed_, hard_;
+    bool packed_;
     int max_texture_ = 0;
     std::vector<std::unique_ptr<ShadowAtlas>> atlases_;  // by batch position in the frame
     size_t next_ = 0;

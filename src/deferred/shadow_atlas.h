@@ -2,8 +2,9 @@
 // SHADOW_ATLAS): GLSL 1.20 indexes an array of samplers only by a constant, so a batch of K maps on
 // K units is read through an if-chain over the slots, and a CPU rasteriser (llvmpipe) runs every
 // branch: K map reads a lookup. Copied into one atlas, the lookup reads one sampler at the slot's
-// region (atlas_layout.h). The atlas has the maps' format and filtering (a depth texture compared
-// by ARB_shadow, or RGB8 on the packed path); each map is copied with glCopyTexSubImage2D from a
+// region (atlas_layout.h). The atlas has the maps' format (a depth texture compared by ARB_shadow,
+// or RGB8 on the packed path), filtered GL_NEAREST: the lookup weighs the 2x2 itself (shadow.glsl
+// says why); each map is copied with glCopyTexSubImage2D from a
 // framebuffer object that has it attached, and again only when the shadow stage drew it anew
 // (ShadowLookup::generation) or the batch's maps or their places changed. Needs framebuffer objects.
 #pragma once
@@ -17,8 +18,8 @@ namespace dsr {
 
 class ShadowAtlas {
 public:
-    // packed: RGB8 maps (else depth textures); hard: GL_NEAREST (--shadow-filter hard), as the maps.
-    ShadowAtlas(bool packed, bool hard);
+    // packed: RGB8 maps, else depth textures.
+    explicit ShadowAtlas(bool packed);
     ~ShadowAtlas();
     ShadowAtlas(const ShadowAtlas&) = delete;
     ShadowAtlas& operator=(const ShadowAtlas&) = delete;
@@ -34,7 +35,7 @@ private:
     };
     void allocate(int width, int height);
 
-    bool packed_, hard_;
+    bool packed_;
     GLuint texture_ = 0, read_fbo_ = 0;
     AtlasLayout layout_;        // what the texture holds
     std::vector<Held> held_;    // per region of layout_
