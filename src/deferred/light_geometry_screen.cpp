@@ -7,7 +7,8 @@
 // lights fit one batch a frame is one draw. The sum is rounded to 8 bits once, as the demo's
 // is, not per light as quad's passes are: its image is within a few LSB of quad's, not equal.
 // Shadowed lights ride in the batches too, up to ShaderConfig::shadow_slots a batch (a batch is cut
-// where one more would enter), their maps on units 4.. (light_screen.frag SHADOW).
+// where one more would enter), their maps in the batch's atlas on unit 4, or without framebuffer
+// objects on units 4.. (light_screen.frag SHADOW; ShadowSlots).
 #include <algorithm>
 
 #include "deferred/light_geometry.h"

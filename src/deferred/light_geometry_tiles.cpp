@@ -8,8 +8,9 @@
 // With --tile-depth on, each tile's span of surface depth (tile_depth.h: a small pass read back,
 // a stall on a GPU) drops the tile's lights whose sphere misses its surfaces.
 // Shadowed lights: a batch holds up to ShaderConfig::shadow_slots of them (the plan cuts it where
-// one more would enter), their maps bound on units 4.. for its draws (ShadowSlots) and each light's
-// slot in lightspot.z, drawn by the program's shadow form (light_tiles.frag SHADOW).
+// one more would enter), their maps copied into the batch's atlas on unit 4 (or, without framebuffer
+// objects, bound on units 4..) for its draws (ShadowSlots) and each light's slot in lightspot.z,
+// drawn by the program's shadow form (light_tiles.frag SHADOW; SHADOW_ATLAS for the atlas).
 // A frame is: cull (the depth spans and the tiles' boxes), then per batch plan, upload and draw.
 #include <algorithm>
 
