@@ -69,7 +69,6 @@ private:
     std::vector<ObjectBounds> bounds_;
     std::map<size_t, Map> maps_;  // by the light's index in Scene::lights
     std::vector<ShadowLookup> last_;  // the last draw's, for the view
-    unsigned generations_ = 0;        // maps drawn so far (ShadowLookup::generation)
 };
 
 }  // namespace dsr
