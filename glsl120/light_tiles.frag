@@ -7,7 +7,7 @@
 // from shade(); the sum is blended once. A pixel no light reaches is discarded (nothing to add; light_fragments
 // counts the rest). SHADOW (with SHADOW_SLOTS K): up to K of the batch's lights are shadowed, each
 // light's slot among the batch's maps in lightspot.z (-1: none), its term scaled by shadow.glsl's
-// lookup as light.frag's SHADOW form scales it.
+// lookup as light.frag's SHADOW form scales it (SHADOW_ATLAS: the batch's maps in one atlas).
 #include "depth_codec.glsl"
 #include "lighting.glsl"
 #include "quantize.glsl"

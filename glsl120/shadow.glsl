@@ -13,6 +13,11 @@
 // arrays indexed by the light's shadow slot, shadow_factor(slot, ...). GLSL 1.20 indexes a sampler
 // array only with a constant, so shadow_compare(slot, ...) picks the sampler by an if-chain; the
 // lookup itself (shadow_lookup) is one function for both forms, its map a sampler or a slot.
+// SHADOW_ATLAS (with SHADOW_SLOTS): the batch's maps copied into one atlas (shadow_atlas.h) on unit 4,
+// slot s's map at shadow_region[s]: one sampler, no chain (a CPU rasteriser runs every branch of
+// it). Its regions lie at whole texels of a power-of-two atlas; the lookup finds the texels and
+// weights in the map as the single-map lookup does and only then moves the texels to the region,
+// (corner + texel + 0.5) / atlas exactly, so the result is the same to the bit on both paths.
 #ifdef SHADOW
 #ifndef SHADOW_TAPS
 #define SHADOW_TAPS 1
@@ -23,7 +28,12 @@
 #define SHADOW_SAMPLER sampler2DShadow  // depth texture, GL_COMPARE_R_TO_TEXTURE, GL_LEQUAL
 #endif
 #ifdef SHADOW_SLOTS
+#ifdef SHADOW_ATLAS
+uniform SHADOW_SAMPLER shadow_atlas;               // unit 4
+uniform vec4 shadow_region[SHADOW_SLOTS];          // (corner x, y; atlas width, height) in texels
+#else
 uniform SHADOW_SAMPLER shadow_maps[SHADOW_SLOTS];  // units 4 .. 4+K-1
+#endif
 uniform vec4 shadow_view[4 * SHADOW_SLOTS];        // as below, slot s at [4s, 4s+3]
 uniform vec4 shadow_proj[4 * SHADOW_SLOTS];
 uniform vec3 shadow_depth[SHADOW_SLOTS];
@@ -68,7 +78,36 @@ float shadow_compare(SHADOW_SAMPLER m, vec2 size, vec2 uv, float d)
 #endif
 }
 
-#ifdef SHADOW_SLOTS
+#if defined(SHADOW_SLOTS) && defined(SHADOW_ATLAS)
+// 1 where depth d is at most the atlas texel's at texture coordinates uv (a texel centre).
+float shadow_atlas_texel(vec2 uv, float d)
+{
+#ifdef SHADOW_PACKED
+    return shadow_texel(shadow_atlas, uv, d);
+#else
+    return shadow2D(shadow_atlas, vec3(uv, d)).r;  // GL_NEAREST: that texel's comparison
+#endif
+}
+// The same through slot s's region of the atlas: the texels and weights found in the map (texel
+// indices clamped to its edge, as GL_CLAMP_TO_EDGE does for a map of its own), then moved to the
+// region. The depth texture's 2x2 too: in atlas coordinates the GL's own filter would see
+// corner + uv * size rounded to fewer bits than uv * size, and weigh the texels differently.
+float shadow_compare(int s, vec2 size, vec2 uv, float d)
+{
+    vec4 r = shadow_region[s];
+#ifdef SHADOW_HARD
+    return shadow_atlas_texel((r.xy + clamp(floor(uv * size), vec2(0.0), size - 1.0) + 0.5) / r.zw, d);
+#else
+    vec2 t = uv * size - 0.5;
+    vec2 i = floor(t);
+    vec2 w = t - i;
+    vec2 a = (r.xy + clamp(i, vec2(0.0), size - 1.0) + 0.5) / r.zw;
+    vec2 b = (r.xy + clamp(i + 1.0, vec2(0.0), size - 1.0) + 0.5) / r.zw;
+    return mix(mix(shadow_atlas_texel(a, d), shadow_atlas_texel(vec2(b.x, a.y), d), w.x),
+               mix(shadow_atlas_texel(vec2(a.x, b.y), d), shadow_atlas_texel(b, d), w.x), w.y);
+#endif
+}
+#elif defined(SHADOW_SLOTS)
 // The same through slot s's map.
 #define SHADOW_CASE(k) if (s == k) return shadow_compare(shadow_maps[k], size, uv, d);
 float shadow_compare(int s, vec2 size, vec2 uv, float d)

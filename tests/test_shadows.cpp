@@ -124,7 +124,8 @@ TEST(Shadows, WithoutFramebufferObjectsTheMapsAreCopiedInPieces) {
 // tiles and auto shade them inside their batches, each through its own map, and give quad's image
 // to the byte on both map formats; screen, which rounds its sum once, stays within a few LSB. The
 // tiles' passes are their batches', not a quad per shadowed light.
-TEST(Shadows, BatchedGeometriesShadeShadowedLightsInTheirBatches) {
+// The box under 12 lights of every type, 10 of them shadowed: more than a batch holds maps.
+Scene many_shadowed_lights() {
     Scene s = box_scene(Light::Type::spot);
     s.lights[0].color = glm::vec3(0.3f);
     const Light::Type types[] = {Light::Type::spot, Light::Type::point, Light::Type::spot, Light::Type::directional};
@@ -138,6 +139,11 @@ TEST(Shadows, BatchedGeometriesShadeShadowedLightsInTheirBatches) {
         l.shadow.on = i % 5 != 4;  // two without
         s.lights.push_back(l);
     }
+    return s;
+}
+
+TEST(Shadows, BatchedGeometriesShadeShadowedLightsInTheirBatches) {
+    const Scene s = many_shadowed_lights();
     int shadowed_lights = 0;
     for (const Light& l : s.lights) shadowed_lights += l.shadow.on;
     ASSERT_GT(shadowed_lights, 8);
@@ -159,6 +165,48 @@ TEST(Shadows, BatchedGeometriesShadeShadowedLightsInTheirBatches) {
         // 12 lights, 10 shadowed: two batches (cut before the 9th shadowed), and the ambient fold's
         // pass, which takes an unshadowed light whose sphere holds the camera.
         EXPECT_EQ(screen.stats.light_passes, 3);
+    }
+}
+
+// The batches' maps in one atlas each (shadow_atlas.h): with framebuffer objects the tiles and
+// screen copy them (shadow_atlas_texels) and read them there, giving the if-chain's image (quad's,
+// to the byte, for tiles: a region a texel off is not); a still frame copies nothing, a moved
+// light's map alone is copied again, --shadow-reuse off copies every map every frame. Without
+// framebuffer objects the batches read their maps through the chain, still quad's image. Both depth paths.
+TEST(Shadows, BatchesReadTheirMapsFromOneAtlas) {
+    Scene s = many_shadowed_lights();
+    for (Light& l : s.lights) l.shadow.size = 128;
+    for (bool packed : {false, true}) {
+        const std::vector<std::string> caps = packed ? std::vector<std::string>{"no-shadow"} : std::vector<std::string>{};
+        const std::string what = packed ? "packed" : "depth texture";
+        const RenderResult quad = render_scene(s, kSize, kSize, shadowed(), caps);
+        for (LightGeometry g : {LightGeometry::tiles, LightGeometry::screen}) {
+            const RenderResult r = render_scene(s, kSize, kSize, shadowed(g), caps);
+            EXPECT_GT(r.stats.shadow_atlas_texels, 0) << what;
+            if (g == LightGeometry::tiles) {
+                EXPECT_EQ(max_lsb(quad.image, r.image), 0.0f) << what;
+            }
+        }
+        std::vector<std::string> no_fbo = caps;
+        no_fbo.push_back("no-fbo");
+        const RenderResult chain = render_scene(s, kSize, kSize, shadowed(LightGeometry::tiles), no_fbo);
+        EXPECT_EQ(chain.stats.shadow_atlas_texels, 0) << what;
+        EXPECT_EQ(max_lsb(render_scene(s, kSize, kSize, shadowed(), no_fbo).image, chain.image), 0.0f) << what;
+        for (bool reuse : {true, false}) {
+            auto ctx = create_context(ContextDesc{"osmesa", kSize, kSize});
+            ShaderOptions o = shadowed(LightGeometry::tiles);
+            o.shadows.reuse = reuse;
+            DeferredShader ds(probe_caps(caps), kSize, kSize, o, resource_dir("glsl120"));
+            ds.set_scene(s);
+            const long long all = ds.render(s, kSize, kSize).shadow_atlas_texels;
+            EXPECT_GT(all, 0) << what;
+            const Image first = read_pixels(kSize, kSize);
+            EXPECT_EQ(ds.render(s, kSize, kSize).shadow_atlas_texels, reuse ? 0 : all) << what;
+            EXPECT_EQ(read_pixels(kSize, kSize).rgba, first.rgba) << what;
+            Scene moved = s;
+            moved.lights[1].pos.x += 0.25f;  // a spot: its 128 x 128 map
+            EXPECT_EQ(ds.render(moved, kSize, kSize).shadow_atlas_texels, reuse ? 128 * 128 : all) << what;
+        }
     }
 }
 

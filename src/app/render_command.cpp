@@ -164,6 +164,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["shadow_filter"] = shadow_filter_name(opts.shadows.filter);
     j["shadow_maps"] = last.shadow_maps;
     j["shadow_triangles"] = last.shadow_triangles;
+    j["shadow_atlas_texels"] = last.shadow_atlas_texels;
     j["shadow_map_format"] = !opts.shadow_lights ? nlohmann::json(nullptr)
                              : !shadow_maps_packed(caps) ? nlohmann::json("depth-texture")
                                                          : nlohmann::json("packed-rgb8");

@@ -53,6 +53,9 @@ struct ShadowLookup {
     float bias = 0, slope = 0;   // the light's LightShadow
     int width = 0, height = 0, face = 0;  // the texture's texels, and one view's per side
     bool packed = false;         // RGB8 (compared in the shader), else a depth texture (ARB_shadow)
+    // Which drawing of the texture this is: the shadow stage numbers every map it draws, a reused
+    // map keeps its number, so a copy of it (the batches' atlas, shadow_atlas.h) knows when it is stale.
+    unsigned generation = 0;
 };
 
 // What make_frame needs besides the scene.

@@ -63,6 +63,9 @@ struct FrameStats {
     // six; maps reused from an earlier frame count none) and the triangles drawn into them.
     int shadow_maps = 0;
     long long shadow_triangles = 0;
+    // The batched geometries' shadow atlases (shadow_atlas.h): map texels copied into them this
+    // frame (0 where every atlas already held its maps, or none was made).
+    long long shadow_atlas_texels = 0;
     // The pass skips (SkipOptions): whether this frame ran the depth pre-pass (§3.3.1) and the
     // final pass (§3.6), and whether its ambient pass (Listing 15) was folded into a full-screen
     // light's pass.

@@ -7,11 +7,13 @@
 // lights fit one batch a frame is one draw. The sum is rounded to 8 bits once, as the demo's
 // is, not per light as quad's passes are: its image is within a few LSB of quad's, not equal.
 // Shadowed lights ride in the batches too, up to ShaderConfig::shadow_slots a batch (a batch is cut
-// where one more would enter), their maps on units 4.. (light_screen.frag SHADOW).
+// where one more would enter), their maps in the batch's atlas on unit 4, or without framebuffer
+// objects on units 4.. (light_screen.frag SHADOW; ShadowSlots).
 #include <algorithm>
 
 #include "deferred/light_geometry.h"
 #include "deferred/light_pass.h"
+#include "deferred/main_buffer_map.h"
 #include "deferred/screen_quad.h"
 #include "deferred/tile_plan.h"
 
@@ -22,11 +24,15 @@ namespace {
 class ScreenGeometry final : public LightGeometryPass {
 public:
     ScreenGeometry(const ShaderConfig& c, ProgramSet& programs)
-        : progs_(programs, "light_screen", false, c.shadow_slots), batch_(c.tile_batch), shadow_slots_(c.shadow_slots) {}
+        : progs_(programs, "light_screen", false, c.shadow_slots),
+          batch_(c.tile_batch),
+          shadow_slots_(c.shadow_slots),
+          shadows_(shadow_maps_packed(c.caps)) {}
 
     void draw(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats) override {
         gl_state().set_camera(f.pixels());
         progs_.begin(f);
+        shadows_.begin_frame();
         std::vector<int> order(f.lights.size());
         std::vector<bool> shadowed;
         for (size_t i = 0; i < f.lights.size(); ++i) {
@@ -46,7 +52,7 @@ public:
             // The form the batch's lights allow, as the demo's shader is written for its one kind
             // of light (its lights take the attenuation law's point-light form); with shadow maps
             // the shadow form.
-            Program& prog = with_maps ? progs_.shadow() : progs_[LightPrograms::common(f, batch)];
+            Program& prog = shadows_.size() > 0 ? shadows_.prepare(progs_, stats) : progs_[LightPrograms::common(f, batch)];
             gl_state().apply(light_pass_state(prog.id(), false));  // additive, the whole screen
             arrays_.set(prog, LightArrays::kLight);
             shadows_.set(prog);

@@ -8,13 +8,15 @@
 // With --tile-depth on, each tile's span of surface depth (tile_depth.h: a small pass read back,
 // a stall on a GPU) drops the tile's lights whose sphere misses its surfaces.
 // Shadowed lights: a batch holds up to ShaderConfig::shadow_slots of them (the plan cuts it where
-// one more would enter), their maps bound on units 4.. for its draws (ShadowSlots) and each light's
-// slot in lightspot.z, drawn by the program's shadow form (light_tiles.frag SHADOW).
+// one more would enter), their maps copied into the batch's atlas on unit 4 (or, without framebuffer
+// objects, bound on units 4..) for its draws (ShadowSlots) and each light's slot in lightspot.z,
+// drawn by the program's shadow form (light_tiles.frag SHADOW; SHADOW_ATLAS for the atlas).
 // A frame is: cull (the depth spans and the tiles' boxes), then per batch plan, upload and draw.
 #include <algorithm>
 
 #include "deferred/light_geometry_tiles.h"
 #include "deferred/light_pass.h"
+#include "deferred/main_buffer_map.h"
 #include "deferred/tile_depth.h"
 #include "dsr_clock.h"
 #include "gl/stream_buffer.h"
@@ -43,6 +45,7 @@ public:
     TilesGeometry(const ShaderConfig& c, ProgramSet& programs, int width, int height)
         : progs_(programs, "light_tiles", false, c.shadow_slots),
           shadow_slots_(c.shadow_slots),
+          shadows_(shadow_maps_packed(c.caps)),
           tile_size_(c.opts.tile_size),
           tile_lights_(c.opts.tile_lights),
           batch_(c.tile_batch),
@@ -106,6 +109,7 @@ public:
                      const std::vector<std::vector<int>>* kept) override {
         double plan_ms = 0;
         stats.tile_depth = cull != nullptr;
+        shadows_.begin_frame();
         std::vector<ScissorRect> rects(f.lights.size());
         for (size_t i = 0; i < f.lights.size(); ++i) rects[i] = f.lights[i].rect;
 
@@ -160,10 +164,11 @@ private:
             progs_[k].use();
             progs_[k].set("quantize_round", round_);  // ignored (optimised away) without QUANTIZE_8BIT
         }
-        if (progs_.shadow().id()) {
-            progs_.shadow().use();
-            progs_.shadow().set("quantize_round", round_);
-        }
+        for (Program* p : {&progs_.shadow(), &progs_.shadow_atlas()})
+            if (p->id()) {
+                p->use();
+                p->set("quantize_round", round_);
+            }
         glEnableClientState(GL_VERTEX_ARRAY);
         for (int k = 0; k < id_vecs_; ++k) {
             glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
@@ -222,7 +227,7 @@ private:
             const LightDraw& d = f.lights[size_t(l)];
             arrays_.add(shadowed ? with_shadow_slot(d.params, shadows_.add(f, d)) : d.params);
         }
-        Program& prog = shadows_.size() > 0 ? progs_.shadow() : progs_[LightPrograms::common(f, batch)];
+        Program& prog = shadows_.size() > 0 ? shadows_.prepare(progs_, stats) : progs_[LightPrograms::common(f, batch)];
         gl_state().apply(light_pass_state(prog.id(), false));
         const GLsizei bytes = GLsizei(stride_ * sizeof(float));
         auto at = [](int fl) { return reinterpret_cast<const void*>(size_t(fl) * sizeof(float)); };  // buffer offsets

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "deferred/screen_quad.h"
+#include "deferred/shadow_atlas.h"
 
 namespace dsr {
 
@@ -87,8 +88,13 @@ void unbind_shadow_map() {
     glActiveTexture(GL_TEXTURE0);
 }
 
+ShadowSlots::ShadowSlots(bool packed) : packed_(packed) {}
+
+ShadowSlots::~ShadowSlots() = default;
+
 void ShadowSlots::clear() {
     maps_.clear();
+    atlas_ = nullptr;
 }
 
 float ShadowSlots::add(const FrameDef& f, const LightDraw& l) {
@@ -97,9 +103,27 @@ float ShadowSlots::add(const FrameDef& f, const LightDraw& l) {
     return float(maps_.size() - 1);
 }
 
+Program& ShadowSlots::prepare(LightPrograms& progs, FrameStats& stats) {
+    atlas_ = nullptr;
+    if (!progs.shadow_atlas().id() || maps_.empty()) return progs.shadow();
+    if (max_texture_ == 0) {
+        GLint max = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+        max_texture_ = int(max);
+    }
+    sizes_.clear();
+    for (const ShadowLookup* m : maps_) sizes_.push_back(AtlasRegion{0, 0, m->width, m->height});
+    layout_ = place_atlas(sizes_, max_texture_);
+    if (!layout_.fits()) return progs.shadow();  // larger than the GL's textures: the chain
+    if (next_ == atlases_.size()) atlases_.push_back(std::make_unique<ShadowAtlas>(packed_));
+    atlas_ = atlases_[next_++].get();
+    stats.shadow_atlas_texels += atlas_->update(layout_, maps_, kShadowUnit);
+    return progs.shadow_atlas();
+}
+
 void ShadowSlots::set(Program& prog) {
     if (maps_.empty()) return;
-    view_.clear(), proj_.clear(), params_.clear(), size_.clear(), depth_.clear();
+    view_.clear(), proj_.clear(), params_.clear(), size_.clear(), depth_.clear(), region_.clear();
     for (const ShadowLookup* m : maps_) {
         for (int c = 0; c < 4; ++c) view_.push_back(m->eye_to_light[c]), proj_.push_back(m->proj[c]);
         depth_.push_back(m->depth);
@@ -112,6 +136,15 @@ void ShadowSlots::set(Program& prog) {
     prog.set_array("shadow_depth", depth_.data(), n);
     prog.set_array("shadow_params", params_.data(), n);
     prog.set_array("shadow_size", size_.data(), n);
+    if (atlas_) {
+        for (const AtlasRegion& r : layout_.regions)
+            region_.push_back(glm::vec4(float(r.x), float(r.y), float(layout_.width), float(layout_.height)));
+        prog.set_array("shadow_region", region_.data(), n);
+        glActiveTexture(GLenum(GL_TEXTURE0 + kShadowUnit));
+        glBindTexture(GL_TEXTURE_2D, atlas_->texture());
+        glActiveTexture(GL_TEXTURE0);
+        return;
+    }
     for (int k = 0; k < n; ++k) {
         glActiveTexture(GLenum(GL_TEXTURE0 + kShadowUnit + k));
         glBindTexture(GL_TEXTURE_2D, maps_[size_t(k)]->texture);
@@ -120,7 +153,7 @@ void ShadowSlots::set(Program& prog) {
 }
 
 void ShadowSlots::unbind() const {
-    for (int k = 0; k < size(); ++k) {
+    for (int k = 0; k < (atlas_ ? 1 : size()); ++k) {
         glActiveTexture(GLenum(GL_TEXTURE0 + kShadowUnit + k));
         glBindTexture(GL_TEXTURE_2D, 0);
     }
@@ -140,6 +173,7 @@ LightPrograms::LightPrograms(ProgramSet& programs, const std::string& family, bo
         forms_[int(LightShader::any)] = programs.take(family);
     }
     if (programs.has(family + "_shadow")) shadow_ = programs.take(family + "_shadow");
+    if (programs.has(family + "_shadow_atlas")) shadow_atlas_ = programs.take(family + "_shadow_atlas");
 }
 
 void LightPrograms::begin(const FrameDef& f) {
@@ -150,6 +184,10 @@ void LightPrograms::begin(const FrameDef& f) {
         if (shadow_slots_ == 0) shadow_.set("shadow_map", kShadowUnit);
         for (int k = 0; k < shadow_slots_; ++k)
             shadow_.set(("shadow_maps[" + std::to_string(k) + "]").c_str(), kShadowUnit + k);
+    }
+    if (shadow_atlas_.id()) {
+        set_light_uniforms(shadow_atlas_, f);
+        shadow_atlas_.set("shadow_atlas", kShadowUnit);
     }
 }
 

@@ -3,9 +3,11 @@
 // scissored quad per light (Listings 16-17), which the quad geometry draws for every light and
 // the volume geometries for the lights their mesh cannot serve.
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "deferred/atlas_layout.h"
 #include "deferred/frame.h"
 #include "deferred/light_queries.h"
 #include "deferred/shader_table.h"
@@ -48,21 +50,43 @@ void bind_shadow_map(Program& prog, const ShadowLookup& m);
 void unbind_shadow_map();
 void unbind_shadow(const LightDraw& l);
 
-// A batch's shadowed lights' maps (shadow.glsl SHADOW_SLOTS): each added light gets the next slot,
-// its map on unit kShadowUnit + slot; set() puts the maps' uniforms into a program's arrays and
-// binds them, unbind() takes them off their units so the next pass finds them empty.
+class LightPrograms;
+class ShadowAtlas;
+
+// A batch's shadowed lights' maps (shadow.glsl SHADOW_SLOTS): each added light gets the next slot.
+// Where the program table built the atlas form (framebuffer objects) and the maps fit one atlas of
+// GL_MAX_TEXTURE_SIZE, they are copied into the atlas of the batch's position in the frame
+// (shadow_atlas.h; kept between frames) and read through one sampler on kShadowUnit; else each map
+// on unit kShadowUnit + slot, read through the if-chain. set() puts the maps' uniforms into the
+// program's arrays and binds the textures, unbind() takes them off their units.
 class ShadowSlots {
 public:
+    // packed: RGB8 maps, else depth textures (the atlas's format).
+    explicit ShadowSlots(bool packed);
+    ~ShadowSlots();
+    // Before a frame's first batch: the first batch takes the first atlas.
+    void begin_frame() { next_ = 0; }
     void clear();
     // l's slot among the batch's maps (as a float, for lightspot.z), -1 for a light without one.
     float add(const FrameDef& f, const LightDraw& l);
     int size() const { return int(maps_.size()); }
-    void set(Program& prog);  // prog in use
+    // The program that draws the batch (size() > 0): progs' atlas form with the maps in this
+    // batch position's atlas (copied where it did not hold them: stats.shadow_atlas_texels), or
+    // its chain form.
+    Program& prepare(LightPrograms& progs, FrameStats& stats);
+    void set(Program& prog);  // prog in use, the one prepare() gave
     void unbind() const;
 
 private:
+    bool packed_;
+    int max_texture_ = 0;
+    std::vector<std::unique_ptr<ShadowAtlas>> atlases_;  // by batch position in the frame
+    size_t next_ = 0;
+    ShadowAtlas* atlas_ = nullptr;  // this batch's; null: the chain
+    AtlasLayout layout_;
+    std::vector<AtlasRegion> sizes_;
     std::vector<const ShadowLookup*> maps_;
-    std::vector<glm::vec4> view_, proj_, params_, size_;  // kept for their storage
+    std::vector<glm::vec4> view_, proj_, params_, size_, region_;  // kept for their storage
     std::vector<glm::vec3> depth_;
 };
 // The light's parameters with its shadow slot in lightspot.z, a component no light law reads
@@ -85,12 +109,15 @@ public:
     Program& form(const LightDraw& l) { return l.shadow >= 0 ? shadow_ : forms_[int(l.shader())]; }
     // FAMILY_shadow (id 0 where the table did not build it).
     Program& shadow() { return shadow_; }
+    // FAMILY_shadow_atlas: the batched forms' maps in one atlas (id 0 where not built).
+    Program& shadow_atlas() { return shadow_atlas_; }
     // The form that serves every light of `lights` (indices into f.lights): their common one, else any.
     static LightShader common(const FrameDef& f, const std::vector<int>& lights);
 
 private:
     Program forms_[3];  // LightShader's order: point_linear, point_inverse, any
     Program shadow_;    // FAMILY_shadow, where the table built it
+    Program shadow_atlas_;
     int shadow_slots_ = 0;
 };
 

@@ -33,11 +33,12 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
         const bool groups = tiles && c.opts.tile_plan == TileGrouping::groups;
         c.tile_batch = groups ? c.opts.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
         // Shadowed lights in the batches (shadow.glsl SHADOW_SLOTS): a texture unit each after the
-        // G-buffer's four, and eleven vec4s each of uniforms beside the batch's arrays.
+        // G-buffer's four, and twelve vec4s each of uniforms beside the batch's arrays (the atlas
+        // form's region included).
         if (c.opts.shadow_lights) {
             GLint units = 0;
             glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
-            const int room = (comps / 4 - 8 - 5 * c.tile_batch) / 11;
+            const int room = (comps / 4 - 8 - 5 * c.tile_batch) / 12;
             c.shadow_slots = std::max(0, std::min({kShadowSlots, int(units) - kShadowUnit, room}));
         }
     }
@@ -197,6 +198,9 @@ bool shadow_packed(const ShaderConfig& c) { return shadow_maps_packed(c.caps); }
 bool tiles_shadow(const ShaderConfig& c) { return shadows(c) && uses_tiles(c) && c.shadow_slots > 0; }
 bool screen_shadow(const ShaderConfig& c) { return shadows(c) && uses_screen(c) && c.shadow_slots > 0; }
 std::string shadow_slots(const ShaderConfig& c) { return "SHADOW_SLOTS " + std::to_string(c.shadow_slots); }
+// Their maps copied into one atlas a batch (shadow_atlas.h): the copies need framebuffer objects.
+bool tiles_shadow_atlas(const ShaderConfig& c) { return tiles_shadow(c) && c.caps.fbo; }
+bool screen_shadow_atlas(const ShaderConfig& c) { return screen_shadow(c) && c.caps.fbo; }
 Defines shadow_defines(Defines d, const ShaderConfig& c) {
     const Defines s = shadow_lookup_defines(shadow_packed(c), c.opts.shadows.filter);
     d.insert(d.end(), s.begin(), s.end());
@@ -292,6 +296,9 @@ const std::vector<ShaderRow>& shader_rows() {
          uses_tiles, [](C c) { return point_inverse(tiles_defines(c)); }},
         {"light_tiles_shadow", "light.vert", "light_tiles.frag", "tiles: any light, some with shadow maps",
          tiles_shadow, [](C c) { return with(shadow_defines(tiles_defines(c), c), {shadow_slots(c)}); }},
+        {"light_tiles_shadow_atlas", "light.vert", "light_tiles.frag", "tiles: the same, the batch's maps in one atlas",
+         tiles_shadow_atlas,
+         [](C c) { return with(shadow_defines(tiles_defines(c), c), {shadow_slots(c), "SHADOW_ATLAS"}); }},
         // LearnOpenGL's deferred demo's lighting pass (light_geometry_screen.cpp): every light of a
         // batch at every pixel, no in-shader rejections; in the three forms, as the demo's shader
         // is written for its one kind of light.
@@ -303,6 +310,9 @@ const std::vector<ShaderRow>& shader_rows() {
          uses_screen, [](C c) { return point_inverse(screen_defines(c)); }},
         {"light_screen_shadow", "light.vert", "light_screen.frag", "screen: any light, some with shadow maps",
          screen_shadow, [](C c) { return with(shadow_defines(screen_defines(c), c), {shadow_slots(c)}); }},
+        {"light_screen_shadow_atlas", "light.vert", "light_screen.frag", "screen: the same, the batch's maps in one atlas",
+         screen_shadow_atlas,
+         [](C c) { return with(shadow_defines(screen_defines(c), c), {shadow_slots(c), "SHADOW_ATLAS"}); }},
         {"tile_depth", "post.vert", "tile_depth.frag", "tiles: each tile column's depth span per row", tile_depth,
          [](C c) { return with(depth_defines(c), {tile_size(c)}); }},
         {"tile_depth_reduce", "post.vert", "tile_depth_reduce.frag", "tiles: a tile's rows together", tile_depth,

@@ -15,6 +15,13 @@ namespace dsr {
 
 namespace {
 
+// ShadowLookup::generation: counted across every stage of the process, so that a texture name
+// freed and given again, even by another stage, never comes back with a number already seen.
+unsigned next_generation() {
+    static unsigned n = 0;
+    return ++n;
+}
+
 // Every view of a map: its clip volume's culling, a cube's faces against the light's sphere too.
 bool casts_into(const Light& light, const ShadowLayout& s, const ShadowView& v, const ObjectBounds& b) {
     if (s.kind == ShadowKind::cube && glm::length(b.centre - light.pos) > light.radius + b.radius) return false;
@@ -186,6 +193,7 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
                                          });
             }
             stats.shadow_maps += int(layout.views.size());
+            m.generation = next_generation();
         }
         ShadowLookup& k = out[size_t(l.shadow)];
         k.texture = m.texture;
@@ -198,6 +206,7 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
         k.slope = light.shadow.slope;
         k.width = layout.width, k.height = layout.height, k.face = layout.face;
         k.packed = packed_;
+        k.generation = m.generation;
     }
     if (bound) gpu.unbind();
     check_gl_stage("shadow stage");

@@ -55,6 +55,7 @@ private:
         std::vector<glm::dmat4> clips;
         std::vector<std::vector<size_t>> objects;
         std::vector<glm::dmat4> models;  // of those objects, in their order
+        unsigned generation = 0;         // ShadowLookup::generation of its last drawing
     };
     void allocate(Map& m, int width, int height);
     void release(Map& m);
