@@ -120,18 +120,25 @@ void check_plan(const std::vector<ScissorRect>& rects, int w, int h, int ts, int
     EXPECT_EQ(in_batches.size(), std::set<int>(in_batches.begin(), in_batches.end()).size());
 }
 
+// n rectangles at random places and sizes (positions in [lo, hi], sides in [0, side]): some off
+// the screen, some empty.
+std::vector<ScissorRect> random_rects(std::mt19937& rng, size_t n, int lo = -40, int hi = 300, int side = 160) {
+    std::uniform_int_distribution<int> pos(lo, hi), size(0, side);
+    std::vector<ScissorRect> rects(n);
+    for (ScissorRect& r : rects) {
+        r.x0 = pos(rng), r.y0 = pos(rng);
+        r.x1 = r.x0 + size(rng), r.y1 = r.y0 + size(rng);
+    }
+    return rects;
+}
+
 }  // namespace
 
 TEST(TilePlan, EveryOverlapShadedOnceAgainstBruteForce) {
     std::mt19937 rng(12);
-    std::uniform_int_distribution<int> pos(-40, 300), size(0, 160);
     for (int trial = 0; trial < 40; ++trial) {
         const int w = 97 + trial * 7, h = 61 + trial * 5;
-        std::vector<ScissorRect> rects(size_t(1 + trial * 9));
-        for (ScissorRect& r : rects) {
-            r.x0 = pos(rng), r.y0 = pos(rng);
-            r.x1 = r.x0 + size(rng), r.y1 = r.y0 + size(rng);
-        }
+        std::vector<ScissorRect> rects = random_rects(rng, size_t(1 + trial * 9));
         const int ts = 8 << (trial % 3), n = 1 + trial % 9, b = 1 + (trial * 13) % 70;
         SCOPED_TRACE(testing::Message() << "trial " << trial << " " << w << "x" << h << " ts " << ts << " n " << n << " b " << b);
         check_plan(rects, w, h, ts, n, b);
@@ -145,15 +152,10 @@ TEST(TilePlan, EveryOverlapShadedOnceAgainstBruteForce) {
 // is full; every pair is still shaded exactly once (check_plan's brute force).
 TEST(TilePlan, NoBatchHoldsMoreShadowedLightsThanItsMaps) {
     std::mt19937 rng(23);
-    std::uniform_int_distribution<int> pos(-40, 300), size(0, 160);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     for (int trial = 0; trial < 30; ++trial) {
         const int w = 120 + trial * 5, h = 90 + trial * 3;
-        std::vector<ScissorRect> rects(size_t(2 + trial * 7));
-        for (ScissorRect& r : rects) {
-            r.x0 = pos(rng), r.y0 = pos(rng);
-            r.x1 = r.x0 + size(rng), r.y1 = r.y0 + size(rng);
-        }
+        std::vector<ScissorRect> rects = random_rects(rng, size_t(2 + trial * 7));
         const float share = float(trial % 5) / 4.0f;  // none, a quarter, ... every light shadowed
         std::vector<bool> shadowed;
         for (size_t i = 0; i < rects.size(); ++i) shadowed.push_back(unit(rng) < share);
@@ -177,14 +179,9 @@ TEST(TilePlan, NoBatchHoldsMoreShadowedLightsThanItsMaps) {
 // exactly what it plans when it culls itself: the same batches, quads and slots, draw by draw.
 TEST(TilePlan, KeptTilesPlanAsTheCullingDoes) {
     std::mt19937 rng(31);
-    std::uniform_int_distribution<int> pos(-40, 300), size(0, 160);
     for (int trial = 0; trial < 24; ++trial) {
         const int w = 131 + trial * 11, h = 77 + trial * 7;
-        std::vector<ScissorRect> rects(size_t(2 + trial * 11));
-        for (ScissorRect& r : rects) {
-            r.x0 = pos(rng), r.y0 = pos(rng);
-            r.x1 = r.x0 + size(rng), r.y1 = r.y0 + size(rng);
-        }
+        std::vector<ScissorRect> rects = random_rects(rng, size_t(2 + trial * 11));
         const int ts = 8 << (trial % 3), n = 1 + trial % 9, b = 1 + (trial * 13) % 70;
         SCOPED_TRACE(testing::Message() << "trial " << trial);
         const TileDepth depth = random_depth(rng, rects.size(), ((w + ts - 1) / ts) * ((h + ts - 1) / ts));
@@ -323,14 +320,9 @@ TEST(TilePlan, MortonOrderKeepsNeighboursTogether) {
 // are exactly the tiles its lights overlap, each carrying the whole group.
 TEST(TilePlan, GroupsCoverTheUnionOfTheirLightsTiles) {
     std::mt19937 rng(7);
-    std::uniform_int_distribution<int> pos(-30, 200), size(0, 120);
     for (int trial = 0; trial < 20; ++trial) {
         const int w = 150 + trial, h = 110 + 2 * trial, ts = 8 << (trial % 3), n = 1 + trial % 8;
-        std::vector<ScissorRect> rects(size_t(3 + 7 * trial));
-        for (ScissorRect& r : rects) {
-            r.x0 = pos(rng), r.y0 = pos(rng);
-            r.x1 = r.x0 + size(rng), r.y1 = r.y0 + size(rng);
-        }
+        std::vector<ScissorRect> rects = random_rects(rng, size_t(3 + 7 * trial), -30, 200, 120);
         const int tiles_x = (w + ts - 1) / ts, tiles_y = (h + ts - 1) / ts;
         const TileDepth depth = random_depth(rng, rects.size(), tiles_x * tiles_y);
         const bool cull = trial % 2 == 1;  // odd trials with depth culling

@@ -41,18 +41,10 @@ public:
         }
         const bool any_shadow = f.shadowed_lights > 0 && shadow_slots_ > 0;
         for (const std::vector<int>& batch : cut_batches(order, batch_, any_shadow ? &shadowed : nullptr, shadow_slots_)) {
-            bool with_maps = false;
-            for (int i : batch) with_maps |= f.lights[size_t(i)].shadow >= 0;
-            arrays_.clear();
-            shadows_.clear();
-            for (int i : batch) {
-                const LightDraw& l = f.lights[size_t(i)];
-                arrays_.add(with_maps ? with_shadow_slot(l.params, shadows_.add(f, l)) : l.params);
-            }
             // The form the batch's lights allow, as the demo's shader is written for its one kind
             // of light (its lights take the attenuation law's point-light form); with shadow maps
             // the shadow form.
-            Program& prog = shadows_.size() > 0 ? shadows_.prepare(progs_, stats) : progs_[LightPrograms::common(f, batch)];
+            Program& prog = load_batch(f, batch, arrays_, shadows_, progs_, stats);
             gl_state().apply(light_pass_state(prog.id(), false));  // additive, the whole screen
             arrays_.set(prog, LightArrays::kLight);
             shadows_.set(prog);

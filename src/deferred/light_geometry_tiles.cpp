@@ -219,15 +219,7 @@ private:
     // per light, one array each), then one draw per layer, each counted.
     void draw_batch(const FrameDef& f, const std::vector<int>& batch, LightQueries& q, FrameStats& stats) {
         // A batch with shadow maps: each light's slot among them in lightspot.z (-1: none).
-        bool shadowed = false;
-        for (int l : batch) shadowed |= f.lights[size_t(l)].shadow >= 0;
-        shadows_.clear();
-        arrays_.clear();
-        for (int l : batch) {
-            const LightDraw& d = f.lights[size_t(l)];
-            arrays_.add(shadowed ? with_shadow_slot(d.params, shadows_.add(f, d)) : d.params);
-        }
-        Program& prog = shadows_.size() > 0 ? shadows_.prepare(progs_, stats) : progs_[LightPrograms::common(f, batch)];
+        Program& prog = load_batch(f, batch, arrays_, shadows_, progs_, stats);
         gl_state().apply(light_pass_state(prog.id(), false));
         const GLsizei bytes = GLsizei(stride_ * sizeof(float));
         auto at = [](int fl) { return reinterpret_cast<const void*>(size_t(fl) * sizeof(float)); };  // buffer offsets

@@ -165,6 +165,19 @@ LightParams with_shadow_slot(LightParams p, float slot) {
     return p;
 }
 
+Program& load_batch(const FrameDef& f, const std::vector<int>& batch, LightArrays& arrays, ShadowSlots& shadows,
+                    LightPrograms& progs, FrameStats& stats) {
+    bool with_maps = false;
+    for (int i : batch) with_maps |= f.lights[size_t(i)].shadow >= 0;
+    arrays.clear();
+    shadows.clear();
+    for (int i : batch) {
+        const LightDraw& l = f.lights[size_t(i)];
+        arrays.add(with_maps ? with_shadow_slot(l.params, shadows.add(f, l)) : l.params);
+    }
+    return shadows.size() > 0 ? shadows.prepare(progs, stats) : progs[LightPrograms::common(f, batch)];
+}
+
 LightPrograms::LightPrograms(ProgramSet& programs, const std::string& family, bool shadow_only, int shadow_slots)
     : shadow_slots_(shadow_slots) {
     if (!shadow_only) {

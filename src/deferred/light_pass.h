@@ -121,6 +121,13 @@ private:
     int shadow_slots_ = 0;
 };
 
+// A batch of f's lights (indices into f.lights) into `arrays`, each light's parameters with its
+// shadow slot where the batch holds a shadowed light (`shadows` then holds their maps), and the
+// program that draws it: ShadowSlots::prepare's where the batch has maps, else progs' form for
+// the batch's lights. The tiles' and screen's batches.
+Program& load_batch(const FrameDef& f, const std::vector<int>& batch, LightArrays& arrays, ShadowSlots& shadows,
+                    LightPrograms& progs, FrameStats& stats);
+
 // The light's quad over its scissor rectangle, through the light's form of "light".
 class LightQuads {
 public:
