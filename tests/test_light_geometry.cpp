@@ -344,3 +344,35 @@ TEST(LightGeometry, AutoIsQuadToTheByteWhateverItChooses) {
 }
 
 }  // namespace dsr::test
+
+namespace dsr::test {
+
+// An all-tiles choice is kept unpriced for the next frames (light_geometry_auto.cpp keep_tiles):
+// over 10 frames of 1024-overlap with the tiles forced cheapest, every frame sends every light
+// through the tiles and gives quad's image to the byte, and the kept frames, whose planner culls
+// by itself, shade the same tile-light pairs as the priced one.
+TEST(LightGeometry, AutoKeepsAnAllTilesChoiceUnpriced) {
+    const Scene s = bench_scene(default_scene(), LightSpec{1024, LightSet::overlap});
+    const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
+    setenv("DSR_LIGHT_COST_SCALE", "1000,1000,1", 1);
+    auto ctx = create_context(ContextDesc{"osmesa", kW, kH});
+    const Caps caps = probe_caps();
+    DeferredShader ds(caps, kW, kH, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
+    ds.set_scene(s);
+    long long pairs = -1;
+    for (int frame = 0; frame < 10; ++frame) {
+        const FrameStats st = ds.render(s, kW, kH);
+        ASSERT_TRUE(st.auto_geometry);
+        EXPECT_EQ(st.auto_lights[2] + int(st.ambient_folded), st.lights_drawn) << "frame " << frame;
+        EXPECT_TRUE(st.auto_spans) << "frame " << frame;
+        if (pairs < 0) pairs = st.tile_light_pairs;
+        EXPECT_EQ(st.tile_light_pairs, pairs) << "frame " << frame;
+        RenderResult r;
+        r.stats = st;
+        r.image = read_pixels(kW, kH);
+        expect_same("auto_kept_frame" + std::to_string(frame), r, quad);
+    }
+    unsetenv("DSR_LIGHT_COST_SCALE");
+}
+
+}  // namespace dsr::test
