@@ -294,17 +294,25 @@ nlohmann::ordered_json stress_json(const std::vector<StressResult>& results, con
     return j;
 }
 
-void check_report_block(const std::string& doc, const std::string& path) {
-    const size_t b = doc.find(kBegin), e = doc.find(kEnd);
+void check_marked_block(const std::string& doc, const std::string& path, const std::string& begin,
+                        const std::string& end) {
+    const size_t b = doc.find(begin), e = doc.find(end);
     if (b == std::string::npos || e == std::string::npos || e < b)
-        throw Error("dsr stress: --report: " + path + " has no '" + kBegin + "' ... '" + kEnd + "' block");
+        throw Error("dsr stress: --report: " + path + " has no '" + begin + "' ... '" + end + "' block");
 }
 
-std::string splice_report_block(std::string doc, const std::string& path, const std::string& block) {
-    check_report_block(doc, path);
-    const size_t b = doc.find(kBegin), e = doc.find(kEnd);
-    doc.replace(b, e + std::string(kEnd).size() - b, block);
+std::string splice_marked_block(std::string doc, const std::string& path, const std::string& begin,
+                                const std::string& end, const std::string& block) {
+    check_marked_block(doc, path, begin, end);
+    const size_t b = doc.find(begin), e = doc.find(end);
+    doc.replace(b, e + end.size() - b, block);
     return doc;
+}
+
+void check_report_block(const std::string& doc, const std::string& path) { check_marked_block(doc, path, kBegin, kEnd); }
+
+std::string splice_report_block(std::string doc, const std::string& path, const std::string& block) {
+    return splice_marked_block(std::move(doc), path, kBegin, kEnd, block);
 }
 
 }  // namespace dsr

@@ -40,6 +40,14 @@ std::string stress_summary(const std::vector<StressResult>& results);
 // The generated block of docs/accuracy.md, its BEGIN and END markers included.
 std::string stress_report_block(const std::vector<StressResult>& results, bool quick, const std::string& renderer);
 
+// Throws dsr::Error naming `path` when `doc` (that file's text) has no `begin` ... `end` block;
+// `doc` with that block, its markers included, replaced by `block`. Every generated block of a
+// document (this sweep's, the shadow sweep's) goes through these two.
+void check_marked_block(const std::string& doc, const std::string& path, const std::string& begin,
+                        const std::string& end);
+std::string splice_marked_block(std::string doc, const std::string& path, const std::string& begin,
+                                const std::string& end, const std::string& block);
+
 // Throws dsr::Error naming `path` when `doc` (that file's text) has no BEGIN ... END block.
 // `dsr stress` checks before the sweep runs, so a wrong file fails at once.
 void check_report_block(const std::string& doc, const std::string& path);

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "analysis/number_format.h"
-#include "dsr_error.h"
+#include "analysis/stress_report.h"
 
 namespace dsr {
 
@@ -150,16 +150,11 @@ std::string shadow_report_block(const std::vector<StressResult>& results, const 
 }
 
 void check_shadow_report_block(const std::string& doc, const std::string& path) {
-    const size_t b = doc.find(kBegin), e = doc.find(kEnd);
-    if (b == std::string::npos || e == std::string::npos || e < b)
-        throw Error("dsr stress: --report: " + path + " has no '" + kBegin + "' ... '" + kEnd + "' block");
+    check_marked_block(doc, path, kBegin, kEnd);
 }
 
 std::string splice_shadow_report_block(std::string doc, const std::string& path, const std::string& block) {
-    check_shadow_report_block(doc, path);
-    const size_t b = doc.find(kBegin), e = doc.find(kEnd);
-    doc.replace(b, e + std::string(kEnd).size() - b, block);
-    return doc;
+    return splice_marked_block(std::move(doc), path, kBegin, kEnd, block);
 }
 
 }  // namespace dsr
