@@ -40,4 +40,13 @@ void draw_texture_to_framebuffer0(GLuint texture, int out_w, int out_h, glm::vec
     check_gl_stage("drawing a texture into the main frame buffer (final stage)");
 }
 
+void draw_clip_square() {
+    glBegin(GL_QUADS);
+    glVertex2f(-1, -1);
+    glVertex2f(1, -1);
+    glVertex2f(1, 1);
+    glVertex2f(-1, 1);
+    glEnd();
+}
+
 }  // namespace dsr

@@ -12,4 +12,8 @@ namespace dsr {
 // it is the only one).
 void draw_texture_to_framebuffer0(GLuint texture, int out_w, int out_h, glm::vec2 tex_scale, bool has_fbo);
 
+// The clip-space square [-1, 1]^2 by fixed function in the current colour: the whole viewport
+// under identity matrices (the capability probes' fills).
+void draw_clip_square();
+
 }  // namespace dsr

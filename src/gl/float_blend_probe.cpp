@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "gl/blit.h"
 #include "gl/caps.h"
 #include "gl/pbuffer.h"
 #include "gl/state.h"
@@ -26,12 +27,7 @@ bool probe_float_blend(GLenum format) {
         glClearColor(0.75f, 0.75f, 0.75f, 0.75f);
         glClear(GL_COLOR_BUFFER_BIT);
         glColor4f(0.75f, 0.75f, 0.75f, 0.75f);
-        glBegin(GL_QUADS);
-        glVertex2f(-1, -1);
-        glVertex2f(1, -1);
-        glVertex2f(1, 1);
-        glVertex2f(-1, 1);
-        glEnd();
+        draw_clip_square();
         glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, px);
         glColor4f(1, 1, 1, 1);
         glClearColor(0, 0, 0, 0);

@@ -6,6 +6,7 @@
 #include <functional>
 #include <vector>
 
+#include "gl/blit.h"
 #include "gl/caps.h"
 #include "gl/pbuffer.h"
 #include "gl/state.h"
@@ -22,12 +23,7 @@ constexpr int kSweepSteps = 601;
 // the red bytes.
 void fill(float v) {
     glColor4f(v / 255.0f, v / 255.0f, v / 255.0f, 1.0f);
-    glBegin(GL_QUADS);
-    glVertex2f(-1, -1);
-    glVertex2f(1, -1);
-    glVertex2f(1, 1);
-    glVertex2f(-1, 1);
-    glEnd();
+    draw_clip_square();
 }
 
 void read_red(unsigned char out[16]) {
