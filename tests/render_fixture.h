@@ -39,8 +39,8 @@ inline Scene analytic_scene() { return load_scene(resource_dir("tests") + "/data
 
 // For the analytic reference's hand checks: a plane seen from straight above, one light above its
 // centre. At the centre pixel (odd size, so its ray is the axis) l = v = h = n = +Y, and
-// everything is computable by hand.
-inline Scene plane_from_above() {
+// everything is computable by hand. size: the plane's side.
+inline Scene plane_from_above(float size = 4) {
     Scene s;
     s.camera.pos = {0, 5, 0};
     s.camera.target = {0, 0, 0};
@@ -56,7 +56,7 @@ inline Scene plane_from_above() {
     m.specular = glm::vec3(0.25f);
     m.shininess = 10;
     s.materials.push_back(m);
-    add_plane(s, 4, {0, 0, 0}, 0);
+    add_plane(s, size, {0, 0, 0}, 0);
     s.lights.push_back({{0, 1, 0}, {1, 1, 1}, 2.0f});
     return s;
 }

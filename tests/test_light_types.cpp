@@ -19,24 +19,12 @@ namespace {
 constexpr double kLsb = 1.0 / 255.0;
 constexpr int kN = 65;  // odd: the centre pixel's ray is the view axis
 
-// A 6 x 6 plane seen from straight above (as test_analytic's plane_from_above), with no light.
+// A 6 x 6 plane seen from straight above (render_fixture.h plane_from_above), with no light.
 Scene plane_scene(float spec) {
-    Scene s;
-    s.camera.pos = {0, 5, 0};
-    s.camera.target = {0, 0, 0};
-    s.camera.up = {0, 0, -1};
-    s.camera.fov_deg = 60;
-    s.camera.near_plane = 0.5f;
-    s.camera.far_plane = 20;
-    s.ambient = glm::vec3(0.1f);
-    s.background = {0.25f, 0.5f, 0.75f};
-    Material m;
-    m.name = "m";
-    m.diffuse = glm::vec3(0.5f, 0.6f, 0.7f);
-    m.specular = glm::vec3(spec);
-    m.shininess = 10;
-    s.materials.push_back(m);
-    add_plane(s, 6, {0, 0, 0}, 0);
+    Scene s = plane_from_above(6);
+    s.lights.clear();
+    s.materials[0].diffuse = glm::vec3(0.5f, 0.6f, 0.7f);
+    s.materials[0].specular = glm::vec3(spec);
     return s;
 }
 
