@@ -222,10 +222,11 @@ TEST(Options, NoSkipEach) {
 }
 
 // The pass skips by name: each turned off in --stats' "skips", and "passes" says what the counted
-// frame ran. The plain scene at 64x64 has one light over the whole screen with --scissor off; the
-// second of three frames has measured the depth complexity, so it leaves the pre-pass out.
+// frame ran. The plain scene at 64x64 has one light over the whole screen with --scissor off, drawn
+// by a quad of its own (the tiles would take it in a batch, and nothing would fold); the second of
+// three frames has measured the depth complexity, so it leaves the pre-pass out.
 TEST(Options, NoSkipPasses) {
-    const std::string scene = plain_scene() + " --no-bloom --no-aa --scissor off --frames 2";
+    const std::string scene = plain_scene() + " --no-bloom --no-aa --scissor off --light-geometry quad --frames 2";
     const Rendered on = render(scene);
     const Rendered off = render(scene + " --no-skip depth-prepass,ambient,final");
     for (const char* k : {"depth_prepass", "ambient", "final"}) {

@@ -173,6 +173,32 @@ TEST(PassSkips, AmbientFoldedSameImage) {
     EXPECT_FALSE(render_frames(s, ssao, 1).stats[0].ambient_folded) << "SSAO scales the ambient pass alone";
 }
 
+// The fold only where the light geometry would draw the full-screen light by a pass of its own:
+// the tiles and screen take it into a batch, where a fold would add a pass (the ambient pass is
+// drawn instead, and their images stay quad's with the skip off). Auto folds where it sent that
+// light by quad or volume, and then counts it on no path.
+TEST(PassSkips, AmbientFoldsOnlyIntoAPassOfItsOwn) {
+    const Scene s = with_directional(default_scene());
+    ShaderOptions quad;
+    quad.light_geometry = LightGeometry::quad;
+    const Frames ref = render_frames(s, no_skip(&SkipOptions::ambient_pass, quad), 1);
+    for (LightGeometry g : {LightGeometry::tiles, LightGeometry::screen, LightGeometry::automatic}) {
+        ShaderOptions o;
+        o.light_geometry = g;
+        const Frames r = render_frames(s, o, 2);
+        const std::string name = light_geometry_name(g);
+        const FrameStats& st = r.stats[1];
+        if (g != LightGeometry::automatic) {
+            EXPECT_FALSE(st.ambient_folded) << name;
+            EXPECT_EQ(st.light_passes, render_frames(s, no_skip(&SkipOptions::ambient_pass, o), 2).stats[1].light_passes) << name;
+        } else {
+            EXPECT_EQ(st.auto_lights[0] + st.auto_lights[1] + st.auto_lights[2] + int(st.ambient_folded), st.lights_drawn);
+        }
+        const double lsb = g == LightGeometry::screen ? 6.0 / 255.0 : 1.0 / 255.0;
+        EXPECT_LE(compare_logged("ambient fold, " + name, r.image, ref.image, lsb).max_abs, lsb) << name;
+    }
+}
+
 // The fold's pure part: the first full-screen light, and the frame without it.
 TEST(PassSkips, FullScreenLight) {
     FrameDef f;

@@ -135,32 +135,42 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
 // passes that test against it, and the forward stage after them, all into P-buffer 0.
 void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameStats& st) {
     if (ssao_) timed(timer_, S_SSAO, [&] { ssao_->draw(f, *targets_); });
-    // Where a light covers the whole screen, its pass writes what the ambient pass would have.
-    const std::optional<AmbientFold> fold = lighting_->ambient_fold(f, scene, ssao_ != nullptr);
-    timer_.begin(S_AMBIENT);
     fb_bind_render(P_ACCUM);
-    if (!fold) lighting_->draw_ambient(f, scene, *targets_, ssao_.get());
-    check_gl_stage("lighting stage: ambient pass");
-    timer_.end();
     const int units[4] = {0, 1, 2, 3};
     const int gbuffer[4] = {G_NORMAL, G_DIFFUSE, G_SPECULAR, depth_target(config_.opts.depth)};
-    for (int i = 0; i < 4; ++i) mrt_bind_texture(gbuffer[i], units[i]);  // mrt_bind_texture(ALL)
+    const auto bind_gbuffer = [&] {
+        for (int i = 0; i < 4; ++i) mrt_bind_texture(gbuffer[i], units[i]);  // mrt_bind_texture(ALL)
+    };
+    const auto unbind_gbuffer = [&] {
+        for (int i = 3; i >= 0; --i) mrt_unbind_texture(gbuffer[i], units[i]);
+    };
     // The light geometry's plan for the frame first (the auto geometry's depth spans, timed with
-    // the light passes): whether its lights need the scene's depth decides the hand-off.
+    // the light passes): whether its lights need the scene's depth decides the hand-off, and
+    // whether it would draw a light over the whole screen by a pass of its own decides the fold.
     bool lights_need_depth = false;
-    // The lights the light geometry draws (the frame's, less the one the fold draws): one value for
-    // its plan and its passes.
+    bind_gbuffer();
+    timed(timer_, S_LIGHTS, [&] { lights_need_depth = lighting_->prepare(f, *targets_, st); });
+    // Where that light takes a pass of its own, its pass writes what the ambient pass would have.
+    const std::optional<AmbientFold> fold = lighting_->ambient_fold(f, scene, ssao_ != nullptr);
+    if (!fold) {
+        unbind_gbuffer();  // the ambient pass binds its diffuse target on unit 0
+        timer_.begin(S_AMBIENT);
+        lighting_->draw_ambient(f, scene, *targets_, ssao_.get());
+        check_gl_stage("lighting stage: ambient pass");
+        timer_.end();
+        bind_gbuffer();
+    }
+    // The lights the light geometry draws (the frame's, less the one the fold draws).
     std::optional<FrameDef> rest;
     if (fold) rest = without_light(f, fold->light);
     const FrameDef& lights = rest ? *rest : f;
-    timed(timer_, S_LIGHTS, [&] { lights_need_depth = lighting_->prepare(lights, *targets_, st); });
     if (config_.paths.accum_depth && (lights_need_depth || config_.paths.forward_stage || config_.paths.depth_bounds)) {
         timed(timer_, S_DEPTH_COPY, [&] { lighting_->hand_off_depth(f, *targets_); });
         check_gl_stage("lighting stage: depth hand-off");
     }
     timer_.begin(S_LIGHTS);
     lighting_->draw_lighting(f, lights, *targets_, st, fold ? &*fold : nullptr);  // Listing 17
-    for (int i = 3; i >= 0; --i) mrt_unbind_texture(gbuffer[i], units[i]);
+    unbind_gbuffer();
     check_gl_stage("lighting stage: light passes");
     if (config_.paths.forward_stage) {
         timer_.end();

@@ -39,9 +39,24 @@ public:
         : inner_(std::move(inner)), quads_(programs, depth_bounds, true), depth_bounds_(depth_bounds) {}
 
     bool prepare(const FrameDef& f, RenderTargets& t, FrameStats& stats) override {
+        inner_index_.clear();
         if (f.shadowed_lights == 0) return inner_->prepare(f, t, stats);
+        int n = 0;
+        for (const LightDraw& l : f.lights) inner_index_.push_back(l.shadow < 0 ? n++ : -1);
         const bool inner = inner_->prepare(unshadowed(f), t, stats);
         return inner || depth_bounds_;
+    }
+
+    // A shadowed light is a quad of its own; the others are the inner geometry's, by their index
+    // among the unshadowed.
+    bool own_pass(size_t i) const override {
+        if (inner_index_.empty()) return inner_->own_pass(i);
+        return i >= inner_index_.size() || inner_index_[i] < 0 || inner_->own_pass(size_t(inner_index_[i]));
+    }
+
+    void drop(size_t i) override {
+        if (inner_index_.empty()) return inner_->drop(i);
+        if (i < inner_index_.size() && inner_index_[i] >= 0) inner_->drop(size_t(inner_index_[i]));
     }
 
     void draw(const FrameDef& f, RenderTargets& t, LightQueries& q, FrameStats& stats) override {
@@ -59,6 +74,7 @@ public:
 
 private:
     std::unique_ptr<LightGeometryPass> inner_;
+    std::vector<int> inner_index_;  // prepare()'s frame: each light's index among the unshadowed, -1 if shadowed
     LightQuads quads_;
     bool depth_bounds_;
 };

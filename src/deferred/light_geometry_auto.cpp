@@ -129,9 +129,25 @@ public:
         return true;
     }
 
+    // A full-screen light sent by quad or volume is a pass of its own; by the tiles, one more light
+    // in their batches.
+    bool own_pass(size_t i) const override {
+        return planned_ && i < plan_.path.size() && plan_.path[i] != LightPath::tiles;
+    }
+
+    void drop(size_t i) override {
+        if (!planned_ || i >= plan_.path.size()) return;
+        --plan_.count[size_t(plan_.path[i])];
+        plan_.path.erase(plan_.path.begin() + std::ptrdiff_t(i));
+        raw_.erase(raw_.begin() + std::ptrdiff_t(i));
+        features_.erase(features_.begin() + std::ptrdiff_t(i));
+        if (i < depth_.lights.size()) depth_.lights.erase(depth_.lights.begin() + std::ptrdiff_t(i));
+    }
+
     void draw(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats) override {
         if (!planned_ || plan_.path.size() != f.lights.size()) prepare(f, targets, stats);  // (prepare() saw another frame)
         planned_ = false;
+        for (int p = 0; p < kLightPaths; ++p) stats.auto_lights[p] = plan_.count[size_t(p)];  // less a light drop() took
         std::vector<const LightDraw*> by_path[kLightPaths];
         double raw[kLightPaths] = {0, 0, 0};  // the model's ms for each path's lights, unscaled
         for (size_t i = 0; i < f.lights.size(); ++i) {

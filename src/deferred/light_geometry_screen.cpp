@@ -29,6 +29,8 @@ public:
           shadow_slots_(c.shadow_slots),
           shadows_(shadow_maps_packed(c.caps)) {}
 
+    bool own_pass(size_t) const override { return false; }  // one more light in a batch
+
     void draw(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats) override {
         gl_state().set_camera(f.pixels());
         progs_.begin(f);

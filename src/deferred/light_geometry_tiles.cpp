@@ -61,6 +61,8 @@ public:
         if (depth_) depth_->resize(width, height);
     }
 
+    bool own_pass(size_t) const override { return false; }  // one more light in the tiles' batches
+
     void draw(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats) override {
         const std::vector<DepthSpan> spans = depth_spans(f, targets, stats);
         TileDepth depth;

@@ -65,10 +65,11 @@ void LightingStage::draw_ambient(const FrameDef& f, const Scene& scene, RenderTa
     if (ssao) ssao->modulate_ambient(f, t);
 }
 
-std::optional<AmbientFold> LightingStage::ambient_fold(const FrameDef& f, const Scene& scene, bool ssao) const {
+std::optional<AmbientFold> LightingStage::ambient_fold(const FrameDef& f, const Scene& scene, bool ssao) {
     if (ssao || !fold_any_.id() || !fold_point_.id()) return std::nullopt;
     const std::optional<size_t> i = full_screen_light(f);
-    if (!i) return std::nullopt;
+    if (!i || !geometry_->own_pass(*i)) return std::nullopt;
+    geometry_->drop(*i);
     return AmbientFold{*i, scene.background, scene.ambient};
 }
 

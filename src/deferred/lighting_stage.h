@@ -48,22 +48,24 @@ public:
     // the alpha test keeps it where the G-buffer holds no surface (diffuse alpha 0). `ssao`: the
     // AO buffer it is multiplied by, or null.
     void draw_ambient(const FrameDef& f, const Scene& scene, RenderTargets& targets, const SsaoStage* ssao);
-    // Whether this frame's ambient pass folds into a light's pass: the skip on, SSAO off (it scales
-    // the ambient pass alone), a light drawn full screen and its fold program built. When it does,
+    // Before the depth hand-off and the ambient pass, with the G-buffer bound as textures and
+    // P-buffer 0 for rendering: the light geometry's plan for the frame's lights
+    // (LightGeometryPass::prepare); whether its lights need the scene's depth in P-buffer 0.
+    bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) {
+        return geometry_->prepare(f, targets, stats);
+    }
+    // After prepare(f): whether this frame's ambient pass folds into a light's pass: the skip on,
+    // SSAO off (it scales the ambient pass alone), a light drawn full screen, its fold program
+    // built, and the light geometry would draw that light by a pass of its own
+    // (LightGeometryPass::own_pass; the geometry's plan then leaves it out). When it does,
     // draw_ambient is not called and draw_lighting draws that light first.
-    std::optional<AmbientFold> ambient_fold(const FrameDef& f, const Scene& scene, bool ssao) const;
+    std::optional<AmbientFold> ambient_fold(const FrameDef& f, const Scene& scene, bool ssao);
     // hand_off_depth (depth_handoff.h), with the G-buffer bound as textures.
     void hand_off_depth(const FrameDef& f, RenderTargets& targets);
-    // Before the depth hand-off, with the G-buffer bound as textures and P-buffer 0 for rendering:
-    // the light geometry's plan for `lights` (the frame the geometry will draw:
-    // LightGeometryPass::prepare); whether its lights need the scene's depth in P-buffer 0.
-    bool prepare(const FrameDef& lights, RenderTargets& targets, FrameStats& stats) {
-        return geometry_->prepare(lights, targets, stats);
-    }
     // Listing 17: the frame's visible lights added into P-buffer 0, with the G-buffer bound as
     // textures (units 0-3); counted when counting is on and the GL can. With `fold`, that light
     // first, writing every pixel with the ambient pass folded in; then `lights` (f, or f without
-    // the folded light: what prepare() planned) by the light geometry.
+    // the folded light) by the light geometry.
     void draw_lighting(const FrameDef& f, const FrameDef& lights, RenderTargets& targets, FrameStats& stats,
                        const AmbientFold* fold = nullptr);
     // After the geometry stage: the eye-space position each pixel's depth reconstructs to, exactly
