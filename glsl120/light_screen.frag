@@ -3,7 +3,9 @@
 // demo's lighting pass (5.8.1), a full-screen quad that evaluates every light at every pixel. The
 // uniform arrays hold a batch of BATCH lights, light_count of them set; the G-buffer is read once,
 // then Listing 20's light term is summed over all of them with no depth test, no sphere test and
-// no discard, and the sum is blended once: one rounding to 8 bits per pixel, as the demo's.
+// no discard, and the sum is blended once: one rounding to 8 bits per pixel, as the demo's. The
+// demo's pass starts from its ambient term; so does the first batch here (with_ambient, blending
+// off: what the clear and Listing 15's ambient pass would have left, as light.frag's AMBIENT_FOLD).
 // SHADOW (with SHADOW_SLOTS K): up to K shadowed lights a batch, as light_tiles.frag holds them.
 #include "depth_codec.glsl"
 #include "lighting.glsl"
@@ -23,6 +25,9 @@ uniform vec2 planes;
 uniform vec3 zrange;
 uniform vec2 uv_scale;           // texture coordinates and (light.frag's) view ray from gl_FragCoord
 uniform vec4 ray_map;
+uniform float with_ambient;      // 1: the first batch, written over the background and ambient term
+uniform vec3 ambient;            // Listing 15's ambient colour
+uniform vec3 background;         // the colour P-buffer 0 is cleared to
 
 void main()
 {
@@ -31,7 +36,8 @@ void main()
     vec3 normal = texture2D(normal_map, texcoord).xyz - 0.5;
     float len = length(normal);
     normal = len > 0.1 ? normal / len : vec3(0.0);  // background and degenerate normals: unlit (light.frag)
-    vec3 diffuse = texture2D(diffuse_map, texcoord).rgb;
+    vec4 surface = texture2D(diffuse_map, texcoord);
+    vec3 diffuse = surface.rgb;
     vec4 specular = texture2D(specular_map, texcoord);
     float shininess = decode_shininess(specular.a);
     vec3 v = view_vector(pos);  // once, not per light
@@ -50,5 +56,11 @@ void main()
 #endif
         c += t;
     }
-    gl_FragColor = vec4(c, 1.0);
+    if (with_ambient > 0.5) {
+        // The alpha test of Listing 15 finds a surface where diffuse alpha is set.
+        vec3 base = surface.a > 0.5 ? ambient * diffuse : background;
+        gl_FragColor = vec4(base + c, (surface.a > 0.5 ? surface.a : 1.0) + 1.0);  // the additive blend's sum
+    } else {
+        gl_FragColor = vec4(c, 1.0);
+    }
 }

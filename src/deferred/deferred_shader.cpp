@@ -162,7 +162,7 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
     }
     // The lights the light geometry draws (the frame's, less the one the fold draws).
     std::optional<FrameDef> rest;
-    if (fold) rest = without_light(f, fold->light);
+    if (fold && !fold->by_geometry) rest = without_light(f, fold->light);
     const FrameDef& lights = rest ? *rest : f;
     if (config_.paths.accum_depth && (lights_need_depth || config_.paths.forward_stage || config_.paths.depth_bounds)) {
         timed(timer_, S_DEPTH_COPY, [&] { lighting_->hand_off_depth(f, *targets_); });

@@ -27,11 +27,28 @@ public:
         : progs_(programs, "light_screen", false, c.shadow_slots),
           batch_(c.tile_batch),
           shadow_slots_(c.shadow_slots),
-          shadows_(shadow_maps_packed(c.caps)) {}
+          shadows_(shadow_maps_packed(c.caps)),
+          ambient_(ambient_fold(c)) {}
 
     bool own_pass(size_t) const override { return false; }  // one more light in a batch
+    bool draws_ambient() const override { return ambient_; }
 
-    void draw(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats) override {
+    void draw(const FrameDef& f, RenderTargets& t, LightQueries& q, FrameStats& stats) override {
+        draw_batches(f, q, stats, nullptr);
+    }
+
+    // LearnOpenGL's lighting pass starts from its ambient term (Diffuse * 0.1): the first batch
+    // writes, blending off, what the clear and the ambient pass would have left, with its lights on
+    // top, so the demo's row pays no ambient pass it does not have.
+    void draw_with_ambient(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats, glm::vec3 background,
+                           glm::vec3 ambient) override {
+        const glm::vec3 base[2] = {background, ambient};
+        draw_batches(f, q, stats, base);
+    }
+
+private:
+    // base: the background and ambient colours the first batch writes under its lights, or null.
+    void draw_batches(const FrameDef& f, LightQueries& q, FrameStats& stats, const glm::vec3* base) {
         gl_state().set_camera(f.pixels());
         progs_.begin(f);
         shadows_.begin_frame();
@@ -47,10 +64,18 @@ public:
             // of light (its lights take the attenuation law's point-light form); with shadow maps
             // the shadow form.
             Program& prog = load_batch(f, batch, arrays_, shadows_, progs_, stats);
-            gl_state().apply(light_pass_state(prog.id(), false));  // additive, the whole screen
+            RenderState s = light_pass_state(prog.id(), false);  // additive, the whole screen
+            s.blend = !base;
+            gl_state().apply(s);
             arrays_.set(prog, LightArrays::kLight);
             shadows_.set(prog);
             prog.set("light_count", arrays_.size());
+            prog.set("with_ambient", base ? 1.0f : 0.0f);
+            if (base) {
+                prog.set("background", base[0]);
+                prog.set("ambient", base[1]);
+            }
+            base = nullptr;  // the next batches add
             q.begin();
             draw_rect(f, 0, 0, float(f.width), float(f.height), false);
             q.end();
@@ -59,11 +84,11 @@ public:
         }
     }
 
-private:
     LightPrograms progs_;
     int batch_, shadow_slots_;
     LightArrays arrays_;
     ShadowSlots shadows_;
+    bool ambient_;  // the fold's skip on and its rounding settled (shader_table.h ambient_fold)
 };
 
 }  // namespace

@@ -67,10 +67,11 @@ void LightingStage::draw_ambient(const FrameDef& f, const Scene& scene, RenderTa
 
 std::optional<AmbientFold> LightingStage::ambient_fold(const FrameDef& f, const Scene& scene, bool ssao) {
     if (ssao || !fold_any_.id() || !fold_point_.id()) return std::nullopt;
+    if (geometry_->draws_ambient() && !f.lights.empty()) return AmbientFold{0, true, scene.background, scene.ambient};
     const std::optional<size_t> i = full_screen_light(f);
     if (!i || !geometry_->own_pass(*i)) return std::nullopt;
     geometry_->drop(*i);
-    return AmbientFold{*i, scene.background, scene.ambient};
+    return AmbientFold{*i, false, scene.background, scene.ambient};
 }
 
 void LightingStage::hand_off_depth(const FrameDef& f, RenderTargets& t) {
@@ -86,12 +87,16 @@ void LightingStage::draw_lighting(const FrameDef& f, const FrameDef& lights, Ren
     stats.scissor_pixels = f.scissor_pixels;
     // Whether this frame is counted: decided here for every geometry.
     LightQueries q(counting_ && count_samples_, counting_ && count_invocations_);
-    if (fold) {
-        draw_fold(f, *fold, q);
-        ++stats.light_passes;
-        stats.ambient_folded = true;
+    if (fold) stats.ambient_folded = true;
+    if (fold && fold->by_geometry) {
+        geometry_->draw_with_ambient(lights, t, q, stats, fold->background, fold->ambient);
+    } else {
+        if (fold) {
+            draw_fold(f, *fold, q);
+            ++stats.light_passes;
+        }
+        geometry_->draw(lights, t, q, stats);
     }
-    geometry_->draw(lights, t, q, stats);
     q.collect(stats);
     // unbind_light(): nothing to restore, the next pass states what it needs.
 }

@@ -28,7 +28,8 @@ class SsaoStage;
 // The ambient pass folded into the pass of f.lights[light], a full-screen light: the colours the
 // clear and Listing 15 would have used.
 struct AmbientFold {
-    size_t light = 0;
+    size_t light = 0;        // the full-screen light whose pass takes the ambient pass's place
+    bool by_geometry = false;  // instead, the light geometry's first pass (LightGeometryPass::draws_ambient)
     glm::vec3 background{0}, ambient{0};
 };
 
@@ -57,8 +58,9 @@ public:
     // After prepare(f): whether this frame's ambient pass folds into a light's pass: the skip on,
     // SSAO off (it scales the ambient pass alone), a light drawn full screen, its fold program
     // built, and the light geometry would draw that light by a pass of its own
-    // (LightGeometryPass::own_pass; the geometry's plan then leaves it out). When it does,
-    // draw_ambient is not called and draw_lighting draws that light first.
+    // (LightGeometryPass::own_pass; the geometry's plan then leaves it out), or the geometry's
+    // first pass covers every pixel and writes the ambient itself (draws_ambient: screen, as
+    // LearnOpenGL's lighting pass does). When it does, draw_ambient is not called.
     std::optional<AmbientFold> ambient_fold(const FrameDef& f, const Scene& scene, bool ssao);
     // hand_off_depth (depth_handoff.h), with the G-buffer bound as textures.
     void hand_off_depth(const FrameDef& f, RenderTargets& targets);

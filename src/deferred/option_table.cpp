@@ -163,7 +163,7 @@ std::vector<RenderOption> make_table() {
         "depth complexity makes it pure cost (depth-prepass: the material pass writes depth itself), the "
         "ambient pass folded into the pass of a light drawn over the whole screen by a pass of its own "
         "(ambient: a directional light, or any with --scissor off; not where the light goes into a "
-        "batch of the tiles or screen, nor with --ssao), the final pass where the image "
+        "batch of the tiles; the screen geometry's first pass writes it; not with --ssao), the final pass where the image "
         "is read back at the buffers' size (final: P-buffer 0 read directly)");
     RenderOption view = choice(
         "view", view_names(), [](const RenderOptions& r) { return std::string(view_name(r.view)); },
