@@ -581,18 +581,20 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     EXPECT_EQ(bench::geometry_goals(rows, "default", 3)[3],
               "dsr's default >= 3x faster than screen (LearnOpenGL's lighting pass) on 32-large: screen 30.00 ms / "
               "auto 12.00 ms = 2.50x (dsr's default geometry: auto; 800x600, the demo's size) -> NOT met");
-    // With the light stages' ms, the estimate at the screen row's cost per evaluation follows:
-    // 28.8 ms over 32 x 480000 evaluations is 1.875 ns each; auto's frame outside its light stage
-    // 2 ms, plus 3840000 ideal pairs at that cost (7.2 ms) is 9.2 ms, 30 / 9.2 = 3.26x; auto's
-    // light stage 10 ms is 1.39x that ideal.
+    // With the light stages' ms and the floor's 1 ns a pixel, the estimate follows: the screen's
+    // 28.8 ms less one pass's floor (0.48 ms) over 32 x 480000 evaluations is 1.84375 ns each;
+    // auto's frame outside its light stage 2 ms, plus the floor 0.48, plus 3840000 ideal pairs at
+    // that cost (7.08 ms) is 9.56 ms, 30 / 9.56 = 3.14x; auto's light stage 10 ms is 1.32x 7.56.
     rows[rows.size() - 2].lights_ms = 28.8;
+    rows[rows.size() - 2].floor_light_ns = 1.0;
     rows.back().lights_ms = 10.0;
     rows.back().ideal_fragments = 3840000;
     const std::vector<std::string> e = bench::geometry_goals(rows, "default", 3);
-    EXPECT_EQ(e[4], "  (information: the screen row's light stage 28.80 ms over 32 x 480000 evaluations is 1.88 ns "
-                    "each; the default row's frame outside its light stage 2.00 ms plus 3840000 ideal pairs at that "
-                    "cost (7.20 ms) is 9.20 ms, 3.26x faster than screen; the default row's light stage is 10.00 ms, "
-                    "1.39x that ideal)");
+    EXPECT_EQ(e[4], "  (information: the screen row's light stage 28.80 ms less 1 x its per-pixel floor (1.00 ns a "
+                    "pixel: 0.48 ms) over 32 x 480000 evaluations is 1.84 ns each; the default row's frame outside its "
+                    "light stage 2.00 ms plus one pass's floor (0.48 ms) plus 3840000 ideal pairs at that cost (7.08 "
+                    "ms) is 9.56 ms, 3.14x faster than screen; the default row's light stage is 10.00 ms, 1.32x that "
+                    "ideal's 7.56 ms)");
     EXPECT_EQ(e[5].rfind("  (information, withdrawn as a goal", 0), 0u) << e[5];
     rows.back().lights_ms.reset();
     rows[rows.size() - 2].w = 512, rows[rows.size() - 2].h = 512;
