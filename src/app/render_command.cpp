@@ -184,7 +184,8 @@ int cmd_render(const std::vector<std::string>& argv) {
                {"aa", med(&StageTimes::aa)},             {"final", med(&StageTimes::final)},
                {"depth_copy", med(&StageTimes::depth_copy)}, {"ssao", med(&StageTimes::ssao)},
                {"forward", med(&StageTimes::forward)}, {"shadows", med(&StageTimes::shadows)},
-               {"cpu", med(&StageTimes::cpu)}, {"frame", med(&StageTimes::frame)}};
+               {"cpu", med(&StageTimes::cpu)}, {"cpu_make_frame", med(&StageTimes::cpu_make_frame)},
+               {"cpu_lights", med(&StageTimes::cpu_lights)}, {"frame", med(&StageTimes::frame)}};
     const size_t triangles = scene.triangle_count();
     struct rusage usage {};
     getrusage(RUSAGE_SELF, &usage);

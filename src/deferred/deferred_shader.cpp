@@ -99,12 +99,15 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     timer_.begin_frame(S_COUNT);
     set_output_size(out_w, out_h);
     FrameDef f = frame_of(scene.camera, scene.lights, config_.opts.scissor);
+    st.ms.cpu_make_frame = thread_cpu_ms() - cpu0;
     camera_ = scene.camera;
     // 0. the shadow maps of the frame's shadowed lights, handed to the light passes in the frame.
     if (shadows_ && f.shadowed_lights > 0)
         timed(timer_, S_SHADOWS, [&] { f.shadows = shadows_->draw(f, scene, *gpu_, st); });
     timed(timer_, S_GEOMETRY, [&] { geometry_->draw(f, *gpu_, *targets_, st); });  // 1. geometry stage
+    const double cpu_lights0 = thread_cpu_ms();
     draw_lights(f, scene, st);                                          // 2. lighting stage
+    st.ms.cpu_lights = thread_cpu_ms() - cpu_lights0;
     post_stage(f);                                                      // 3. post-processing
     // 4. final stage, unless the caller reads P-buffer 0 itself at its own size (read_output): then
     // the fixed-function copy into the main frame buffer would give it the same bytes. Not with a

@@ -20,6 +20,9 @@ struct StageTimes {
     // submission cost (draw calls, state, uniforms). With glFinish-timed stages (llvmpipe) the
     // waits in between are in it as far as they spin; with timer queries (a GPU) they are not there.
     double cpu = 0;
+    // Two parts of `cpu`: make_frame (culling, scissor rectangles, light parameters) and the
+    // lighting stage (the light geometry's plan, the ambient pass, the light passes' submission).
+    double cpu_make_frame = 0, cpu_lights = 0;
 };
 
 struct FrameStats {
