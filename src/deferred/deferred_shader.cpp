@@ -147,20 +147,28 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
     const auto unbind_gbuffer = [&] {
         for (int i = 3; i >= 0; --i) mrt_unbind_texture(gbuffer[i], units[i]);
     };
-    // The light geometry's plan for the frame first (the auto geometry's depth spans, timed with
-    // the light passes): whether its lights need the scene's depth decides the hand-off, and
-    // whether it would draw a light over the whole screen by a pass of its own decides the fold.
-    bool lights_need_depth = false;
-    bind_gbuffer();
-    timed(timer_, S_LIGHTS, [&] { lights_need_depth = lighting_->prepare(f, *targets_, st); });
-    // Where that light takes a pass of its own, its pass writes what the ambient pass would have.
-    const std::optional<AmbientFold> fold = lighting_->ambient_fold(f, scene, ssao_ != nullptr);
-    if (!fold) {
-        unbind_gbuffer();  // the ambient pass binds its diffuse target on unit 0
+    const auto ambient_pass = [&] {  // binds its diffuse target on unit 0: the G-buffer is bound after it
         timer_.begin(S_AMBIENT);
         lighting_->draw_ambient(f, scene, *targets_, ssao_.get());
         check_gl_stage("lighting stage: ambient pass");
         timer_.end();
+    };
+    // Where nothing can fold the ambient pass, it goes first: a GPU draws it while the light
+    // geometry plans (the auto geometry prices its lights).
+    const bool may_fold = lighting_->may_fold(f, ssao_ != nullptr);
+    if (!may_fold) ambient_pass();
+    // The light geometry's plan for the frame (the auto geometry's depth spans, timed with the
+    // light passes): whether its lights need the scene's depth decides the hand-off, and whether it
+    // would draw a light over the whole screen by a pass of its own decides the fold.
+    bool lights_need_depth = false;
+    bind_gbuffer();
+    timed(timer_, S_LIGHTS, [&] { lights_need_depth = lighting_->prepare(f, *targets_, st); });
+    // Where that light takes a pass of its own, its pass writes what the ambient pass would have.
+    const std::optional<AmbientFold> fold =
+        may_fold ? lighting_->ambient_fold(f, scene, ssao_ != nullptr) : std::optional<AmbientFold>{};
+    if (may_fold && !fold) {
+        unbind_gbuffer();
+        ambient_pass();
         bind_gbuffer();
     }
     // The lights the light geometry draws (the frame's, less the one the fold draws).

@@ -59,7 +59,10 @@ void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_emp
         const bool full = !f.scissors || n == (long long)w * h;
         if (full) r = ScissorRect{0, 0, w, h};
         f.scissor_pixels += r.area();
-        f.lights.push_back(LightDraw{&light, i, light_params(light, eye_of), eye, r, full});
+        // The volume's eye-space position is the light's (Camera::to_eye's arithmetic), but for a
+        // directional light, whose volume has none.
+        const glm::vec3 eye_pos = volume.kind == LightVolume::Kind::full_screen ? eye_of.to_eye(light.pos) : eye.pos;
+        f.lights.push_back(LightDraw{&light, i, light_params(light, eye_of.view, eye_pos), eye, r, full});
         // Maps only for the visible shadowed lights: the shadow stage draws one per index.
         if (shadows && light.shadow.on) f.lights.back().shadow = f.shadowed_lights++;
     }

@@ -7,8 +7,12 @@
 namespace dsr {
 
 LightParams light_params(const Light& light, const glm::mat4& view) {
+    return light_params(light, view, glm::vec3(view * glm::vec4(light.pos, 1.0f)));
+}
+
+LightParams light_params(const Light& light, const glm::mat4& view, glm::vec3 eye_pos) {
     LightParams p;
-    p.pos = glm::vec4(glm::vec3(view * glm::vec4(light.pos, 1.0f)), light.radius);
+    p.pos = glm::vec4(eye_pos, light.radius);
     const float type = light.type == Light::Type::point ? 0.0f : light.type == Light::Type::spot ? 1.0f : 2.0f;
     p.color = glm::vec4(light.color, type);
     if (light.type != Light::Type::point) {
@@ -25,9 +29,7 @@ LightParams light_params(const Light& light, const glm::mat4& view) {
 LightParams light_params(const Light& light, const Camera& camera) { return light_params(light, EyeTransform(camera)); }
 
 LightParams light_params(const Light& light, const EyeTransform& eye) {
-    LightParams p = light_params(light, eye.view);
-    p.pos = glm::vec4(eye.to_eye(light.pos), light.radius);
-    return p;
+    return light_params(light, eye.view, eye.to_eye(light.pos));
 }
 
 }  // namespace dsr

@@ -23,5 +23,8 @@ LightParams light_params(const Light& light, const glm::mat4& view);
 // light far from the origin keeps its position: what the renderers use.
 LightParams light_params(const Light& light, const Camera& camera);
 LightParams light_params(const Light& light, const EyeTransform& eye);
+// With the eye-space position given (make_frame has it from the light's volume: the same double
+// arithmetic, not done twice).
+LightParams light_params(const Light& light, const glm::mat4& view, glm::vec3 eye_pos);
 
 }  // namespace dsr

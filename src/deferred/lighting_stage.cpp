@@ -65,6 +65,11 @@ void LightingStage::draw_ambient(const FrameDef& f, const Scene& scene, RenderTa
     if (ssao) ssao->modulate_ambient(f, t);
 }
 
+bool LightingStage::may_fold(const FrameDef& f, bool ssao) const {
+    if (ssao || !fold_any_.id() || !fold_point_.id()) return false;
+    return (geometry_->draws_ambient() && !f.lights.empty()) || full_screen_light(f).has_value();
+}
+
 std::optional<AmbientFold> LightingStage::ambient_fold(const FrameDef& f, const Scene& scene, bool ssao) {
     if (ssao || !fold_any_.id() || !fold_point_.id()) return std::nullopt;
     if (geometry_->draws_ambient() && !f.lights.empty()) return AmbientFold{0, true, scene.background, scene.ambient};

@@ -62,6 +62,9 @@ public:
     // first pass covers every pixel and writes the ambient itself (draws_ambient: screen, as
     // LearnOpenGL's lighting pass does). When it does, draw_ambient is not called.
     std::optional<AmbientFold> ambient_fold(const FrameDef& f, const Scene& scene, bool ssao);
+    // Before prepare(f): whether ambient_fold could fold anything this frame (the skip on, no SSAO,
+    // and a light drawn over the whole screen or a geometry that writes the ambient itself).
+    bool may_fold(const FrameDef& f, bool ssao) const;
     // hand_off_depth (depth_handoff.h), with the G-buffer bound as textures.
     void hand_off_depth(const FrameDef& f, RenderTargets& targets);
     // Listing 17: the frame's visible lights added into P-buffer 0, with the G-buffer bound as

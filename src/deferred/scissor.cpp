@@ -36,8 +36,9 @@ SlopeRange slope_range(double a, double b, double r, double n) {
     if (d2 > r2) {
         // Tangent points from the origin: the chord of contact's foot is C*(1 - r^2/D^2) and its
         // half-length is r*sqrt(D^2 - r^2)/D, along the perpendicular (-b, a)/D.
-        const double k = 1.0 - r2 / d2;
-        const double h = r * std::sqrt(d2 - r2) / d2;
+        const double inv = 1.0 / d2;  // one division for both
+        const double k = 1.0 - r2 * inv;
+        const double h = r * std::sqrt(d2 - r2) * inv;
         const double u1 = a * k - b * h, w1 = b * k + a * h;
         const double u2 = a * k + b * h, w2 = b * k - a * h;
         // A tangent point in front of the near plane bounds the region; one behind it does not
