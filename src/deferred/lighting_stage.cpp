@@ -71,7 +71,7 @@ bool LightingStage::may_fold(const FrameDef& f, bool ssao) const {
 }
 
 std::optional<AmbientFold> LightingStage::ambient_fold(const FrameDef& f, const Scene& scene, bool ssao) {
-    if (ssao || !fold_any_.id() || !fold_point_.id()) return std::nullopt;
+    if (!may_fold(f, ssao)) return std::nullopt;
     if (geometry_->draws_ambient() && !f.lights.empty()) return AmbientFold{0, true, scene.background, scene.ambient};
     const std::optional<size_t> i = full_screen_light(f);
     if (!i || !geometry_->own_pass(*i)) return std::nullopt;
