@@ -345,10 +345,6 @@ TEST(LightGeometry, AutoIsQuadToTheByteWhateverItChooses) {
     for (int p = 0; p < 3; ++p) EXPECT_GT(used[p], 0) << "path " << p << " never taken";
 }
 
-}  // namespace dsr::test
-
-namespace dsr::test {
-
 // An all-tiles choice is kept unpriced for the next frames (light_geometry_auto.cpp keep_tiles):
 // over 10 frames of 1024-overlap with the tiles forced cheapest, every frame sends every light
 // through the tiles and gives quad's image to the byte, and the kept frames, whose planner culls

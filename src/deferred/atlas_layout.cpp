@@ -17,12 +17,7 @@ int next_pow2(int v) {
 }  // namespace
 
 bool AtlasLayout::operator==(const AtlasLayout& o) const {
-    if (width != o.width || height != o.height || regions.size() != o.regions.size()) return false;
-    for (size_t i = 0; i < regions.size(); ++i) {
-        const AtlasRegion &a = regions[i], &b = o.regions[i];
-        if (a.x != b.x || a.y != b.y || a.width != b.width || a.height != b.height) return false;
-    }
-    return true;
+    return width == o.width && height == o.height && regions == o.regions;
 }
 
 AtlasLayout place_atlas(const std::vector<AtlasRegion>& sizes, int max_size) {

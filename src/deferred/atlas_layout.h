@@ -10,6 +10,9 @@ namespace dsr {
 struct AtlasRegion {
     int x = 0, y = 0;           // the lower-left texel
     int width = 0, height = 0;  // the map's texels
+    bool operator==(const AtlasRegion& o) const {
+        return x == o.x && y == o.y && width == o.width && height == o.height;
+    }
 };
 
 struct AtlasLayout {

@@ -90,14 +90,8 @@ public:
         // Every light by the tiles: the next frames keep that choice unpriced (keep_tiles).
         all_tiles_ = !f.lights.empty() && plan_.count[int(LightPath::tiles)] == int(f.lights.size());
         keep_rest_ = all_tiles_ ? kKeepTiles : 0;
-        stats.auto_geometry = true;
-        stats.auto_spans = spans;
-        for (int p = 0; p < kLightPaths; ++p) {
-            stats.auto_lights[p] = plan_.count[size_t(p)];
-            stats.auto_scale[p] = scale[size_t(p)];
-        }
-        stats.auto_predicted_ms = plan_.predicted_ms[0] + plan_.predicted_ms[1] + plan_.predicted_ms[2];
-        predicted_ms_ = stats.auto_predicted_ms;
+        predicted_ms_ = plan_.predicted_ms[0] + plan_.predicted_ms[1] + plan_.predicted_ms[2];
+        report(stats, spans);
         return plan_.count[int(LightPath::volume)] > 0;
     }
 
@@ -119,14 +113,16 @@ public:
         raw_.assign(f.lights.size(), {0, 0, 0});
         planned_ = true;
         priced_ = false;
-        stats.auto_geometry = true;
-        stats.auto_spans = true;
-        for (int p = 0; p < kLightPaths; ++p) {
-            stats.auto_lights[p] = plan_.count[size_t(p)];
-            stats.auto_scale[p] = calib_.scale()[size_t(p)];
-        }
-        stats.auto_predicted_ms = predicted_ms_;
+        report(stats, true);
         return true;
+    }
+
+    // The plan's figures for --stats; the lights on each path are counted in draw(), after any drop().
+    void report(FrameStats& stats, bool spans) const {
+        stats.auto_geometry = true;
+        stats.auto_spans = spans;
+        for (int p = 0; p < kLightPaths; ++p) stats.auto_scale[p] = calib_.scale()[size_t(p)];
+        stats.auto_predicted_ms = predicted_ms_;
     }
 
     // A full-screen light sent by quad or volume is a pass of its own; by the tiles, one more light
@@ -289,7 +285,7 @@ private:
     bool all_tiles_ = false;  // the last priced frame sent every light through the tiles
     int keep_rest_ = 0;       // frames left to keep it
     bool priced_ = false;     // this frame's lights were priced (features_ hold their kept tiles)
-    double predicted_ms_ = 0; // the last priced frame's prediction
+    double predicted_ms_ = 0; // the last priced frame's prediction (a kept frame reports it too)
     static constexpr int kTimedEvery = 4;
     unsigned timed_frames_ = 0;  // draws of a path so far (wall-clock timing: one in kTimedEvery)
     int spans_rest_ = 0;  // frames left before the spans are measured again

@@ -27,13 +27,12 @@ public:
         : progs_(programs, "light_screen", false, c.shadow_slots),
           batch_(c.tile_batch),
           shadow_slots_(c.shadow_slots),
-          shadows_(shadow_maps_packed(c.caps)),
-          ambient_(ambient_fold(c)) {}
+          shadows_(shadow_maps_packed(c.caps)) {}
 
     bool own_pass(size_t) const override { return false; }  // one more light in a batch
-    bool draws_ambient() const override { return ambient_; }
+    bool draws_ambient() const override { return true; }  // where the fold may be made (LightingStage::may_fold)
 
-    void draw(const FrameDef& f, RenderTargets& t, LightQueries& q, FrameStats& stats) override {
+    void draw(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats) override {
         draw_batches(f, q, stats, nullptr);
     }
 
@@ -88,7 +87,6 @@ private:
     int batch_, shadow_slots_;
     LightArrays arrays_;
     ShadowSlots shadows_;
-    bool ambient_;  // the fold's skip on and its rounding settled (shader_table.h ambient_fold)
 };
 
 }  // namespace

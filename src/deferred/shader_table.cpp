@@ -176,6 +176,13 @@ bool uses_tiles(const ShaderConfig& c) { return draws_tiles(c.paths.light_geomet
 Defines point_linear(Defines d) { return with(std::move(d), {"LIGHT_POINT_ONLY"}); }
 Defines point_inverse(Defines d) { return with(std::move(d), {"LIGHT_POINT_INVERSE"}); }
 bool uses_screen(const ShaderConfig& c) { return geometry_is(c, LightGeometry::screen); }
+// The ambient fold where it gives the unfolded image's bytes: a float P-buffer 0 (the same float
+// sums), or this GL's rounding into RGBA8 measured (shader_config) so each term is rounded as its own
+// pass would be; without framebuffer objects (no probe) it would round once instead of twice, and
+// bloom's bright pass made that 1 LSB into 3.
+bool ambient_fold(const ShaderConfig& c) {
+    return c.opts.skip.ambient_pass && !c.opts.ssao.on && (c.opts.hdr.float_accum() || c.rounding_measured);
+}
 // The tiles' depth spans need a float target behind a framebuffer object; without them the plan
 // runs without depth culling.
 bool tile_depth(const ShaderConfig& c) {
@@ -203,14 +210,6 @@ Defines shadow_defines(Defines d, const ShaderConfig& c) {
 std::string tile_size(const ShaderConfig& c) { return "TILE_SIZE " + std::to_string(c.opts.tile_size); }
 
 }  // namespace
-
-// The ambient fold where it gives the unfolded image's bytes: a float P-buffer 0 (the same float
-// sums), or this GL's rounding into RGBA8 measured (shader_config) so each term is rounded as its own
-// pass would be; without framebuffer objects (no probe) it would round once instead of twice, and
-// bloom's bright pass made that 1 LSB into 3.
-bool ambient_fold(const ShaderConfig& c) {
-    return c.opts.skip.ambient_pass && !c.opts.ssao.on && (c.opts.hdr.float_accum() || c.rounding_measured);
-}
 
 Defines shadow_lookup_defines(bool packed, ShadowFilter filter) {
     Defines d = {"SHADOW"};

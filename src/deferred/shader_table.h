@@ -46,11 +46,6 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& opts);
 
 using Defines = std::vector<std::string>;
 
-// Whether the ambient pass may fold into a light pass (the light_fold rows; the screen geometry's
-// first batch): the skip on, no SSAO, and the image's bytes kept (float accumulation, or this GL's
-// rounding into RGBA8 measured).
-bool ambient_fold(const ShaderConfig& c);
-
 // glsl120/shadow.glsl's lookup: SHADOW, SHADOW_PACKED for maps packed in RGB8, and the filter's
 // define (options.h ShadowFilter). The light programs' shadow rows and the transparent pass's
 // shadow form both compile it with these.

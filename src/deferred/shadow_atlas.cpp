@@ -43,13 +43,8 @@ long long ShadowAtlas::update(const AtlasLayout& layout, const std::vector<const
     // A region moved or resized holds nothing of use.
     if (!(layout == layout_)) {
         held_.resize(layout.regions.size());
-        for (size_t k = 0; k < held_.size(); ++k) {
-            const bool same = k < layout_.regions.size() && layout_.regions[k].x == layout.regions[k].x &&
-                              layout_.regions[k].y == layout.regions[k].y &&
-                              layout_.regions[k].width == layout.regions[k].width &&
-                              layout_.regions[k].height == layout.regions[k].height;
-            if (!same) held_[k] = Held{};
-        }
+        for (size_t k = 0; k < held_.size(); ++k)
+            if (k >= layout_.regions.size() || !(layout_.regions[k] == layout.regions[k])) held_[k] = Held{};
         layout_ = layout;
     }
     long long texels = 0;
