@@ -7,8 +7,10 @@
 //             eye-space position xyz, alpha 1 (POSITION_TARGET: an RGBA16F or RGBA32F target)
 // Variants: NORMAL_MAP (tangent-space normal map; without it no tangent-space work),
 // NO_SPECULAR (material without specular: no specular map read), PACKED_DEPTH, ENC_LITERAL,
-// ENC_LINEAR, ENC_LOG, POSITION_TARGET (POSITION16: into half floats), TARGET_n (no MRT: write only target n to gl_FragData[0], §3.2).
+// ENC_LINEAR, ENC_LOG, POSITION_TARGET (POSITION16: into half floats), TARGET_n (no MRT: write only target n to gl_FragData[0], §3.2),
+// AMBIENT_TARGET n (P-buffer 0 as render target n: what Listing 15's ambient pass would write there).
 #include "depth_codec.glsl"
+#include "quantize.glsl"
 
 uniform sampler2D normaltex;    // unit 0
 uniform sampler2D colortex;     // unit 1
@@ -19,6 +21,9 @@ uniform float shininess_code;
 uniform vec2 planes;
 uniform vec3 zrange;  // (near, far, log2(far/near))
 uniform float tile;
+#ifdef AMBIENT_TARGET
+uniform vec3 ambient;  // Listing 15's ambient colour
+#endif
 
 varying vec2 texcoord;
 varying vec3 vpos;
@@ -69,6 +74,16 @@ void main()
     gl_FragData[2] = t2;
 #if defined(PACKED_DEPTH) || defined(POSITION_TARGET)
     gl_FragData[3] = t3;
+#endif
+#ifdef AMBIENT_TARGET
+    // The ambient pass's fixed-function modulate (ambient x the diffuse target, alpha 1 x 1) on the
+    // diffuse colour as the pass would read it from the RGBA8 target; P-buffer 0 then rounds the
+    // product as it would have rounded the pass's.
+    vec3 stored = clamp(t1.rgb, 0.0, 1.0);
+#ifdef QUANTIZE_8BIT
+    stored = texel8(stored);
+#endif
+    gl_FragData[AMBIENT_TARGET] = vec4(ambient * stored, 1.0);
 #endif
 #endif
 }

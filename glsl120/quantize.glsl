@@ -25,4 +25,12 @@ vec3 quantize8(vec3 t)
     return floor(t * 255.0 + quantize_round) / 255.0;
 #endif
 }
+
+// What a sampler reads back from an RGBA8 target t was written into: the stored byte x (1/255), as
+// llvmpipe converts (x / 255.0 differs from it in the last bit, and Listing 15's ambient x diffuse
+// can land on a rounding tie: material.frag's ambient target multiplies what the ambient pass reads).
+vec3 texel8(vec3 t)
+{
+    return floor(quantize8(t) * 255.0 + 0.5) * (1.0 / 255.0);
+}
 #endif

@@ -222,30 +222,37 @@ TEST(Options, NoSkipEach) {
 }
 
 // The pass skips by name: each turned off in --stats' "skips", and "passes" says what the counted
-// frame ran. The plain scene at 64x64 has one light over the whole screen with --scissor off, drawn
-// by a quad of its own (the tiles would take it in a batch, and nothing would fold); the second of
-// three frames has measured the depth complexity, so it leaves the pre-pass out.
+// frame ran. The material pass writes the ambient term; without that skip, the plain scene at 64x64
+// has one light over the whole screen with --scissor off, drawn by a quad of its own (the tiles
+// would take it in a batch, and nothing would fold), and the ambient pass folds into it. The second
+// of three frames has measured the depth complexity, so it leaves the pre-pass out.
 TEST(Options, NoSkipPasses) {
     const std::string scene = plain_scene() + " --no-bloom --no-aa --scissor off --light-geometry quad --frames 2";
     const Rendered on = render(scene);
-    const Rendered off = render(scene + " --no-skip depth-prepass,ambient,final");
-    for (const char* k : {"depth_prepass", "ambient", "final"}) {
+    const Rendered off = render(scene + " --no-skip depth-prepass,ambient-target,ambient,final");
+    for (const char* k : {"depth_prepass", "ambient_target", "ambient", "final"}) {
         EXPECT_EQ(on.stats["skips"][k], true) << k;
         EXPECT_EQ(off.stats["skips"][k], false) << k;
     }
     EXPECT_EQ(on.stats["passes"]["depth_prepass"], false);
-    EXPECT_EQ(on.stats["passes"]["ambient_folded"], true);
+    EXPECT_EQ(on.stats["passes"]["ambient_in_material"], true);
+    EXPECT_EQ(on.stats["passes"]["ambient_folded"], false);
+    EXPECT_EQ(on.stats["ms"]["ambient"], 0.0);
+    const Rendered folded = render(scene + " --no-skip ambient-target");
+    EXPECT_EQ(folded.stats["passes"]["ambient_in_material"], false);
+    EXPECT_EQ(folded.stats["passes"]["ambient_folded"], true);
     EXPECT_EQ(on.stats["passes"]["final"], false);
     EXPECT_EQ(on.stats["ms"]["final"], 0.0);
     EXPECT_TRUE(on.stats["passes"]["depth_complexity"].is_number());
     EXPECT_EQ(off.stats["passes"]["depth_prepass"], true);
+    EXPECT_EQ(off.stats["passes"]["ambient_in_material"], false);
     EXPECT_EQ(off.stats["passes"]["ambient_folded"], false);
     EXPECT_EQ(off.stats["passes"]["final"], true);
     EXPECT_TRUE(off.stats["passes"]["depth_complexity"].is_null());
-    log_diff("--no-skip depth-prepass,ambient,final", diff(on, off));
-    EXPECT_LT(diff(on, off).max_lsb(), 1.5);  // 8-bit images: at most 1 LSB
-    const Rendered each = render(scene + " --no-skip ambient");
-    EXPECT_EQ(diff(each, off).max_abs, 0.0) << "the pre-pass and final skips change no byte";
+    log_diff("--no-skip depth-prepass,ambient-target,ambient,final", diff(on, off));
+    EXPECT_EQ(diff(on, off).max_abs, 0.0);
+    log_diff("--no-skip ambient-target (the fold)", diff(folded, off));
+    EXPECT_LT(diff(folded, off).max_lsb(), 1.5);  // 8-bit images: at most 1 LSB
 }
 
 // Without scissor rectangles every drawn light shades the whole screen: the same image, and

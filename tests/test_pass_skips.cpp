@@ -1,7 +1,8 @@
-// The three pass skips (SkipOptions: depth_prepass, ambient_pass, final_pass): each leaves a pass
-// out, and the image stays what the pass would have made (0 LSB for the pre-pass and the final
-// pass, within 1 LSB for the ambient fold, which rounds once instead of twice). Each test also
-// checks the skip happened (FrameStats' depth_prepass_ran, final_pass_ran, ambient_folded).
+// The pass skips (SkipOptions: depth_prepass, ambient_target, ambient_pass, final_pass): each leaves
+// a pass out, and the image stays what the pass would have made (0 LSB for the pre-pass, the ambient
+// target and the final pass, within 1 LSB for the ambient fold, which rounds once instead of twice).
+// Each test also checks the skip happened (FrameStats' depth_prepass_ran, final_pass_ran,
+// ambient_in_material, ambient_folded).
 #include <gtest/gtest.h>
 
 #include "deferred/ambient_fold.h"
@@ -38,6 +39,9 @@ ShaderOptions no_skip(bool SkipOptions::*field, ShaderOptions o = {}) {
     o.skip.*field = false;
     return o;
 }
+
+// The fold's tests: the material pass writes no ambient term, so the fold is what skips the pass.
+ShaderOptions no_target(ShaderOptions o = {}) { return no_skip(&SkipOptions::ambient_target, o); }
 
 // Ten discs facing the camera, drawn far to near, each covering the one behind: every pixel of
 // the nearest is drawn ten times in draw order, the overdraw the pre-pass is for.
@@ -153,7 +157,7 @@ TEST(PassSkips, AmbientFoldedSameImage) {
     for (const char* off : {"", "no-fbo"}) {
         const std::vector<std::string> caps = *off ? std::vector<std::string>{off} : std::vector<std::string>{};
         for (const bool scissor : {true, false}) {
-            ShaderOptions o;
+            ShaderOptions o = no_target();
             o.scissor = scissor;
             o.light_geometry = LightGeometry::quad;  // a pass per light: the fold's pass replaces its light's
             const Frames fold = render_frames(s, o, 1, true, caps);
@@ -167,10 +171,52 @@ TEST(PassSkips, AmbientFoldedSameImage) {
         }
     }
     // Without a full-screen light there is nothing to fold into.
-    EXPECT_FALSE(render_frames(default_scene(), ShaderOptions{}, 1).stats[0].ambient_folded);
+    EXPECT_FALSE(render_frames(default_scene(), no_target(), 1).stats[0].ambient_folded);
     ShaderOptions ssao;
     ssao.ssao.on = true;
     EXPECT_FALSE(render_frames(s, ssao, 1).stats[0].ambient_folded) << "SSAO scales the ambient pass alone";
+    // Into half floats the fold would round once where the passes round twice (1.12 LSB off on
+    // data/mesh.scene): it is made into RGBA8 (the rounding emulated) and 32-bit floats only.
+    ShaderOptions half = no_target();
+    half.light_geometry = LightGeometry::quad;
+    half.hdr.accum = AccumFormat::half;
+    EXPECT_FALSE(render_frames(s, half, 1).stats[0].ambient_folded);
+    half.hdr.accum = AccumFormat::float32;
+    EXPECT_TRUE(render_frames(s, half, 1).stats[0].ambient_folded);
+}
+
+// The material pass writes Listing 15's ambient term into P-buffer 0, a render target after the
+// G-buffer's: no ambient pass, and the bytes of the tutorial's clear and ambient pass, in every
+// P-buffer format and with lights of every geometry that takes it (the default scene's diffuse maps
+// on a white colour, the coloured spheres; ambient 0.15 x a stored byte lands on rounding ties, where
+// x / 255 instead of the sampler's x (1/255) was 1 LSB off on 0.4% of the default scene's pixels).
+TEST(PassSkips, AmbientWrittenByTheMaterialPass) {
+    for (const Scene& s : {with_directional(default_scene()), lit_sphere_scene()}) {
+        for (AccumFormat a : {AccumFormat::rgba8, AccumFormat::half, AccumFormat::float32}) {
+            for (LightGeometry g : {LightGeometry::quad, LightGeometry::tiles, LightGeometry::automatic}) {
+                ShaderOptions o;
+                o.hdr.accum = a;
+                o.light_geometry = g;
+                ShaderOptions tutorial = no_target(no_skip(&SkipOptions::ambient_pass, o));
+                const Frames target = render_frames(s, o, 1);
+                const Frames full = render_frames(s, tutorial, 1);
+                const std::string name = std::string("ambient target, ") + accum_format_name(a) + ", " +
+                                         light_geometry_name(g);
+                EXPECT_TRUE(target.stats[0].ambient_in_material) << name;
+                EXPECT_FALSE(target.stats[0].ambient_folded) << name;
+                EXPECT_EQ(target.stats[0].ms.ambient, 0.0) << name;
+                EXPECT_FALSE(full.stats[0].ambient_in_material) << name;
+                EXPECT_EQ(compare_logged(name, target.image, full.image, 0).max_abs, 0.0) << name;
+            }
+        }
+    }
+    // Where the GL or the options leave no room for it, the ambient pass (or the fold) runs.
+    EXPECT_FALSE(render_frames(default_scene(), ShaderOptions{}, 1, true, {"no-mrt"}).stats[0].ambient_in_material);
+    ShaderOptions ssao, screen;
+    ssao.ssao.on = true;
+    screen.light_geometry = LightGeometry::screen;
+    EXPECT_FALSE(render_frames(default_scene(), ssao, 1).stats[0].ambient_in_material) << "SSAO";
+    EXPECT_FALSE(render_frames(default_scene(), screen, 1).stats[0].ambient_in_material) << "screen";
 }
 
 // The fold only where the light geometry would draw the full-screen light by a pass of its own:
@@ -180,11 +226,11 @@ TEST(PassSkips, AmbientFoldedSameImage) {
 // where it sent that light by quad or volume, and then counts it on no path.
 TEST(PassSkips, AmbientFoldsOnlyIntoAPassOfItsOwn) {
     const Scene s = with_directional(default_scene());
-    ShaderOptions quad;
+    ShaderOptions quad = no_target();
     quad.light_geometry = LightGeometry::quad;
     const Frames ref = render_frames(s, no_skip(&SkipOptions::ambient_pass, quad), 1);
     for (LightGeometry g : {LightGeometry::tiles, LightGeometry::screen, LightGeometry::automatic}) {
-        ShaderOptions o;
+        ShaderOptions o = no_target();
         o.light_geometry = g;
         const Frames r = render_frames(s, o, 2);
         const std::string name = light_geometry_name(g);

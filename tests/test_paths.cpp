@@ -257,4 +257,58 @@ TEST(Paths, TileDefaultsFollowTheRasteriser) {
     EXPECT_NE(choose_paths(c, o).refused.find("tile size must be 8..512"), std::string::npos);
 }
 
+// The material pass writes the ambient term into P-buffer 0 where a draw buffer is left after the
+// G-buffer's, the framebuffer takes P-buffer 0's format beside them, the diffuse target is RGBA8 and
+// nothing else writes the ambient; each refusal says why, and the skip turned off says nothing.
+TEST(Paths, AmbientTargetNeedsADrawBufferToSpareAndOneFormat) {
+    const auto with = [](Caps c, ShaderOptions o) { return choose_paths(c, o); };
+    ShaderOptions o;
+    o.depth = DepthPath::texture;
+    Caps c = caps_for(0);
+    c.max_draw_buffers = 4;
+    Paths p = with(c, o);
+    EXPECT_TRUE(p.ambient_target);
+    EXPECT_TRUE(p.ambient_target_note.empty());
+    EXPECT_NE(describe(p).find("written by the material pass into P-buffer 0 (render target 3)"), std::string::npos);
+    c.max_draw_buffers = 3;  // the three targets' MRT, none to spare
+    p = with(c, o);
+    EXPECT_TRUE(p.mrt);
+    EXPECT_FALSE(p.ambient_target);
+    EXPECT_EQ(p.ambient_target_note, "the GL has no draw buffer beyond the G-buffer's");
+    c.max_draw_buffers = 4;
+    o.depth = DepthPath::packed;  // four targets
+    EXPECT_FALSE(with(c, o).ambient_target);
+    c.max_draw_buffers = 5;
+    EXPECT_TRUE(with(c, o).ambient_target);
+    EXPECT_FALSE(choose_paths(caps_for(1), o).ambient_target) << "no MRT";
+    EXPECT_FALSE(choose_paths(caps_for(4), o).ambient_target) << "no framebuffer objects";
+    o.depth = DepthPath::texture;
+    // One format per framebuffer without ARB_framebuffer_object: a half-float P-buffer 0 only with it.
+    o.hdr.accum = AccumFormat::half;
+    c.fbo_mixed_formats = false;
+    EXPECT_FALSE(with(c, o).ambient_target);
+    c.fbo_mixed_formats = true;
+    EXPECT_TRUE(with(c, o).ambient_target);
+    o.hdr.accum = AccumFormat::rgba8;
+    o.depth = DepthPath::position32;  // RGBA8 diffuse beside the float position, with mixed formats
+    EXPECT_TRUE(with(c, o).ambient_target);
+    c.fbo_mixed_formats = false;  // every target float then
+    EXPECT_EQ(with(c, o).ambient_target_note, "the diffuse target is not RGBA8");
+    o.depth = DepthPath::texture;
+    o.gbuffer_half = true;
+    EXPECT_EQ(with(c, o).ambient_target_note, "the diffuse target is not RGBA8");
+    o.gbuffer_half = false;
+    o.ssao.on = true;
+    EXPECT_EQ(with(c, o).ambient_target_note, "SSAO scales the ambient pass alone");
+    o.ssao.on = false;
+    o.light_geometry = LightGeometry::screen;
+    EXPECT_EQ(with(c, o).ambient_target_note, "the screen geometry writes the ambient itself");
+    o.light_geometry = LightGeometry::quad;
+    o.skip.ambient_target = false;
+    p = with(c, o);
+    EXPECT_FALSE(p.ambient_target);
+    EXPECT_TRUE(p.ambient_target_note.empty());
+    EXPECT_NE(describe(p).find("ambient pass (Listing 15)\n"), std::string::npos);
+}
+
 }  // namespace dsr

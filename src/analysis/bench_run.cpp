@@ -39,6 +39,7 @@ constexpr SkipField kSkipFields[] = {{"material_variants", &SkipOptions::materia
                                      {"light_depth_test", &SkipOptions::light_depth_test},
                                      {"light_sphere_test", &SkipOptions::light_sphere_test},
                                      {"depth_prepass", &SkipOptions::depth_prepass},
+                                     {"ambient_target", &SkipOptions::ambient_target},
                                      {"ambient_pass", &SkipOptions::ambient_pass},
                                      {"final_pass", &SkipOptions::final_pass}};
 

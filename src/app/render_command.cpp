@@ -108,11 +108,13 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["lighting"] = opts.listing2_literal ? "listing" : "equations";
     j["skips"] = {{"variants", skip.material_variants}, {"empty_lights", skip.empty_lights},
                   {"light_depth_test", skip.light_depth_test}, {"light_sphere_test", skip.light_sphere_test},
-                  {"depth_prepass", skip.depth_prepass}, {"ambient", skip.ambient_pass}, {"final", skip.final_pass}};
+                  {"depth_prepass", skip.depth_prepass},
+                  {"ambient_target", skip.ambient_target}, {"ambient", skip.ambient_pass}, {"final", skip.final_pass}};
     // What the pass skips did in the counted frame (the last): whether the depth pre-pass and the
     // final pass ran, whether the ambient pass was folded into a light's, and the depth complexity
     // (fragments shaded without the pre-pass per pixel covered) the pre-pass choice read.
-    j["passes"] = {{"depth_prepass", last.depth_prepass_ran}, {"ambient_folded", last.ambient_folded},
+    j["passes"] = {{"depth_prepass", last.depth_prepass_ran}, {"ambient_in_material", last.ambient_in_material},
+                   {"ambient_folded", last.ambient_folded},
                    {"final", last.final_pass_ran},
                    {"depth_complexity", last.depth_complexity ? nlohmann::json(*last.depth_complexity) : nlohmann::json(nullptr)}};
     j["scissor"] = opts.scissor;

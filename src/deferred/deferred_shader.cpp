@@ -104,7 +104,12 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     // 0. the shadow maps of the frame's shadowed lights, handed to the light passes in the frame.
     if (shadows_ && f.shadowed_lights > 0)
         timed(timer_, S_SHADOWS, [&] { f.shadows = shadows_->draw(f, scene, *gpu_, st); });
-    timed(timer_, S_GEOMETRY, [&] { geometry_->draw(f, *gpu_, *targets_, st); });  // 1. geometry stage
+    // 1. geometry stage, which also writes the ambient pass's colours into P-buffer 0 where it can
+    // (Paths::ambient_target): the lighting stage then draws no ambient pass.
+    const AmbientTerm ambient{scene.background, scene.ambient};
+    st.ambient_in_material = targets_->ambient_target();
+    timed(timer_, S_GEOMETRY,
+          [&] { geometry_->draw(f, *gpu_, *targets_, st, st.ambient_in_material ? &ambient : nullptr); });
     const double cpu_lights0 = thread_cpu_ms();
     draw_lights(f, scene, st);                                          // 2. lighting stage
     st.ms.cpu_lights = thread_cpu_ms() - cpu_lights0;
@@ -154,9 +159,10 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
         timer_.end();
     };
     // Where nothing can fold the ambient pass, it goes first: a GPU draws it while the light
-    // geometry plans (the auto geometry prices its lights).
-    const bool may_fold = lighting_->may_fold(f, ssao_ != nullptr);
-    if (!may_fold) ambient_pass();
+    // geometry plans (the auto geometry prices its lights). Where the material pass wrote it, neither.
+    const bool written = st.ambient_in_material;
+    const bool may_fold = !written && lighting_->may_fold(f, ssao_ != nullptr);
+    if (!may_fold && !written) ambient_pass();
     // The light geometry's plan for the frame (the auto geometry's depth spans, timed with the
     // light passes): whether its lights need the scene's depth decides the hand-off, and whether it
     // would draw a light over the whole screen by a pass of its own decides the fold.
@@ -210,6 +216,7 @@ void DeferredShader::draw_lights(const Scene& scene, bool scissors, FrameStats& 
     camera_ = scene.camera;
     FrameDef f = frame_of(scene.camera, scene.lights, scissors);
     if (shadows_ && f.shadowed_lights > 0) f.shadows = shadows_->draw(f, scene, *gpu_, stats);
+    stats.ambient_in_material = false;  // geometry_stage() leaves P-buffer 0 alone: the ambient pass runs
     draw_lights(f, scene, stats);
 }
 

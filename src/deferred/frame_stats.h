@@ -70,9 +70,9 @@ struct FrameStats {
     // frame (0 where every atlas already held its maps, or none was made).
     long long shadow_atlas_texels = 0;
     // The pass skips (SkipOptions): whether this frame ran the depth pre-pass (§3.3.1) and the
-    // final pass (§3.6), and whether its ambient pass (Listing 15) was folded into a full-screen
-    // light's pass.
-    bool depth_prepass_ran = true, final_pass_ran = true, ambient_folded = false;
+    // final pass (§3.6), and whether its ambient pass (Listing 15) was written by the material pass
+    // (SkipOptions::ambient_target) or folded into a full-screen light's pass.
+    bool depth_prepass_ran = true, final_pass_ran = true, ambient_in_material = false, ambient_folded = false;
     // The depth complexity the pre-pass choice of this frame read (depth_prepass.h): fragments that
     // pass the depth test in draw order per pixel covered, as measured in an earlier frame; null
     // before the first measurement or where it is not measured (the skip off, no occlusion queries).

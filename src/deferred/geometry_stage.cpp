@@ -10,6 +10,7 @@ namespace dsr {
 GeometryStage::GeometryStage(const ShaderConfig& c, ProgramSet& programs)
     : mrt_(c.paths.mrt),
       variants_(c.opts.skip.material_variants),
+      quantize_round_(c.tile_round),
       depth_(c.opts.depth),
       encoding_(c.opts.encoding),
       skip_prepass_(c.opts.skip.depth_prepass && c.paths.count_fragments) {
@@ -44,7 +45,9 @@ void GeometryStage::collect_counts() {
     pending_ = 0;
 }
 
-void GeometryStage::draw(const FrameDef& f, GpuScene& gpu, RenderTargets& t, FrameStats& stats) {
+void GeometryStage::draw(const FrameDef& f, GpuScene& gpu, RenderTargets& t, FrameStats& stats,
+                         const AmbientTerm* ambient) {
+    if (ambient && !t.ambient_target()) throw Error("geometry stage: this GL takes no ambient target beside the G-buffer");
     collect_counts();
     const bool prepass = !skip_prepass_ || choice_.run_next();
     stats.depth_prepass_ran = prepass;
@@ -81,7 +84,7 @@ void GeometryStage::draw(const FrameDef& f, GpuScene& gpu, RenderTargets& t, Fra
     auto material = [&](int target, bool first) {
         const bool count = skip_prepass_ && first;
         if (count) glBeginQuery(GL_SAMPLES_PASSED, queries_[1]);
-        draw_material(f, gpu, target, !prepass && first);
+        draw_material(f, gpu, target, !prepass && first, ambient ? ambient->ambient : glm::vec3(0));
         if (count) glEndQuery(GL_SAMPLES_PASSED);
     };
     pending_ = !skip_prepass_ ? 0 : prepass ? 2 : 1;
@@ -98,10 +101,20 @@ void GeometryStage::draw(const FrameDef& f, GpuScene& gpu, RenderTargets& t, Fra
         if (!mrt_) material(i, i == 0);
         all.push_back(i);
     }
+    // P-buffer 0 after the G-buffer's targets: cleared as Listing 15's pass clears it, and the
+    // material pass writes the ambient term where it finds a surface (material.frag AMBIENT_TARGET).
+    if (ambient) {
+        t.mrt_attach_accum(true);
+        g.set_draw_targets({g.color_targets()});
+        glClearColor(ambient->background.r, ambient->background.g, ambient->background.b, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        all.push_back(g.color_targets());
+    }
     if (mrt_) {
         g.set_draw_targets(all);
         material(-1, true);  // line 22: all targets in one pass (ARB_draw_buffers)
     }
+    if (ambient) t.mrt_attach_accum(false);
     check_gl_stage("geometry stage: material pass");
     t.mrt_unbind_render();  // line 24
 }
@@ -143,7 +156,8 @@ Program& GeometryStage::material_program(const GpuMaterial& m, int target) {
 // Listing 9 (target -1: all targets at once; t: only G-buffer target t), with its test un-inverted
 // (docs/errata.md): materials with a normal map use the tangent-space shader, the others a variant
 // that skips the normal map.
-void GeometryStage::draw_material(const FrameDef& f, const GpuScene& gpu, int target, bool write_depth) {
+void GeometryStage::draw_material(const FrameDef& f, const GpuScene& gpu, int target, bool write_depth,
+                                  glm::vec3 ambient) {
     gl_state().apply(material_pass_state(write_depth));
     gpu.bind_all();
     int bound = -1;
@@ -157,6 +171,8 @@ void GeometryStage::draw_material(const FrameDef& f, const GpuScene& gpu, int ta
             prog.set("speculartex", 2);
             prog.set("planes", f.planes);
             prog.set("zrange", f.zrange);
+            prog.set("ambient", ambient);  // where the program writes the ambient target
+            prog.set("quantize_round", quantize_round_);
             bound = int(prog.id());
         }
         // set_material_shader_params (Listing 9 line 13)

@@ -28,6 +28,12 @@ struct MaterialKey {
     }
 };
 
+// Listing 15's ambient pass as the material pass writes it into P-buffer 0 (Paths::ambient_target):
+// the colour P-buffer 0 is cleared to, and the ambient colour the diffuse target is scaled by.
+struct AmbientTerm {
+    glm::vec3 background{0}, ambient{0};
+};
+
 class GeometryStage {
 public:
     GeometryStage(const ShaderConfig& c, ProgramSet& programs);
@@ -35,8 +41,11 @@ public:
     GeometryStage(const GeometryStage&) = delete;
     GeometryStage& operator=(const GeometryStage&) = delete;
     // Listing 7: the G-buffer filled with `gpu`'s opaque surfaces as the frame's camera sees them;
-    // whether the pre-pass ran, and the depth complexity that chose it, into `stats`.
-    void draw(const FrameDef& f, GpuScene& gpu, RenderTargets& targets, FrameStats& stats);
+    // whether the pre-pass ran, and the depth complexity that chose it, into `stats`. With `ambient`
+    // (where RenderTargets::ambient_target) the material pass also leaves in P-buffer 0 what the
+    // clear and the ambient pass would have, and the lighting stage draws no ambient pass.
+    void draw(const FrameDef& f, GpuScene& gpu, RenderTargets& targets, FrameStats& stats,
+              const AmbientTerm* ambient = nullptr);
 
 private:
     static RenderState depth_pass_state();
@@ -45,11 +54,13 @@ private:
     // The last frame's two counts into the choice (read a frame late: no wait on the GPU).
     void collect_counts();
     void draw_depth(const GpuScene& gpu);                                // Listing 8
-    void draw_material(const FrameDef& f, const GpuScene& gpu, int target, bool write_depth);  // Listings 9-13
+    void draw_material(const FrameDef& f, const GpuScene& gpu, int target, bool write_depth,
+                       glm::vec3 ambient);  // Listings 9-13
     Program& material_program(const GpuMaterial& m, int target);
 
     std::map<MaterialKey, Program> programs_;
     bool mrt_, variants_;
+    float quantize_round_;  // quantize.glsl's fallback offset (the ambient target's diffuse rounding)
     DepthPath depth_;
     DepthEncoding encoding_;
     // The pre-pass skip: on where asked and the GL has occlusion queries to measure with.

@@ -72,6 +72,7 @@ const std::pair<const char*, bool SkipOptions::*> kSkips[] = {
     {"light-depth-test", &SkipOptions::light_depth_test},
     {"light-sphere-test", &SkipOptions::light_sphere_test},
     {"depth-prepass", &SkipOptions::depth_prepass},
+    {"ambient-target", &SkipOptions::ambient_target},
     {"ambient", &SkipOptions::ambient_pass},
     {"final", &SkipOptions::final_pass},
 };
@@ -161,9 +162,12 @@ std::vector<RenderOption> make_table() {
         "(empty-lights), pixels whose surface lies in front of or behind a light's sphere "
         "(light-depth-test) or outside it (light-sphere-test), the depth pre-pass where the last frame's "
         "depth complexity makes it pure cost (depth-prepass: the material pass writes depth itself), the "
-        "ambient pass folded into the pass of a light drawn over the whole screen by a pass of its own "
-        "(ambient: a directional light, or any with --scissor off; not where the light goes into a "
-        "batch of the tiles; the screen geometry's first pass writes it; not with --ssao), the final pass where the image "
+        "ambient pass, its colours written by the material pass into P-buffer 0 as one more render target "
+        "(ambient-target: where the GL has a draw buffer to spare, the diffuse target is RGBA8, not with "
+        "--ssao nor the screen geometry; `dsr info` says whether), else folded into the pass of a light "
+        "drawn over the whole screen by a pass of its own (ambient: a directional light, or any with "
+        "--scissor off; not where the light goes into a batch of the tiles; the screen geometry's first "
+        "pass writes it; not with --ssao), the final pass where the image "
         "is read back at the buffers' size (final: P-buffer 0 read directly)");
     RenderOption view = choice(
         "view", view_names(), [](const RenderOptions& r) { return std::string(view_name(r.view)); },

@@ -101,7 +101,9 @@ struct SkipOptions {
                                     // rejected after one depth fetch, before the G-buffer reads
     bool depth_prepass = true;      // the depth pre-pass (§3.3.1) left out where the frame's depth
                                     // complexity makes it pure cost
-    bool ambient_pass = true;       // the ambient pass (Listing 15) folded into a full-screen light pass
+    bool ambient_target = true;     // the ambient pass (Listing 15) written by the material pass into
+                                    // P-buffer 0, a render target beside the G-buffer's (paths.h)
+    bool ambient_pass = true;       // else the ambient pass folded into a full-screen light pass
     bool final_pass = true;         // no final pass (§3.6) when the output is P-buffer 0 read back at its size
 };
 

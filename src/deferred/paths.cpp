@@ -36,6 +36,23 @@ void choose_gbuffer_formats(const Caps& caps, const ShaderOptions& opts, Paths& 
     for (TargetFormat f : p.gbuffer_formats) p.gbuffer_bytes_per_pixel += target_format_bytes(f);
 }
 
+// Paths::ambient_target: whether the material pass can write the ambient term, or why not.
+void choose_ambient_target(const Caps& caps, const ShaderOptions& opts, Paths& p) {
+    if (!opts.skip.ambient_target) return;
+    const bool rgba8 = std::all_of(p.gbuffer_formats.begin(), p.gbuffer_formats.end(),
+                                   [](TargetFormat f) { return f == TargetFormat::rgba8; });
+    const char* why = opts.ssao.on                                    ? "SSAO scales the ambient pass alone"
+                      : p.light_geometry == LightGeometry::screen     ? "the screen geometry writes the ambient itself"
+                      : !p.mrt                                        ? "it needs the material pass's multiple render targets"
+                      : caps.max_draw_buffers <= p.gbuffer_targets    ? "the GL has no draw buffer beyond the G-buffer's"
+                      : p.gbuffer_formats[1] != TargetFormat::rgba8   ? "the diffuse target is not RGBA8"
+                      : !caps.fbo_mixed_formats && !(rgba8 && opts.hdr.accum == AccumFormat::rgba8)
+                          ? "EXT_framebuffer_object without ARB_framebuffer_object wants one format per framebuffer"
+                          : nullptr;
+    p.ambient_target = why == nullptr;
+    if (why) p.ambient_target_note = why;
+}
+
 }  // namespace
 
 std::string accum_format_missing(const Caps& caps, bool fbo, AccumFormat a) {
@@ -107,6 +124,7 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     // and only between depth buffers of one format: EXT_framebuffer_blit makes a depth blit between
     // DEPTH_COMPONENT24 (the G-buffer's) and the stencil geometry's DEPTH24_STENCIL8 an
     // INVALID_OPERATION. Mesa lets it pass; dsr follows the spec and takes the pass there.
+    choose_ambient_target(caps, opts, p);
     p.depth_handoff = p.fbo && caps.framebuffer_blit && !p.accum_stencil && opts.depth_handoff != DepthHandoff::pass
                           ? DepthHandoff::blit
                           : DepthHandoff::pass;
@@ -177,6 +195,11 @@ std::string describe(const Paths& p) {
       << "\n  light geometry " << light_geometry_name(p.light_geometry);
     if (p.light_geometry == LightGeometry::stencil) o << " (" << stencil_faces_name(p.stencil_faces) << " faces)";
     if (!p.light_geometry_note.empty()) o << " (" << p.light_geometry_note << ")";
+    o << "\n  ambient        "
+      << (p.ambient_target ? "written by the material pass into P-buffer 0 (render target " +
+                                 std::to_string(p.gbuffer_targets) + "): no ambient pass"
+                           : "ambient pass (Listing 15)" +
+                                 (p.ambient_target_note.empty() ? std::string() : " (" + p.ambient_target_note + ")"));
     o << "\n  depth hand-off "
       << (!p.accum_depth ? "none (nothing tests against the scene's depth in P-buffer 0)"
           : p.depth_handoff == DepthHandoff::blit ? "blit (EXT_framebuffer_blit of the G-buffer's depth buffer)"

@@ -52,6 +52,15 @@ struct Paths {
     bool forward_stage = false;
     DepthHandoff depth_handoff = DepthHandoff::pass;  // never automatic; meaningful with accum_depth
     bool depth_bounds = false;
+    // The material pass writes Listing 15's ambient term into P-buffer 0, attached as one more
+    // render target (its index: gbuffer_targets), so no ambient pass is drawn
+    // (SkipOptions::ambient_target): where the GL has a draw buffer to spare and takes P-buffer 0's
+    // format beside the G-buffer's, the diffuse target is RGBA8 (the shader rounds it as the target
+    // stores it, then multiplies as the fixed-function pass does), and nothing else writes the
+    // ambient: not with SSAO (it scales the ambient pass alone) nor the screen geometry (its first
+    // batch writes it, as LearnOpenGL's lighting pass does).
+    bool ambient_target = false;
+    std::string ambient_target_note;  // why not, where the skip is on and it is not taken
     // Non-empty: this GL cannot run these options, and why, in one line.
     std::string refused;
 };

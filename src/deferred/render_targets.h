@@ -61,6 +61,11 @@ public:
     void mrt_unbind_render() { g_->unbind_render(); }
     void mrt_bind_texture(int target, int unit) { g_->bind_texture(target, unit); }
     void mrt_unbind_texture(int target, int unit) { g_->unbind_texture(target, unit); }
+    // Paths::ambient_target: P-buffer 0 as the G-buffer's render target after its own (index
+    // gbuffer().color_targets()), attached (on) or detached by the material pass; whether this GL
+    // takes it, checked at allocation with P-buffers 0 and 1 (the anti-alias pass swaps them).
+    bool ambient_target() const { return ambient_target_; }
+    void mrt_attach_accum(bool on) { g_->attach_extra(on ? p_[P_ACCUM]->texture(0) : 0); }
     void fb_bind_render(int b) { p_[b]->bind_render(); }
     void fb_unbind_render(int b) { p_[b]->unbind_render(); }
     void fb_bind_texture(int b, int unit) { p_[b]->bind_texture(0, unit); }
@@ -74,6 +79,7 @@ private:
     std::unique_ptr<PBuffer> g_;
     std::unique_ptr<PBuffer> p_[4];
     std::unique_ptr<PBuffer> ao_[2];  // SsaoBuffer
+    bool ambient_target_ = false;
 };
 
 }  // namespace dsr

@@ -48,7 +48,10 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
     // up later than the half by as much as 0.06 of a step, and over the dozens of lights a pixel of
     // 1024-overlap gets the difference reached 16 LSB. The ambient fold likewise rounds the ambient
     // term and the light's as the ambient pass and the light's own pass would.
-    if (!c.opts.hdr.float_accum() && ((tiles && c.opts.tile_lights > 1) || fold) && c.paths.fbo) {
+    // The material pass that writes the ambient term rounds the diffuse colour as the G-buffer's
+    // RGBA8 target stores it, whatever P-buffer 0's format.
+    if (((!c.opts.hdr.float_accum() && ((tiles && c.opts.tile_lights > 1) || fold)) || c.paths.ambient_target) &&
+        c.paths.fbo) {
         const Unorm8Rounding& r = unorm8_rounding();
         c.rounding_measured = true;
         c.rounding_bits = unorm8_truncate_bits(r);
@@ -96,11 +99,25 @@ Defines quantize_defines(const ShaderConfig& c) {
     return d;
 }
 
-// The ambient fold's light pass (light.frag AMBIENT_FOLD), each term rounded as its pass would be.
+// The ambient fold's light pass (light.frag AMBIENT_FOLD), each term rounded as its pass would be
+// (into RGBA8: a float P-buffer 0 rounds neither).
 Defines fold_defines(const ShaderConfig& c, bool point_only) {
     Defines d = light_defines(c);
     if (point_only) d.push_back("LIGHT_POINT_ONLY");
     d.push_back("AMBIENT_FOLD");
+    if (c.opts.hdr.float_accum()) return d;
+    const Defines q = quantize_defines(c);
+    d.insert(d.end(), q.begin(), q.end());
+    return d;
+}
+
+// The material pass (material.frag): the depth path's target, and where Paths::ambient_target, the
+// ambient term into P-buffer 0 as the render target after the G-buffer's (AMBIENT_TARGET n), the
+// diffuse colour rounded as the G-buffer stores it.
+Defines material_defines(const ShaderConfig& c, std::initializer_list<std::string> more) {
+    Defines d = with(depth_defines(c), more);
+    if (!c.paths.ambient_target) return d;
+    d.push_back("AMBIENT_TARGET " + std::to_string(c.paths.gbuffer_targets));
     const Defines q = quantize_defines(c);
     d.insert(d.end(), q.begin(), q.end());
     return d;
@@ -176,12 +193,13 @@ bool uses_tiles(const ShaderConfig& c) { return draws_tiles(c.paths.light_geomet
 Defines point_linear(Defines d) { return with(std::move(d), {"LIGHT_POINT_ONLY"}); }
 Defines point_inverse(Defines d) { return with(std::move(d), {"LIGHT_POINT_INVERSE"}); }
 bool uses_screen(const ShaderConfig& c) { return geometry_is(c, LightGeometry::screen); }
-// The ambient fold where it gives the unfolded image's bytes: a float P-buffer 0 (the same float
-// sums), or this GL's rounding into RGBA8 measured (shader_config) so each term is rounded as its own
-// pass would be; without framebuffer objects (no probe) it would round once instead of twice, and
-// bloom's bright pass made that 1 LSB into 3.
+// The ambient fold where it gives the unfolded image's bytes: a 32-bit float P-buffer 0 (the same
+// float sums), or this GL's rounding into RGBA8 measured (shader_config) so each term is rounded as its
+// own pass would be. Elsewhere it would round once instead of twice: without framebuffer objects (no
+// probe) bloom's bright pass made that 1 LSB into 3, and into half floats it was 1.12 LSB off.
 bool ambient_fold(const ShaderConfig& c) {
-    return c.opts.skip.ambient_pass && !c.opts.ssao.on && (c.opts.hdr.float_accum() || c.rounding_measured);
+    return c.opts.skip.ambient_pass && !c.opts.ssao.on &&
+           (c.opts.hdr.accum == AccumFormat::float32 || (!c.opts.hdr.float_accum() && c.rounding_measured));
 }
 // The tiles' depth spans need a float target behind a framebuffer object; without them the plan
 // runs without depth culling.
@@ -226,13 +244,13 @@ const std::vector<ShaderRow>& shader_rows() {
         // Geometry stage (§3.3, Listing 9). Without the variants skip every material takes the
         // full shader (normal map and specular map read), as a single-shader renderer would.
         {"material", "material.vert", "material.frag", "G-buffer, normal-mapped material (Listing 9)", always,
-         [](C c) { return with(depth_defines(c), {"NORMAL_MAP"}); }, true},
+         [](C c) { return material_defines(c, {"NORMAL_MAP"}); }, true},
         {"material_no_specular", "material.vert", "material.frag", "G-buffer, normal map, no specular",
-         material_variants, [](C c) { return with(depth_defines(c), {"NORMAL_MAP", "NO_SPECULAR"}); }, true},
+         material_variants, [](C c) { return material_defines(c, {"NORMAL_MAP", "NO_SPECULAR"}); }, true},
         {"material_flat", "material.vert", "material.frag", "G-buffer, no normal map", material_variants,
-         [](C c) { return depth_defines(c); }, true},
+         [](C c) { return material_defines(c, {}); }, true},
         {"material_flat_no_specular", "material.vert", "material.frag", "G-buffer, no normal map, no specular",
-         material_variants, [](C c) { return with(depth_defines(c), {"NO_SPECULAR"}); }, true},
+         material_variants, [](C c) { return material_defines(c, {"NO_SPECULAR"}); }, true},
         // Lighting stage (§3.4): each light program in three forms (LightShader, light_pass.h
         // LightPrograms), so a light pays only for its own type and law: any light (type and law
         // selected per pixel), the tutorial's point lights with Equation 2 (LIGHT_POINT_ONLY), and

@@ -55,6 +55,10 @@ public:
     void unbind_render();
     // Writes only these colour targets (one target: a single-target pass; all: MRT).
     void set_draw_targets(const std::vector<int>& targets);
+    // fbo implementation: attaches another buffer's texture of this buffer's size as colour target
+    // color_targets() (set_draw_targets may then name it), or detaches it with 0; whether the
+    // framebuffer is complete with it. Keeps this buffer bound where it is the render target.
+    bool attach_extra(GLuint texture);
     // Texture: binds target (colour index or DEPTH) on `unit`. Fails loudly while rendering.
     void bind_texture(int target, int unit);
     void unbind_texture(int target, int unit);
@@ -86,8 +90,8 @@ private:
     int copy_target_ = -1;  // copy mode: the colour target the main buffer currently holds
     GLuint fbo_ = 0, depth_rb_ = 0;
     void* surface_ = nullptr;  // pbuffer implementation: its offscreen surface
-    bool drawn_ = false;
-    int last_target_ = -1;     // pbuffer: the target the surface held when last unbound       // pbuffer: the surface holds an image of ours (keep_contents needs no draw-back)
+    bool drawn_ = false;       // pbuffer: the surface holds an image of ours (keep_contents needs no draw-back)
+    int last_target_ = -1;     // pbuffer: the target the surface held when last unbound
     std::vector<Texture> colors_;
     Texture depth_tex_;
     bool rendering_ = false;
