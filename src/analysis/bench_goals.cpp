@@ -82,7 +82,7 @@ Figure invocations(const Goal& g, const GoalInput& in) {
 
 // The frame against what the same work could cost at least (bench_floor.h), judged at
 // kFloorWidth x kFloorHeight with kFloorLights lights only: the floor leaves out the frame's fixed
-// costs (the ambient pass, the copy to the main buffer, per-light set-up), which weigh more the
+// costs (the ambient term, the copy to the main buffer, per-light set-up), which weigh more the
 // smaller the frame, so a ratio at 512x512 says little about one at 1080p. Elsewhere the figure is
 // printed as information.
 Figure against_floor(const Goal& g, const GoalInput& in) {

@@ -218,10 +218,13 @@ Runs build_runs(const Setup& st, const Variant& v, bool first, std::vector<std::
             if (!f || float_forward) runs.push_back(forward(st, v, m, f));
     for (DepthPath d : {DepthPath::texture, DepthPath::packed})
         for (bool sc : {false, true}) add(config(d, sc));
-    // Each skip turned off alone, on the default configuration (depth texture, scissor on).
+    // Each skip turned off alone, on the default configuration (depth texture, scissor on). The
+    // fold skips the ambient pass only where the material pass does not write it, so its row turns
+    // both off: the tutorial's ambient pass, against the ambient target's row (the fold where it can).
     for (const SkipField& k : kSkipFields) {
         Row r = config(DepthPath::texture, true);
         r.skip.*k.on = false;
+        if (k.on == &SkipOptions::ambient_pass) r.skip.ambient_target = false;
         add(r);
     }
     for (DepthEncoding e : {DepthEncoding::literal, DepthEncoding::linear, DepthEncoding::log}) {
