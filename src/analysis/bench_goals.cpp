@@ -84,9 +84,9 @@ Figure invocations(const Goal& g, const GoalInput& in) {
 // kFloorWidth x kFloorHeight with kFloorLights lights only: the floor leaves out the frame's fixed
 // costs (the ambient term, the copy to the main buffer, per-light set-up), which weigh more the
 // smaller the frame, so a ratio at 512x512 says little about one at 1080p. Elsewhere the figure is
-// printed as information.
+// printed as information. The frame is dsr's default's (auto, else quad): what a user gets.
 Figure against_floor(const Goal& g, const GoalInput& in) {
-    const Row* d = find_row(in.rows, in.scene, in.lights, Renderer::deferred);
+    const Row* d = find_default_row(in.rows, in.scene, in.lights);
     if (!d || !d->floor_ratio || !d->floor_ms) return not_judged();
     const std::string working =
         ms(d->ms_median) + " / " + ms(*d->floor_ms) + " = " + format_number("%.2f", *d->floor_ratio);

@@ -280,7 +280,7 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
        << "- Post-processing off in every row.\n\n"
        << "## Goals\n\nJudged on the default deferred configuration (depth texture, scissor on, every skip on); "
           "the speed goal against the faster forward multi-pass row (float or RGBA8 accumulation) of the same run. "
-          "`demo` and `cpu` take dsr's default light geometry, auto (quad where the run has no auto row); `demo` "
+          "`floor`, `demo` and `cpu` take dsr's default light geometry, auto (quad where the run has no auto row); `demo` "
           "against the screen rows, LearnOpenGL's deferred demo's lighting pass (every light at every pixel, one "
           "full-screen pass), on 32-large at the demo's 800x600. `auto` compares the auto geometry with the "
           "fastest fixed one on each bench scene. `floor` is judged at 1920x1080 with 1024 lights only (the floor "
