@@ -54,6 +54,40 @@ TEST(FrameDef, LightsCulledOrDrawnWithTheirRectangles) {
     for (const LightDraw& l : g.lights) EXPECT_TRUE(l.full && l.rect.area() == 200 * 150);
 }
 
+// The renderer makes the frame in two steps, the camera before the G-buffer and the lights while
+// the GPU fills it: the same frame as make_frame's, light by light, shadowed lights numbered alike.
+TEST(FrameDef, LightsAddedLaterGiveTheSameFrame) {
+    Scene scene = test::default_scene();
+    Light dark = scene.lights[0];
+    dark.color = glm::vec3(0);
+    scene.lights.push_back(dark);
+    scene.lights[1].shadow.on = true;
+    for (const bool shadows : {false, true}) {
+        FrameSetup s = setup(200, 150);
+        s.shadows = shadows;
+        const FrameDef whole = make_frame(scene.camera, scene.lights, s);
+        FrameDef later = make_frame(scene.camera, {}, s);
+        EXPECT_TRUE(later.lights.empty());
+        add_visible_lights(later, scene.lights, s);
+        EXPECT_EQ(later.lights_total, whole.lights_total);
+        EXPECT_EQ(later.lights_culled, whole.lights_culled);
+        EXPECT_EQ(later.scissor_pixels, whole.scissor_pixels);
+        EXPECT_EQ(later.shadowed_lights, whole.shadowed_lights);
+        EXPECT_EQ(later.shadowed_lights, shadows ? 1 : 0);
+        ASSERT_EQ(later.lights.size(), whole.lights.size());
+        for (size_t i = 0; i < whole.lights.size(); ++i) {
+            const LightDraw &a = later.lights[i], &b = whole.lights[i];
+            EXPECT_EQ(a.index, b.index);
+            EXPECT_TRUE(a.rect.x0 == b.rect.x0 && a.rect.y0 == b.rect.y0 && a.rect.x1 == b.rect.x1 && a.rect.y1 == b.rect.y1);
+            EXPECT_EQ(a.full, b.full);
+            EXPECT_EQ(a.shadow, b.shadow);
+            EXPECT_EQ(a.params.pos, b.params.pos);
+            EXPECT_EQ(a.params.color, b.params.color);
+        }
+        EXPECT_THROW(add_visible_lights(later, scene.lights, s), Error) << "a frame's lights are added once";
+    }
+}
+
 // The camera's values: the projection at the buffers' aspect, §3.4.3's planes, the corner rays,
 // and the ray map the light shaders evaluate at gl_FragCoord.
 TEST(FrameDef, CameraValues) {

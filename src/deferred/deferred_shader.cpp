@@ -75,6 +75,10 @@ void DeferredShader::set_scene(const Scene& scene) {
 }
 
 FrameDef DeferredShader::frame_of(const Camera& camera, const std::vector<Light>& lights, bool scissors) const {
+    return make_frame(camera, lights, frame_setup(scissors));
+}
+
+FrameSetup DeferredShader::frame_setup(bool scissors) const {
     FrameSetup s;
     s.width = width();
     s.height = height();
@@ -83,7 +87,7 @@ FrameDef DeferredShader::frame_of(const Camera& camera, const std::vector<Light>
     s.scissors = scissors;
     s.skip_empty = config_.opts.skip.empty_lights;
     s.shadows = shadows_ != nullptr;
-    return make_frame(camera, lights, s);
+    return s;
 }
 
 void DeferredShader::set_output_size(int out_w, int out_h) {
@@ -98,18 +102,33 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     const double cpu0 = thread_cpu_ms();
     timer_.begin_frame(S_COUNT);
     set_output_size(out_w, out_h);
-    FrameDef f = frame_of(scene.camera, scene.lights, config_.opts.scissor);
+    // The frame's camera first. The geometry stage needs nothing else, so the lights are culled
+    // and their rectangles made (Listing 17) while the GPU fills the G-buffer, unless the shadow
+    // stage needs them before it.
+    const FrameSetup setup = frame_setup(config_.opts.scissor);
+    FrameDef f = make_frame(scene.camera, {}, setup);
+    const auto cull_lights = [&] {
+        const double t0 = thread_cpu_ms();
+        add_visible_lights(f, scene.lights, setup);
+        st.ms.cpu_make_frame += thread_cpu_ms() - t0;
+    };
     st.ms.cpu_make_frame = thread_cpu_ms() - cpu0;
     camera_ = scene.camera;
     // 0. the shadow maps of the frame's shadowed lights, handed to the light passes in the frame.
-    if (shadows_ && f.shadowed_lights > 0)
-        timed(timer_, S_SHADOWS, [&] { f.shadows = shadows_->draw(f, scene, *gpu_, st); });
+    if (shadows_) {
+        cull_lights();
+        if (f.shadowed_lights > 0) timed(timer_, S_SHADOWS, [&] { f.shadows = shadows_->draw(f, scene, *gpu_, st); });
+    }
     // 1. geometry stage, which also writes the ambient pass's colours into P-buffer 0 where it can
     // (Paths::ambient_target): the lighting stage then draws no ambient pass.
     const AmbientTerm ambient{scene.background, scene.ambient};
     st.ambient_in_material = targets_->ambient_target();
     timed(timer_, S_GEOMETRY,
           [&] { geometry_->draw(f, *gpu_, *targets_, st, st.ambient_in_material ? &ambient : nullptr); });
+    if (!shadows_) {
+        glFlush();  // the GPU starts on the G-buffer now, not when the light stage first waits on it
+        cull_lights();
+    }
     const double cpu_lights0 = thread_cpu_ms();
     draw_lights(f, scene, st);                                          // 2. lighting stage
     st.ms.cpu_lights = thread_cpu_ms() - cpu_lights0;

@@ -116,6 +116,7 @@ public:
 private:
     // Stage slots of the frame timer, in StageTimes order.
     enum Slot { S_GEOMETRY, S_AMBIENT, S_LIGHTS, S_BLOOM, S_AA, S_FINAL, S_DEPTH_COPY, S_SSAO, S_FORWARD, S_SHADOWS, S_COUNT };
+    FrameSetup frame_setup(bool scissors) const;
     FrameDef frame_of(const Camera& camera, const std::vector<Light>& lights, bool scissors) const;
     FrameDef last_frame() const;  // camera_'s, no lights
     void draw_lights(const FrameDef& f, const Scene& scene, FrameStats& stats);

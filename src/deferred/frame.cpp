@@ -7,6 +7,7 @@
 
 #include "deferred/culling.h"
 #include "deferred/reconstruct.h"
+#include "dsr_error.h"
 
 namespace dsr {
 
@@ -91,6 +92,11 @@ FrameDef make_frame(const Camera& camera, const std::vector<Light>& lights, cons
     f.scissors = s.scissors;
     visible_lights(f, lights, s.skip_empty, s.shadows);
     return f;
+}
+
+void add_visible_lights(FrameDef& f, const std::vector<Light>& lights, const FrameSetup& s) {
+    if (f.lights_total != 0 || !f.lights.empty()) throw Error("add_visible_lights: the frame already has its lights");
+    visible_lights(f, lights, s.skip_empty, s.shadows);
 }
 
 }  // namespace dsr

@@ -102,6 +102,11 @@ struct FrameDef {
 
 // The frame of `camera` looking at `lights` (pass no lights for a frame that draws none).
 FrameDef make_frame(const Camera& camera, const std::vector<Light>& lights, const FrameSetup& setup);
+// Listing 17's culling, empty-light skip and rectangles of `lights` added to a frame made without
+// lights (make_frame with none and the same setup): make_frame's result, in two steps, so that a
+// renderer can submit the G-buffer, which needs only the camera, and cull while the GPU fills it.
+// Throws dsr::Error where f already has lights.
+void add_visible_lights(FrameDef& f, const std::vector<Light>& lights, const FrameSetup& setup);
 
 // glOrtho(0, w, 0, h, -1, 1): window pixels.
 glm::mat4 pixel_ortho(float w, float h);
