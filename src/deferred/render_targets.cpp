@@ -70,8 +70,8 @@ void RenderTargets::allocate() {
             p.depth = paths_.accum_stencil ? DepthAttachment::depth_stencil : DepthAttachment::renderbuffer;
         p_[i] = std::make_unique<PBuffer>("P-buffer " + std::to_string(i), p);
     }
-    ambient_target_ = paths_.ambient_target && g_->attach_extra(p_[P_ACCUM]->texture(0)) &&
-                      g_->attach_extra(p_[P_AA]->texture(0));
+    ambient_target_ = paths_.ambient_target && g_->attach_extra(p_[P_ACCUM]->texture(0), true) &&
+                      g_->attach_extra(p_[P_AA]->texture(0), true);
     if (paths_.ambient_target) g_->attach_extra(0);
     // SSAO: occlusion, then its blur, at 1/scale; bilinear, so the ambient pass can scale the
     // half-size one up. The same render-target path as the P-buffers (fbo or copy).

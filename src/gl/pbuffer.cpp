@@ -187,12 +187,12 @@ void PBuffer::set_draw_targets(const std::vector<int>& targets) {
         glDrawBuffersARB(n, bufs);
 }
 
-bool PBuffer::attach_extra(GLuint texture) {
+bool PBuffer::attach_extra(GLuint texture, bool check) {
     if (!desc_.use_fbo) throw Error("P-buffer " + name_ + ": another buffer's target needs a framebuffer object");
     glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fbo_);
     glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GLenum(GL_COLOR_ATTACHMENT0_EXT + colors_.size()), GL_TEXTURE_2D,
                               texture, 0);
-    const bool complete = glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT) == GL_FRAMEBUFFER_COMPLETE_EXT;
+    const bool complete = !check || glCheckFramebufferStatusEXT(GL_FRAMEBUFFER_EXT) == GL_FRAMEBUFFER_COMPLETE_EXT;
     if (!rendering_) glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, 0);
     return complete;
 }

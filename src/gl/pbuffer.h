@@ -56,9 +56,10 @@ public:
     // Writes only these colour targets (one target: a single-target pass; all: MRT).
     void set_draw_targets(const std::vector<int>& targets);
     // fbo implementation: attaches another buffer's texture of this buffer's size as colour target
-    // color_targets() (set_draw_targets may then name it), or detaches it with 0; whether the
-    // framebuffer is complete with it. Keeps this buffer bound where it is the render target.
-    bool attach_extra(GLuint texture);
+    // color_targets() (set_draw_targets may then name it), or detaches it with 0; with `check`,
+    // whether the framebuffer is complete with it (a status query: done once, not every frame).
+    // Keeps this buffer bound where it is the render target.
+    bool attach_extra(GLuint texture, bool check = false);
     // Texture: binds target (colour index or DEPTH) on `unit`. Fails loudly while rendering.
     void bind_texture(int target, int unit);
     void unbind_texture(int target, int unit);
