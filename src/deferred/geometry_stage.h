@@ -7,6 +7,7 @@
 #include <map>
 #include <tuple>
 
+#include "deferred/ambient_fold.h"
 #include "deferred/depth_prepass.h"
 #include "deferred/frame.h"
 #include "deferred/frame_stats.h"
@@ -26,12 +27,6 @@ struct MaterialKey {
     bool operator<(const MaterialKey& o) const {
         return std::tie(normal_map, no_specular, target) < std::tie(o.normal_map, o.no_specular, o.target);
     }
-};
-
-// Listing 15's ambient pass as the material pass writes it into P-buffer 0 (Paths::ambient_target):
-// the colour P-buffer 0 is cleared to, and the ambient colour the diffuse target is scaled by.
-struct AmbientTerm {
-    glm::vec3 background{0}, ambient{0};
 };
 
 class GeometryStage {

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <memory>
 
+#include "deferred/ambient_fold.h"
 #include "deferred/frame.h"
 #include "deferred/frame_stats.h"
 #include "deferred/light_queries.h"
@@ -51,7 +52,7 @@ public:
     // draw(), the first pass writing the background where the G-buffer has no surface and
     // ambient x diffuse under its lights elsewhere. Called only where draws_ambient() and f has lights.
     virtual void draw_with_ambient(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats,
-                                   glm::vec3 background, glm::vec3 ambient) {
+                                   const AmbientTerm& ambient) {
         draw(f, targets, q, stats);
     }
     // The deferred buffers' new size, for what a geometry keeps at that size (the tiles' spans).

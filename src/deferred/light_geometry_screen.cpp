@@ -39,15 +39,14 @@ public:
     // LearnOpenGL's lighting pass starts from its ambient term (Diffuse * 0.1): the first batch
     // writes, blending off, what the clear and the ambient pass would have left, with its lights on
     // top, so the demo's row pays no ambient pass it does not have.
-    void draw_with_ambient(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats, glm::vec3 background,
-                           glm::vec3 ambient) override {
-        const glm::vec3 base[2] = {background, ambient};
-        draw_batches(f, q, stats, base);
+    void draw_with_ambient(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats,
+                           const AmbientTerm& ambient) override {
+        draw_batches(f, q, stats, &ambient);
     }
 
 private:
-    // base: the background and ambient colours the first batch writes under its lights, or null.
-    void draw_batches(const FrameDef& f, LightQueries& q, FrameStats& stats, const glm::vec3* base) {
+    // base: the colours the first batch writes under its lights, or null.
+    void draw_batches(const FrameDef& f, LightQueries& q, FrameStats& stats, const AmbientTerm* base) {
         gl_state().set_camera(f.pixels());
         progs_.begin(f);
         shadows_.begin_frame();
@@ -71,8 +70,8 @@ private:
             prog.set("light_count", arrays_.size());
             prog.set("with_ambient", base ? 1.0f : 0.0f);
             if (base) {
-                prog.set("background", base[0]);
-                prog.set("ambient", base[1]);
+                prog.set("background", base->background);
+                prog.set("ambient", base->ambient);
             }
             base = nullptr;  // the next batches add
             q.begin();

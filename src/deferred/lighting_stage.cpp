@@ -72,11 +72,11 @@ bool LightingStage::may_fold(const FrameDef& f, bool ssao) const {
 
 std::optional<AmbientFold> LightingStage::ambient_fold(const FrameDef& f, const Scene& scene, bool ssao) {
     if (!may_fold(f, ssao)) return std::nullopt;
-    if (geometry_->draws_ambient() && !f.lights.empty()) return AmbientFold{0, true, scene.background, scene.ambient};
+    if (geometry_->draws_ambient() && !f.lights.empty()) return AmbientFold{0, true, {scene.background, scene.ambient}};
     const std::optional<size_t> i = full_screen_light(f);
     if (!i || !geometry_->own_pass(*i)) return std::nullopt;
     geometry_->drop(*i);
-    return AmbientFold{*i, false, scene.background, scene.ambient};
+    return AmbientFold{*i, false, {scene.background, scene.ambient}};
 }
 
 void LightingStage::hand_off_depth(const FrameDef& f, RenderTargets& t) {
@@ -94,7 +94,7 @@ void LightingStage::draw_lighting(const FrameDef& f, const FrameDef& lights, Ren
     LightQueries q(counting_ && count_samples_, counting_ && count_invocations_);
     if (fold) stats.ambient_folded = true;
     if (fold && fold->by_geometry) {
-        geometry_->draw_with_ambient(lights, t, q, stats, fold->background, fold->ambient);
+        geometry_->draw_with_ambient(lights, t, q, stats, fold->colours);
     } else {
         if (fold) {
             draw_fold(f, *fold, q);
@@ -116,8 +116,8 @@ void LightingStage::draw_fold(const FrameDef& f, const AmbientFold& fold, LightQ
     s.program = prog.id();
     gl_state().apply(s);
     set_light_uniforms(prog, f);
-    prog.set("ambient", fold.ambient);
-    prog.set("background", fold.background);
+    prog.set("ambient", fold.colours.ambient);
+    prog.set("background", fold.colours.background);
     prog.set("quantize_round", fold_round_);  // quantize.glsl's fallback (unused where a model fits)
     set_light_params(prog, l.params);
     q.begin();

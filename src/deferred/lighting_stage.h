@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "deferred/ambient_fold.h"
 #include "deferred/depth_handoff.h"
 #include "deferred/frame.h"
 #include "deferred/frame_stats.h"
@@ -30,7 +31,7 @@ class SsaoStage;
 struct AmbientFold {
     size_t light = 0;        // the full-screen light whose pass takes the ambient pass's place
     bool by_geometry = false;  // instead, the light geometry's first pass (LightGeometryPass::draws_ambient)
-    glm::vec3 background{0}, ambient{0};
+    AmbientTerm colours;
 };
 
 class LightingStage {
