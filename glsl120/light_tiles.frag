@@ -70,7 +70,7 @@ void shade(int i, vec3 pos, vec3 v, vec3 normal, vec3 diffuse, vec4 specular, fl
     // P-buffer 0, rounded to the 8-bit step that pass would have written, as this GL rounds: the
     // sum then matches the quad geometry's image instead of differing by up to N/2 LSB.
 #ifdef QUANTIZE_8BIT
-    t = quantize8(t);
+    t = quantize8_byte(t);  // bytes, summed exactly; main() scales the sum once
 #endif
     c += t;
     any = true;
@@ -138,5 +138,8 @@ void main()
 #endif
     if (!any)
         discard;
+#ifdef QUANTIZE_8BIT
+    c /= 255.0;
+#endif
     gl_FragColor = vec4(c, 1.0);
 }

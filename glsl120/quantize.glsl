@@ -9,21 +9,30 @@
 #ifdef QUANTIZE_8BIT
 uniform float quantize_round;  // the fallback's offset where no model fits
 
-vec3 quantize8(vec3 t)
+// The byte (0..255, as a float) an RGBA8 target stores for t in [0, 1].
+vec3 quantize8_byte(vec3 t)
 {
 #ifdef QUANTIZE_TRUNCATE
     // This GL's colour to 2^-n first, then to nearest with a tie down (the H200: 4096.0).
     t = floor(t * QUANTIZE_TRUNCATE) / QUANTIZE_TRUNCATE;
-    return ceil(t * 255.0 - 0.5) / 255.0;
+    return ceil(t * 255.0 - 0.5);
 #elif defined(QUANTIZE_TIES_EVEN)
-    // round(t x 255), a tie to even (llvmpipe).
-    vec3 x = t * 255.0;
-    vec3 r = floor(x + 0.5);
-    r -= vec3(equal(r - x, vec3(0.5))) * mod(r, 2.0);
-    return r / 255.0;
+    // round(t x 255), a tie to even (llvmpipe), from h = t x 255 / 2 (exact halving), its floor m
+    // and g = h - m (exact): 2m + [g > 1/4] + [g >= 3/4], a tie (g = 1/4 or 3/4) going to the even
+    // byte. floor(t x 255 + 0.5) less the tie's odd step (mod, equal) took 2.6 ms more of the tiles'
+    // light stage (llvmpipe, 32-large at 800x600: 23.09 against 20.51 ms).
+    vec3 h = t * 127.5;
+    vec3 m = floor(h);
+    vec3 g = h - m;
+    return 2.0 * m + vec3(greaterThan(g, vec3(0.25))) + step(0.75, g);
 #else
-    return floor(t * 255.0 + quantize_round) / 255.0;
+    return floor(t * 255.0 + quantize_round);
 #endif
+}
+
+vec3 quantize8(vec3 t)
+{
+    return quantize8_byte(t) / 255.0;
 }
 
 // What a sampler reads back from an RGBA8 target t was written into: the stored byte x (1/255), as
