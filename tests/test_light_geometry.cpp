@@ -373,4 +373,46 @@ TEST(LightGeometry, AutoKeepsAnAllTilesChoiceUnpriced) {
     unsetenv("DSR_LIGHT_COST_SCALE");
 }
 
+// The calibration (light_cost.h LightCostCalibration) reaches every path a frame draws and the
+// kept frames: on llvmpipe one priced draw in four of each path is timed and its scale moves off
+// where it started, and the prediction --stats reports follows the scale. With one counter for all
+// paths, a path that always came second in a frame was never timed (below: quad after the tiles);
+// kept frames were neither timed nor predicted anew (they reported the priced frame's prediction).
+TEST(LightGeometry, AutoCalibratesEveryPathItDraws) {
+    constexpr int kSize = 512;  // 256 spread lights: some reach no surface at 128x128 and are dropped
+    auto ctx = create_context(ContextDesc{"osmesa", kSize, kSize});
+    const Caps caps = probe_caps();
+    if (!caps.software_rasterizer) GTEST_SKIP() << "wall-clock calibration is a CPU rasteriser's";
+    // 256 spread lights with quad cheapest: most by quad, the few priced 0 on the tiles (they keep
+    // no tile) by the tiles, both paths drawn in every frame.
+    {
+        setenv("DSR_LIGHT_COST_SCALE", "1,1000,1000", 1);
+        const Scene s = bench_scene(default_scene(), LightSpec{256, LightSet::spread});
+        DeferredShader ds(caps, kSize, kSize, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
+        ds.set_scene(s);
+        FrameStats st;
+        for (int frame = 0; frame < 12; ++frame) st = ds.render(s, kSize, kSize);
+        ASSERT_GT(st.auto_lights[0], 0);
+        ASSERT_GT(st.auto_lights[2], 0) << "the case needs both paths drawn";
+        EXPECT_NE(st.auto_scale[0], 1.0) << "the quad path, drawn after the tiles, was never timed";
+        std::printf("[ calib    ] quad after tiles: quad scale %.3f\n", st.auto_scale[0]);
+    }
+    // 1024-overlap, every light by the tiles: one priced frame in eight, the rest kept; a kept frame
+    // is timed and predicted anew from the priced frame's prices at the current scale.
+    {
+        setenv("DSR_LIGHT_COST_SCALE", "1000,1000,1", 1);
+        const Scene s = bench_scene(default_scene(), LightSpec{1024, LightSet::overlap});
+        DeferredShader ds(caps, kW, kH, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
+        ds.set_scene(s);
+        std::vector<FrameStats> st;
+        for (int frame = 0; frame < 8; ++frame) st.push_back(ds.render(s, kW, kH));
+        ASSERT_EQ(st[0].auto_lights[2], st[0].lights_drawn - int(st[0].ambient_folded));
+        EXPECT_NE(st[7].auto_scale[2], 1.0) << "no kept frame was timed";
+        EXPECT_NE(st[7].auto_predicted_ms, st[0].auto_predicted_ms) << "a kept frame reported the priced frame's prediction";
+        std::printf("[ calib    ] tiles kept: scale %.3f, predicted %.2f ms (priced frame %.2f)\n", st[7].auto_scale[2],
+                    st[7].auto_predicted_ms, st[0].auto_predicted_ms);
+    }
+    unsetenv("DSR_LIGHT_COST_SCALE");
+}
+
 }  // namespace dsr::test

@@ -91,6 +91,13 @@ public:
         all_tiles_ = !f.lights.empty() && plan_.count[int(LightPath::tiles)] == int(f.lights.size());
         keep_rest_ = all_tiles_ ? kKeepTiles : 0;
         predicted_ms_ = plan_.predicted_ms[0] + plan_.predicted_ms[1] + plan_.predicted_ms[2];
+        if (all_tiles_) {
+            // What a kept frame is predicted and calibrated against: this frame's lights' unscaled
+            // tiles prices, and what the path adds once (its state, the spans).
+            kept_raw_ = 0;
+            for (const auto& r : raw_) kept_raw_ += r[int(LightPath::tiles)];
+            kept_once_ms_ = plan_.predicted_ms[int(LightPath::tiles)] - kept_raw_ * scale[int(LightPath::tiles)];
+        }
         report(stats, spans);
         return plan_.count[int(LightPath::volume)] > 0;
     }
@@ -100,7 +107,8 @@ public:
     // them), and the planner culls each light's tiles itself, as the tiles geometry does. On a GPU
     // the pricing runs after the spans' read-back while the GPU waits (1024-overlap at 1920x1080:
     // auto's light stage 5.7 ms against the tiles geometry's 4.7 with the same passes). The image
-    // is the same whatever the choice; a frame kept is not calibrated (its lights are not priced).
+    // is the same whatever the choice; a kept frame is predicted and calibrated against the last
+    // priced frame's prices (the choice assumes its lights are much as they were).
     bool keep_tiles(const FrameDef& f, RenderTargets& targets, FrameStats& stats) {
         if (!all_tiles_ || keep_rest_ <= 0 || f.lights.size() != plan_.path.size() || !tiles_->depth_culling())
             return false;
@@ -113,6 +121,7 @@ public:
         raw_.assign(f.lights.size(), {0, 0, 0});
         planned_ = true;
         priced_ = false;
+        predicted_ms_ = kept_raw_ * calib_.scale()[int(LightPath::tiles)] + kept_once_ms_;
         report(stats, true);
         return true;
     }
@@ -151,6 +160,7 @@ public:
             by_path[p].push_back(&f.lights[i]);
             raw[p] += raw_[i][size_t(p)];
         }
+        if (!priced_) raw[int(LightPath::tiles)] = kept_raw_;  // a kept frame: the last priced frame's
         if (!by_path[int(LightPath::tiles)].empty())
             timed(LightPath::tiles, raw, [&] {
                 FrameDef sub = f;  // the tiles' lights alone, with their bounds
@@ -205,7 +215,10 @@ private:
         // (llvmpipe: tens of milliseconds).
         // On a CPU rasteriser one frame in kTimedEvery: the glFinish around a path's passes stops the
         // rasteriser's work overlapping the CPU's (1024 lights at 512x512: 0.7 ms a frame, timed every frame).
-        const bool wall_now = calibrate_ && timed_frames_++ % kTimedEvery == 0;
+        // Counted per path, and only draws the model priced: with one counter for all, where two
+        // paths took turns the second was never timed (256 lights at 512x512: the quad path's
+        // scale stayed 1 over 48 frames, its prediction 2.8x what it took).
+        const bool wall_now = calibrate_ && raw[int(p)] > 0 && timed_draws_[int(p)]++ % kTimedEvery == 0;
         if (!drawn_before_[int(p)] || (!wall_now && !gpu_calibrate_)) {
             drawn_before_[int(p)] = true;
             draw();
@@ -285,9 +298,11 @@ private:
     bool all_tiles_ = false;  // the last priced frame sent every light through the tiles
     int keep_rest_ = 0;       // frames left to keep it
     bool priced_ = false;     // this frame's lights were priced (features_ hold their kept tiles)
-    double predicted_ms_ = 0; // the last priced frame's prediction (a kept frame reports it too)
+    double predicted_ms_ = 0; // the frame's prediction (a kept frame's from the last priced frame's prices)
+    double kept_raw_ = 0;     // the last all-tiles priced frame's unscaled tiles prices, summed
+    double kept_once_ms_ = 0; // and what its tiles path added once (state, spans)
     static constexpr int kTimedEvery = 4;
-    unsigned timed_frames_ = 0;  // draws of a path so far (wall-clock timing: one in kTimedEvery)
+    unsigned timed_draws_[kLightPaths] = {0, 0, 0};  // priced draws of each path so far (one in kTimedEvery timed)
     int spans_rest_ = 0;  // frames left before the spans are measured again
     // The frame's plan, from prepare() to draw().
     bool planned_ = false;
