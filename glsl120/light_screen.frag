@@ -1,7 +1,7 @@
 #version 120
 // Light geometry `screen` (src/deferred/light_geometry_screen.cpp): LearnOpenGL's deferred shading
 // demo's lighting pass (5.8.1), a full-screen quad that evaluates every light at every pixel. The
-// uniform arrays hold a batch of BATCH lights, light_count of them set; the G-buffer is read once,
+// uniform arrays hold a batch of up to BATCH lights, LIGHTS of them set; the G-buffer is read once,
 // then Listing 20's light term is summed over all of them with no depth test, no sphere test and
 // no discard, and the sum is blended once: one rounding to 8 bits per pixel, as the demo's. The
 // demo's pass starts from its ambient term; so does the first batch here (with_ambient, blending
@@ -15,12 +15,14 @@ uniform sampler2D normal_map;    // unit 0
 uniform sampler2D diffuse_map;   // unit 1
 uniform sampler2D specular_map;  // unit 2
 uniform sampler2D depth_map;     // unit 3
+#ifndef LIGHTS
+#define LIGHTS BATCH  // the table's programs: a full batch; light_geometry_screen.cpp compiles the others
+#endif
 uniform vec4 lightpos[BATCH];    // lighting.glsl light_contribution's five vec4s per light
 uniform vec4 lightcolor[BATCH];
 uniform vec4 lightdir[BATCH];
 uniform vec4 lightspot[BATCH];
 uniform vec4 lightatt[BATCH];
-uniform int light_count;         // this draw's lights: slots 0 .. light_count-1
 uniform vec2 planes;
 uniform vec3 zrange;
 uniform vec2 uv_scale;           // texture coordinates and (light.frag's) view ray from gl_FragCoord
@@ -42,9 +44,7 @@ void main()
     float shininess = decode_shininess(specular.a);
     vec3 v = view_vector(pos);  // once, not per light
     vec3 c = vec3(0.0);
-    for (int k = 0; k < BATCH; ++k) {
-        if (k >= light_count)
-            break;
+    for (int k = 0; k < LIGHTS; ++k) {  // the demo's loop, to its constant NR_LIGHTS
         vec3 t = light_contribution(lightpos[k], lightcolor[k], lightdir[k], lightspot[k], lightatt[k], pos, v, normal,
                                     diffuse, specular.rgb, shininess);
 #ifdef SHADOW

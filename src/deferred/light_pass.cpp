@@ -189,6 +189,16 @@ LightPrograms::LightPrograms(ProgramSet& programs, const std::string& family, bo
     if (programs.has(family + "_shadow_atlas")) shadow_atlas_ = programs.take(family + "_shadow_atlas");
 }
 
+LightPrograms::LightPrograms(const ProgramSources& sources, const std::string& family, int shadow_slots,
+                             const Defines& extra)
+    : shadow_slots_(shadow_slots) {
+    forms_[int(LightShader::point_linear)] = sources.build(family + "_point", extra);
+    forms_[int(LightShader::point_inverse)] = sources.build(family + "_point_inverse", extra);
+    forms_[int(LightShader::any)] = sources.build(family, extra);
+    if (sources.has(family + "_shadow")) shadow_ = sources.build(family + "_shadow", extra);
+    if (sources.has(family + "_shadow_atlas")) shadow_atlas_ = sources.build(family + "_shadow_atlas", extra);
+}
+
 void LightPrograms::begin(const FrameDef& f) {
     for (Program& p : forms_)
         if (p.id()) set_light_uniforms(p, f);

@@ -102,6 +102,9 @@ public:
     // shadow_only: just FAMILY_shadow (a geometry that draws only its shadowed lights as quads).
     // shadow_slots: FAMILY_shadow holds that many maps (shadow.glsl SHADOW_SLOTS); 0: one, on unit 4.
     LightPrograms(ProgramSet& programs, const std::string& family, bool shadow_only = false, int shadow_slots = 0);
+    // The family's forms compiled anew from `sources` with `extra` defines (a variant the table
+    // cannot know in advance: the screen geometry's light count).
+    LightPrograms(const ProgramSources& sources, const std::string& family, int shadow_slots, const Defines& extra);
     // set_light_uniforms on every form, before a frame's first draw.
     void begin(const FrameDef& f);
     Program& operator[](LightShader s) { return forms_[int(s)]; }

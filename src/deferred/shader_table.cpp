@@ -404,10 +404,33 @@ std::string describe_programs(const ShaderConfig& c) {
     return s.str();
 }
 
-ProgramSet::ProgramSet(const std::string& dir, const ShaderConfig& c, const std::vector<std::string>& only) {
+ProgramSet::ProgramSet(const std::string& dir, const ShaderConfig& c, const std::vector<std::string>& only) : dir_(dir) {
     for (ProgramSpec& p : shader_programs(c))
-        if (only.empty() || std::find(only.begin(), only.end(), p.name) != only.end())
+        if (only.empty() || std::find(only.begin(), only.end(), p.name) != only.end()) {
             programs_[p.name] = Program(dir, p.vert, p.frag, p.defines);
+            specs_.push_back(std::move(p));
+        }
+}
+
+ProgramSources ProgramSet::sources(const std::string& prefix) const {
+    std::vector<ProgramSpec> out;
+    for (const ProgramSpec& p : specs_)
+        if (p.name.compare(0, prefix.size(), prefix) == 0) out.push_back(p);
+    return ProgramSources(dir_, std::move(out));
+}
+
+bool ProgramSources::has(const std::string& name) const {
+    return std::any_of(specs_.begin(), specs_.end(), [&](const ProgramSpec& p) { return p.name == name; });
+}
+
+Program ProgramSources::build(const std::string& name, const Defines& extra) const {
+    for (const ProgramSpec& p : specs_)
+        if (p.name == name) {
+            Defines d = p.defines;
+            d.insert(d.end(), extra.begin(), extra.end());
+            return Program(dir_, p.vert, p.frag, d);
+        }
+    throw Error("shader table: no program '" + name + "' in this configuration");
 }
 
 Program ProgramSet::take(const std::string& name) {

@@ -77,6 +77,21 @@ std::vector<ProgramSpec> shader_programs(const ShaderConfig& config);
 // One line per program: name, files, defines (dsr info).
 std::string describe_programs(const ShaderConfig& config);
 
+// Some of a configuration's programs as the table gives them, kept to compile variants later: a
+// stage that needs a define the table cannot know in advance (the screen geometry's light count)
+// builds the program with it when it first needs it.
+class ProgramSources {
+public:
+    ProgramSources(std::string shader_dir, std::vector<ProgramSpec> specs) : dir_(std::move(shader_dir)), specs_(std::move(specs)) {}
+    bool has(const std::string& name) const;
+    // The program `name` with `extra` defines after the table's; throws dsr::Error when it is not here.
+    Program build(const std::string& name, const Defines& extra) const;
+
+private:
+    std::string dir_;
+    std::vector<ProgramSpec> specs_;
+};
+
 // Every program of shader_programs(config), compiled and linked; each stage takes its own.
 class ProgramSet {
 public:
@@ -86,8 +101,12 @@ public:
     // Moves the program out; throws dsr::Error when the table did not build it here.
     Program take(const std::string& name);
     size_t size() const { return programs_.size(); }
+    // The specs of the programs built here whose names start with `prefix`, taken or not.
+    ProgramSources sources(const std::string& prefix) const;
 
 private:
+    std::string dir_;
+    std::vector<ProgramSpec> specs_;  // of the programs built
     std::map<std::string, Program> programs_;
 };
 
