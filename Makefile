@@ -106,9 +106,10 @@ run: deps
 	$(BUILD)/dsr render
 	@echo "make run: the image is out/default.png; open the viewer with: $(BUILD)/dsr view"
 
+# The suite in as many shards at once as there are cores (tests/run_shards.sh).
 test: deps
 	$(MAKE) -j$(JOBS) all
-	$(BUILD)/dsr_tests
+	tests/run_shards.sh $(BUILD)/dsr_tests $(JOBS)
 	$(MAKE) -j$(JOBS) test-sanitizers
 
 # The OBJ/MTL and scene-file loaders again under AddressSanitizer + UBSan (a second build of
