@@ -45,12 +45,9 @@ public:
     // The fold draws f.lights[i] (own_pass(i) was true): draw() is then handed f without it, and the
     // plan prepare() made must follow.
     virtual void drop(size_t i) {}
-    // Whether draw_with_ambient is this geometry's own: its first pass covers every pixel and can
-    // write, blending off, what the clear and Listing 15's ambient pass would have left there
-    // (screen: LearnOpenGL's lighting pass adds its ambient term itself).
-    virtual bool draws_ambient() const { return false; }
     // draw(), the first pass writing the background where the G-buffer has no surface and
-    // ambient x diffuse under its lights elsewhere. Called only where draws_ambient() and f has lights.
+    // ambient x diffuse under its lights elsewhere. Called only where draws_own_ambient (paths.h)
+    // holds for the geometry and f has lights.
     virtual void draw_with_ambient(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats,
                                    const AmbientTerm& ambient) {
         draw(f, targets, q, stats);

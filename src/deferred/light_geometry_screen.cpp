@@ -40,7 +40,6 @@ public:
     }
 
     bool own_pass(size_t) const override { return false; }  // one more light in a batch
-    bool draws_ambient() const override { return true; }  // where the fold may be made (LightingStage::may_fold)
 
     void draw(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats) override {
         draw_batches(f, q, stats, nullptr);

@@ -32,6 +32,7 @@ LightingStage::LightingStage(const ShaderConfig& c, ProgramSet& programs, int wi
       count_invocations_(c.caps.pipeline_statistics),
       depth_target_(depth_target(c.opts.depth)),
       pow2_(!c.caps.npot),
+      draws_own_ambient_(draws_own_ambient(c.paths.light_geometry)),
       geometry_(make_light_geometry(c, programs, width, height)) {
     set_handoff(c, programs);
     fold_round_ = c.tile_round;
@@ -67,12 +68,12 @@ void LightingStage::draw_ambient(const FrameDef& f, const Scene& scene, RenderTa
 
 bool LightingStage::may_fold(const FrameDef& f, bool ssao) const {
     if (ssao || !fold_any_.id() || !fold_point_.id()) return false;
-    return (geometry_->draws_ambient() && !f.lights.empty()) || full_screen_light(f).has_value();
+    return (draws_own_ambient_ && !f.lights.empty()) || full_screen_light(f).has_value();
 }
 
 std::optional<AmbientFold> LightingStage::ambient_fold(const FrameDef& f, const Scene& scene, bool ssao) {
     if (!may_fold(f, ssao)) return std::nullopt;
-    if (geometry_->draws_ambient() && !f.lights.empty()) return AmbientFold{0, true, {scene.background, scene.ambient}};
+    if (draws_own_ambient_ && !f.lights.empty()) return AmbientFold{0, true, {scene.background, scene.ambient}};
     const std::optional<size_t> i = full_screen_light(f);
     if (!i || !geometry_->own_pass(*i)) return std::nullopt;
     geometry_->drop(*i);

@@ -30,7 +30,7 @@ class SsaoStage;
 // clear and Listing 15 would have used.
 struct AmbientFold {
     size_t light = 0;        // the full-screen light whose pass takes the ambient pass's place
-    bool by_geometry = false;  // instead, the light geometry's first pass (LightGeometryPass::draws_ambient)
+    bool by_geometry = false;  // instead, the light geometry's first pass (paths.h draws_own_ambient)
     AmbientTerm colours;
 };
 
@@ -60,7 +60,7 @@ public:
     // SSAO off (it scales the ambient pass alone), a light drawn full screen, its fold program
     // built, and the light geometry would draw that light by a pass of its own
     // (LightGeometryPass::own_pass; the geometry's plan then leaves it out), or the geometry's
-    // first pass covers every pixel and writes the ambient itself (draws_ambient: screen, as
+    // first pass covers every pixel and writes the ambient itself (draws_own_ambient: screen, as
     // LearnOpenGL's lighting pass does). When it does, draw_ambient is not called.
     std::optional<AmbientFold> ambient_fold(const FrameDef& f, const Scene& scene, bool ssao);
     // Before prepare(f): whether ambient_fold could fold anything this frame (the skip on, no SSAO,
@@ -84,6 +84,7 @@ private:
     bool counting_ = true;
     int depth_target_;
     bool pow2_;
+    bool draws_own_ambient_;  // paths.h draws_own_ambient of the frame's geometry
     std::unique_ptr<LightGeometryPass> geometry_;
     std::unique_ptr<DepthHandoffPass> handoff_;  // where Paths::accum_depth
     void draw_fold(const FrameDef& f, const AmbientFold& fold, LightQueries& q);

@@ -42,7 +42,7 @@ void choose_ambient_target(const Caps& caps, const ShaderOptions& opts, Paths& p
     const bool rgba8 = std::all_of(p.gbuffer_formats.begin(), p.gbuffer_formats.end(),
                                    [](TargetFormat f) { return f == TargetFormat::rgba8; });
     const char* why = opts.ssao.on                                    ? "SSAO scales the ambient pass alone"
-                      : p.light_geometry == LightGeometry::screen     ? "the screen geometry writes the ambient itself"
+                      : draws_own_ambient(p.light_geometry)           ? "the screen geometry writes the ambient itself"
                       : !p.mrt                                        ? "it needs the material pass's multiple render targets"
                       : caps.max_draw_buffers <= p.gbuffer_targets    ? "the GL has no draw buffer beyond the G-buffer's"
                       : p.gbuffer_formats[1] != TargetFormat::rgba8   ? "the diffuse target is not RGBA8"

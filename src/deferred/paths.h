@@ -70,6 +70,12 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts);
 // Whether the geometry draws lights through the tiles: tiles, and auto, which sends some there.
 inline bool draws_tiles(LightGeometry g) { return g == LightGeometry::tiles || g == LightGeometry::automatic; }
 
+// Whether the geometry's first pass covers every pixel and writes, blending off, what the clear and
+// Listing 15's ambient pass would have left there (screen: LearnOpenGL's lighting pass adds its
+// ambient term itself; LightGeometryPass::draw_with_ambient), so that neither the ambient pass nor
+// the material pass's ambient target is needed.
+inline bool draws_own_ambient(LightGeometry g) { return g == LightGeometry::screen; }
+
 // --accum: what this GL lacks for accumulation format `a` in one phrase ("needs float targets
 // (ARB_texture_float), which this GL lacks"), "" when it can (rgba8 always); `fbo`: the paths
 // render to texture. `dsr info` and choose_paths' refusal say it.
