@@ -40,6 +40,6 @@ vec3 quantize8(vec3 t)
 // can land on a rounding tie: material.frag's ambient target multiplies what the ambient pass reads).
 vec3 texel8(vec3 t)
 {
-    return floor(quantize8(t) * 255.0 + 0.5) * (1.0 / 255.0);
+    return quantize8_byte(t) * (1.0 / 255.0);
 }
 #endif
