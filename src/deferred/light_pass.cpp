@@ -178,25 +178,30 @@ Program& load_batch(const FrameDef& f, const std::vector<int>& batch, LightArray
     return shadows.size() > 0 ? shadows.prepare(progs, stats) : progs[LightPrograms::common(f, batch)];
 }
 
+// The family's programs by the table's names: FAMILY_point, FAMILY_point_inverse, FAMILY, and
+// FAMILY_shadow, FAMILY_shadow_atlas where `has` them.
+template <class Has, class Get>
+void LightPrograms::load(const std::string& family, bool shadow_only, Has&& has, Get&& get) {
+    if (!shadow_only) {
+        forms_[int(LightShader::point_linear)] = get(family + "_point");
+        forms_[int(LightShader::point_inverse)] = get(family + "_point_inverse");
+        forms_[int(LightShader::any)] = get(family);
+    }
+    if (has(family + "_shadow")) shadow_ = get(family + "_shadow");
+    if (has(family + "_shadow_atlas")) shadow_atlas_ = get(family + "_shadow_atlas");
+}
+
 LightPrograms::LightPrograms(ProgramSet& programs, const std::string& family, bool shadow_only, int shadow_slots)
     : shadow_slots_(shadow_slots) {
-    if (!shadow_only) {
-        forms_[int(LightShader::point_linear)] = programs.take(family + "_point");
-        forms_[int(LightShader::point_inverse)] = programs.take(family + "_point_inverse");
-        forms_[int(LightShader::any)] = programs.take(family);
-    }
-    if (programs.has(family + "_shadow")) shadow_ = programs.take(family + "_shadow");
-    if (programs.has(family + "_shadow_atlas")) shadow_atlas_ = programs.take(family + "_shadow_atlas");
+    load(family, shadow_only, [&](const std::string& n) { return programs.has(n); },
+         [&](const std::string& n) { return programs.take(n); });
 }
 
 LightPrograms::LightPrograms(const ProgramSources& sources, const std::string& family, int shadow_slots,
                              const Defines& extra)
     : shadow_slots_(shadow_slots) {
-    forms_[int(LightShader::point_linear)] = sources.build(family + "_point", extra);
-    forms_[int(LightShader::point_inverse)] = sources.build(family + "_point_inverse", extra);
-    forms_[int(LightShader::any)] = sources.build(family, extra);
-    if (sources.has(family + "_shadow")) shadow_ = sources.build(family + "_shadow", extra);
-    if (sources.has(family + "_shadow_atlas")) shadow_atlas_ = sources.build(family + "_shadow_atlas", extra);
+    load(family, false, [&](const std::string& n) { return sources.has(n); },
+         [&](const std::string& n) { return sources.build(n, extra); });
 }
 
 void LightPrograms::begin(const FrameDef& f) {

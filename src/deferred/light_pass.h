@@ -118,6 +118,8 @@ public:
     static LightShader common(const FrameDef& f, const std::vector<int>& lights);
 
 private:
+    template <class Has, class Get>
+    void load(const std::string& family, bool shadow_only, Has&& has, Get&& get);
     Program forms_[3];  // LightShader's order: point_linear, point_inverse, any
     Program shadow_;    // FAMILY_shadow, where the table built it
     Program shadow_atlas_;
