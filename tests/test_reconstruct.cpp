@@ -144,3 +144,42 @@ TEST(Reconstruct, PositionFromWindowAndDepth) {
 }
 
 }  // namespace
+
+// The light quads' depth (sphere_back_depth): every surface GL's GL_GEQUAL test rejects, a depth
+// code above the quad's in the 24-bit buffer, is one the light shader's depth test rejects too,
+// its eye z reconstructed in float and then moved towards the camera by a half float's rounding
+// (the position16 path); and the quad sits within a few codes of the sphere's back, so the test
+// still rejects what lies behind it.
+TEST(Reconstruct, SphereBackDepthRejectsOnlyWhatTheShaderRejects) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const double codes = double((1 << 24) - 1);
+    int interior = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        const float n = float(0.01 + u(rng)), f = float(n * std::pow(10.0, 1.0 + 4.0 * u(rng)));
+        const glm::vec2 planes = dsr::planes_uniform(n, f);
+        const float r = float(std::pow(10.0, -2.0 + 3.0 * u(rng)));
+        const float cz = -float(u(rng) * 1.3 * f);
+        const float back = dsr::sphere_back_depth(cz, r, n, f);
+        ASSERT_GE(back, 0.0f);
+        ASSERT_LE(back, 1.0f);
+        const double quad_code = std::nearbyint(double(back) * codes);  // GL's float -> 24-bit conversion
+        // Codes just above the quad's (the worst case) and a spread to the far plane.
+        for (double k = quad_code + 1; k <= codes; k += std::max(1.0, std::floor((codes - k) / 64))) {
+            const float z = dsr::eye_z_from_depth(float(k / codes), planes);
+            const float z_half = z * float(1.0 - std::ldexp(1.0, -11));
+            ASSERT_GT(std::abs(z_half - cz), r) << "near " << n << " far " << f << " centre " << cz << " radius " << r
+                                                << ": code " << k << " rejected by GL, lit by the shader";
+        }
+        // Not conservative to the point of rejecting nothing: in window depth, at most the margins
+        // (2^-9 of the distance, 2^-20) past the sphere's back.
+        const double b = -(double(cz) - r);
+        const auto window = [&](double a) { return double(f) * (a - n) / (a * (double(f) - n)); };
+        if (b > n && b * (1 + 0x1p-9) < f) {
+            ++interior;
+            EXPECT_GE(double(back), window(b)) << "the quad in front of the sphere's back";
+            EXPECT_LE(double(back), window(b * (1 + 0x1p-9)) + 0x1p-20 + 1e-7) << "the quad far behind the sphere's back";
+        }
+    }
+    EXPECT_GT(interior, 100);  // the tightness check ran
+}

@@ -36,6 +36,7 @@ public:
           model_(default_light_costs(c.caps.software_rasterizer)),
           calib_(start_scale()),
           volume_ok_(c.paths.accum_depth),
+          quad_depth_(c.paths.accum_depth && c.opts.skip.light_depth_test && !std::getenv("DSR_QUAD_NO_DEPTH")),
           calibrate_(c.caps.software_rasterizer),
           gpu_calibrate_(!c.caps.software_rasterizer && c.caps.timer_query && gl_entry.QueryCounter) {}
 
@@ -47,6 +48,7 @@ public:
 
     bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) override {
         collect_gpu_times();
+        quads_depth_now_ = false;
         if (keep_tiles(f, targets, stats)) return false;
         const double screen_px = double(f.width) * double(f.height);
         features_.assign(f.lights.size(), LightFeature{});
@@ -99,7 +101,9 @@ public:
             kept_once_ms_ = plan_.predicted_ms[int(LightPath::tiles)] - kept_raw_ * scale[int(LightPath::tiles)];
         }
         report(stats, spans);
-        return plan_.count[int(LightPath::volume)] > 0;
+        // The volumes test against the scene's depth; so do the quads, where they can (LightQuadBatch).
+        quads_depth_now_ = quad_depth_ && plan_.count[int(LightPath::quad)] > 0;
+        return plan_.count[int(LightPath::volume)] > 0 || quads_depth_now_;
     }
 
     // Where the last priced frame sent every light through the tiles, the next kKeepTiles frames with
@@ -150,7 +154,10 @@ public:
     }
 
     void draw(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats) override {
-        if (!planned_ || plan_.path.size() != f.lights.size()) prepare(f, targets, stats);  // (prepare() saw another frame)
+        if (!planned_ || plan_.path.size() != f.lights.size()) {
+            prepare(f, targets, stats);  // (prepare() saw another frame)
+            quads_depth_now_ = false;    // and no hand-off followed this one
+        }
         planned_ = false;
         for (int p = 0; p < kLightPaths; ++p) stats.auto_lights[p] = plan_.count[size_t(p)];  // less a light drop() took
         std::vector<const LightDraw*> by_path[kLightPaths];
@@ -187,7 +194,7 @@ public:
                 std::vector<const LightDraw*> batched;
                 for (const LightDraw* l : by_path[int(LightPath::quad)])
                     if (l->shadow < 0) batched.push_back(l);
-                quads_.draw(f, batched, q, stats);
+                quads_.draw(f, batched, q, stats, quads_depth_now_);
                 if (batched.size() == by_path[int(LightPath::quad)].size()) return;
                 shadow_quads_.begin(f);
                 for (const LightDraw* l : by_path[int(LightPath::quad)])
@@ -283,6 +290,8 @@ private:
     LightCostModel model_;
     LightCostCalibration calib_;
     bool volume_ok_;   // the paths give P-buffer 0 the scene's depth (the hand-off)
+    bool quad_depth_;  // and the light shaders reject surfaces outside a light's depth span: so may GL
+    bool quads_depth_now_ = false;  // this frame's quads are drawn against the handed-off depth
     bool calibrate_;      // a CPU rasteriser: glFinish and the wall clock
     bool gpu_calibrate_;  // a GPU with ARB_timer_query: timestamps
     struct GpuTime {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "deferred/reconstruct.h"
 #include "deferred/screen_quad.h"
 #include "deferred/shadow_atlas.h"
 
@@ -263,7 +264,7 @@ void LightQuads::draw(const FrameDef& f, const LightDraw& l, LightQueries& q) {
 LightQuadBatch::LightQuadBatch(ProgramSet& programs, int batch) : progs_(programs, "light_batch"), batch_(batch) {}
 
 void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightQueries& q,
-                          FrameStats& stats) {
+                          FrameStats& stats, bool scene_depth) {
     if (lights.empty()) return;
     gl_state().set_camera(f.pixels());
     progs_.begin(f);
@@ -282,17 +283,28 @@ void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>
             for (size_t k = 0; k < n; ++k) {
                 const LightDraw& l = *mine[first + k];
                 arrays_.add(l.params);
-                // The rectangle as a quad (x, y, slot per corner); a full light's is the viewport.
+                // The rectangle as a quad (x, y, z, slot per corner); a full light's is the viewport.
                 const float x0 = float(l.full ? 0 : l.rect.x0), y0 = float(l.full ? 0 : l.rect.y0);
                 const float x1 = float(l.full ? f.width : l.rect.x1), y1 = float(l.full ? f.height : l.rect.y1);
-                const float slot = float(k);
-                const float quad[12] = {x0, y0, slot, x1, y0, slot, x1, y1, slot, x0, y1, slot};
-                verts_.insert(verts_.end(), quad, quad + 12);
+                // The pixel camera (glOrtho's near -1, far 1) puts eye z at window depth (1 - z) / 2;
+                // depth 1 (z = -1) lies on the far clip plane, which clipping keeps. A light without a
+                // span (directional, or any with the test off) at depth 1 passes everywhere.
+                const bool span = scene_depth && l.light->type != Light::Type::directional;
+                const float depth = span ? sphere_back_depth(l.params.pos.z, l.params.pos.w, f.zrange.x, f.zrange.y) : 1.0f;
+                const float z = 1.0f - 2.0f * depth, slot = float(k);
+                const float quad[16] = {x0, y0, z, slot, x1, y0, z, slot, x1, y1, z, slot, x0, y1, z, slot};
+                verts_.insert(verts_.end(), quad, quad + 16);
             }
-            gl_state().apply(light_pass_state(prog.id(), false));
+            RenderState s = light_pass_state(prog.id(), false);
+            if (scene_depth) {
+                s.depth_test = true;
+                s.depth_func = GL_GEQUAL;
+                s.depth_write = false;
+            }
+            gl_state().apply(s);
             arrays_.set(prog, LightArrays::kBatch);
-            glVertexPointer(2, GL_FLOAT, 3 * sizeof(float), verts_.data());
-            glTexCoordPointer(1, GL_FLOAT, 3 * sizeof(float), verts_.data() + 2);
+            glVertexPointer(3, GL_FLOAT, 4 * sizeof(float), verts_.data());
+            glTexCoordPointer(1, GL_FLOAT, 4 * sizeof(float), verts_.data() + 3);
             q.begin();
             glDrawArrays(GL_QUADS, 0, GLsizei(4 * n));
             q.end();

@@ -159,8 +159,13 @@ class LightQuadBatch {
 public:
     // batch: lights the arrays hold (ShaderConfig::tile_batch).
     LightQuadBatch(ProgramSet& programs, int batch);
-    // Every light of `lights` (of f), each one counted light pass per draw.
-    void draw(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightQueries& q, FrameStats& stats);
+    // Every light of `lights` (of f), each one counted light pass per draw. scene_depth: P-buffer 0
+    // holds the scene's depth (the depth hand-off) and the light shaders test a surface against the
+    // light's depth span (SkipOptions::light_depth_test): each quad is then drawn at its sphere's
+    // back (sphere_back_depth) with GL_GEQUAL, so the surfaces behind the light are rejected
+    // before the shader runs, not by it; the pixels lit are the same.
+    void draw(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightQueries& q, FrameStats& stats,
+              bool scene_depth = false);
 
 private:
     LightPrograms progs_;

@@ -1,6 +1,7 @@
 // Eye-space position from depth (§3.4.3, Listings 19 and 20).
 #include "deferred/reconstruct.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -34,6 +35,16 @@ float depth_from_eye_z(float z, float near_plane, float far_plane) {
     // cancellation between planes.x*z and planes.y.
     const double n = near_plane, f = far_plane, a = -(double)z;
     return (float)(f * (a - n) / (a * (f - n)));
+}
+
+float sphere_back_depth(float centre_z, float radius, float near_plane, float far_plane) {
+    check_planes(near_plane, far_plane, "sphere_back_depth");
+    const double back = -(double(centre_z) - double(radius));  // its distance along -z
+    const double a = back + std::abs(back) * 0x1p-9;
+    if (!(a > near_plane)) return 0.0f;  // the whole span in front of the near plane
+    if (!(a < far_plane)) return 1.0f;
+    const double n = near_plane, f = far_plane;
+    return (float)std::min(1.0, f * (a - n) / (a * (f - n)) + 0x1p-20);
 }
 
 glm::vec3 view_ray(float win_x, float win_y, int width, int height, float p00, float p11) {

@@ -20,6 +20,14 @@ float eye_z_from_depth(float depth, glm::vec2 planes);
 // 0 < near < far.
 float depth_from_eye_z(float z, float near_plane, float far_plane);
 
+// The window depth a light quad is drawn at so that GL's depth test (GL_GEQUAL against the scene's
+// depth) rejects only surfaces the light shader's depth test (LIGHT_DEPTH_TEST: pos.z below
+// centre_z - radius) would reject: the depth of the sphere's back, moved away from the camera by
+// 2^-9 of its distance (more than the reconstructed pos.z's error on every depth path, half-float
+// positions included) and by 2^-20 in window depth (the depth buffer's rounding of the quad's depth), clamped
+// to [0, 1]. 1 where the back lies at or beyond the far plane: then nothing is rejected.
+float sphere_back_depth(float centre_z, float radius, float near_plane, float far_plane);
+
 // The eye-space view ray (x, y, -1) through window position (win_x, win_y) in pixels, e.g. a
 // pixel centre (i + 0.5, j + 0.5): the clean form of Listing 19, which unprojects at window
 // z = 10, outside [0,1] (docs/errata.md #7). p00 = P[0][0], p11 = P[1][1] of a symmetric perspective.
