@@ -195,6 +195,56 @@ TEST(LightCost, TilesShareTheirPasses) {
     EXPECT_NEAR(s, 2 * 256 * (m.tile_pass_mpx_ms / 16 + m.tile_light_mpx_ms) * 1e-6, 1e-12);
 }
 
+// The quads against the scene's depth: on exactly where the frame costs less with it, the quads'
+// pixels at the cheaper rate plus a hand-off no volume pays for, computed here light by light.
+TEST(LightCost, QuadDepthWhereItPaysForTheHandoff) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const double screen = 800.0 * 600.0;
+    int on = 0, off = 0, free_handoff = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        LightCostModel m = default_light_costs(trial % 2 == 0);
+        const double scale = 0.2 + 2 * u(rng);
+        const int n = 1 + int(u(rng) * 40);
+        std::vector<LightFeature> ls(static_cast<size_t>(n));
+        LightPathPlan plan;
+        for (int i = 0; i < n; ++i) {
+            ls[size_t(i)].rect_px = std::pow(10.0, 2 + 3.5 * u(rng));
+            ls[size_t(i)].shadowed = u(rng) < 0.2;
+            const LightPath p = LightPath(int(u(rng) * 3));
+            plan.path.push_back(p);
+            ++plan.count[size_t(p)];
+        }
+        // The frame's quad pixels at each rate, light by light; the hand-off where no volume pays it.
+        double plain = 0, tested = 0;
+        for (int i = 0; i < n; ++i) {
+            if (plan.path[size_t(i)] != LightPath::quad) continue;
+            const double mpx = ls[size_t(i)].rect_px * 1e-6;
+            plain += scale * m.quad_mpx_ms * mpx;
+            tested += scale * (ls[size_t(i)].shadowed ? m.quad_mpx_ms : m.quad_depth_mpx_ms) * mpx;
+        }
+        const double handoff = plan.count[1] > 0 ? 0 : m.handoff_mpx_ms * screen * 1e-6;
+        const QuadDepthChoice c = choose_quad_depth(plan, ls, screen, m, scale);
+        const bool pays = tested + handoff < plain - 1e-12;
+        const bool tie = std::abs((tested + handoff) - plain) < 1e-9;
+        if (!tie) {
+            EXPECT_EQ(c.on, pays) << "trial " << trial;
+        }
+        if (c.on) {
+            ++on;
+            EXPECT_NEAR(plain - scale * c.raw_saving_ms, tested, 1e-9);
+            EXPECT_DOUBLE_EQ(c.handoff_ms, handoff);
+            free_handoff += plan.count[1] > 0;
+        } else {
+            ++off;
+            EXPECT_EQ(c.raw_saving_ms, 0);
+        }
+    }
+    EXPECT_GT(on, 100);  // both answers and the free hand-off were exercised
+    EXPECT_GT(off, 100);
+    EXPECT_GT(free_handoff, 50);
+}
+
 TEST(LightCost, CalibrationFollowsTheMeasuredRatio) {
     LightCostCalibration c;
     for (int i = 0; i < 20; ++i) c.add(LightPath::tiles, 3.0, 1.0);

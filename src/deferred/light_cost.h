@@ -28,6 +28,9 @@ const char* light_path_name(LightPath p);  // "quad", "volume", "tiles"
 // Milliseconds per draw and per million pixels.
 struct LightCostModel {
     double quad_draw_ms = 0, quad_mpx_ms = 0;      // per light; per Mpx of its scissor rectangle
+    // Per Mpx of its rectangle where the quad is drawn against the scene's depth (LightQuadBatch's
+    // scene_depth: surfaces behind the light rejected before its shader).
+    double quad_depth_mpx_ms = 0;
     double volume_draw_ms = 0, volume_mpx_ms = 0;  // per light; per Mpx of its scissor rectangle
     double handoff_mpx_ms = 0;                     // the depth hand-off, per Mpx of the screen (once)
     double spans_mpx_ms = 0;                       // the tiles' depth spans, per Mpx of the screen (once)
@@ -97,6 +100,17 @@ LightPathPlan choose_light_paths(const std::vector<LightFeature>& lights, const 
 LightPathPlan choose_light_paths(const LightPrices& raw, double screen_px, const LightCostModel& m,
                                  const std::array<double, kLightPaths>& scale,
                                  const std::array<bool, kLightPaths>& allowed, bool spans_paid);
+
+// Whether a plan's quads are drawn against the scene's depth: what that saves them (their pixels at
+// quad_depth_mpx_ms instead of quad_mpx_ms; shadowed quads are drawn one by one without it)
+// against the depth hand-off, which is paid already where the plan has volumes.
+struct QuadDepthChoice {
+    bool on = false;
+    double raw_saving_ms = 0;  // the quads' saving, unscaled (what their raw prices drop by)
+    double handoff_ms = 0;     // the hand-off this choice adds to the frame (0 where volumes pay it)
+};
+QuadDepthChoice choose_quad_depth(const LightPathPlan& plan, const std::vector<LightFeature>& lights,
+                                  double screen_px, const LightCostModel& m, double quad_scale);
 
 // Whether measuring the spans is worth it: the best plan without tiles costs more than
 // spans_worth times the spans.

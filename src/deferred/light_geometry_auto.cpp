@@ -36,7 +36,7 @@ public:
           model_(default_light_costs(c.caps.software_rasterizer)),
           calib_(start_scale()),
           volume_ok_(c.paths.accum_depth),
-          quad_depth_(c.paths.accum_depth && c.opts.skip.light_depth_test && !std::getenv("DSR_QUAD_NO_DEPTH")),
+          quad_depth_(c.paths.accum_depth && c.opts.skip.light_depth_test),
           calibrate_(c.caps.software_rasterizer),
           gpu_calibrate_(!c.caps.software_rasterizer && c.caps.timer_query && gl_entry.QueryCounter) {}
 
@@ -87,6 +87,11 @@ public:
             if (spans) plan_.predicted_ms[2] += model_.spans_mpx_ms * screen_px * 1e-6;
             if (spans && plan_.count[int(LightPath::tiles)] == 0) spans_rest_ = kSpansRest;
         }
+        // The quads against the scene's depth where what it saves them pays for the hand-off.
+        quad_depth_choice_ = quad_depth_ ? choose_quad_depth(plan_, features_, screen_px, model_, scale[0]) : QuadDepthChoice{};
+        quads_depth_now_ = quad_depth_choice_.on;
+        if (quads_depth_now_)
+            plan_.predicted_ms[0] += quad_depth_choice_.handoff_ms - quad_depth_choice_.raw_saving_ms * scale[0];
         planned_ = true;
         priced_ = true;
         // Every light by the tiles: the next frames keep that choice unpriced (keep_tiles).
@@ -101,8 +106,6 @@ public:
             kept_once_ms_ = plan_.predicted_ms[int(LightPath::tiles)] - kept_raw_ * scale[int(LightPath::tiles)];
         }
         report(stats, spans);
-        // The volumes test against the scene's depth; so do the quads, where they can (LightQuadBatch).
-        quads_depth_now_ = quad_depth_ && plan_.count[int(LightPath::quad)] > 0;
         return plan_.count[int(LightPath::volume)] > 0 || quads_depth_now_;
     }
 
@@ -168,6 +171,7 @@ public:
             raw[p] += raw_[i][size_t(p)];
         }
         if (!priced_) raw[int(LightPath::tiles)] = kept_raw_;  // a kept frame: the last priced frame's
+        if (quads_depth_now_) raw[int(LightPath::quad)] -= quad_depth_choice_.raw_saving_ms;
         if (!by_path[int(LightPath::tiles)].empty())
             timed(LightPath::tiles, raw, [&] {
                 FrameDef sub = f;  // the tiles' lights alone, with their bounds
@@ -291,7 +295,8 @@ private:
     LightCostCalibration calib_;
     bool volume_ok_;   // the paths give P-buffer 0 the scene's depth (the hand-off)
     bool quad_depth_;  // and the light shaders reject surfaces outside a light's depth span: so may GL
-    bool quads_depth_now_ = false;  // this frame's quads are drawn against the handed-off depth
+    QuadDepthChoice quad_depth_choice_;  // the frame's (choose_quad_depth)
+    bool quads_depth_now_ = false;       // this frame's quads are drawn against the handed-off depth
     bool calibrate_;      // a CPU rasteriser: glFinish and the wall clock
     bool gpu_calibrate_;  // a GPU with ARB_timer_query: timestamps
     struct GpuTime {
