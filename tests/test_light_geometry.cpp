@@ -345,6 +345,26 @@ TEST(LightGeometry, AutoIsQuadToTheByteWhateverItChooses) {
     for (int p = 0; p < 3; ++p) EXPECT_GT(used[p], 0) << "path " << p << " never taken";
 }
 
+// auto's quads drawn against the handed-off depth (LightQuadBatch scene_depth) light the pixels
+// quad lights on every depth path, the half-float positions included, and with the hand-off by a
+// gl_FragDepth pass where there is no framebuffer blit; the test is taken (the hand-off ran).
+TEST(LightGeometry, AutoQuadsAgainstTheDepthOnEveryDepthPath) {
+    const Scene s = bench_scene(default_scene(), LightSpec{256, LightSet::spread});
+    setenv("DSR_LIGHT_COST_SCALE", "1,1000,1000", 1);
+    for (DepthPath d : {DepthPath::texture, DepthPath::packed, DepthPath::position16, DepthPath::position32})
+        for (bool blit : {true, false}) {
+            const std::vector<std::string> off = blit ? std::vector<std::string>{} : std::vector<std::string>{"no-framebuffer-blit"};
+            const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad, d), off);
+            const RenderResult a = render_scene(s, kW, kH, with_geometry(LightGeometry::automatic, d), off);
+            const std::string name = std::string("auto_quads_depth_") + depth_path_name(d) + (blit ? "" : "_copy");
+            expect_same(name, a, quad);
+            EXPECT_EQ(a.stats.auto_lights[0], a.stats.lights_drawn) << name;
+            EXPECT_GT(a.stats.lights_drawn, 50) << name;
+            EXPECT_GT(a.stats.ms.depth_copy, 0) << name << ": no hand-off, so the quads were not drawn against the depth";
+        }
+    unsetenv("DSR_LIGHT_COST_SCALE");
+}
+
 // An all-tiles choice is kept unpriced for the next frames (light_geometry_auto.cpp keep_tiles):
 // over 10 frames of 1024-overlap with the tiles forced cheapest, every frame sends every light
 // through the tiles and gives quad's image to the byte, and the kept frames, whose planner culls
