@@ -361,7 +361,16 @@ TEST(LightGeometry, AutoQuadsAgainstTheDepthOnEveryDepthPath) {
             EXPECT_EQ(a.stats.auto_lights[0], a.stats.lights_drawn) << name;
             EXPECT_GT(a.stats.lights_drawn, 50) << name;
             EXPECT_GT(a.stats.ms.depth_copy, 0) << name << ": no hand-off, so the quads were not drawn against the depth";
+            EXPECT_TRUE(a.stats.auto_quad_depth) << name;
         }
+    // With the shaders' depth test off (--no-skip light-depth-test) a quad lights what its shader
+    // finds behind the light too, so GL must not reject it: no test, no hand-off, quad's image.
+    ShaderOptions q = with_geometry(LightGeometry::quad), a = with_geometry(LightGeometry::automatic);
+    q.skip.light_depth_test = a.skip.light_depth_test = false;
+    const RenderResult quad = render_scene(s, kW, kH, q), untested = render_scene(s, kW, kH, a);
+    expect_same("auto_quads_no_light_depth_test", untested, quad);
+    EXPECT_FALSE(untested.stats.auto_quad_depth);
+    EXPECT_EQ(untested.stats.ms.depth_copy, 0);
     unsetenv("DSR_LIGHT_COST_SCALE");
 }
 

@@ -199,6 +199,7 @@ public:
                 for (const LightDraw* l : by_path[int(LightPath::quad)])
                     if (l->shadow < 0) batched.push_back(l);
                 quads_.draw(f, batched, q, stats, quads_depth_now_);
+                stats.auto_quad_depth = quads_depth_now_ && !batched.empty();
                 if (batched.size() == by_path[int(LightPath::quad)].size()) return;
                 shadow_quads_.begin(f);
                 for (const LightDraw* l : by_path[int(LightPath::quad)])
