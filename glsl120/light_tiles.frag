@@ -41,7 +41,10 @@ void shade(int i, vec3 pos, vec3 v, vec3 normal, vec3 diffuse, vec4 specular, fl
 #ifdef POINT_LIGHTS
     type = 0.0;
 #endif
-#ifdef LIGHT_DEPTH_TEST
+    // The depth test only where the sphere test is off: a point outside the depth span is outside
+    // the sphere too (|dz| > r gives dot(d, d) >= r * r, rounding being monotonic), and the span's
+    // test before the sphere's took 1-2% more of the stage (llvmpipe, 32-large at 800x600).
+#if defined(LIGHT_DEPTH_TEST) && !defined(LIGHT_SPHERE_TEST)
     if (type < 1.5 && abs(pos.z - lp.z) > lp.w)
         return;
 #endif
