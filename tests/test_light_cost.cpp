@@ -247,6 +247,10 @@ TEST(LightCost, QuadDepthWhereItPaysForTheHandoff) {
 
 TEST(LightCost, CalibrationFollowsTheMeasuredRatio) {
     LightCostCalibration c;
+    c.add(LightPath::tiles, 3.0, 1.0);
+    EXPECT_EQ(c.scale()[2], 3.0);  // the first measurement replaces the guess
+    c.add(LightPath::tiles, 1.0, 1.0);
+    EXPECT_EQ(c.scale()[2], 2.0);  // later ones are averaged with it
     for (int i = 0; i < 20; ++i) c.add(LightPath::tiles, 3.0, 1.0);
     EXPECT_NEAR(c.scale()[2], 3.0, 1e-3);
     EXPECT_EQ(c.scale()[0], 1.0);  // paths not measured keep their scale
@@ -254,6 +258,14 @@ TEST(LightCost, CalibrationFollowsTheMeasuredRatio) {
     EXPECT_EQ(c.scale()[0], 10.0);  // clamped
     c.add(LightPath::volume, 1.0, 0.0);  // nothing predicted: no information
     EXPECT_EQ(c.scale()[1], 1.0);
+    c.add(LightPath::volume, 4.0, 1.0);  // ... so this is the first measurement
+    EXPECT_EQ(c.scale()[1], 4.0);
+    // Starting scales given (DSR_LIGHT_COST_SCALE) are not a guess: averaged with from the first.
+    LightCostCalibration given({1, 1000, 2});
+    given.add(LightPath::tiles, 4.0, 1.0);
+    EXPECT_EQ(given.scale()[2], 3.0);
+    given.add(LightPath::volume, 1.0, 1.0);
+    EXPECT_EQ(given.scale()[1], 10.0);  // 500.5, clamped
 }
 
 // DSR_LIGHT_COST_SCALE: three positive numbers or one clear error.

@@ -207,7 +207,9 @@ bool spans_worth_measuring(double best_without_tiles_ms, double screen_px, const
 void LightCostCalibration::add(LightPath p, double measured_ms, double predicted_raw_ms) {
     if (!(predicted_raw_ms > 0) || !(measured_ms >= 0)) return;
     double& s = scale_[int(p)];
-    s = std::clamp(0.5 * s + 0.5 * (measured_ms / predicted_raw_ms), 0.1, 10.0);
+    const double ratio = measured_ms / predicted_raw_ms;
+    s = std::clamp(measured_[int(p)] ? 0.5 * s + 0.5 * ratio : ratio, 0.1, 10.0);
+    measured_[int(p)] = true;
 }
 
 std::array<double, kLightPaths> parse_cost_scale(const std::string& text) {

@@ -34,7 +34,7 @@ public:
           volume_progs_(programs, "light_volume"),
           tiles_(make_tiles_pass(c, programs, width, height)),
           model_(default_light_costs(c.caps.software_rasterizer)),
-          calib_(start_scale()),
+          calib_(start_calibration()),
           volume_ok_(c.paths.accum_depth),
           quad_depth_(c.paths.accum_depth && c.opts.skip.light_depth_test),
           calibrate_(c.caps.software_rasterizer),
@@ -211,10 +211,11 @@ public:
     }
 
 private:
-    // Each path's scale before any frame: 1, or DSR_LIGHT_COST_SCALE's (docs/light_geometry.md).
-    static std::array<double, kLightPaths> start_scale() {
+    // Each path's scale before any frame: 1 (a guess its first measurement replaces), or
+    // DSR_LIGHT_COST_SCALE's (docs/light_geometry.md).
+    static LightCostCalibration start_calibration() {
         const char* e = std::getenv("DSR_LIGHT_COST_SCALE");
-        return e && *e ? parse_cost_scale(e) : std::array<double, kLightPaths>{1, 1, 1};
+        return e && *e ? LightCostCalibration(parse_cost_scale(e)) : LightCostCalibration();
     }
 
     // A path's passes, timed, and the path's scale updated: on a CPU rasteriser by glFinish and
@@ -229,8 +230,10 @@ private:
         // rasteriser's work overlapping the CPU's (1024 lights at 512x512: 0.7 ms a frame, timed every frame).
         // Counted per path, and only draws the model priced: with one counter for all, where two
         // paths took turns the second was never timed (256 lights at 512x512: the quad path's
-        // scale stayed 1 over 48 frames, its prediction 2.8x what it took).
-        const bool wall_now = calibrate_ && raw[int(p)] > 0 && timed_draws_[int(p)]++ % kTimedEvery == 0;
+        // scale stayed 1 over 48 frames, its prediction 2.8x what it took). The path's second
+        // priced draw is the first timed (its first compiles), so the scale is measured by the
+        // third frame instead of the sixth.
+        const bool wall_now = calibrate_ && raw[int(p)] > 0 && timed_draws_[int(p)]++ % kTimedEvery == 1;
         if (!drawn_before_[int(p)] || (!wall_now && !gpu_calibrate_)) {
             drawn_before_[int(p)] = true;
             draw();
