@@ -119,8 +119,8 @@ bool spans_worth_measuring(double best_without_tiles_ms, double screen_px, const
 // Each path's scale: measured / predicted ms of its passes, smoothed over frames (an exponential
 // average, clamped to [0.1, 10]). A path not drawn in a frame keeps its scale. The default start,
 // 1, is a guess: a path's first measurement replaces it (averaged with it, the 2.7x error the
-// constants had on 32-large's tiles on one llvmpipe would take four timed frames, on llvmpipe the
-// 14th frame, to fall under 1.2x).
+// constants had on 32-large's tiles on one llvmpipe would take four timed frames to fall under
+// 1.2x).
 class LightCostCalibration {
 public:
     LightCostCalibration() = default;
