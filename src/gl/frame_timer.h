@@ -1,6 +1,6 @@
 // Per-stage timing that does not serialise a GPU (docs/gpu.md measures both sources). Two sources:
 //   gpu-timer  GL_TIME_ELAPSED queries (ARB_timer_query) around each stage, read once after
-//              the frame: the GPU's own time per stage, one wait per frame.
+//              the frame: the GPU's own time per stage, one glFinish per frame.
 //   wall       glFinish after each stage and the wall clock: what a software rasteriser needs,
 //              since its timer queries do not measure rasterisation (llvmpipe read 0.05 ms by
 //              query for a 1920x1080 pass that took 10.2 ms by the wall clock).
