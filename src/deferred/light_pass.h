@@ -13,6 +13,7 @@
 #include "deferred/shader_table.h"
 #include "gl/program.h"
 #include "gl/state.h"
+#include "gl/stream_buffer.h"
 
 namespace dsr {
 
@@ -171,6 +172,7 @@ private:
     LightPrograms progs_;
     int batch_;
     std::vector<float> verts_;  // kept for its storage
+    std::vector<std::unique_ptr<StreamBuffer>> buffers_;  // one per batch of a frame, kept between frames
     LightArrays arrays_;
 };
 

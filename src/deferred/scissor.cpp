@@ -30,7 +30,7 @@ struct SlopeRange {
 
 // Range of u/w over the disk |(u,w) - (a,b)| <= r restricted to w >= n (n > 0). The caller has
 // checked the region is not empty (b + r >= n).
-SlopeRange slope_range(double a, double b, double r, double n) {
+[[gnu::always_inline]] inline SlopeRange slope_range(double a, double b, double r, double n) {
     SlopeRange s;
     const double d2 = a * a + b * b, r2 = r * r;
     if (d2 > r2) {
@@ -58,7 +58,7 @@ SlopeRange slope_range(double a, double b, double r, double n) {
 // NDC slope range -> pixel interval [lo, hi), rounded outward and clamped in double before any
 // cast, so huge slopes never reach an int conversion. A point at window x = wx lies in pixel
 // floor(wx), hence hi = floor(wx_max) + 1 (ceil would drop the pixel when wx_max is an integer).
-void to_pixels(const SlopeRange& s, double scale, int size, int& lo, int& hi) {
+[[gnu::always_inline]] inline void to_pixels(const SlopeRange& s, double scale, int size, int& lo, int& hi) {
     const double half = 0.5 * size;
     double wlo = (scale * s.lo + 1.0) * half;
     double whi = (scale * s.hi + 1.0) * half;
