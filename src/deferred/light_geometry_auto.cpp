@@ -164,6 +164,7 @@ public:
         planned_ = false;
         for (int p = 0; p < kLightPaths; ++p) stats.auto_lights[p] = plan_.count[size_t(p)];  // less a light drop() took
         std::vector<const LightDraw*> by_path[kLightPaths];
+        for (int p = 0; p < kLightPaths; ++p) by_path[p].reserve(size_t(plan_.count[size_t(p)]));
         double raw[kLightPaths] = {0, 0, 0};  // the model's ms for each path's lights, unscaled
         for (size_t i = 0; i < f.lights.size(); ++i) {
             const int p = int(plan_.path[i]);
@@ -196,6 +197,7 @@ public:
         if (!by_path[int(LightPath::quad)].empty())
             timed(LightPath::quad, raw, [&] {
                 std::vector<const LightDraw*> batched;
+                batched.reserve(by_path[int(LightPath::quad)].size());
                 for (const LightDraw* l : by_path[int(LightPath::quad)])
                     if (l->shadow < 0) batched.push_back(l);
                 quads_.draw(f, batched, q, stats, quads_depth_now_);

@@ -274,6 +274,7 @@ void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>
     int batches = 0;
     for (LightShader form : {LightShader::point_linear, LightShader::point_inverse, LightShader::any}) {
         std::vector<const LightDraw*> mine;
+        mine.reserve(lights.size());
         for (const LightDraw* l : lights)
             if (l->shader() == form) mine.push_back(l);
         Program& prog = progs_[form];
