@@ -394,10 +394,44 @@ TEST(LightGeometry, AutoKeepsAnAllTilesChoiceUnpriced) {
         EXPECT_TRUE(st.auto_spans) << "frame " << frame;
         if (pairs < 0) pairs = st.tile_light_pairs;
         EXPECT_EQ(st.tile_light_pairs, pairs) << "frame " << frame;
+        EXPECT_EQ(st.auto_kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
         RenderResult r;
         r.stats = st;
         r.image = read_pixels(kW, kH);
         expect_same("auto_kept_frame" + std::to_string(frame), r, quad);
+    }
+    unsetenv("DSR_LIGHT_COST_SCALE");
+}
+
+// The same for an all-quads choice: 256 spread lights with quad cheapest (the tiles' spans, where
+// the priced frame measures them, give the tiles no light at this size). The kept frames draw every
+// light by quad, against the scene's depth where the priced one chose it, measure no spans and give
+// quad's image to the byte; the ninth frame is priced again.
+TEST(LightGeometry, AutoKeepsAnAllQuadsChoiceUnpriced) {
+    const Scene s = bench_scene(default_scene(), LightSpec{256, LightSet::spread});
+    const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
+    setenv("DSR_LIGHT_COST_SCALE", "1,1000,1000", 1);
+    auto ctx = create_context(ContextDesc{"osmesa", kW, kH});
+    const Caps caps = probe_caps();
+    DeferredShader ds(caps, kW, kH, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
+    ds.set_scene(s);
+    bool depth = false;
+    for (int frame = 0; frame < 10; ++frame) {
+        const FrameStats st = ds.render(s, kW, kH);
+        ASSERT_TRUE(st.auto_geometry);
+        EXPECT_GT(st.lights_drawn, 50) << "frame " << frame;
+        EXPECT_EQ(st.auto_lights[0] + int(st.ambient_folded), st.lights_drawn) << "frame " << frame;
+        if (frame % 8) {
+            EXPECT_FALSE(st.auto_spans) << "frame " << frame << ": a kept quads frame measures no spans";
+        }
+        EXPECT_EQ(st.auto_kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
+        if (frame == 0) depth = st.auto_quad_depth;
+        EXPECT_EQ(st.auto_quad_depth, depth) << "frame " << frame << ": the priced frame's choice of the depth kept";
+        EXPECT_EQ(st.ms.depth_copy > 0, depth) << "frame " << frame << ": the hand-off where the quads test the depth";
+        RenderResult r;
+        r.stats = st;
+        r.image = read_pixels(kW, kH);
+        expect_same("auto_kept_quads_frame" + std::to_string(frame), r, quad);
     }
     unsetenv("DSR_LIGHT_COST_SCALE");
 }

@@ -58,6 +58,7 @@ struct FrameStats {
     double auto_predicted_ms = 0;
     bool auto_spans = false;
     bool auto_quad_depth = false;  // its batched quads drawn against the scene's depth (choose_quad_depth)
+    bool auto_kept = false;        // the frame kept the last priced frame's choice unpriced (one path for every light)
     double auto_scale[3] = {1, 1, 1};
     // The forward stage (docs/forward.md): markers drawn, transparent objects blended and their draws.
     int light_markers = 0;

@@ -12,6 +12,7 @@
 // batches cannot bind a map per light, alone through the light program's shadow form.
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 
 #include "deferred/light_cost.h"
 #include "deferred/light_geometry.h"
@@ -49,7 +50,7 @@ public:
     bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) override {
         collect_gpu_times();
         quads_depth_now_ = false;
-        if (keep_tiles(f, targets, stats)) return false;
+        if (const std::optional<bool> kept = keep_choice(f, targets, stats)) return *kept;
         const double screen_px = double(f.width) * double(f.height);
         features_.assign(f.lights.size(), LightFeature{});
         std::vector<ScissorRect> rects(f.lights.size());
@@ -94,43 +95,56 @@ public:
             plan_.predicted_ms[0] += quad_depth_choice_.handoff_ms - quad_depth_choice_.raw_saving_ms * scale[0];
         planned_ = true;
         priced_ = true;
-        // Every light by the tiles: the next frames keep that choice unpriced (keep_tiles).
-        all_tiles_ = !f.lights.empty() && plan_.count[int(LightPath::tiles)] == int(f.lights.size());
-        keep_rest_ = all_tiles_ ? kKeepTiles : 0;
+        stats.auto_kept = false;
+        // Every light by the tiles, or every light by quads: the next frames keep that choice
+        // unpriced (keep_choice).
+        kept_path_ = -1;
+        for (const LightPath p : {LightPath::quad, LightPath::tiles})
+            if (!f.lights.empty() && plan_.count[size_t(p)] == int(f.lights.size())) kept_path_ = int(p);
+        keep_rest_ = kept_path_ >= 0 ? kKeepFrames : 0;
         predicted_ms_ = plan_.predicted_ms[0] + plan_.predicted_ms[1] + plan_.predicted_ms[2];
-        if (all_tiles_) {
+        if (kept_path_ >= 0) {
             // What a kept frame is predicted and calibrated against: this frame's lights' unscaled
-            // tiles prices, and what the path adds once (its state, the spans).
+            // prices on the path, and what the path adds once (its state, the spans, the hand-off
+            // less what it saves the quads).
             kept_raw_ = 0;
-            for (const auto& r : raw_) kept_raw_ += r[int(LightPath::tiles)];
-            kept_once_ms_ = plan_.predicted_ms[int(LightPath::tiles)] - kept_raw_ * scale[int(LightPath::tiles)];
+            for (const auto& r : raw_) kept_raw_ += r[size_t(kept_path_)];
+            kept_once_ms_ = plan_.predicted_ms[size_t(kept_path_)] - kept_raw_ * scale[size_t(kept_path_)];
         }
         report(stats, spans);
         return plan_.count[int(LightPath::volume)] > 0 || quads_depth_now_;
     }
 
-    // Where the last priced frame sent every light through the tiles, the next kKeepTiles frames with
-    // as many lights keep that choice without pricing: the spans are measured (the tiles cull by
-    // them), and the planner culls each light's tiles itself, as the tiles geometry does. On a GPU
-    // the pricing runs after the spans' read-back while the GPU waits (1024-overlap at 1920x1080:
-    // auto's light stage 5.7 ms against the tiles geometry's 4.7 with the same passes). The image
-    // is the same whatever the choice; a kept frame is predicted and calibrated against the last
-    // priced frame's prices (the choice assumes its lights are much as they were).
-    bool keep_tiles(const FrameDef& f, RenderTargets& targets, FrameStats& stats) {
-        if (!all_tiles_ || keep_rest_ <= 0 || f.lights.size() != plan_.path.size() || !tiles_->depth_culling())
-            return false;
+    // Where the last priced frame sent every light through the tiles, or every light by quads, the
+    // next kKeepFrames frames with as many lights keep that choice without pricing; the tiles'
+    // spans are measured (the tiles cull by them), and the planner culls each light's tiles itself,
+    // as the tiles geometry does; the quads keep the last choice of the scene's depth. On a GPU the
+    // tiles' pricing runs after the spans' read-back while the GPU waits (1024-overlap at
+    // 1920x1080: auto's light stage 5.7 ms against the tiles geometry's 4.7 with the same passes);
+    // 4096 lights by quads cost the H200's CPU 0.06-0.10 ms a frame to price (docs/gpu.md). The
+    // image is the same whatever the choice; a kept frame is predicted and calibrated against the
+    // last priced frame's prices (the choice assumes its lights are much as they were). Volumes are
+    // not kept: a light the camera has since put past the far plane cannot take one.
+    // The hand-off's answer for a kept frame; nullopt where the frame is to be priced.
+    std::optional<bool> keep_choice(const FrameDef& f, RenderTargets& targets, FrameStats& stats) {
+        if (kept_path_ < 0 || keep_rest_ <= 0 || f.lights.size() != plan_.path.size()) return std::nullopt;
+        const LightPath p = LightPath(kept_path_);
+        if (p == LightPath::tiles && !tiles_->depth_culling()) return std::nullopt;
         --keep_rest_;
         features_.assign(f.lights.size(), LightFeature{});
         depth_ = TileDepth{};
-        cull_ = tiles_->tile_boxes(f, tiles_->depth_spans(f, targets, stats), depth_);
-        plan_.path.assign(f.lights.size(), LightPath::tiles);
-        plan_.count = {0, 0, int(f.lights.size())};
+        cull_ = p == LightPath::tiles ? tiles_->tile_boxes(f, tiles_->depth_spans(f, targets, stats), depth_) : nullptr;
+        plan_.path.assign(f.lights.size(), p);
+        plan_.count = {0, 0, 0};
+        plan_.count[size_t(p)] = int(f.lights.size());
         raw_.assign(f.lights.size(), {0, 0, 0});
+        quads_depth_now_ = p == LightPath::quad && quad_depth_choice_.on;
         planned_ = true;
         priced_ = false;
-        predicted_ms_ = kept_raw_ * calib_.scale()[int(LightPath::tiles)] + kept_once_ms_;
-        report(stats, true);
-        return true;
+        stats.auto_kept = true;
+        predicted_ms_ = kept_raw_ * calib_.scale()[size_t(p)] + kept_once_ms_;
+        report(stats, p == LightPath::tiles);
+        return quads_depth_now_;
     }
 
     // The plan's figures for --stats; the lights on each path are counted in draw(), after any drop().
@@ -171,7 +185,7 @@ public:
             by_path[p].push_back(&f.lights[i]);
             raw[p] += raw_[i][size_t(p)];
         }
-        if (!priced_) raw[int(LightPath::tiles)] = kept_raw_;  // a kept frame: the last priced frame's
+        if (!priced_) raw[kept_path_] = kept_raw_;  // a kept frame: the last priced frame's
         if (quads_depth_now_) raw[int(LightPath::quad)] -= quad_depth_choice_.raw_saving_ms;
         if (!by_path[int(LightPath::tiles)].empty())
             timed(LightPath::tiles, raw, [&] {
@@ -314,13 +328,13 @@ private:
     std::vector<GpuTime> pending_;
     bool drawn_before_[kLightPaths] = {false, false, false};
     static constexpr int kSpansRest = 8;
-    static constexpr int kKeepTiles = 7;  // frames an all-tiles choice is kept unpriced (one priced in 8)
-    bool all_tiles_ = false;  // the last priced frame sent every light through the tiles
+    static constexpr int kKeepFrames = 7;  // frames an all-tiles or all-quads choice is kept unpriced (one priced in 8)
+    int kept_path_ = -1;      // the path every light of the last priced frame took (tiles or quad), else -1
     int keep_rest_ = 0;       // frames left to keep it
     bool priced_ = false;     // this frame's lights were priced (features_ hold their kept tiles)
     double predicted_ms_ = 0; // the frame's prediction (a kept frame's from the last priced frame's prices)
-    double kept_raw_ = 0;     // the last all-tiles priced frame's unscaled tiles prices, summed
-    double kept_once_ms_ = 0; // and what its tiles path added once (state, spans)
+    double kept_raw_ = 0;     // the last kept choice's priced frame: its unscaled prices on that path, summed
+    double kept_once_ms_ = 0; // and what the path added once (state, spans, hand-off less the quads' saving)
     static constexpr int kTimedEvery = 4;
     unsigned timed_draws_[kLightPaths] = {0, 0, 0};  // priced draws of each path so far (one in kTimedEvery timed)
     int spans_rest_ = 0;  // frames left before the spans are measured again
