@@ -102,6 +102,7 @@ public:
         for (const LightPath p : {LightPath::quad, LightPath::tiles})
             if (!f.lights.empty() && plan_.count[size_t(p)] == int(f.lights.size())) kept_path_ = int(p);
         keep_rest_ = kept_path_ >= 0 ? kKeepFrames : 0;
+        priced_lights_ = f.lights.size();
         predicted_ms_ = plan_.predicted_ms[0] + plan_.predicted_ms[1] + plan_.predicted_ms[2];
         if (kept_path_ >= 0) {
             // What a kept frame is predicted and calibrated against: this frame's lights' unscaled
@@ -127,7 +128,7 @@ public:
     // not kept: a light the camera has since put past the far plane cannot take one.
     // The hand-off's answer for a kept frame; nullopt where the frame is to be priced.
     std::optional<bool> keep_choice(const FrameDef& f, RenderTargets& targets, FrameStats& stats) {
-        if (kept_path_ < 0 || keep_rest_ <= 0 || f.lights.size() != plan_.path.size()) return std::nullopt;
+        if (kept_path_ < 0 || keep_rest_ <= 0 || f.lights.size() != priced_lights_) return std::nullopt;
         const LightPath p = LightPath(kept_path_);
         if (p == LightPath::tiles && !tiles_->depth_culling()) return std::nullopt;
         --keep_rest_;
@@ -331,6 +332,7 @@ private:
     static constexpr int kKeepFrames = 7;  // frames an all-tiles or all-quads choice is kept unpriced (one priced in 8)
     int kept_path_ = -1;      // the path every light of the last priced frame took (tiles or quad), else -1
     int keep_rest_ = 0;       // frames left to keep it
+    size_t priced_lights_ = 0;  // the lights of the frame that chose it (before any drop())
     bool priced_ = false;     // this frame's lights were priced (features_ hold their kept tiles)
     double predicted_ms_ = 0; // the frame's prediction (a kept frame's from the last priced frame's prices)
     double kept_raw_ = 0;     // the last kept choice's priced frame: its unscaled prices on that path, summed
