@@ -374,33 +374,42 @@ TEST(LightGeometry, AutoQuadsAgainstTheDepthOnEveryDepthPath) {
     unsetenv("DSR_LIGHT_COST_SCALE");
 }
 
-// An all-tiles choice is kept unpriced for the next frames (light_geometry_auto.cpp keep_tiles):
-// over 10 frames of 1024-overlap with the tiles forced cheapest, every frame sends every light
-// through the tiles and gives quad's image to the byte, and the kept frames, whose planner culls
-// by itself, shade the same tile-light pairs as the priced one.
-TEST(LightGeometry, AutoKeepsAnAllTilesChoiceUnpriced) {
-    const Scene s = bench_scene(default_scene(), LightSpec{1024, LightSet::overlap});
+// Ten frames of auto on `s` with the paths' cost scales `scales` (DSR_LIGHT_COST_SCALE): each
+// frame's stats handed to check(frame, stats), and its image compared with quad's to the byte.
+template <class Check>
+void auto_frames_against_quad(const Scene& s, const char* scales, const std::string& name, Check&& check) {
     const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
-    setenv("DSR_LIGHT_COST_SCALE", "1000,1000,1", 1);
+    setenv("DSR_LIGHT_COST_SCALE", scales, 1);
     auto ctx = create_context(ContextDesc{"osmesa", kW, kH});
     const Caps caps = probe_caps();
     DeferredShader ds(caps, kW, kH, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
     ds.set_scene(s);
-    long long pairs = -1;
     for (int frame = 0; frame < 10; ++frame) {
         const FrameStats st = ds.render(s, kW, kH);
         ASSERT_TRUE(st.auto_geometry);
-        EXPECT_EQ(st.auto_lights[2] + int(st.ambient_folded), st.lights_drawn) << "frame " << frame;
-        EXPECT_TRUE(st.auto_spans) << "frame " << frame;
-        if (pairs < 0) pairs = st.tile_light_pairs;
-        EXPECT_EQ(st.tile_light_pairs, pairs) << "frame " << frame;
-        EXPECT_EQ(st.auto_kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
+        check(frame, st);
         RenderResult r;
         r.stats = st;
         r.image = read_pixels(kW, kH);
-        expect_same("auto_kept_frame" + std::to_string(frame), r, quad);
+        expect_same(name + std::to_string(frame), r, quad);
     }
     unsetenv("DSR_LIGHT_COST_SCALE");
+}
+
+// An all-tiles choice is kept unpriced for the next frames (light_geometry_auto.cpp keep_choice):
+// over 10 frames of 1024-overlap with the tiles forced cheapest, every frame sends every light
+// through the tiles and gives quad's image to the byte, and the kept frames (one in 8 is priced),
+// whose planner culls by itself, shade the same tile-light pairs as the priced one.
+TEST(LightGeometry, AutoKeepsAnAllTilesChoiceUnpriced) {
+    long long pairs = -1;
+    auto_frames_against_quad(bench_scene(default_scene(), LightSpec{1024, LightSet::overlap}), "1000,1000,1",
+                             "auto_kept_frame", [&](int frame, const FrameStats& st) {
+                                 EXPECT_EQ(st.auto_lights[2] + int(st.ambient_folded), st.lights_drawn) << "frame " << frame;
+                                 EXPECT_TRUE(st.auto_spans) << "frame " << frame;
+                                 if (pairs < 0) pairs = st.tile_light_pairs;
+                                 EXPECT_EQ(st.tile_light_pairs, pairs) << "frame " << frame;
+                                 EXPECT_EQ(st.auto_kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
+                             });
 }
 
 // The same for an all-quads choice: 256 spread lights with quad cheapest (the tiles' spans, where
@@ -408,32 +417,20 @@ TEST(LightGeometry, AutoKeepsAnAllTilesChoiceUnpriced) {
 // light by quad, against the scene's depth where the priced one chose it, measure no spans and give
 // quad's image to the byte; the ninth frame is priced again.
 TEST(LightGeometry, AutoKeepsAnAllQuadsChoiceUnpriced) {
-    const Scene s = bench_scene(default_scene(), LightSpec{256, LightSet::spread});
-    const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
-    setenv("DSR_LIGHT_COST_SCALE", "1,1000,1000", 1);
-    auto ctx = create_context(ContextDesc{"osmesa", kW, kH});
-    const Caps caps = probe_caps();
-    DeferredShader ds(caps, kW, kH, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
-    ds.set_scene(s);
     bool depth = false;
-    for (int frame = 0; frame < 10; ++frame) {
-        const FrameStats st = ds.render(s, kW, kH);
-        ASSERT_TRUE(st.auto_geometry);
-        EXPECT_GT(st.lights_drawn, 50) << "frame " << frame;
-        EXPECT_EQ(st.auto_lights[0] + int(st.ambient_folded), st.lights_drawn) << "frame " << frame;
-        if (frame % 8) {
-            EXPECT_FALSE(st.auto_spans) << "frame " << frame << ": a kept quads frame measures no spans";
-        }
-        EXPECT_EQ(st.auto_kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
-        if (frame == 0) depth = st.auto_quad_depth;
-        EXPECT_EQ(st.auto_quad_depth, depth) << "frame " << frame << ": the priced frame's choice of the depth kept";
-        EXPECT_EQ(st.ms.depth_copy > 0, depth) << "frame " << frame << ": the hand-off where the quads test the depth";
-        RenderResult r;
-        r.stats = st;
-        r.image = read_pixels(kW, kH);
-        expect_same("auto_kept_quads_frame" + std::to_string(frame), r, quad);
-    }
-    unsetenv("DSR_LIGHT_COST_SCALE");
+    auto_frames_against_quad(
+        bench_scene(default_scene(), LightSpec{256, LightSet::spread}), "1,1000,1000", "auto_kept_quads_frame",
+        [&](int frame, const FrameStats& st) {
+            EXPECT_GT(st.lights_drawn, 50) << "frame " << frame;
+            EXPECT_EQ(st.auto_lights[0] + int(st.ambient_folded), st.lights_drawn) << "frame " << frame;
+            if (frame % 8) {
+                EXPECT_FALSE(st.auto_spans) << "frame " << frame << ": a kept quads frame measures no spans";
+            }
+            EXPECT_EQ(st.auto_kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
+            if (frame == 0) depth = st.auto_quad_depth;
+            EXPECT_EQ(st.auto_quad_depth, depth) << "frame " << frame << ": the priced frame's choice of the depth kept";
+            EXPECT_EQ(st.ms.depth_copy > 0, depth) << "frame " << frame << ": the hand-off where the quads test the depth";
+        });
 }
 
 // The calibration (light_cost.h LightCostCalibration) reaches every path a frame draws and the
