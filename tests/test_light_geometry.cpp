@@ -2,6 +2,8 @@
 // G-buffer, while what enters the light shader falls from quad to stencil; the camera inside a
 // light volume is still lit; every forced fallback renders the same image; both depth paths work
 // with every geometry. Images are small (128x128) to keep `make test` short.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "analysis/bench_scenes.h"
@@ -431,6 +433,56 @@ TEST(LightGeometry, AutoKeepsAnAllQuadsChoiceUnpriced) {
             EXPECT_EQ(st.auto_quad_depth, depth) << "frame " << frame << ": the priced frame's choice of the depth kept";
             EXPECT_EQ(st.ms.depth_copy > 0, depth) << "frame " << frame << ": the hand-off where the quads test the depth";
         });
+}
+
+// A kept choice with the camera moving: the frames keep the last priced frame's path for lights
+// that are no longer the ones it priced (their rectangles move; a frame with as many visible
+// lights keeps the choice). Ten frames, the camera turned 0.02 rad about the target each frame,
+// each frame's image against quad's at the same camera, to the byte; with quads kept (256 spread
+// lights) and with the tiles kept (1024-overlap). A kept tiles frame that culled by the priced
+// frame's depth spans instead of its own differed by 12 LSB at two pixels here.
+TEST(LightGeometry, AutoKeptChoicesFollowAMovingCamera) {
+    struct Case {
+        LightSpec lights;
+        const char* scales;
+        int path;
+    };
+    for (const Case& c : {Case{{256, LightSet::spread}, "1,1000,1000", 0}, Case{{1024, LightSet::overlap}, "1000,1000,1", 2}}) {
+        const std::string name = std::string("moving_") + (c.path == 0 ? "quads" : "tiles");
+        const Scene base = bench_scene(default_scene(), c.lights);
+        std::vector<Scene> frames;
+        std::vector<RenderResult> quad;
+        for (int frame = 0; frame < 10; ++frame) {
+            Scene s = base;
+            const glm::vec3 arm = s.camera.pos - s.camera.target;
+            const float a = 0.02f * float(frame);  // radians about the vertical through the target
+            s.camera.pos = s.camera.target + glm::vec3(arm.x * std::cos(a) - arm.z * std::sin(a), arm.y,
+                                                       arm.x * std::sin(a) + arm.z * std::cos(a));
+            frames.push_back(s);
+            quad.push_back(render_scene(s, kW, kH, with_geometry(LightGeometry::quad)));
+        }
+        ASSERT_NE(quad.front().image.rgba, quad.back().image.rgba) << name << ": the camera did not move the image";
+        setenv("DSR_LIGHT_COST_SCALE", c.scales, 1);
+        auto ctx = create_context(ContextDesc{"osmesa", kW, kH});
+        const Caps caps = probe_caps();
+        DeferredShader ds(caps, kW, kH, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
+        ds.set_scene(base);
+        int kept = 0;
+        for (int frame = 0; frame < 10; ++frame) {
+            const FrameStats st = ds.render(frames[size_t(frame)], kW, kH);
+            ASSERT_TRUE(st.auto_geometry);
+            kept += st.auto_kept;
+            if (st.auto_kept) {
+                EXPECT_EQ(st.auto_lights[c.path] + int(st.ambient_folded), st.lights_drawn) << name << " frame " << frame;
+            }
+            RenderResult r;
+            r.stats = st;
+            r.image = read_pixels(kW, kH);
+            expect_same(name + std::to_string(frame), r, quad[size_t(frame)]);
+        }
+        EXPECT_GE(kept, 3) << name << ": too few kept frames for the test to mean anything";
+        unsetenv("DSR_LIGHT_COST_SCALE");
+    }
 }
 
 // The calibration (light_cost.h LightCostCalibration) reaches every path a frame draws and the
