@@ -172,7 +172,7 @@ private:
     LightPrograms progs_;
     int batch_;
     std::vector<float> verts_;  // kept for its storage
-    std::vector<std::unique_ptr<StreamBuffer>> buffers_;  // one per batch of a frame, kept between frames
+    StreamBuffers buffers_;  // one per batch of a frame
     LightArrays arrays_;
 };
 

@@ -16,4 +16,9 @@ void StreamBuffer::upload(const void* data, size_t bytes) {
 
 void StreamBuffer::unbind() { glBindBuffer(GL_ARRAY_BUFFER, 0); }
 
+void StreamBuffers::upload_next(const void* data, size_t bytes) {
+    if (next_ == buffers_.size()) buffers_.push_back(std::make_unique<StreamBuffer>());
+    buffers_[next_++]->upload(data, bytes);
+}
+
 }  // namespace dsr
