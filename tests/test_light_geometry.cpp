@@ -376,26 +376,37 @@ TEST(LightGeometry, AutoQuadsAgainstTheDepthOnEveryDepthPath) {
     unsetenv("DSR_LIGHT_COST_SCALE");
 }
 
-// Ten frames of auto on `s` with the paths' cost scales `scales` (DSR_LIGHT_COST_SCALE): each
-// frame's stats handed to check(frame, stats), and its image compared with quad's to the byte.
+// Frames of auto, one per scene of `frames`, with the paths' cost scales `scales`
+// (DSR_LIGHT_COST_SCALE): each frame's stats handed to check(frame, stats), and its image compared
+// with quad's at the same camera to the byte. Returns quad's images (one per frame).
 template <class Check>
-void auto_frames_against_quad(const Scene& s, const char* scales, const std::string& name, Check&& check) {
-    const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
+std::vector<Image> auto_frames_against_quad(const std::vector<Scene>& frames, const char* scales, const std::string& name,
+                                            Check&& check) {
+    std::vector<RenderResult> quad;  // quad's, rendered again only where the camera moved
+    for (size_t i = 0; i < frames.size(); ++i) {
+        const Camera& c = frames[i].camera;
+        const bool same = i > 0 && c.pos == frames[i - 1].camera.pos && c.target == frames[i - 1].camera.target &&
+                          c.up == frames[i - 1].camera.up;
+        quad.push_back(same ? quad.back() : render_scene(frames[i], kW, kH, with_geometry(LightGeometry::quad)));
+    }
     setenv("DSR_LIGHT_COST_SCALE", scales, 1);
     auto ctx = create_context(ContextDesc{"osmesa", kW, kH});
     const Caps caps = probe_caps();
     DeferredShader ds(caps, kW, kH, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
-    ds.set_scene(s);
-    for (int frame = 0; frame < 10; ++frame) {
-        const FrameStats st = ds.render(s, kW, kH);
-        ASSERT_TRUE(st.auto_geometry);
-        check(frame, st);
+    ds.set_scene(frames.front());
+    std::vector<Image> images;
+    for (size_t frame = 0; frame < frames.size(); ++frame) {
+        const FrameStats st = ds.render(frames[frame], kW, kH);
+        EXPECT_TRUE(st.auto_geometry) << name << " frame " << frame;
+        check(int(frame), st);
         RenderResult r;
         r.stats = st;
         r.image = read_pixels(kW, kH);
-        expect_same(name + std::to_string(frame), r, quad);
+        expect_same(name + std::to_string(frame), r, quad[frame]);
+        images.push_back(quad[frame].image);
     }
     unsetenv("DSR_LIGHT_COST_SCALE");
+    return images;
 }
 
 // An all-tiles choice is kept unpriced for the next frames (light_geometry_auto.cpp keep_choice):
@@ -404,14 +415,14 @@ void auto_frames_against_quad(const Scene& s, const char* scales, const std::str
 // whose planner culls by itself, shade the same tile-light pairs as the priced one.
 TEST(LightGeometry, AutoKeepsAnAllTilesChoiceUnpriced) {
     long long pairs = -1;
-    auto_frames_against_quad(bench_scene(default_scene(), LightSpec{1024, LightSet::overlap}), "1000,1000,1",
-                             "auto_kept_frame", [&](int frame, const FrameStats& st) {
-                                 EXPECT_EQ(st.auto_lights[2] + int(st.ambient_folded), st.lights_drawn) << "frame " << frame;
-                                 EXPECT_TRUE(st.auto_spans) << "frame " << frame;
-                                 if (pairs < 0) pairs = st.tile_light_pairs;
-                                 EXPECT_EQ(st.tile_light_pairs, pairs) << "frame " << frame;
-                                 EXPECT_EQ(st.auto_kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
-                             });
+    const std::vector<Scene> frames(10, bench_scene(default_scene(), LightSpec{1024, LightSet::overlap}));
+    auto_frames_against_quad(frames, "1000,1000,1", "auto_kept_frame", [&](int frame, const FrameStats& st) {
+        EXPECT_EQ(st.auto_lights[2] + int(st.ambient_folded), st.lights_drawn) << "frame " << frame;
+        EXPECT_TRUE(st.auto_spans) << "frame " << frame;
+        if (pairs < 0) pairs = st.tile_light_pairs;
+        EXPECT_EQ(st.tile_light_pairs, pairs) << "frame " << frame;
+        EXPECT_EQ(st.auto_kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
+    });
 }
 
 // The same for an all-quads choice: 256 spread lights with quad cheapest (the tiles' spans, where
@@ -420,19 +431,18 @@ TEST(LightGeometry, AutoKeepsAnAllTilesChoiceUnpriced) {
 // quad's image to the byte; the ninth frame is priced again.
 TEST(LightGeometry, AutoKeepsAnAllQuadsChoiceUnpriced) {
     bool depth = false;
-    auto_frames_against_quad(
-        bench_scene(default_scene(), LightSpec{256, LightSet::spread}), "1,1000,1000", "auto_kept_quads_frame",
-        [&](int frame, const FrameStats& st) {
-            EXPECT_GT(st.lights_drawn, 50) << "frame " << frame;
-            EXPECT_EQ(st.auto_lights[0] + int(st.ambient_folded), st.lights_drawn) << "frame " << frame;
-            if (frame % 8) {
-                EXPECT_FALSE(st.auto_spans) << "frame " << frame << ": a kept quads frame measures no spans";
-            }
-            EXPECT_EQ(st.auto_kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
-            if (frame == 0) depth = st.auto_quad_depth;
-            EXPECT_EQ(st.auto_quad_depth, depth) << "frame " << frame << ": the priced frame's choice of the depth kept";
-            EXPECT_EQ(st.ms.depth_copy > 0, depth) << "frame " << frame << ": the hand-off where the quads test the depth";
-        });
+    const std::vector<Scene> frames(10, bench_scene(default_scene(), LightSpec{256, LightSet::spread}));
+    auto_frames_against_quad(frames, "1,1000,1000", "auto_kept_quads_frame", [&](int frame, const FrameStats& st) {
+        EXPECT_GT(st.lights_drawn, 50) << "frame " << frame;
+        EXPECT_EQ(st.auto_lights[0] + int(st.ambient_folded), st.lights_drawn) << "frame " << frame;
+        if (frame % 8) {
+            EXPECT_FALSE(st.auto_spans) << "frame " << frame << ": a kept quads frame measures no spans";
+        }
+        EXPECT_EQ(st.auto_kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
+        if (frame == 0) depth = st.auto_quad_depth;
+        EXPECT_EQ(st.auto_quad_depth, depth) << "frame " << frame << ": the priced frame's choice of the depth kept";
+        EXPECT_EQ(st.ms.depth_copy > 0, depth) << "frame " << frame << ": the hand-off where the quads test the depth";
+    });
 }
 
 // A kept choice with the camera moving: the frames keep the last priced frame's path for lights
@@ -451,7 +461,6 @@ TEST(LightGeometry, AutoKeptChoicesFollowAMovingCamera) {
         const std::string name = std::string("moving_") + (c.path == 0 ? "quads" : "tiles");
         const Scene base = bench_scene(default_scene(), c.lights);
         std::vector<Scene> frames;
-        std::vector<RenderResult> quad;
         for (int frame = 0; frame < 10; ++frame) {
             Scene s = base;
             const glm::vec3 arm = s.camera.pos - s.camera.target;
@@ -459,29 +468,16 @@ TEST(LightGeometry, AutoKeptChoicesFollowAMovingCamera) {
             s.camera.pos = s.camera.target + glm::vec3(arm.x * std::cos(a) - arm.z * std::sin(a), arm.y,
                                                        arm.x * std::sin(a) + arm.z * std::cos(a));
             frames.push_back(s);
-            quad.push_back(render_scene(s, kW, kH, with_geometry(LightGeometry::quad)));
         }
-        ASSERT_NE(quad.front().image.rgba, quad.back().image.rgba) << name << ": the camera did not move the image";
-        setenv("DSR_LIGHT_COST_SCALE", c.scales, 1);
-        auto ctx = create_context(ContextDesc{"osmesa", kW, kH});
-        const Caps caps = probe_caps();
-        DeferredShader ds(caps, kW, kH, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
-        ds.set_scene(base);
         int kept = 0;
-        for (int frame = 0; frame < 10; ++frame) {
-            const FrameStats st = ds.render(frames[size_t(frame)], kW, kH);
-            ASSERT_TRUE(st.auto_geometry);
+        const std::vector<Image> quad = auto_frames_against_quad(frames, c.scales, name, [&](int frame, const FrameStats& st) {
             kept += st.auto_kept;
             if (st.auto_kept) {
                 EXPECT_EQ(st.auto_lights[c.path] + int(st.ambient_folded), st.lights_drawn) << name << " frame " << frame;
             }
-            RenderResult r;
-            r.stats = st;
-            r.image = read_pixels(kW, kH);
-            expect_same(name + std::to_string(frame), r, quad[size_t(frame)]);
-        }
+        });
+        EXPECT_NE(quad.front().rgba, quad.back().rgba) << name << ": the camera did not move the image";
         EXPECT_GE(kept, 3) << name << ": too few kept frames for the test to mean anything";
-        unsetenv("DSR_LIGHT_COST_SCALE");
     }
 }
 
