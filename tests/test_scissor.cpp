@@ -323,3 +323,72 @@ TEST(Scissor, Listing16Defects) {
 }
 
 }  // namespace
+
+// light_outline against the same brute force: the projection of every visible sample point (one
+// that lands on the screen) lies inside the octagon, and at least half a pixel inside each cut
+// edge, where a pixel centre on the edge could go either way; the octagon lies within the
+// rectangle, is convex and counter-clockwise, and saves about a fifth of a sphere wholly on screen.
+TEST(Scissor, OutlineHoldsEveryVisibleSpherePoint) {
+    Sampler g(20261205u);
+    const int counts[kFamilies] = {3000, 3000, 2000, 300, 300, 800, 800, 1000};
+    long long checked = 0;
+    int misses = 0, cut_cases = 0, on_screen = 0;
+    double saved_sum = 0;
+    for (int f = 0; f < kFamilies; ++f) {
+        for (int i = 0; i < counts[f]; ++i) {
+            const Camera cam = g.camera();
+            const Sphere s = make_sphere(g, (Family)f, cam);
+            const ScissorRect rc = scissor(s, cam);
+            const dsr::LightOutline o =
+                dsr::light_outline(s.c, s.r, cam.p00, cam.p11, cam.near_plane, cam.w, cam.h, rc);
+            if (rc.empty()) {
+                EXPECT_EQ(o.count, 0);
+                continue;
+            }
+            ASSERT_GE(o.count, 3);
+            ASSERT_LE(o.count, 8);
+            double area = 0;
+            for (int k = 0; k < o.count; ++k) {
+                const glm::dvec2 a(o.v[size_t(k)]), b(o.v[size_t((k + 1) % o.count)]), c(o.v[size_t((k + 2) % o.count)]);
+                area += 0.5 * (a.x * b.y - b.x * a.y);
+                EXPECT_GE((b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x), -1e-6) << "not convex: " << describe(s, cam, rc);
+                EXPECT_TRUE(a.x >= rc.x0 && a.x <= rc.x1 && a.y >= rc.y0 && a.y <= rc.y1) << describe(s, cam, rc);
+            }
+            EXPECT_LE(area, double(rc.area()) * (1 + 1e-6));
+            cut_cases += o.count > 4;
+            const double n = cam.near_plane, c = -(double)s.c.z;
+            const Brute b = g.run(s, cam, rc);
+            if (c - s.r > n && b.points && b.minx >= 1 && b.maxx <= cam.w - 1 && b.miny >= 1 && b.maxy <= cam.h - 1) {
+                ++on_screen;
+                saved_sum += 1.0 - area / double(rc.area());
+            }
+            for (const glm::dvec3& p : dsr::sphere_samples(glm::dvec3(s.c), s.r, n, kSamples, g.rng())) {
+                if (p.z > -n) continue;
+                const double wx = (cam.p00 * p.x / -p.z + 1.0) * 0.5 * cam.w;
+                const double wy = (cam.p11 * p.y / -p.z + 1.0) * 0.5 * cam.h;
+                if (wx < 0 || wx >= cam.w || wy < 0 || wy >= cam.h) continue;
+                ++checked;
+                for (int k = 0; k < o.count; ++k) {
+                    const glm::dvec2 a(o.v[size_t(k)]), e = glm::dvec2(o.v[size_t((k + 1) % o.count)]) - a;
+                    const double len = glm::length(e);
+                    if (len == 0) continue;
+                    const double inside = (e.x * (wy - a.y) - e.y * (wx - a.x)) / len;  // distance, inside > 0
+                    const bool cut = e.x != 0 && e.y != 0;
+                    if (inside < (cut ? 0.5 : -1e-6)) {
+                        if (misses++ < 3)
+                            ADD_FAILURE() << "window point (" << wx << ", " << wy << ") " << inside << " px inside edge "
+                                          << k << " of " << o.count << ": " << describe(s, cam, rc);
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_EQ(misses, 0);
+    EXPECT_GT(cut_cases, 3000);  // the cuts really ran
+    ASSERT_GT(on_screen, 1000);
+    const double saved = saved_sum / on_screen;
+    std::printf("[ outline  ] %lld visible points checked; %d octagons; spheres on screen: %d, mean area saved %.3f\n",
+                checked, cut_cases, on_screen, saved);
+    EXPECT_GT(saved, 0.12);
+}

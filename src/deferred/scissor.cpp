@@ -103,6 +103,78 @@ ScissorRect light_scissor(glm::vec3 light_eye, float radius, float p00, float p1
     return rect;
 }
 
+namespace {
+
+// One Sutherland-Hodgman step: the part of the convex polygon p[0..n) where
+// side * (x + sign * y - bound) >= 0 (at most one vertex more).
+int clip_diagonal(std::array<glm::dvec2, 8>& p, int n, double sign, double side, double bound) {
+    std::array<glm::dvec2, 8> out{};
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+        const glm::dvec2 a = p[size_t(i)], b = p[size_t((i + 1) % n)];
+        const double fa = side * (a.x + sign * a.y - bound), fb = side * (b.x + sign * b.y - bound);
+        if (fa >= 0 && m < 8) out[size_t(m++)] = a;
+        if ((fa >= 0) != (fb >= 0) && m < 8) out[size_t(m++)] = a + (b - a) * (fa / (fa - fb));
+    }
+    p = out;
+    return m;
+}
+
+}  // namespace
+
+LightOutline light_outline(glm::vec3 light_eye, float radius, float p00, float p11, float near_plane, int width,
+                           int height, const ScissorRect& rect) {
+    LightOutline o;
+    if (rect.empty()) return o;
+    const double x0 = rect.x0, y0 = rect.y0, x1 = rect.x1, y1 = rect.y1;
+    const auto rectangle = [&] {
+        o.count = 4;
+        o.v[0] = glm::vec2(x0, y0), o.v[1] = glm::vec2(x1, y0), o.v[2] = glm::vec2(x1, y1), o.v[3] = glm::vec2(x0, y1);
+        return o;
+    };
+    const double lx = light_eye.x, ly = light_eye.y, b = -light_eye.z, r = radius, n = near_plane;
+    if (lx * lx + ly * ly + b * b <= r * r || b + r < n) return rectangle();
+    // Window x + y = ax (x/w) + ay (y/w) + (width + height) / 2 with w = -z: g times the slope of
+    // e . (x, y) over w, e = (ax, ay) / g, whose range over the sphere is its range over the disk
+    // the sphere projects to in the (e . (x, y), w) plane: light_scissor's problem on a turned
+    // axis. x - y likewise with (ax, -ay).
+    const double ax = 0.5 * double(p00) * width, ay = 0.5 * double(p11) * height, g = std::sqrt(ax * ax + ay * ay);
+    const double ex = ax / g, ey = ay / g;
+    const SlopeRange sum = slope_range(ex * lx + ey * ly, b, r, n);
+    const SlopeRange diff = slope_range(ex * lx - ey * ly, b, r, n);
+    if (!(sum.lo <= sum.hi && diff.lo <= diff.hi)) return rectangle();
+    const auto out = [](double v, double dir) { return v + dir * (kOutlineSlack + 1e-9 * std::abs(v)); };
+    const double cs = 0.5 * (width + height), cd = 0.5 * (width - height);
+    const double smin = out(g * sum.lo + cs, -1), smax = out(g * sum.hi + cs, 1);
+    const double dmin = out(g * diff.lo + cd, -1), dmax = out(g * diff.hi + cd, 1);
+    // Where each cut meets the two sides at its corner; a corner the cut misses stays. Where every
+    // cut meets its own two sides and the cuts leave each side a piece between them (a sphere well
+    // inside the rectangle's bounds), the octagon is these points in order; otherwise (a thin or
+    // screen-clamped rectangle) the rectangle clipped by the four lines, step by step.
+    const bool cut_bl = x0 + y0 < smin, cut_br = x1 - y0 > dmax, cut_tr = x1 + y1 > smax, cut_tl = x0 - y1 < dmin;
+    const double bl_x = cut_bl ? smin - y0 : x0, bl_y = cut_bl ? smin - x0 : y0;
+    const double br_x = cut_br ? dmax + y0 : x1, br_y = cut_br ? x1 - dmax : y0;
+    const double tr_x = cut_tr ? smax - y1 : x1, tr_y = cut_tr ? smax - x1 : y1;
+    const double tl_x = cut_tl ? dmin + y1 : x0, tl_y = cut_tl ? x0 - dmin : y1;
+    std::array<glm::dvec2, 8> p{};
+    int count = 0;
+    if (bl_x <= br_x && br_y <= tr_y && tl_x <= tr_x && bl_y <= tl_y) {
+        const glm::dvec2 q[8] = {{bl_x, y0}, {br_x, y0}, {x1, br_y}, {x1, tr_y}, {tr_x, y1}, {tl_x, y1}, {x0, tl_y}, {x0, bl_y}};
+        for (int i = 0; i < 8; ++i)  // a corner no cut reaches: its two equal points once
+            if (q[i] != q[(i + 7) % 8]) p[size_t(count++)] = q[i];
+    } else {
+        p[0] = {x0, y0}, p[1] = {x1, y0}, p[2] = {x1, y1}, p[3] = {x0, y1};
+        count = clip_diagonal(p, 4, 1, 1, smin);
+        count = clip_diagonal(p, count, 1, -1, smax);
+        count = clip_diagonal(p, count, -1, 1, dmin);
+        count = clip_diagonal(p, count, -1, -1, dmax);
+    }
+    if (count < 3) return rectangle();  // rounding cut everything away (it cannot, exactly)
+    o.count = count;
+    for (int i = 0; i < count; ++i) o.v[size_t(i)] = glm::vec2(p[size_t(i)]);
+    return o;
+}
+
 ScissorRect scissor_from_slopes(double xlo, double xhi, double ylo, double yhi, float p00, float p11,
                                 int width, int height) {
     if (!(xlo <= xhi) || !(ylo <= yhi) || width <= 0 || height <= 0) return {};
