@@ -145,91 +145,74 @@ TEST(Reconstruct, PositionFromWindowAndDepth) {
 
 }  // namespace
 
-namespace {
-
-// A frustum and a sphere centred anywhere up to 1.3 times the far plane away, radius 0.01 to 10.
-struct BoundTrial {
-    float n, f, r, cz;
-    glm::vec2 planes;
-};
-
-std::vector<BoundTrial> bound_trials(unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    std::vector<BoundTrial> out;
-    for (int trial = 0; trial < 400; ++trial) {
-        BoundTrial t;
-        t.n = float(0.01 + u(rng)), t.f = float(t.n * std::pow(10.0, 1.0 + 4.0 * u(rng)));
-        t.planes = dsr::planes_uniform(t.n, t.f);
-        t.r = float(std::pow(10.0, -2.0 + 3.0 * u(rng)));
-        t.cz = -float(u(rng) * 1.3 * t.f);
-        out.push_back(t);
-    }
-    return out;
-}
-
-constexpr double kCodes = double((1 << 24) - 1);
-
-double window_depth(const BoundTrial& t, double distance) {
-    return double(t.f) * (distance - t.n) / (distance * (double(t.f) - t.n));
-}
-
-// The 24-bit codes from `first` towards the far plane (dir +1) or the near plane (dir -1), the
-// neighbours one by one and then a spread: the surface each holds, its eye z reconstructed in float
-// and scaled by z_scale (a half float's rounding, the worse way), lies outside the sphere.
-void expect_codes_outside(const BoundTrial& t, double first, int dir, double z_scale, const char* rejected_by) {
-    for (double k = first; k >= 1 && k <= kCodes;
-         k += dir * std::max(1.0, std::floor((dir > 0 ? kCodes - k : k) / 64))) {
-        const float z = dsr::eye_z_from_depth(float(k / kCodes), t.planes) * float(z_scale);
-        ASSERT_GT(std::abs(z - t.cz), t.r) << "near " << t.n << " far " << t.f << " centre " << t.cz << " radius "
-                                           << t.r << ": code " << k << " rejected by " << rejected_by
-                                           << ", lit by the shader";
-    }
-}
-
-}  // namespace
-
 // The light quads' depth (sphere_back_depth): every surface GL's GL_GEQUAL test rejects, a depth
 // code above the quad's in the 24-bit buffer, is one the light shader's depth test rejects too,
 // its eye z reconstructed in float and then moved towards the camera by a half float's rounding
 // (the position16 path); and the quad sits within a few codes of the sphere's back, so the test
 // still rejects what lies behind it.
 TEST(Reconstruct, SphereBackDepthRejectsOnlyWhatTheShaderRejects) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const double codes = double((1 << 24) - 1);
     int interior = 0;
-    for (const BoundTrial& t : bound_trials(7)) {
-        const float back = dsr::sphere_back_depth(t.cz, t.r, t.n, t.f);
+    for (int trial = 0; trial < 400; ++trial) {
+        const float n = float(0.01 + u(rng)), f = float(n * std::pow(10.0, 1.0 + 4.0 * u(rng)));
+        const glm::vec2 planes = dsr::planes_uniform(n, f);
+        const float r = float(std::pow(10.0, -2.0 + 3.0 * u(rng)));
+        const float cz = -float(u(rng) * 1.3 * f);
+        const float back = dsr::sphere_back_depth(cz, r, n, f);
         ASSERT_GE(back, 0.0f);
         ASSERT_LE(back, 1.0f);
-        const double quad_code = std::nearbyint(double(back) * kCodes);  // GL's float -> 24-bit conversion
-        expect_codes_outside(t, quad_code + 1, 1, 1.0 - 0x1p-11, "GL's depth test");
+        const double quad_code = std::nearbyint(double(back) * codes);  // GL's float -> 24-bit conversion
+        // Codes just above the quad's (the worst case) and a spread to the far plane.
+        for (double k = quad_code + 1; k <= codes; k += std::max(1.0, std::floor((codes - k) / 64))) {
+            const float z = dsr::eye_z_from_depth(float(k / codes), planes);
+            const float z_half = z * float(1.0 - std::ldexp(1.0, -11));
+            ASSERT_GT(std::abs(z_half - cz), r) << "near " << n << " far " << f << " centre " << cz << " radius " << r
+                                                << ": code " << k << " rejected by GL, lit by the shader";
+        }
         // Not conservative to the point of rejecting nothing: in window depth, at most the margins
         // (2^-9 of the distance, 2^-20) past the sphere's back.
-        const double b = -(double(t.cz) - t.r);
-        if (b > t.n && b * (1 + 0x1p-9) < t.f) {
+        const double b = -(double(cz) - r);
+        const auto window = [&](double a) { return double(f) * (a - n) / (a * (double(f) - n)); };
+        if (b > n && b * (1 + 0x1p-9) < f) {
             ++interior;
-            EXPECT_GE(double(back), window_depth(t, b)) << "the quad in front of the sphere's back";
-            EXPECT_LE(double(back), window_depth(t, b * (1 + 0x1p-9)) + 0x1p-20 + 1e-7) << "the quad far behind the sphere's back";
+            EXPECT_GE(double(back), window(b)) << "the quad in front of the sphere's back";
+            EXPECT_LE(double(back), window(b * (1 + 0x1p-9)) + 0x1p-20 + 1e-7) << "the quad far behind the sphere's back";
         }
     }
     EXPECT_GT(interior, 100);  // the tightness check ran
 }
 
 // sphere_front_depth, the same way: every 24-bit code below the bound's (which a depth-bounds test
-// from it rejects) holds a surface the shader's depth test rejects too, its eye z moved away from
-// the camera by a half float's rounding; and the bound sits within the margins of the sphere's front.
+// from it rejects) holds a surface the shader's depth test rejects too, with a half float's error.
 TEST(Reconstruct, SphereFrontDepthRejectsOnlyWhatTheShaderRejects) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const double codes = double((1 << 24) - 1);
     int interior = 0;
-    for (const BoundTrial& t : bound_trials(11)) {
-        const float front = dsr::sphere_front_depth(t.cz, t.r, t.n, t.f);
+    for (int trial = 0; trial < 400; ++trial) {
+        const float n = float(0.01 + u(rng)), f = float(n * std::pow(10.0, 1.0 + 4.0 * u(rng)));
+        const glm::vec2 planes = dsr::planes_uniform(n, f);
+        const float r = float(std::pow(10.0, -2.0 + 3.0 * u(rng)));
+        const float cz = -float(u(rng) * 1.3 * f);
+        const float front = dsr::sphere_front_depth(cz, r, n, f);
         ASSERT_GE(front, 0.0f);
         ASSERT_LE(front, 1.0f);
-        const double bound_code = std::nearbyint(double(front) * kCodes);
-        expect_codes_outside(t, bound_code - 1, -1, 1.0 + 0x1p-11, "the depth bounds");
-        const double a = -(double(t.cz) + t.r);
-        if (a * (1 - 0x1p-9) > t.n && a < t.f) {
+        const double bound_code = std::nearbyint(double(front) * codes);
+        // Codes just below the bound's (the worst case) and a spread to the near plane.
+        for (double k = bound_code - 1; k >= 1; k -= std::max(1.0, std::floor(k / 64))) {
+            const float z = dsr::eye_z_from_depth(float(k / codes), planes);
+            const float z_half = z * float(1.0 + std::ldexp(1.0, -11));
+            ASSERT_GT(std::abs(z_half - cz), r) << "near " << n << " far " << f << " centre " << cz << " radius " << r
+                                                << ": code " << k << " rejected by the bounds, lit by the shader";
+        }
+        const double a = -(double(cz) + r);
+        const auto window = [&](double d) { return double(f) * (d - n) / (d * (double(f) - n)); };
+        if (a * (1 - 0x1p-9) > n && a < f) {
             ++interior;
-            EXPECT_LE(double(front), window_depth(t, a)) << "the bound behind the sphere's front";
-            EXPECT_GE(double(front), window_depth(t, a * (1 - 0x1p-9)) - 0x1p-20 - 1e-7) << "the bound far in front of it";
+            EXPECT_LE(double(front), window(a)) << "the bound behind the sphere's front";
+            EXPECT_GE(double(front), window(a * (1 - 0x1p-9)) - 0x1p-20 - 1e-7) << "the bound far in front of it";
         }
     }
     EXPECT_GT(interior, 100);
