@@ -30,7 +30,7 @@ namespace {
 class AutoGeometry final : public LightGeometryPass {
 public:
     AutoGeometry(const ShaderConfig& c, ProgramSet& programs, int width, int height)
-        : quads_(programs, c.tile_batch, c.caps.depth_bounds),
+        : quads_(programs, c.tile_batch),
           shadow_quads_(programs, false, true),  // no depth bounds: the hand-off is only for volumes here
           volume_progs_(programs, "light_volume"),
           tiles_(make_tiles_pass(c, programs, width, height)),

@@ -281,8 +281,7 @@ LightOutline outline(const FrameDef& f, const LightDraw& l) {
 
 }  // namespace
 
-LightQuadBatch::LightQuadBatch(ProgramSet& programs, int batch, bool depth_bounds)
-    : progs_(programs, "light_batch"), batch_(batch), depth_bounds_(depth_bounds) {}
+LightQuadBatch::LightQuadBatch(ProgramSet& programs, int batch) : progs_(programs, "light_batch"), batch_(batch) {}
 
 void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightQueries& q,
                           FrameStats& stats, bool scene_depth) {
@@ -298,24 +297,11 @@ void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>
         mine.reserve(lights.size());
         for (const LightDraw* l : lights)
             if (l->shader() == form) mine.push_back(l);
-        // Against the scene's depth with EXT_depth_bounds_test: the lights in batches of neighbours
-        // in depth, nearest first, so that each batch's bounds (its spheres' spans together) reject
-        // the surfaces in front of all its lights as well as behind.
-        const bool bounds = scene_depth && depth_bounds_;
-        if (bounds) {
-            by_depth_.clear();
-            for (const LightDraw* l : mine) by_depth_.emplace_back(-l->params.pos.z, l);
-            std::sort(by_depth_.begin(), by_depth_.end(),
-                      [](const auto& a, const auto& b) { return a.first < b.first; });
-            for (size_t i = 0; i < mine.size(); ++i) mine[i] = by_depth_[i].second;
-        }
         Program& prog = progs_[form];
         for (size_t first = 0; first < mine.size(); first += size_t(batch_)) {
             const size_t n = std::min(mine.size() - first, size_t(batch_));
             arrays_.clear();
             verts_.clear();
-            float bound_lo = 1.0f, bound_hi = 0.0f;  // the batch's depth bounds: its spans together
-            bool all_spans = true;
             for (size_t k = 0; k < n; ++k) {
                 const LightDraw& l = *mine[first + k];
                 arrays_.add(l.params);
@@ -327,12 +313,6 @@ void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>
                 // span (directional, or any with the test off) at depth 1 passes everywhere.
                 const bool span = scene_depth && l.light->type != Light::Type::directional;
                 const float depth = span ? sphere_back_depth(l.params.pos.z, l.params.pos.w, f.zrange.x, f.zrange.y) : 1.0f;
-                if (bounds && span) {
-                    bound_lo = std::min(bound_lo, sphere_front_depth(l.params.pos.z, l.params.pos.w, f.zrange.x, f.zrange.y));
-                    bound_hi = std::max(bound_hi, depth);
-                } else {
-                    all_spans = false;  // a light without a span: no bounds for its batch
-                }
                 const float z = 1.0f - 2.0f * depth, slot = float(k);
                 const LightOutline o = outline(f, l);
                 if (o.count <= 4) {
@@ -355,10 +335,8 @@ void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>
                 s.depth_test = true;
                 s.depth_func = GL_GEQUAL;
                 s.depth_write = false;
-                s.depth_bounds_test = bounds && all_spans;
             }
             gl_state().apply(s);
-            if (s.depth_bounds_test) glDepthBoundsEXT(bound_lo, bound_hi);
             arrays_.set(prog, LightArrays::kBatch);
             // Each batch's vertices in a buffer object of its own: on the H200 at 4096 lights the
             // driver's copies of client arrays took 0.09 ms of CPU a frame, the uploads 0.03-0.06.

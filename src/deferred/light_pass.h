@@ -160,25 +160,20 @@ private:
 // one per light.
 class LightQuadBatch {
 public:
-    // batch: lights the arrays hold (ShaderConfig::tile_batch). depth_bounds: the GL has
-    // EXT_depth_bounds_test, which the batches drawn against the scene's depth then use.
-    LightQuadBatch(ProgramSet& programs, int batch, bool depth_bounds = false);
+    // batch: lights the arrays hold (ShaderConfig::tile_batch).
+    LightQuadBatch(ProgramSet& programs, int batch);
     // Every light of `lights` (of f), each one counted light pass per draw. scene_depth: P-buffer 0
     // holds the scene's depth (the depth hand-off) and the light shaders test a surface against the
     // light's depth span (SkipOptions::light_depth_test): each quad is then drawn at its sphere's
     // back (sphere_back_depth) with GL_GEQUAL, so the surfaces behind the light are rejected
-    // before the shader runs, not by it; with depth_bounds the lights go into batches in order of
-    // depth, and each batch's draw rejects, by EXT_depth_bounds_test, the surfaces outside its
-    // lights' spans together (sphere_front_depth to sphere_back_depth); the pixels lit are the same.
+    // before the shader runs, not by it; the pixels lit are the same.
     void draw(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightQueries& q, FrameStats& stats,
               bool scene_depth = false);
 
 private:
     LightPrograms progs_;
     int batch_;
-    bool depth_bounds_;
     std::vector<float> verts_;  // kept for its storage
-    std::vector<std::pair<float, const LightDraw*>> by_depth_;  // likewise
     StreamBuffers buffers_;  // one per batch of a frame
     LightArrays arrays_;
 };

@@ -47,16 +47,6 @@ float sphere_back_depth(float centre_z, float radius, float near_plane, float fa
     return (float)std::min(1.0, f * (a - n) / (a * (f - n)) + 0x1p-20);
 }
 
-float sphere_front_depth(float centre_z, float radius, float near_plane, float far_plane) {
-    check_planes(near_plane, far_plane, "sphere_front_depth");
-    const double front = -(double(centre_z) + double(radius));  // its distance along -z
-    const double a = front - std::abs(front) * 0x1p-9;
-    if (!(a > near_plane)) return 0.0f;
-    if (!(a < far_plane)) return 1.0f;
-    const double n = near_plane, f = far_plane;
-    return (float)std::max(0.0, f * (a - n) / (a * (f - n)) - 0x1p-20);
-}
-
 glm::vec3 view_ray(float win_x, float win_y, int width, int height, float p00, float p11) {
     // Window -> NDC (x_ndc = 2*win_x/width - 1), then NDC -> eye direction at z = -1, since
     // ndc_x = p00*x/(-z).

@@ -28,12 +28,6 @@ float depth_from_eye_z(float z, float near_plane, float far_plane);
 // to [0, 1]. 1 where the back lies at or beyond the far plane: then nothing is rejected.
 float sphere_back_depth(float centre_z, float radius, float near_plane, float far_plane);
 
-// Its twin for the sphere's front: the window depth below which every surface is in front of the
-// sphere, moved toward the camera by the same margins (2^-9 of the distance, 2^-20 in window depth),
-// clamped to [0, 1]; 0 where the front lies at or in front of the near plane. A depth-bounds test
-// from it to sphere_back_depth rejects only surfaces the light shader's depth test would.
-float sphere_front_depth(float centre_z, float radius, float near_plane, float far_plane);
-
 // The eye-space view ray (x, y, -1) through window position (win_x, win_y) in pixels, e.g. a
 // pixel centre (i + 0.5, j + 0.5): the clean form of Listing 19, which unprojects at window
 // z = 10, outside [0,1] (docs/errata.md #7). p00 = P[0][0], p11 = P[1][1] of a symmetric perspective.
