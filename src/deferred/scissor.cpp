@@ -122,8 +122,26 @@ int clip_diagonal(std::array<glm::dvec2, 8>& p, int n, double sign, double side,
 
 }  // namespace
 
+OutlineAxes outline_axes(float p00, float p11, float near_plane, int width, int height) {
+    // Window x + y = ax (x/w) + ay (y/w) + (width + height) / 2 with w = -z: g times the slope of
+    // e . (x, y) over w, e = (ax, ay) / g, whose range over the sphere is its range over the disk
+    // the sphere projects to in the (e . (x, y), w) plane: light_scissor's problem on a turned
+    // axis. x - y likewise with (ax, -ay).
+    OutlineAxes a;
+    const double ax = 0.5 * double(p00) * width, ay = 0.5 * double(p11) * height;
+    a.g = std::sqrt(ax * ax + ay * ay);
+    a.ex = ax / a.g, a.ey = ay / a.g;
+    a.cs = 0.5 * (width + height), a.cd = 0.5 * (width - height);
+    a.near = near_plane;
+    return a;
+}
+
 LightOutline light_outline(glm::vec3 light_eye, float radius, float p00, float p11, float near_plane, int width,
                            int height, const ScissorRect& rect) {
+    return light_outline(light_eye, radius, outline_axes(p00, p11, near_plane, width, height), rect);
+}
+
+LightOutline light_outline(glm::vec3 light_eye, float radius, const OutlineAxes& axes, const ScissorRect& rect) {
     LightOutline o;
     if (rect.empty()) return o;
     const double x0 = rect.x0, y0 = rect.y0, x1 = rect.x1, y1 = rect.y1;
@@ -132,21 +150,14 @@ LightOutline light_outline(glm::vec3 light_eye, float radius, float p00, float p
         o.v[0] = glm::vec2(x0, y0), o.v[1] = glm::vec2(x1, y0), o.v[2] = glm::vec2(x1, y1), o.v[3] = glm::vec2(x0, y1);
         return o;
     };
-    const double lx = light_eye.x, ly = light_eye.y, b = -light_eye.z, r = radius, n = near_plane;
+    const double lx = light_eye.x, ly = light_eye.y, b = -light_eye.z, r = radius, n = axes.near;
     if (lx * lx + ly * ly + b * b <= r * r || b + r < n) return rectangle();
-    // Window x + y = ax (x/w) + ay (y/w) + (width + height) / 2 with w = -z: g times the slope of
-    // e . (x, y) over w, e = (ax, ay) / g, whose range over the sphere is its range over the disk
-    // the sphere projects to in the (e . (x, y), w) plane: light_scissor's problem on a turned
-    // axis. x - y likewise with (ax, -ay).
-    const double ax = 0.5 * double(p00) * width, ay = 0.5 * double(p11) * height, g = std::sqrt(ax * ax + ay * ay);
-    const double ex = ax / g, ey = ay / g;
-    const SlopeRange sum = slope_range(ex * lx + ey * ly, b, r, n);
-    const SlopeRange diff = slope_range(ex * lx - ey * ly, b, r, n);
+    const SlopeRange sum = slope_range(axes.ex * lx + axes.ey * ly, b, r, n);
+    const SlopeRange diff = slope_range(axes.ex * lx - axes.ey * ly, b, r, n);
     if (!(sum.lo <= sum.hi && diff.lo <= diff.hi)) return rectangle();
     const auto out = [](double v, double dir) { return v + dir * (kOutlineSlack + 1e-9 * std::abs(v)); };
-    const double cs = 0.5 * (width + height), cd = 0.5 * (width - height);
-    const double smin = out(g * sum.lo + cs, -1), smax = out(g * sum.hi + cs, 1);
-    const double dmin = out(g * diff.lo + cd, -1), dmax = out(g * diff.hi + cd, 1);
+    const double smin = out(axes.g * sum.lo + axes.cs, -1), smax = out(axes.g * sum.hi + axes.cs, 1);
+    const double dmin = out(axes.g * diff.lo + axes.cd, -1), dmax = out(axes.g * diff.hi + axes.cd, 1);
     // Where each cut meets the two sides at its corner; a corner the cut misses stays. Where every
     // cut meets its own two sides and the cuts leave each side a piece between them (a sphere well
     // inside the rectangle's bounds), the octagon is these points in order; otherwise (a thin or

@@ -53,6 +53,15 @@ constexpr double kOutlineSlack = 1.0;
 LightOutline light_outline(glm::vec3 light_eye, float radius, float p00, float p11, float near_plane, int width,
                            int height, const ScissorRect& rect);
 
+// What light_outline computes once for a projection and viewport: the diagonals' scale g, their
+// direction (ex, ey) in eye space, the window offsets of x + y and x - y, and the near plane.
+struct OutlineAxes {
+    double g = 0, ex = 0, ey = 0, cs = 0, cd = 0, near = 0;
+};
+OutlineAxes outline_axes(float p00, float p11, float near_plane, int width, int height);
+// light_outline with the axes computed once a frame (the batched quads' many lights).
+LightOutline light_outline(glm::vec3 light_eye, float radius, const OutlineAxes& axes, const ScissorRect& rect);
+
 // Listing 16 as printed, kept only to measure its defects (docs/errata.md): float arithmetic,
 // fixed e1 = 1.2 and e2 = 1.2*aspect (a fixed field of view), no near plane, no guards on the
 // divisions by l.z and nx/ny, (int) truncation toward zero. The one change: a non-finite value
