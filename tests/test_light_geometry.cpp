@@ -376,39 +376,6 @@ TEST(LightGeometry, AutoQuadsAgainstTheDepthOnEveryDepthPath) {
     unsetenv("DSR_LIGHT_COST_SCALE");
 }
 
-// auto's large batched quads drawn as octagons (light_outline): the corners they leave out hold no
-// pixel a light reaches, so the image is quad's to the byte; with the quads against the scene's
-// depth and without, with the shaders' sphere test off (the corners' terms are then computed, and
-// zero), and with spot lights (a cone's octagon is its bounding sphere's, cut to the cone's rectangle).
-TEST(LightGeometry, AutoQuadsAsOctagonsLightWhatQuadLights) {
-    setenv("DSR_LIGHT_COST_SCALE", "1,1000,1000", 1);
-    const Scene base = default_scene();
-    struct Case {
-        const char* name;
-        Scene scene;
-        bool sphere_test;
-    };
-    const std::vector<Case> cases = {{"32-large", bench_scene(base, LightSpec{32, LightSet::large}), true},
-                                     {"1024-overlap", bench_scene(base, LightSpec{1024, LightSet::overlap}), true},
-                                     {"32-large_no_sphere_test", bench_scene(base, LightSpec{32, LightSet::large}), false},
-                                     {"lights", load_scene(resource_dir("data") + "/lights.scene"), true}};
-    for (const Case& c : cases)
-        for (bool depth_test : {true, false}) {
-            ShaderOptions q = with_geometry(LightGeometry::quad), a = with_geometry(LightGeometry::automatic);
-            q.skip.light_sphere_test = a.skip.light_sphere_test = c.sphere_test;
-            q.skip.light_depth_test = a.skip.light_depth_test = depth_test;  // off: no quads against the depth
-            const int size = 256;
-            const RenderResult quad = render_scene(c.scene, size, size, q), oct = render_scene(c.scene, size, size, a);
-            const std::string name = std::string("octagons_") + c.name + (depth_test ? "" : "_no_depth_test");
-            expect_same(name, oct, quad);
-            EXPECT_GT(oct.stats.auto_outlined, 0) << name << ": no octagon drawn";
-            EXPECT_EQ(oct.stats.auto_quad_depth, depth_test) << name;
-            std::printf("[ octagons ] %s: %d of %d quads as octagons\n", name.c_str(), oct.stats.auto_outlined,
-                        oct.stats.auto_lights[0]);
-        }
-    unsetenv("DSR_LIGHT_COST_SCALE");
-}
-
 // Frames of auto, one per scene of `frames`, with the paths' cost scales `scales`
 // (DSR_LIGHT_COST_SCALE): each frame's stats handed to check(frame, stats), and its image compared
 // with quad's at the same camera to the byte. Returns quad's images (one per frame).

@@ -143,7 +143,6 @@ int cmd_render(const std::vector<std::string>& argv) {
         j["auto"] = {{"lights", {{"quad", last.auto_lights[0]}, {"volume", last.auto_lights[1]}, {"tiles", last.auto_lights[2]}}},
                      {"depth_spans", last.auto_spans},
                      {"quads_against_depth", last.auto_quad_depth},
-                     {"quads_outlined", last.auto_outlined},
                      {"kept_frames", std::count_if(all.begin(), all.end(), [](const FrameStats& s) { return s.auto_kept; })},
                      {"predicted_lights_ms", med_stat(&FrameStats::auto_predicted_ms)},
                      {"measured_lights_ms", med(&StageTimes::lights)},

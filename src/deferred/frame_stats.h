@@ -59,7 +59,6 @@ struct FrameStats {
     bool auto_spans = false;
     bool auto_quad_depth = false;  // its batched quads drawn against the scene's depth (choose_quad_depth)
     bool auto_kept = false;        // the frame kept the last priced frame's choice unpriced (one path for every light)
-    int auto_outlined = 0;         // of its batched quads, those drawn over an octagon (light_outline), not the rectangle
     double auto_scale[3] = {1, 1, 1};
     // The forward stage (docs/forward.md): markers drawn, transparent objects blended and their draws.
     int light_markers = 0;

@@ -261,28 +261,6 @@ void LightQuads::draw(const FrameDef& f, const LightDraw& l, LightQueries& q) {
     unbind_shadow(l);
 }
 
-namespace {
-
-// Lights whose rectangle has fewer pixels than this keep it. An octagon costs the CPU two more
-// slope ranges and three times the vertices: on an H100 at 1920x1080 with lights of 64x64 pixels
-// and more outlined, 0.13-0.18 ms a frame for 475 and 636 octagons (1024 and 4096 lights) for a
-// light stage 0.044 and 0.013 ms shorter. From 90x90 (8192 pixels) a model of the default scene
-// (its G-buffer depth, the quads' depth test) keeps 80% of the invocations saved at 1024 lights
-// with two thirds of the octagons, and 56% at 4096 lights with 261 octagons instead of 640.
-constexpr long long kOutlineMinPixels = 8192;
-
-// The pixels a batched light is drawn over: its scissor rectangle with the corners its bounding
-// sphere's projection leaves empty cut off (light_outline); the rectangle alone (4 vertices or
-// fewer) for a light over the whole viewport, a small one, or none cut.
-LightOutline outline(const OutlineAxes& axes, const LightDraw& l) {
-    LightOutline o;
-    if (l.full || l.eye.kind == LightVolume::Kind::full_screen || l.rect.area() < kOutlineMinPixels) return o;
-    const BoundingSphere b = bounding_sphere(l.eye);
-    return light_outline(b.centre, b.radius, axes, l.rect);
-}
-
-}  // namespace
-
 LightQuadBatch::LightQuadBatch(ProgramSet& programs, int batch) : progs_(programs, "light_batch"), batch_(batch) {}
 
 void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightQueries& q,
@@ -294,7 +272,6 @@ void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>
     glClientActiveTexture(GL_TEXTURE2);
     glEnableClientState(GL_TEXTURE_COORD_ARRAY);
     buffers_.begin_frame();
-    const OutlineAxes axes = outline_axes(f.proj[0][0], f.proj[1][1], f.camera.near_plane, f.width, f.height);
     for (LightShader form : {LightShader::point_linear, LightShader::point_inverse, LightShader::any}) {
         std::vector<const LightDraw*> mine;
         mine.reserve(lights.size());
@@ -317,23 +294,8 @@ void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>
                 const bool span = scene_depth && l.light->type != Light::Type::directional;
                 const float depth = span ? sphere_back_depth(l.params.pos.z, l.params.pos.w, f.zrange.x, f.zrange.y) : 1.0f;
                 const float z = 1.0f - 2.0f * depth, slot = float(k);
-                const LightOutline o = outline(axes, l);
-                if (o.count <= 4) {
-                    const float quad[16] = {x0, y0, z, slot, x1, y0, z, slot, x1, y1, z, slot, x0, y1, z, slot};
-                    verts_.insert(verts_.end(), quad, quad + 16);
-                    continue;
-                }
-                ++stats.auto_outlined;
-                // The octagon as a fan of quads from its first vertex, (0 1 2 3) (0 3 4 5) (0 5 6 7),
-                // the last vertex repeated where it has fewer: shared edges, so no pixel is drawn twice.
-                float fan[48];
-                int m = 0;
-                for (int first_v = 1; first_v + 1 < o.count; first_v += 2)
-                    for (int c : {0, first_v, first_v + 1, std::min(first_v + 2, o.count - 1)}) {
-                        const glm::vec2 v = o.v[size_t(c)];
-                        fan[m++] = v.x, fan[m++] = v.y, fan[m++] = z, fan[m++] = slot;
-                    }
-                verts_.insert(verts_.end(), fan, fan + m);
+                const float quad[16] = {x0, y0, z, slot, x1, y0, z, slot, x1, y1, z, slot, x0, y1, z, slot};
+                verts_.insert(verts_.end(), quad, quad + 16);
             }
             RenderState s = light_pass_state(prog.id(), false);
             if (scene_depth) {
@@ -349,7 +311,7 @@ void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>
             glVertexPointer(3, GL_FLOAT, 4 * sizeof(float), nullptr);
             glTexCoordPointer(1, GL_FLOAT, 4 * sizeof(float), reinterpret_cast<const void*>(3 * sizeof(float)));
             q.begin();
-            glDrawArrays(GL_QUADS, 0, GLsizei(verts_.size() / 4));
+            glDrawArrays(GL_QUADS, 0, GLsizei(4 * n));
             q.end();
             ++stats.light_passes;
         }

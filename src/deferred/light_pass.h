@@ -152,12 +152,10 @@ private:
 
 // Many lights' quads in a handful of draws (pseudo-instancing with vertex arrays only, no GL 3
 // instancing): the lights in batches of the uniform arrays' size ("light_batch" programs,
-// light.frag BATCH), each light's quad over its scissor rectangle, or for a large light over the
-// rectangle with the corners its sphere's projection leaves empty cut off (light_outline: an
-// octagon, as three quads), carrying the light's slot; one draw per batch and program form. The
-// pixels left out are ones the light's sphere test rejects, and every light adds the same 8-bit
-// step in any order, so the image is the per-light loop's; the CPU submits a few draws instead of
-// one per light.
+// light.frag BATCH), each quad over its light's scissor rectangle carrying the light's slot; one
+// draw per batch and program form. The quad covers exactly the pixels the scissored full-screen
+// quad lets through, and every light adds the same 8-bit step in any order, so the image is the
+// per-light loop's; the CPU submits a few draws instead of one per light.
 class LightQuadBatch {
 public:
     // batch: lights the arrays hold (ShaderConfig::tile_batch).

@@ -1,8 +1,6 @@
 // The light scissor rectangle of §3.4.2 / Listing 16 (Lengyel's tangent planes) as pure math,
 // so it can be tested against brute force without GL.
 #pragma once
-#include <array>
-
 #include <glm/glm.hpp>
 
 namespace dsr {
@@ -31,36 +29,6 @@ ScissorRect light_scissor(glm::vec3 light_eye, float radius, float p00, float p1
 // xlo > xhi (no point) gives an empty rectangle. light_volume.cpp's cone rectangle uses it.
 ScissorRect scissor_from_slopes(double xlo, double xhi, double ylo, double yhi, float p00, float p11,
                                 int width, int height);
-
-// A convex polygon in window coordinates, counter-clockwise, of `count` vertices (at most 8).
-struct LightOutline {
-    int count = 0;
-    std::array<glm::vec2, 8> v{};
-};
-
-// How far light_outline's diagonal cuts are moved outward, in units of x + y (or x - y): 0.71 of a
-// pixel across the edge, far more than the float vertices' and the rasteriser's snapping errors.
-constexpr double kOutlineSlack = 1.0;
-
-// `rect`, light_scissor's rectangle for the same sphere (or any rectangle holding its projection),
-// with its four corners cut along the tangents to the sphere's projected outline that run at 45
-// degrees in window coordinates, each moved out by kOutlineSlack: the projection of every sphere
-// point with z <= -near lies strictly inside, so every pixel whose centre's view ray meets the
-// sphere is drawn, and a light pass over the octagon shades what one over the rectangle would
-// (the pixels left out are ones its sphere test rejects). A sphere wholly on screen loses about a
-// fifth of its rectangle. Where the eye is inside the sphere, or nothing is cut, the rectangle
-// itself (4 vertices); an empty rectangle gives no vertices. Arguments as light_scissor's.
-LightOutline light_outline(glm::vec3 light_eye, float radius, float p00, float p11, float near_plane, int width,
-                           int height, const ScissorRect& rect);
-
-// What light_outline computes once for a projection and viewport: the diagonals' scale g, their
-// direction (ex, ey) in eye space, the window offsets of x + y and x - y, and the near plane.
-struct OutlineAxes {
-    double g = 0, ex = 0, ey = 0, cs = 0, cd = 0, near = 0;
-};
-OutlineAxes outline_axes(float p00, float p11, float near_plane, int width, int height);
-// light_outline with the axes computed once a frame (the batched quads' many lights).
-LightOutline light_outline(glm::vec3 light_eye, float radius, const OutlineAxes& axes, const ScissorRect& rect);
 
 // Listing 16 as printed, kept only to measure its defects (docs/errata.md): float arithmetic,
 // fixed e1 = 1.2 and e2 = 1.2*aspect (a fixed field of view), no near plane, no guards on the
