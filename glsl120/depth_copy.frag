@@ -4,11 +4,19 @@
 // corrected and literal encodings hold the window depth (Listing 11), decoded directly; linear and
 // log hold eye z, as the position paths' target does (POSITION_TARGET); mapped back to window
 // depth through `planes` (§3.4.3).
+// AMBIENT: the pass also writes, blending off, what the clear and Listing 15's ambient pass would
+// have left in P-buffer 0 (the ambient pass folded into the hand-off: lighting_stage.cpp), from the
+// stored diffuse target as the fixed-function modulate reads it, so the bytes are the pass's.
 #include "depth_codec.glsl"
 
 uniform sampler2D depth_map;  // unit 3: depth texture, packed target or position target
 uniform vec2 planes;
 uniform vec3 zrange;
+#ifdef AMBIENT
+uniform sampler2D diffuse_map;  // unit 1: the G-buffer's diffuse target, alpha 1 on a surface
+uniform vec3 ambient;           // Listing 15's ambient colour
+uniform vec3 background;        // the colour the ambient pass clears P-buffer 0 to
+#endif
 varying vec2 texcoord;
 
 void main()
@@ -23,5 +31,11 @@ void main()
 #else
     gl_FragDepth = unpack_depth(texture2D(depth_map, texcoord).rgb);
 #endif
+#ifdef AMBIENT
+    // Listing 15: the modulate where the alpha test (alpha > 0.5) finds a surface, else the clear.
+    vec4 surface = texture2D(diffuse_map, texcoord);
+    gl_FragColor = surface.a > 0.5 ? vec4(ambient * surface.rgb, surface.a) : vec4(background, 1.0);
+#else
     gl_FragColor = vec4(0.0);
+#endif
 }

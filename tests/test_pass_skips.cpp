@@ -5,6 +5,7 @@
 // ambient_in_material, ambient_folded).
 #include <gtest/gtest.h>
 
+#include "analysis/bench_scenes.h"
 #include "deferred/ambient_fold.h"
 #include "deferred/depth_prepass.h"
 #include "render_fixture.h"
@@ -217,6 +218,57 @@ TEST(PassSkips, AmbientWrittenByTheMaterialPass) {
     screen.light_geometry = LightGeometry::screen;
     EXPECT_FALSE(render_frames(default_scene(), ssao, 1).stats[0].ambient_in_material) << "SSAO";
     EXPECT_FALSE(render_frames(default_scene(), screen, 1).stats[0].ambient_in_material) << "screen";
+}
+
+// Where the material pass does not write the ambient term and a frame hands the depth off, the
+// hand-off's pass writes it (Paths::ambient_in_handoff): no ambient pass, and the bytes of the
+// tutorial's clear and ambient pass (the stored diffuse target times the ambient colour, rounded once
+// into P-buffer 0 as the pass's modulate is), on both depth paths, with the blit or the pass, into
+// RGBA8 and float P-buffers. The default scene's diffuse maps and 256 lights, drawn as volumes and
+// stencil volumes, which hand off every frame.
+TEST(PassSkips, AmbientWrittenByTheHandoff) {
+    const Scene s = with_generated_lights(default_scene(), 256);
+    struct Case {
+        LightGeometry geometry;
+        DepthPath depth;
+        AccumFormat accum;
+        const char* caps;
+    };
+    const Case cases[] = {
+        {LightGeometry::volume, DepthPath::texture, AccumFormat::rgba8, ""},
+        {LightGeometry::volume, DepthPath::texture, AccumFormat::float32, ""},
+        {LightGeometry::volume, DepthPath::packed, AccumFormat::rgba8, ""},
+        {LightGeometry::volume, DepthPath::texture, AccumFormat::rgba8, "no-framebuffer-blit"},
+        {LightGeometry::stencil, DepthPath::texture, AccumFormat::half, ""},
+    };
+    for (const Case& c : cases) {
+        ShaderOptions o = no_target();
+        o.light_geometry = c.geometry;
+        o.depth = c.depth;
+        o.hdr.accum = c.accum;
+        const std::vector<std::string> caps = *c.caps ? std::vector<std::string>{c.caps} : std::vector<std::string>{};
+        const Frames handoff = render_frames(s, o, 1, true, caps);
+        const Frames tutorial = render_frames(s, no_skip(&SkipOptions::ambient_pass, o), 1, true, caps);
+        const std::string name = std::string("ambient in the hand-off, ") + light_geometry_name(c.geometry) + ", " +
+                                 depth_path_name(c.depth) + ", " + accum_format_name(c.accum) + (*c.caps ? ", " : "") + c.caps;
+        EXPECT_TRUE(handoff.stats[0].ambient_in_handoff) << name;
+        EXPECT_FALSE(handoff.stats[0].ambient_in_material) << name;
+        EXPECT_EQ(handoff.stats[0].ms.ambient, 0.0) << name;
+        EXPECT_FALSE(tutorial.stats[0].ambient_in_handoff) << name;
+        EXPECT_GT(tutorial.stats[0].ms.ambient, 0.0) << name;
+        EXPECT_EQ(compare_logged(name, handoff.image, tutorial.image, 0).max_abs, 0.0) << name;
+    }
+    // Not where the material pass writes it (this GL's default), nor with SSAO, nor where no frame
+    // hands off (quad draws nothing against the scene's depth).
+    ShaderOptions volume;
+    volume.light_geometry = LightGeometry::volume;
+    EXPECT_FALSE(render_frames(s, volume, 1).stats[0].ambient_in_handoff);
+    ShaderOptions ssao = no_target(volume);
+    ssao.ssao.on = true;
+    EXPECT_FALSE(render_frames(s, ssao, 1).stats[0].ambient_in_handoff) << "SSAO scales the ambient pass alone";
+    ShaderOptions quad = no_target();
+    quad.light_geometry = LightGeometry::quad;
+    EXPECT_FALSE(render_frames(s, quad, 1).stats[0].ambient_in_handoff);
 }
 
 // The fold only where the light geometry would draw the full-screen light by a pass of its own:

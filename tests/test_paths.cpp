@@ -257,6 +257,44 @@ TEST(Paths, TileDefaultsFollowTheRasteriser) {
     EXPECT_NE(choose_paths(c, o).refused.find("tile size must be 8..512"), std::string::npos);
 }
 
+// Where a frame may hand the depth off (the geometries that test against the scene's depth, or the
+// forward stage), the hand-off's pass can write the ambient term; on a GPU it then takes the ambient
+// target's place, on a CPU rasteriser the target stays. Not with SSAO, nor with the skip off, nor
+// where nothing hands off.
+TEST(Paths, AmbientInTheHandoffOnAGpu) {
+    Caps c = caps_for(0);
+    for (bool sw : {true, false}) {
+        c.software_rasterizer = sw;
+        for (LightGeometry g : {LightGeometry::automatic, LightGeometry::volume, LightGeometry::stencil}) {
+            ShaderOptions o;
+            o.light_geometry = g;
+            const Paths p = choose_paths(c, o);
+            const std::string name = std::string(light_geometry_name(g)) + (sw ? ", CPU rasteriser" : ", GPU");
+            EXPECT_TRUE(p.ambient_in_handoff) << name;
+            EXPECT_EQ(p.ambient_target, sw) << name;
+            if (!sw) {
+                EXPECT_EQ(p.ambient_target_note, "on a GPU the depth hand-off's pass writes it where a frame hands off") << name;
+                EXPECT_NE(describe(p).find("written by the depth hand-off's pass in frames that hand off"), std::string::npos);
+            }
+            o.skip.ambient_pass = false;
+            EXPECT_FALSE(choose_paths(c, o).ambient_in_handoff) << name;
+            EXPECT_TRUE(choose_paths(c, o).ambient_target) << name;
+            o.skip.ambient_pass = true;
+            o.ssao.on = true;
+            EXPECT_FALSE(choose_paths(c, o).ambient_in_handoff) << name;
+        }
+        ShaderOptions o;
+        o.light_geometry = LightGeometry::quad;  // nothing tests against the scene's depth
+        EXPECT_FALSE(choose_paths(c, o).ambient_in_handoff);
+        EXPECT_TRUE(choose_paths(c, o).ambient_target);
+        o.show_lights = true;  // the forward stage does, every frame
+        EXPECT_TRUE(choose_paths(c, o).ambient_in_handoff);
+        EXPECT_EQ(choose_paths(c, o).ambient_target, sw);
+        o.light_geometry = LightGeometry::screen;  // its first batch writes the ambient itself
+        EXPECT_FALSE(choose_paths(c, o).ambient_in_handoff);
+    }
+}
+
 // The material pass writes the ambient term into P-buffer 0 where a draw buffer is left after the
 // G-buffer's, the framebuffer takes P-buffer 0's format beside them, the diffuse target is RGBA8 and
 // nothing else writes the ambient; each refusal says why, and the skip turned off says nothing.
@@ -265,6 +303,7 @@ TEST(Paths, AmbientTargetNeedsADrawBufferToSpareAndOneFormat) {
     ShaderOptions o;
     o.depth = DepthPath::texture;
     Caps c = caps_for(0);
+    c.software_rasterizer = true;  // on a GPU the hand-off's pass takes it where it can (below)
     c.max_draw_buffers = 4;
     Paths p = with(c, o);
     EXPECT_TRUE(p.ambient_target);

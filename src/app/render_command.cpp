@@ -114,7 +114,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     // final pass ran, whether the ambient pass was folded into a light's, and the depth complexity
     // (fragments shaded without the pre-pass per pixel covered) the pre-pass choice read.
     j["passes"] = {{"depth_prepass", last.depth_prepass_ran}, {"ambient_in_material", last.ambient_in_material},
-                   {"ambient_folded", last.ambient_folded},
+                   {"ambient_folded", last.ambient_folded}, {"ambient_in_handoff", last.ambient_in_handoff},
                    {"final", last.final_pass_ran},
                    {"depth_complexity", last.depth_complexity ? nlohmann::json(*last.depth_complexity) : nlohmann::json(nullptr)}};
     j["scissor"] = opts.scissor;

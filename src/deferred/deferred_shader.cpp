@@ -65,9 +65,13 @@ void DeferredShader::set_scene(const Scene& scene) {
         ShaderOptions o = config_.opts;
         o.forward_surfaces = true;
         const bool had_depth = config_.paths.accum_depth;
+        const bool had_target = config_.paths.ambient_target;
         config_ = shader_config(config_.caps, o);
+        // The material pass was built for the ambient target or not: that stays as it was, and the
+        // hand-off writes the ambient term only where the material pass does not.
+        config_.paths.ambient_target = had_target;
         if (!had_depth) targets_ = std::make_unique<RenderTargets>(config_.paths, config_.opts, width(), height());
-        ProgramSet handoff(shader_dir_, config_, {"depth_copy"});
+        ProgramSet handoff(shader_dir_, config_, {"depth_copy", "depth_copy_ambient"});
         lighting_->set_handoff(config_, handoff);
     }
     forward_->set_scene(scene, *gpu_);
@@ -181,7 +185,10 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
     // geometry plans (the auto geometry prices its lights). Where the material pass wrote it, neither.
     const bool written = st.ambient_in_material;
     const bool may_fold = !written && lighting_->may_fold(f, ssao_ != nullptr);
-    if (!may_fold && !written) ambient_pass();
+    // Or the depth hand-off's pass writes it (Paths::ambient_in_handoff), where the frame hands off:
+    // known after the plan, so the ambient pass then waits for it.
+    const bool handoff_may_write = !written && lighting_->handoff_writes_ambient(ssao_ != nullptr);
+    if (!may_fold && !written && !handoff_may_write) ambient_pass();
     // The light geometry's plan for the frame (the auto geometry's depth spans, timed with the
     // light passes): whether its lights need the scene's depth decides the hand-off, and whether it
     // would draw a light over the whole screen by a pass of its own decides the fold.
@@ -191,7 +198,10 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
     // Where that light takes a pass of its own, its pass writes what the ambient pass would have.
     const std::optional<AmbientFold> fold =
         may_fold ? lighting_->ambient_fold(f, scene, ssao_ != nullptr) : std::optional<AmbientFold>{};
-    if (may_fold && !fold) {
+    const bool hands_off =
+        config_.paths.accum_depth && (lights_need_depth || config_.paths.forward_stage || config_.paths.depth_bounds);
+    st.ambient_in_handoff = handoff_may_write && !fold && hands_off;
+    if ((may_fold || handoff_may_write) && !fold && !st.ambient_in_handoff) {
         unbind_gbuffer();
         ambient_pass();
         bind_gbuffer();
@@ -200,8 +210,10 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
     std::optional<FrameDef> rest;
     if (fold && !fold->by_geometry) rest = without_light(f, fold->light);
     const FrameDef& lights = rest ? *rest : f;
-    if (config_.paths.accum_depth && (lights_need_depth || config_.paths.forward_stage || config_.paths.depth_bounds)) {
-        timed(timer_, S_DEPTH_COPY, [&] { lighting_->hand_off_depth(f, *targets_); });
+    if (hands_off) {
+        const AmbientTerm ambient{scene.background, scene.ambient};
+        timed(timer_, S_DEPTH_COPY,
+              [&] { lighting_->hand_off_depth(f, *targets_, st.ambient_in_handoff ? &ambient : nullptr); });
         check_gl_stage("lighting stage: depth hand-off");
     }
     timer_.begin(S_LIGHTS);

@@ -10,7 +10,10 @@
 //        G-buffer always has a 24-bit depth buffer for its pre-pass (a texture on the texture
 //        path, a renderbuffer on the others), so it serves every depth path and needs no decoding
 // `--depth-handoff auto|blit|pass` (Paths::depth_handoff); `--stats` ms.depth_copy is its cost.
+// Where the frame's ambient term is still to be written (Paths::ambient_in_handoff), the hand-off
+// is that pass, blit or not, writing the ambient term too (depth_copy.frag AMBIENT).
 #pragma once
+#include "deferred/ambient_fold.h"
 #include "deferred/frame.h"
 #include "deferred/render_targets.h"
 #include "deferred/shader_table.h"
@@ -23,11 +26,14 @@ public:
     // Takes the table's "depth_copy" where the paths hand off by a pass.
     DepthHandoffPass(const ShaderConfig& c, ProgramSet& programs);
     // hand_off_depth: into the bound P-buffer 0, its stencil cleared too; the G-buffer's depth
-    // target bound on unit 3 (as the light passes read it).
-    void draw(const FrameDef& f, RenderTargets& targets);
+    // target bound on unit 3 and its diffuse target on unit 1 (as the light passes read them).
+    // ambient: also write what the clear and Listing 15's ambient pass would have left (only where
+    // can_write_ambient()).
+    void draw(const FrameDef& f, RenderTargets& targets, const AmbientTerm* ambient = nullptr);
+    bool can_write_ambient() const { return copy_ambient_.id() != 0; }
 
 private:
-    Program copy_;
+    Program copy_, copy_ambient_;
     bool blit_, stencil_;
 };
 

@@ -75,6 +75,7 @@ struct FrameStats {
     // final pass (§3.6), and whether its ambient pass (Listing 15) was written by the material pass
     // (SkipOptions::ambient_target) or folded into a full-screen light's pass.
     bool depth_prepass_ran = true, final_pass_ran = true, ambient_in_material = false, ambient_folded = false;
+    bool ambient_in_handoff = false;  // the depth hand-off's pass wrote the ambient term (Paths::ambient_in_handoff)
     // The depth complexity the pre-pass choice of this frame read (depth_prepass.h): fragments that
     // pass the depth test in draw order per pixel covered, as measured in an earlier frame; null
     // before the first measurement or where it is not measured (the skip off, no occlusion queries).

@@ -80,10 +80,12 @@ std::optional<AmbientFold> LightingStage::ambient_fold(const FrameDef& f, const 
     return AmbientFold{*i, false, {scene.background, scene.ambient}};
 }
 
-void LightingStage::hand_off_depth(const FrameDef& f, RenderTargets& t) {
+void LightingStage::hand_off_depth(const FrameDef& f, RenderTargets& t, const AmbientTerm* ambient) {
     if (!handoff_) throw Error("the depth hand-off runs only where the paths give P-buffer 0 a depth buffer");
-    handoff_->draw(f, t);
+    handoff_->draw(f, t, ambient);
 }
+
+bool LightingStage::handoff_writes_ambient(bool ssao) const { return !ssao && handoff_ && handoff_->can_write_ambient(); }
 
 void LightingStage::draw_lighting(const FrameDef& f, const FrameDef& lights, RenderTargets& t, FrameStats& stats,
                                   const AmbientFold* fold) {

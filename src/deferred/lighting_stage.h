@@ -66,8 +66,11 @@ public:
     // Before prepare(f): whether ambient_fold could fold anything this frame (the skip on, no SSAO,
     // and a light drawn over the whole screen or a geometry that writes the ambient itself).
     bool may_fold(const FrameDef& f, bool ssao) const;
-    // hand_off_depth (depth_handoff.h), with the G-buffer bound as textures.
-    void hand_off_depth(const FrameDef& f, RenderTargets& targets);
+    // hand_off_depth (depth_handoff.h), with the G-buffer bound as textures; with `ambient`, the
+    // hand-off's pass also writes the ambient term (only where handoff_writes_ambient(ssao)).
+    void hand_off_depth(const FrameDef& f, RenderTargets& targets, const AmbientTerm* ambient = nullptr);
+    // Whether a frame that hands the depth off can write its ambient term there (Paths::ambient_in_handoff).
+    bool handoff_writes_ambient(bool ssao) const;
     // Listing 17: the frame's visible lights added into P-buffer 0, with the G-buffer bound as
     // textures (units 0-3); counted when counting is on and the GL can. With `fold`, that light
     // first, writing every pixel with the ambient pass folded in; then `lights` (f, or f without

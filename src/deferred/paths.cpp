@@ -39,10 +39,12 @@ void choose_gbuffer_formats(const Caps& caps, const ShaderOptions& opts, Paths& 
 // Paths::ambient_target: whether the material pass can write the ambient term, or why not.
 void choose_ambient_target(const Caps& caps, const ShaderOptions& opts, Paths& p) {
     if (!opts.skip.ambient_target) return;
+    const bool handoff_instead = p.ambient_in_handoff && !caps.software_rasterizer;
     const bool rgba8 = std::all_of(p.gbuffer_formats.begin(), p.gbuffer_formats.end(),
                                    [](TargetFormat f) { return f == TargetFormat::rgba8; });
     const char* why = opts.ssao.on                                    ? "SSAO scales the ambient pass alone"
                       : draws_own_ambient(p.light_geometry)           ? "the screen geometry writes the ambient itself"
+                      : handoff_instead ? "on a GPU the depth hand-off's pass writes it where a frame hands off"
                       : !p.mrt                                        ? "it needs the material pass's multiple render targets"
                       : caps.max_draw_buffers <= p.gbuffer_targets    ? "the GL has no draw buffer beyond the G-buffer's"
                       : p.gbuffer_formats[1] != TargetFormat::rgba8   ? "the diffuse target is not RGBA8"
@@ -124,6 +126,7 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     // and only between depth buffers of one format: EXT_framebuffer_blit makes a depth blit between
     // DEPTH_COMPONENT24 (the G-buffer's) and the stencil geometry's DEPTH24_STENCIL8 an
     // INVALID_OPERATION. Mesa lets it pass; dsr follows the spec and takes the pass there.
+    p.ambient_in_handoff = p.accum_depth && opts.skip.ambient_pass && !opts.ssao.on && !draws_own_ambient(p.light_geometry);
     choose_ambient_target(caps, opts, p);
     p.depth_handoff = p.fbo && caps.framebuffer_blit && !p.accum_stencil && opts.depth_handoff != DepthHandoff::pass
                           ? DepthHandoff::blit
@@ -198,12 +201,16 @@ std::string describe(const Paths& p) {
     o << "\n  ambient        "
       << (p.ambient_target ? "written by the material pass into P-buffer 0 (render target " +
                                  std::to_string(p.gbuffer_targets) + "): no ambient pass"
-                           : "ambient pass (Listing 15)" +
+                           : std::string(p.ambient_in_handoff ? "written by the depth hand-off's pass in frames that hand off, "
+                                                                "else the ambient pass (Listing 15)"
+                                                              : "ambient pass (Listing 15)") +
                                  (p.ambient_target_note.empty() ? std::string() : " (" + p.ambient_target_note + ")"));
     o << "\n  depth hand-off "
       << (!p.accum_depth ? "none (nothing tests against the scene's depth in P-buffer 0)"
-          : p.depth_handoff == DepthHandoff::blit ? "blit (EXT_framebuffer_blit of the G-buffer's depth buffer)"
-                                                  : "pass (a full-screen pass writing gl_FragDepth from the G-buffer's depth)")
+          : p.depth_handoff == DepthHandoff::blit
+              ? std::string("blit (EXT_framebuffer_blit of the G-buffer's depth buffer)") +
+                    (p.ambient_in_handoff && !p.ambient_target ? "; a pass where it writes the ambient term" : "")
+              : std::string("pass (a full-screen pass writing gl_FragDepth from the G-buffer's depth)"))
       << "\n";
     return o.str();
 }

@@ -61,6 +61,13 @@ struct Paths {
     // batch writes it, as LearnOpenGL's lighting pass does).
     bool ambient_target = false;
     std::string ambient_target_note;  // why not, where the skip is on and it is not taken
+    // A frame that hands the depth off and whose ambient term nothing else wrote (no ambient target,
+    // no fold into a light's pass) writes it in the hand-off's pass (depth_copy.frag AMBIENT), in
+    // place of the ambient pass and of the blit (SkipOptions::ambient_pass; not with SSAO, which
+    // scales the ambient pass alone). On a GPU this takes the ambient target's place: there a
+    // full-screen pass costs what the fourth target adds to the material pass, and the pass
+    // replaces the blit too; on a CPU rasteriser the target costs less than a pass (docs/light_geometry.md).
+    bool ambient_in_handoff = false;
     // Non-empty: this GL cannot run these options, and why, in one line.
     std::string refused;
 };

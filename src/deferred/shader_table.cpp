@@ -339,6 +339,10 @@ const std::vector<ShaderRow>& shader_rows() {
         {"depth_copy", "post.vert", "depth_copy.frag", "depth hand-off: gl_FragDepth from the G-buffer",
          [](C c) { return c.paths.accum_depth && c.paths.depth_handoff == DepthHandoff::pass; },
          [](C c) { return depth_defines(c); }},
+        // The same pass writing the ambient term too (Paths::ambient_in_handoff), blit or not.
+        {"depth_copy_ambient", "post.vert", "depth_copy.frag", "depth hand-off with the ambient pass folded in",
+         [](C c) { return c.paths.ambient_in_handoff && !c.paths.ambient_target; },
+         [](C c) { return with(depth_defines(c), {"AMBIENT"}); }},
         // SSAO (docs/ssao.md): occlusion, then its depth-aware blur.
         {"ssao", "light.vert", "ssao.frag", "ambient occlusion", [](C c) { return c.opts.ssao.on; },
          [](C c) { return with(depth_defines(c), {"SAMPLES " + std::to_string(c.opts.ssao.samples)}); }},
