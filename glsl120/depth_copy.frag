@@ -12,15 +12,19 @@
 uniform sampler2D depth_map;  // unit 3: depth texture, packed target or position target
 uniform vec2 planes;
 uniform vec3 zrange;
+// G-buffer texture coordinates per window pixel: each pixel reads its own texel from gl_FragCoord,
+// as the light shaders do; coordinates interpolated across the quad were a hair off on an NVIDIA
+// GPU, and a surface's depth handed off from a neighbouring texel lost lights at silhouettes.
+uniform vec2 uv_scale;
 #ifdef AMBIENT
 uniform sampler2D diffuse_map;  // unit 1: the G-buffer's diffuse target, alpha 1 on a surface
 uniform vec3 ambient;           // Listing 15's ambient colour
 uniform vec3 background;        // the colour the ambient pass clears P-buffer 0 to
 #endif
-varying vec2 texcoord;
 
 void main()
 {
+    vec2 texcoord = gl_FragCoord.xy * uv_scale;
 #if !defined(PACKED_DEPTH) && !defined(POSITION_TARGET)
     gl_FragDepth = texture2D(depth_map, texcoord).r;
 #elif defined(ENC_LITERAL)

@@ -223,9 +223,9 @@ TEST(PassSkips, AmbientWrittenByTheMaterialPass) {
 // Where the material pass does not write the ambient term and a frame hands the depth off, the
 // hand-off's pass writes it (Paths::ambient_in_handoff): no ambient pass, and the bytes of the
 // tutorial's clear and ambient pass (the stored diffuse target times the ambient colour, rounded once
-// into P-buffer 0 as the pass's modulate is), on both depth paths, with the blit or the pass, into
-// RGBA8 and float P-buffers. The default scene's diffuse maps and 256 lights, drawn as volumes and
-// stencil volumes, which hand off every frame.
+// into P-buffer 0 as the pass's modulate is), on both depth paths, into RGBA8, half and float
+// P-buffers. The default scene's diffuse maps and 256 lights, drawn as volumes and stencil volumes,
+// which hand off every frame, by a pass (on a CPU rasteriser a blit's hand-off does not take it).
 TEST(PassSkips, AmbientWrittenByTheHandoff) {
     const Scene s = with_generated_lights(default_scene(), 256);
     struct Case {
@@ -240,12 +240,14 @@ TEST(PassSkips, AmbientWrittenByTheHandoff) {
         {LightGeometry::volume, DepthPath::packed, AccumFormat::rgba8, ""},
         {LightGeometry::volume, DepthPath::texture, AccumFormat::rgba8, "no-framebuffer-blit"},
         {LightGeometry::stencil, DepthPath::texture, AccumFormat::half, ""},
+        {LightGeometry::volume, DepthPath::texture, AccumFormat::rgba8, "no-fbo"},
     };
     for (const Case& c : cases) {
         ShaderOptions o = no_target();
         o.light_geometry = c.geometry;
         o.depth = c.depth;
         o.hdr.accum = c.accum;
+        o.depth_handoff = DepthHandoff::pass;
         const std::vector<std::string> caps = *c.caps ? std::vector<std::string>{c.caps} : std::vector<std::string>{};
         const Frames handoff = render_frames(s, o, 1, true, caps);
         const Frames tutorial = render_frames(s, no_skip(&SkipOptions::ambient_pass, o), 1, true, caps);
@@ -259,10 +261,18 @@ TEST(PassSkips, AmbientWrittenByTheHandoff) {
         EXPECT_EQ(compare_logged(name, handoff.image, tutorial.image, 0).max_abs, 0.0) << name;
     }
     // Not where the material pass writes it (this GL's default), nor with SSAO, nor where no frame
-    // hands off (quad draws nothing against the scene's depth).
+    // hands off (quad draws nothing against the scene's depth); on a CPU rasteriser not into a blit.
     ShaderOptions volume;
     volume.light_geometry = LightGeometry::volume;
+    volume.depth_handoff = DepthHandoff::pass;
     EXPECT_FALSE(render_frames(s, volume, 1).stats[0].ambient_in_handoff);
+    ShaderOptions blit = no_target(volume);
+    blit.depth_handoff = DepthHandoff::automatic;
+    const bool software = [] {
+        auto ctx = create_context(ContextDesc{"osmesa", kSize, kSize});
+        return probe_caps({}).software_rasterizer;
+    }();
+    EXPECT_EQ(render_frames(s, blit, 1).stats[0].ambient_in_handoff, !software);
     ShaderOptions ssao = no_target(volume);
     ssao.ssao.on = true;
     EXPECT_FALSE(render_frames(s, ssao, 1).stats[0].ambient_in_handoff) << "SSAO scales the ambient pass alone";

@@ -42,6 +42,7 @@ void DepthHandoffPass::draw(const FrameDef& f, RenderTargets& t, const AmbientTe
     prog.set("depth_map", 3);  // the G-buffer's depth on unit 3, as the light passes read it
     prog.set("planes", f.planes);
     prog.set("zrange", f.zrange);
+    prog.set("uv_scale", f.uv_scale);
     if (ambient) {
         prog.set("diffuse_map", 1);
         prog.set("ambient", ambient->ambient);

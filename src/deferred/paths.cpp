@@ -126,11 +126,15 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     // and only between depth buffers of one format: EXT_framebuffer_blit makes a depth blit between
     // DEPTH_COMPONENT24 (the G-buffer's) and the stencil geometry's DEPTH24_STENCIL8 an
     // INVALID_OPERATION. Mesa lets it pass; dsr follows the spec and takes the pass there.
-    p.ambient_in_handoff = p.accum_depth && opts.skip.ambient_pass && !opts.ssao.on && !draws_own_ambient(p.light_geometry);
-    choose_ambient_target(caps, opts, p);
     p.depth_handoff = p.fbo && caps.framebuffer_blit && !p.accum_stencil && opts.depth_handoff != DepthHandoff::pass
                           ? DepthHandoff::blit
                           : DepthHandoff::pass;
+    // On a CPU rasteriser a blit costs next to nothing and the pass more than the ambient pass it
+    // replaces would (paths.h): there only a hand-off that is a pass anyway takes the ambient term.
+    p.ambient_in_handoff = p.accum_depth && opts.skip.ambient_pass && !opts.ssao.on &&
+                           !draws_own_ambient(p.light_geometry) &&
+                           (!caps.software_rasterizer || p.depth_handoff == DepthHandoff::pass);
+    choose_ambient_target(caps, opts, p);
 
     if (!caps.glsl120)
         p.refused = "GLSL 1.20 is required and this GL offers " +

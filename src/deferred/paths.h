@@ -66,7 +66,8 @@ struct Paths {
     // place of the ambient pass and of the blit (SkipOptions::ambient_pass; not with SSAO, which
     // scales the ambient pass alone). On a GPU this takes the ambient target's place: there a
     // full-screen pass costs what the fourth target adds to the material pass, and the pass
-    // replaces the blit too; on a CPU rasteriser the target costs less than a pass (docs/light_geometry.md).
+    // replaces the blit too. On a CPU rasteriser the target costs less than a pass, and the hand-off
+    // takes the ambient term only where it is a pass anyway (docs/light_geometry.md).
     bool ambient_in_handoff = false;
     // Non-empty: this GL cannot run these options, and why, in one line.
     std::string refused;
