@@ -13,8 +13,7 @@ uniform sampler2D depth_map;  // unit 3: depth texture, packed target or positio
 uniform vec2 planes;
 uniform vec3 zrange;
 // G-buffer texture coordinates per window pixel: each pixel reads its own texel from gl_FragCoord,
-// as the light shaders do; coordinates interpolated across the quad were a hair off on an NVIDIA
-// GPU, and a surface's depth handed off from a neighbouring texel lost lights at silhouettes.
+// as the light shaders do (they found interpolated coordinates a hair off on an NVIDIA GPU).
 uniform vec2 uv_scale;
 #ifdef AMBIENT
 uniform sampler2D diffuse_map;  // unit 1: the G-buffer's diffuse target, alpha 1 on a surface
