@@ -155,6 +155,11 @@ TEST(ShaderTable, EveryRowCompilesWhereItIsUsed) {
         t.shadows.filter = g == LightGeometry::volume ? ShadowFilter::pcf5 : ShadowFilter::hard;
         build(t, g == LightGeometry::stencil ? std::vector<std::string>{"no-depth-texture"} : std::vector<std::string>{});
     }
+    ShaderOptions handoff;  // no ambient target: the hand-off's pass writes the ambient term
+    handoff.light_geometry = LightGeometry::volume;
+    handoff.depth_handoff = DepthHandoff::pass;
+    handoff.skip.ambient_target = false;
+    build(handoff);
     build(ShaderOptions{}, {"no-mrt"});  // one material program per G-buffer target
     ShaderOptions hdr;  // the final stage's program and auto exposure's reduction (docs/hdr.md)
     hdr.hdr.accum = AccumFormat::half;
