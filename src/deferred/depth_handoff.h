@@ -11,7 +11,7 @@
 //        path, a renderbuffer on the others), so it serves every depth path and needs no decoding
 // `--depth-handoff auto|blit|pass` (Paths::depth_handoff); `--stats` ms.depth_copy is its cost.
 // Where the frame's ambient term is still to be written (Paths::ambient_in_handoff), the hand-off
-// is that pass, blit or not, writing the ambient term too (depth_copy.frag AMBIENT).
+// is a pass (the paths allow it only where the hand-off is one) writing it too (depth_copy.frag AMBIENT).
 #pragma once
 #include "deferred/ambient_fold.h"
 #include "deferred/frame.h"

@@ -339,7 +339,7 @@ const std::vector<ShaderRow>& shader_rows() {
         {"depth_copy", "post.vert", "depth_copy.frag", "depth hand-off: gl_FragDepth from the G-buffer",
          [](C c) { return c.paths.accum_depth && c.paths.depth_handoff == DepthHandoff::pass; },
          [](C c) { return depth_defines(c); }},
-        // The same pass writing the ambient term too (Paths::ambient_in_handoff), blit or not.
+        // The same pass writing the ambient term too (Paths::ambient_in_handoff: a pass hand-off only).
         {"depth_copy_ambient", "post.vert", "depth_copy.frag", "depth hand-off with the ambient pass folded in",
          [](C c) { return c.paths.ambient_in_handoff && !c.paths.ambient_target; },
          [](C c) { return with(depth_defines(c), {"AMBIENT"}); }},
