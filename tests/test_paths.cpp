@@ -258,10 +258,11 @@ TEST(Paths, TileDefaultsFollowTheRasteriser) {
 }
 
 // Where a frame may hand the depth off (the geometries that test against the scene's depth, or the
-// forward stage), a hand-off that is a pass anyway (stencil's, or without the blit) can write the
-// ambient term on a CPU rasteriser, where the material pass does not; not yet on a GPU. The ambient
-// target keeps its place. Not with SSAO, nor with the skip off, nor where nothing hands off.
-TEST(Paths, AmbientInTheHandoffOnlyByAPass) {
+// forward stage), the hand-off's pass can write the ambient term; on a GPU it then takes the ambient
+// target's place, on a CPU rasteriser the target stays and only a hand-off that is a pass anyway
+// (stencil's, or without the blit) takes it. Not with SSAO, nor with the skip off, nor where nothing
+// hands off.
+TEST(Paths, AmbientInTheHandoffOnAGpu) {
     Caps c = caps_for(0);
     c.framebuffer_blit = true;
     c.stencil = c.packed_depth_stencil = c.stencil_separate = true;
@@ -273,10 +274,15 @@ TEST(Paths, AmbientInTheHandoffOnlyByAPass) {
             const Paths p = choose_paths(c, o);
             const std::string name = std::string(light_geometry_name(g)) + (sw ? ", CPU rasteriser" : ", GPU");
             EXPECT_EQ(p.depth_handoff, g == LightGeometry::stencil ? DepthHandoff::pass : DepthHandoff::blit) << name;
-            EXPECT_EQ(p.ambient_in_handoff, sw && g == LightGeometry::stencil) << name;
-            EXPECT_TRUE(p.ambient_target) << name;
+            EXPECT_EQ(p.ambient_in_handoff, !sw || g == LightGeometry::stencil) << name;
+            EXPECT_EQ(p.ambient_target, sw) << name;
             o.depth_handoff = DepthHandoff::pass;
-            EXPECT_EQ(choose_paths(c, o).ambient_in_handoff, sw) << name;
+            EXPECT_TRUE(choose_paths(c, o).ambient_in_handoff) << name;
+            o.depth_handoff = DepthHandoff::automatic;
+            if (!sw) {
+                EXPECT_EQ(p.ambient_target_note, "on a GPU the depth hand-off's pass writes it where a frame hands off") << name;
+                EXPECT_NE(describe(p).find("written by the depth hand-off's pass in frames that hand off"), std::string::npos);
+            }
             o.skip.ambient_pass = false;
             EXPECT_FALSE(choose_paths(c, o).ambient_in_handoff) << name;
             EXPECT_TRUE(choose_paths(c, o).ambient_target) << name;
@@ -289,9 +295,8 @@ TEST(Paths, AmbientInTheHandoffOnlyByAPass) {
         EXPECT_FALSE(choose_paths(c, o).ambient_in_handoff);
         EXPECT_TRUE(choose_paths(c, o).ambient_target);
         o.show_lights = true;  // the forward stage does, every frame
-        o.depth_handoff = DepthHandoff::pass;
-        EXPECT_EQ(choose_paths(c, o).ambient_in_handoff, sw);
-        EXPECT_TRUE(choose_paths(c, o).ambient_target);
+        EXPECT_EQ(choose_paths(c, o).ambient_in_handoff, !sw);
+        EXPECT_EQ(choose_paths(c, o).ambient_target, sw);
         o.light_geometry = LightGeometry::screen;  // its first batch writes the ambient itself
         EXPECT_FALSE(choose_paths(c, o).ambient_in_handoff);
     }

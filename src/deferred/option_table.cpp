@@ -164,11 +164,13 @@ std::vector<RenderOption> make_table() {
         "depth complexity makes it pure cost (depth-prepass: the material pass writes depth itself), the "
         "ambient pass, its colours written by the material pass into P-buffer 0 as one more render target "
         "(ambient-target: where the GL has a draw buffer to spare, the diffuse target is RGBA8, not with "
-        "--ssao nor the screen geometry; `dsr info` says whether), else folded into the pass of a light drawn over the whole screen by a pass of "
+        "--ssao nor the screen geometry, nor on a GPU where the depth hand-off can write it; `dsr info` "
+        "says whether), else folded into the pass of a light drawn over the whole screen by a pass of "
         "its own (ambient: a directional light, or any with --scissor off; not where the light goes into "
         "a batch of the tiles; the screen geometry's first pass writes it; not with --ssao), or into the "
-        "depth hand-off where it is a pass, on a CPU rasteriser (ambient too), the final pass where the image "
-        "is read back at the buffers' size (final: P-buffer 0 read directly)");
+        "depth hand-off's pass in frames that hand off (ambient too; on a CPU rasteriser only where the "
+        "hand-off is a pass anyway), the final pass where the image is read back at the buffers' size "
+        "(final: P-buffer 0 read directly)");
     RenderOption view = choice(
         "view", view_names(), [](const RenderOptions& r) { return std::string(view_name(r.view)); },
         [](RenderOptions& r, const std::string& v) { r.view = view_from_name(v); });

@@ -39,10 +39,12 @@ void choose_gbuffer_formats(const Caps& caps, const ShaderOptions& opts, Paths& 
 // Paths::ambient_target: whether the material pass can write the ambient term, or why not.
 void choose_ambient_target(const Caps& caps, const ShaderOptions& opts, Paths& p) {
     if (!opts.skip.ambient_target) return;
+    const bool handoff_instead = p.ambient_in_handoff && !caps.software_rasterizer;
     const bool rgba8 = std::all_of(p.gbuffer_formats.begin(), p.gbuffer_formats.end(),
                                    [](TargetFormat f) { return f == TargetFormat::rgba8; });
     const char* why = opts.ssao.on                                    ? "SSAO scales the ambient pass alone"
                       : draws_own_ambient(p.light_geometry)           ? "the screen geometry writes the ambient itself"
+                      : handoff_instead ? "on a GPU the depth hand-off's pass writes it where a frame hands off"
                       : !p.mrt                                        ? "it needs the material pass's multiple render targets"
                       : caps.max_draw_buffers <= p.gbuffer_targets    ? "the GL has no draw buffer beyond the G-buffer's"
                       : p.gbuffer_formats[1] != TargetFormat::rgba8   ? "the diffuse target is not RGBA8"
@@ -127,12 +129,11 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     p.depth_handoff = p.fbo && caps.framebuffer_blit && !p.accum_stencil && opts.depth_handoff != DepthHandoff::pass
                           ? DepthHandoff::blit
                           : DepthHandoff::pass;
-    // Only a hand-off that is a pass anyway takes the ambient term (a blit costs next to nothing on a
-    // CPU rasteriser), and only on a CPU rasteriser: on an NVIDIA GPU its first form was 35 LSB off
-    // the tutorial's passes and the corrected one is not yet measured there (paths.h).
+    // On a CPU rasteriser a blit costs next to nothing and the pass more than the ambient pass it
+    // replaces would (paths.h): there only a hand-off that is a pass anyway takes the ambient term.
     p.ambient_in_handoff = p.accum_depth && opts.skip.ambient_pass && !opts.ssao.on &&
-                           !draws_own_ambient(p.light_geometry) && caps.software_rasterizer &&
-                           p.depth_handoff == DepthHandoff::pass;
+                           !draws_own_ambient(p.light_geometry) &&
+                           (!caps.software_rasterizer || p.depth_handoff == DepthHandoff::pass);
     choose_ambient_target(caps, opts, p);
 
     if (!caps.glsl120)

@@ -64,10 +64,11 @@ struct Paths {
     // A frame that hands the depth off and whose ambient term nothing else wrote (no ambient target,
     // no fold into a light's pass) writes it in the hand-off's pass (depth_copy.frag AMBIENT), in
     // place of the ambient pass and of the blit (SkipOptions::ambient_pass; not with SSAO, which
-    // scales the ambient pass alone). On a CPU rasteriser, where the hand-off is a pass anyway (the
-    // target, where it can be had, costs less). Not yet on a GPU: there it would take the ambient
-    // target's place (an H200 frame at 1024 lights 2.16-2.24 -> 1.98-2.08 ms), but its first form was
-    // 35 LSB off the tutorial's passes and the corrected one is unmeasured (docs/light_geometry.md).
+    // scales the ambient pass alone). On a GPU this takes the ambient target's place: there a
+    // full-screen pass costs what the fourth target adds to the material pass, and the pass
+    // replaces the blit too (an H100 at 1024 lights: material 1.372 -> 1.082 ms, hand-off 0.150 ->
+    // 0.269). On a CPU rasteriser the target costs less than a pass, and the hand-off takes the
+    // ambient term only where it is a pass anyway (docs/light_geometry.md).
     bool ambient_in_handoff = false;
     // Non-empty: this GL cannot run these options, and why, in one line.
     std::string refused;
