@@ -24,10 +24,14 @@ struct Frames {
 
 // `frames` frames of `scene` on one DeferredShader, the last read back as `dsr render` reads it
 // (read_back: the final pass may be skipped).
+// gpu_paths: the paths a GPU gets (Caps::software_rasterizer off), drawn by this GL.
 Frames render_frames(const Scene& scene, const ShaderOptions& opts, int frames, bool read_back = true,
-                     const std::vector<std::string>& force_off = {}, int out_w = kSize, int out_h = kSize) {
+                     const std::vector<std::string>& force_off = {}, int out_w = kSize, int out_h = kSize,
+                     bool gpu_paths = false) {
     auto ctx = create_context(ContextDesc{"osmesa", std::max(kSize, out_w), std::max(kSize, out_h)});
-    DeferredShader ds(probe_caps(force_off), kSize, kSize, opts, resource_dir("glsl120"));
+    Caps caps = probe_caps(force_off);
+    if (gpu_paths) caps.software_rasterizer = false;
+    DeferredShader ds(caps, kSize, kSize, opts, resource_dir("glsl120"));
     ds.set_scene(scene);
     ds.set_read_back(read_back);
     Frames r;
@@ -260,6 +264,34 @@ TEST(PassSkips, AmbientWrittenByTheHandoff) {
         EXPECT_GT(tutorial.stats[0].ms.ambient, 0.0) << name;
         EXPECT_EQ(compare_logged(name, handoff.image, tutorial.image, 0).max_abs, 0.0) << name;
     }
+}
+
+// A GPU's paths, drawn here: no ambient target where a frame may hand off, and the hand-off that
+// would be a blit becomes the pass that writes the ambient term. The same bytes as the tutorial's
+// clear and ambient pass with the ambient target off (volume hands off every frame; auto's default
+// frames as they come).
+TEST(PassSkips, AmbientWrittenByTheHandoffOnAGpusPaths) {
+    const Scene s = with_generated_lights(default_scene(), 256);
+    for (const LightGeometry g : {LightGeometry::volume, LightGeometry::automatic}) {
+        for (const DepthPath d : {DepthPath::texture, DepthPath::packed}) {
+            ShaderOptions o;
+            o.light_geometry = g;
+            o.depth = d;
+            ShaderOptions tutorial_opts = no_skip(&SkipOptions::ambient_pass, no_target(o));
+            const Frames gpu = render_frames(s, o, 2, true, {}, kSize, kSize, true);
+            const Frames tutorial = render_frames(s, tutorial_opts, 2, true, {}, kSize, kSize, true);
+            const std::string name = std::string("a GPU's paths, ") + light_geometry_name(g) + ", " + depth_path_name(d);
+            EXPECT_FALSE(gpu.stats[1].ambient_in_material) << name;
+            if (g == LightGeometry::volume) EXPECT_TRUE(gpu.stats[1].ambient_in_handoff) << name;
+            EXPECT_FALSE(tutorial.stats[1].ambient_in_handoff) << name;
+            EXPECT_FALSE(tutorial.stats[1].ambient_in_material) << name;
+            EXPECT_EQ(compare_logged(name, gpu.image, tutorial.image, 0).max_abs, 0.0) << name;
+        }
+    }
+}
+
+TEST(PassSkips, AmbientInTheHandoffNotWhereItIsNotWanted) {
+    const Scene s = with_generated_lights(default_scene(), 256);
     // Not where the material pass writes it (this GL's default), nor with SSAO, nor where no frame
     // hands off (quad draws nothing against the scene's depth); on a CPU rasteriser not into a blit.
     ShaderOptions volume;
