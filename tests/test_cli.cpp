@@ -20,6 +20,7 @@
 #include "gl/cap_names.h"
 #include "gl/check.h"
 #include "gl/state.h"
+#include "platform/resources.h"
 #include "scene/image.h"
 
 using namespace dsr::test;
@@ -426,6 +427,8 @@ TEST(Cli, InfoNamesCapabilitiesAndPaths) {
     for (const char* k : {"GL_RENDERER", "ARB_draw_buffers", "ARB_depth_texture", "EXT_framebuffer_object",
                           "paths chosen", "depth"})
         EXPECT_NE(r.output.find(k), std::string::npos) << k;
+    // The shader folder it compiles: this tree's, since the binary is build/dsr.
+    EXPECT_NE(r.output.find("shaders        " + dsr::resource_dir("glsl120") + "\n"), std::string::npos) << r.output;
 }
 
 TEST(Cli, FiguresWritesEveryFile) {

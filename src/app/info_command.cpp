@@ -21,7 +21,10 @@ int cmd_info(const std::vector<std::string>& argv) {
     parse_command_line(info_command(flags), argv);
     auto ctx = create_context(ContextDesc{context_backend(flags.context), 512, 512, flags.context.egl_device});  // big enough to time a pass (timing line)
     Caps caps = probe_caps(split_caps(caps_with_environment(flags.caps)));
-    std::printf("context        %s\n%s", ctx->description().c_str(), describe(caps).c_str());
+    std::printf("context        %s\n", ctx->description().c_str());
+    // Which shader folder this binary compiles (resources.h): a binary moved away from its tree
+    // reads the tree it was built from, which may since hold other sources.
+    std::printf("shaders        %s\n%s", resource_dir("glsl120").c_str(), describe(caps).c_str());
     // The renderer's own chooser with `render`'s defaults (depth auto), so info cannot drift.
     ShaderOptions defaults;
     defaults.depth = DepthPath::automatic;
