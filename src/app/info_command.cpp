@@ -24,7 +24,8 @@ int cmd_info(const std::vector<std::string>& argv) {
     std::printf("context        %s\n", ctx->description().c_str());
     // Which shader folder this binary compiles (resources.h): a binary moved away from its tree
     // reads the tree it was built from, which may since hold other sources.
-    std::printf("shaders        %s\n%s", resource_dir("glsl120").c_str(), describe(caps).c_str());
+    const std::string shaders = resource_dir("glsl120");
+    std::printf("shaders        %s\n%s", shaders.c_str(), describe(caps).c_str());
     // The renderer's own chooser with `render`'s defaults (depth auto), so info cannot drift.
     ShaderOptions defaults;
     defaults.depth = DepthPath::automatic;
@@ -77,7 +78,7 @@ int cmd_info(const std::vector<std::string>& argv) {
     std::printf(")\n");
     // The shader table's programs for those defaults, built here as the renderer builds them.
     const ShaderConfig programs = shader_config(caps, defaults);
-    const ProgramSet built(resource_dir("glsl120"), programs);
+    const ProgramSet built(shaders, programs);
     std::printf("programs (render's defaults, %zu compiled and linked):\n%s", built.size(),
                 describe_programs(programs).c_str());
     return 0;
