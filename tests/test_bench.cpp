@@ -385,6 +385,8 @@ TEST(Bench, ConfigTextNamesEveryChoice) {
     EXPECT_EQ(bench::config_text(forward_row("default", 3, bench::Renderer::forward_multi, 1.0)), "forward-multi");
     r.light_geometry = LightGeometry::tiles, r.tile_size = 32, r.tile_lights = 8;  // the tiles settings as run (auto resolved)
     EXPECT_EQ(bench::config_text(r), "deferred packed/log - half tiles 32/8");
+    r.linear_law = true;  // the twin of N-large with Equation 2's law
+    EXPECT_EQ(bench::config_text(r), "deferred packed/log - half tiles 32/8 linear-law");
 }
 
 // The goals as the report states them, judged on rows made by hand: met, NOT met, not measured,
@@ -413,7 +415,7 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
     packed.depth = DepthPath::packed, packed.encoding = DepthEncoding::corrected;
     rows.insert(rows.begin(), packed);
     const std::vector<std::string> g = bench::goals(rows, "default", 3);
-    ASSERT_EQ(g.size(), 8u + 10u);  // + the light geometries' ten, none measured here
+    ASSERT_EQ(g.size(), 8u + 11u);  // + the light geometries' eleven, none measured here
     for (size_t i = 8; i < g.size(); ++i) EXPECT_NE(g[i].find("not measured in this run"), std::string::npos) << g[i];
     EXPECT_EQ(g[0], "light_invocations <= 1.25 x ideal, default with 3 lights: 120 / 100 = 1.200 -> met");
     EXPECT_EQ(g[1], "  (information, not a goal: light_fragments / ideal = 100 / 100 = 1.000; it holds by "
@@ -438,7 +440,7 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
     rows.push_back(with(deferred_row("default", 256, 3.75, 100, 100), 100, 1.0));
     rows.erase(rows.begin() + 6);  // the 3.0 ms row: the 3.75 ms one is judged
     const std::vector<std::string> h = bench::goals(rows, "default", 3);
-    ASSERT_EQ(h.size(), 9u + 10u);
+    ASSERT_EQ(h.size(), 9u + 11u);
     EXPECT_EQ(h[4], "light_invocations <= 1.25 x ideal, default with 1024 lights: 126 / 100 = 1.260 -> NOT met");
     EXPECT_EQ(h[6], "floor_ratio <= 1.5 at 1920x1080 with 1024 lights, default with 1024 lights: 1.40 ms / 1.00 ms = "
                     "1.40 (information: judged at 1920x1080 with 1024 lights only; this row is 64x64 with 1024 lights)");
@@ -480,7 +482,7 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
               "frame) -> NOT met");
 
     const std::vector<std::string> none = bench::goals({}, "default", 3);
-    ASSERT_EQ(none.size(), 6u + 10u);
+    ASSERT_EQ(none.size(), 6u + 11u);
     EXPECT_EQ(none[4], "deferred >= 10x faster than the faster forward multi-pass at 256 lights: not measured in this run");
     EXPECT_EQ(none[5], "cpu ms <= 0.5 a frame at 4096 lights: not measured in this run");
 }
@@ -506,7 +508,7 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     };
     rows[3].lights_label = rows[4].lights_label = "1024-overlap";
     const std::vector<std::string> g = bench::geometry_goals(rows, "default", 3);
-    ASSERT_EQ(g.size(), 10u);
+    ASSERT_EQ(g.size(), 11u);
     EXPECT_EQ(g[0], "stencil light_invocations <= 1.25 x ideal, default with 3 lights: 110 / 100 = 1.100 -> met");
     EXPECT_EQ(g[1], "stencil light_invocations <= 1.25 x ideal, default with 1024 lights: 200 / 100 = 2.000 -> NOT met");
     EXPECT_EQ(g[2], "tiles >= 3x faster than quad on 1024-overlap: 9.00 ms / 2.00 ms = 4.50x -> met");
@@ -514,11 +516,13 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
                     "in this run");
     EXPECT_NE(g[4].find("largest 2 LSB"), std::string::npos) << g[4];
     EXPECT_NE(g[4].find("-> NOT met"), std::string::npos) << g[4];
+    EXPECT_EQ(g[5], "attenuation law's light stage <= 1.05 x the linear law's on the same pairs, 32-large: not "
+                    "measured in this run");
     // auto: one line per bench scene, not judged without an auto row.
-    EXPECT_EQ(g[5], "auto <= 1.1 x the fastest fixed geometry (quad, volume, stencil, tiles), default at --lights own: "
+    EXPECT_EQ(g[6], "auto <= 1.1 x the fastest fixed geometry (quad, volume, stencil, tiles), default at --lights own: "
                     "not measured in this run (no auto row)");
-    EXPECT_NE(g[8].find("default at --lights 1024-overlap: not measured"), std::string::npos) << g[8];
-    EXPECT_NE(g[9].find("default at --lights 32-large: not measured"), std::string::npos) << g[9];
+    EXPECT_NE(g[9].find("default at --lights 1024-overlap: not measured"), std::string::npos) << g[9];
+    EXPECT_NE(g[10].find("default at --lights 32-large: not measured"), std::string::npos) << g[10];
 
     // A GL whose invocation counter counts fragments the stencil rejects cannot judge the stencil
     // goal: neither met nor NOT met, with the occlusion-query ratio as information. A GL whose
@@ -552,7 +556,7 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     fast.tile_size = 16, fast.tile_lights = 32;
     rows.insert(rows.end(), {fwd, slow, fast});
     const std::vector<std::string> l = bench::geometry_goals(rows, "default", 3);
-    ASSERT_EQ(l.size(), 11u);
+    ASSERT_EQ(l.size(), 12u);
     EXPECT_EQ(l[3], g[3]);
     const std::string bound =
         "  (information, withdrawn as a goal: best deferred against forward single-pass on 32-large: forward-single "
@@ -617,15 +621,59 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     overlap_auto.lights_label = "1024-overlap";
     rows.insert(rows.end(), {own_auto, overlap_auto});
     const std::vector<std::string> a = bench::geometry_goals(rows, "default", 3);
-    ASSERT_EQ(a.size(), 12u);
-    EXPECT_EQ(a[7], "auto <= 1.1 x the fastest fixed geometry (quad, volume, stencil, tiles), default at --lights own: "
+    ASSERT_EQ(a.size(), 13u);
+    EXPECT_EQ(a[7], "attenuation law's light stage <= 1.05 x the linear law's on the same pairs, 32-large: not "
+                    "measured in this run (no linear-law row)");
+    EXPECT_EQ(a[8], "auto <= 1.1 x the fastest fixed geometry (quad, volume, stencil, tiles), default at --lights own: "
                     "auto 1.05 ms / quad 1.00 ms = 1.05 -> met");
-    EXPECT_NE(a[8].find("--lights 256: not measured in this run (no auto row)"), std::string::npos) << a[8];
-    EXPECT_NE(a[9].find("--lights 1024: not measured in this run (no auto row)"), std::string::npos) << a[9];
-    EXPECT_EQ(a[10], "auto <= 1.1 x the fastest fixed geometry (quad, volume, stencil, tiles), default at --lights "
-                     "1024-overlap: auto 2.50 ms / tiles 2.00 ms = 1.25 -> NOT met");
+    EXPECT_NE(a[9].find("--lights 256: not measured in this run (no auto row)"), std::string::npos) << a[9];
+    EXPECT_NE(a[10].find("--lights 1024: not measured in this run (no auto row)"), std::string::npos) << a[10];
     EXPECT_EQ(a[11], "auto <= 1.1 x the fastest fixed geometry (quad, volume, stencil, tiles), default at --lights "
+                     "1024-overlap: auto 2.50 ms / tiles 2.00 ms = 1.25 -> NOT met");
+    EXPECT_EQ(a[12], "auto <= 1.1 x the fastest fixed geometry (quad, volume, stencil, tiles), default at --lights "
                      "32-large: auto 12.00 ms / tiles 5.00 ms = 2.40 -> NOT met");
+}
+
+// The law goal: dsr's default row on 32-large against its linear-law twin (the same lights with
+// Equation 2's law at their radii), light stage against light stage; the linear-law rows are never
+// dsr's default, and the other geometries' pairs follow as information.
+TEST(Bench, LawGoalPricesTheAttenuationLawOnTheSamePairs) {
+    auto large = [](LightGeometry g, double lights_ms, bool linear) {
+        bench::Row r = deferred_row("large", 32, lights_ms + 2, 500, 500);
+        r.lights_label = "32-large";
+        r.light_geometry = g;
+        r.lights_ms = lights_ms;
+        r.linear_law = linear;
+        return r;
+    };
+    const auto law_line = [](const std::vector<bench::Row>& rows) {
+        for (const std::string& l : bench::geometry_goals(rows, "default", 3))
+            if (l.rfind("attenuation law's", 0) == 0) return l;
+        return std::string();
+    };
+    std::vector<bench::Row> rows = {large(LightGeometry::quad, 40, true), large(LightGeometry::quad, 42, false)};
+    // The linear-law quad row comes first, yet dsr's default is the scene's own quad row.
+    EXPECT_EQ(bench::find_default_row(rows, "large", 32), &rows[1]);
+    EXPECT_EQ(bench::find_linear_law_row(rows, "large", 32, LightGeometry::quad), &rows[0]);
+    EXPECT_EQ(law_line(rows), "attenuation law's light stage <= 1.05 x the linear law's on the same pairs, 32-large: "
+                              "light stage, attenuation law / linear law, quad: 42.00 ms / 40.00 ms = 1.05 (500 ideal "
+                              "pairs each) -> met");
+    // With auto rows, auto's pair is judged (10.2 / 9.5 = 1.07: NOT met) and quad's is information.
+    rows.push_back(large(LightGeometry::automatic, 10.2, false));
+    EXPECT_EQ(law_line(rows), "attenuation law's light stage <= 1.05 x the linear law's on the same pairs, 32-large: "
+                              "not measured in this run (no linear-law row)");
+    rows.push_back(large(LightGeometry::automatic, 9.5, true));
+    const std::vector<std::string> g = bench::geometry_goals(rows, "default", 3);
+    const auto at = std::find(g.begin(), g.end(), law_line(rows));
+    ASSERT_NE(at, g.end());
+    EXPECT_EQ(*at, "attenuation law's light stage <= 1.05 x the linear law's on the same pairs, 32-large: light "
+                   "stage, attenuation law / linear law, auto: 10.20 ms / 9.50 ms = 1.07 (500 ideal pairs each) -> NOT "
+                   "met");
+    ASSERT_NE(at + 1, g.end());
+    EXPECT_EQ(*(at + 1), "  (information: the same for the other geometries: quad 42.00 ms / 40.00 ms = 1.05)");
+    // A linear-law row outside the default configuration is not the twin.
+    rows.back().skip.depth_prepass = false;
+    EXPECT_NE(law_line(rows).find("(no linear-law row)"), std::string::npos);
 }
 
 // Where the GL cannot count (no ARB_pipeline_statistics_query, no occlusion queries), the rows say
@@ -709,7 +757,7 @@ TEST(Bench, FastestRowIsTheFasterForm) {
 TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     const nlohmann::ordered_json f = bench::row_json(forward_row("default", 3, bench::Renderer::forward_single, 2.0));
     const std::vector<std::string> keys = {
-        "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "gbuffer_bytes_per_pixel", "light_geometry", "tile_size", "tile_lights", "scissor", "skips_off",
+        "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "gbuffer_bytes_per_pixel", "light_geometry", "tile_size", "tile_lights", "scissor", "skips_off", "linear_law",
         "lights", "lights_label", "size", "frames", "ms_median", "ms_min", "ms_max", "cpu_ms_median", "light_fragments",
         "ideal_fragments", "fragments_ratio", "scissor_pixels", "lights_drawn", "passes", "max_lsb", "mean_lsb",
         "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic", "light_invocations",

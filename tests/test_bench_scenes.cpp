@@ -13,6 +13,7 @@
 #include "deferred/light_volume.h"
 #include "dsr_error.h"
 #include "platform/resources.h"
+#include "scene/light_law.h"
 
 namespace {
 
@@ -61,6 +62,32 @@ TEST(BenchScenes, LargeLightsEachCoverMostOfTheScreen) {
                 100 * min_frac);
     EXPECT_GT(min_frac, 0.5);
     EXPECT_GT(rmin, 3.0);
+}
+
+// The law goal's twin: the same lights with Equation 2's law at the same radius, so each light's
+// volume (and so every pixel-light pair) is the scene's, and only the law's value differs.
+TEST(BenchScenes, LinearLawTwinKeepsEveryVolume) {
+    const Scene s = large_lights_scene(32);
+    const Scene t = linear_law_twin(s);
+    ASSERT_EQ(t.lights.size(), s.lights.size());
+    int differs = 0;
+    for (size_t i = 0; i < s.lights.size(); ++i) {
+        const Light &a = s.lights[i], &b = t.lights[i];
+        EXPECT_TRUE(a.attenuation);
+        EXPECT_FALSE(b.attenuation);
+        EXPECT_EQ(a.pos, b.pos);
+        EXPECT_EQ(a.color, b.color);
+        const LightVolume va = light_volume(a), vb = light_volume(b);
+        EXPECT_EQ(va.pos, vb.pos);
+        EXPECT_EQ(va.radius, vb.radius);
+        // Equation 2 at half the radius is 1/2; the attenuation law there is not.
+        const double d = 0.5 * a.radius;
+        EXPECT_DOUBLE_EQ(distance_factor(b, d), 0.5);
+        differs += std::abs(distance_factor(a, d) - 0.5) > 0.01;
+        EXPECT_EQ(distance_factor(b, 1.001 * b.radius), 0.0);
+    }
+    EXPECT_EQ(differs, 32);
+    EXPECT_EQ(t.objects.size(), s.objects.size());
 }
 
 // N-large is LearnOpenGL's demo as its source sets it up: its object positions, its camera, and its

@@ -282,7 +282,9 @@ TEST(PassSkips, AmbientWrittenByTheHandoffOnAGpusPaths) {
             const Frames tutorial = render_frames(s, tutorial_opts, 2, true, {}, kSize, kSize, true);
             const std::string name = std::string("a GPU's paths, ") + light_geometry_name(g) + ", " + depth_path_name(d);
             EXPECT_FALSE(gpu.stats[1].ambient_in_material) << name;
-            if (g == LightGeometry::volume) EXPECT_TRUE(gpu.stats[1].ambient_in_handoff) << name;
+            if (g == LightGeometry::volume) {
+                EXPECT_TRUE(gpu.stats[1].ambient_in_handoff) << name;
+            }
             EXPECT_FALSE(tutorial.stats[1].ambient_in_handoff) << name;
             EXPECT_FALSE(tutorial.stats[1].ambient_in_material) << name;
             EXPECT_EQ(compare_logged(name, gpu.image, tutorial.image, 0).max_abs, 0.0) << name;

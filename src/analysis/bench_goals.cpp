@@ -273,6 +273,39 @@ Figure demo(const Goal& g, const GoalInput& in) {
     return f;
 }
 
+// The attenuation law against Equation 2's linear law on the same pixel-light pairs (N-large's rows
+// and their linear-law twins, timed in the same rounds): the light stage of dsr's default geometry
+// under each law. Each light program is built in a form per law (docs/light_geometry.md), so the
+// attenuation law should cost no more per pair than the linear one; the other geometries' ratios
+// follow as information.
+Figure law(const Goal& g, const GoalInput& in) {
+    std::string scene;
+    int n = 0;
+    if (!variant_of(in.rows, g.on, scene, n)) return not_judged();
+    const Row* a = find_default_row(in.rows, scene, n);
+    const Row* l = a ? find_linear_law_row(in.rows, scene, n, a->light_geometry) : nullptr;
+    if (!a || !l || !a->lights_ms || !l->lights_ms)
+        return not_judged(std::string(kNotMeasured) + " (no linear-law row)", kNotMeasured);
+    const auto working = [](const Row& x, const Row& y) {
+        return ms(*x.lights_ms) + " / " + ms(*y.lights_ms) + " = " + format_number("%.2f", *x.lights_ms / *y.lights_ms);
+    };
+    Figure f = judged(*a->lights_ms, *l->lights_ms,
+                      "light stage, attenuation law / linear law, " + std::string(light_geometry_name(a->light_geometry)) +
+                          ": " + working(*a, *l) +
+                          (a->ideal_fragments ? " (" + std::to_string(*a->ideal_fragments) + " ideal pairs each)" : ""));
+    std::string others;
+    for (LightGeometry geo : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles,
+                              LightGeometry::screen}) {
+        if (geo == a->light_geometry) continue;
+        const Row* x = find_geometry_row(in.rows, scene, n, geo);
+        const Row* y = find_linear_law_row(in.rows, scene, n, geo);
+        if (x && y && x->lights_ms && y->lights_ms)
+            others += std::string(others.empty() ? "" : "; ") + light_geometry_name(geo) + " " + working(*x, *y);
+    }
+    if (!others.empty()) f.info.push_back("(information: the same for the other geometries: " + others + ")");
+    return f;
+}
+
 // On each bench scene, the auto geometry against the fastest fixed one (quad, volume, stencil,
 // tiles) on the default configuration: auto's choices should cost little over the best single
 // geometry's.
@@ -436,6 +469,11 @@ const std::vector<Goal>& goal_table() {
         {"geometry_lsb", GoalGroup::light_geometry, Scope::once, "every light geometry within {t} LSB of quad's image",
          "every way of drawing the lights gives quad's image to within {t} LSB", 1, Comparison::at_most, "",
          geometry_lsb},
+        {"law", GoalGroup::light_geometry, Scope::once,
+         "attenuation law's light stage {cmp} {t} x the linear law's on the same pairs, {on}",
+         "a light with LearnOpenGL's attenuation law costs {cmp words} {t} times one with the tutorial's linear law on "
+         "the same pixels ({on})",
+         1.05, Comparison::at_most, "32-large", law},
         {"auto", GoalGroup::light_geometry, Scope::per_light_set,
          "auto {cmp} {t} x the fastest fixed geometry (quad, volume, stencil, tiles), {scene} at --lights {set}",
          "the auto light geometry takes {cmp words} {t} times the fastest fixed geometry's time ({scene}, --lights "
@@ -480,6 +518,17 @@ const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& sc
     for (const Row& r : rows)
         if (r.scene == scene && r.lights == lights && default_configuration(r) && r.light_geometry == geometry)
             return &r;
+    return nullptr;
+}
+
+const Row* find_linear_law_row(const std::vector<Row>& rows, const std::string& scene, int lights,
+                               LightGeometry geometry) {
+    for (const Row& r : rows) {
+        if (!r.linear_law || r.scene != scene || r.lights != lights || r.light_geometry != geometry) continue;
+        Row as_scene = r;
+        as_scene.linear_law = false;
+        if (default_configuration(as_scene)) return &r;
+    }
     return nullptr;
 }
 

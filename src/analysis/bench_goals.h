@@ -89,6 +89,11 @@ const Row* fastest_row(const std::vector<Row>& rows, const std::string& scene, i
 const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& scene, int lights,
                              LightGeometry geometry);
 
+// The default configuration with this light geometry, drawing the scene's linear-law twin
+// (Row::linear_law, N-large only). Null when the run has none.
+const Row* find_linear_law_row(const std::vector<Row>& rows, const std::string& scene, int lights,
+                               LightGeometry geometry);
+
 // dsr's default: the default configuration with the default light geometry, auto; quad's row
 // where the run has no auto row. Null when it has neither.
 const Row* find_default_row(const std::vector<Row>& rows, const std::string& scene, int lights);

@@ -59,11 +59,14 @@ struct Variant {
     std::string lights_label;
     std::optional<AnalyticTrace> trace;
     std::vector<uint8_t> interior;
+    // N-large: the scene with the linear law (linear_law_twin), which the linear-law rows draw.
+    std::optional<Scene> linear_twin;
 };
 
 // One row's renderer, alive for the whole variant so that frames can be interleaved.
 struct RowRun {
     Row row;
+    const Scene* scene = nullptr;  // what it draws: the variant's scene, or its linear_twin
     std::unique_ptr<DeferredShader> ds;
     std::unique_ptr<ForwardRenderer> fr;
     std::vector<double> ms, depth_copy_ms, lights_ms, cpu_ms;
@@ -122,8 +125,9 @@ std::unique_ptr<RowRun> deferred(const Setup& st, const Variant& v, const Row& w
     for (const Light& l : v.scene.lights) o.shadow_lights = o.shadow_lights || l.shadow.on;
     o.shadows.reuse = false;
     auto run = std::make_unique<RowRun>();
+    run->scene = want.linear_law ? &*v.linear_twin : &v.scene;
     run->ds = std::make_unique<DeferredShader>(st.caps, v.w, v.h, o, st.shaders);
-    run->ds->set_scene(v.scene);
+    run->ds->set_scene(*run->scene);
     run->ds->set_read_back(true);  // its image is read back (read_output): the final pass may be skipped
     Row& r = run->row = base_row(st.cfg, v, Renderer::deferred);
     r.depth = want.depth;
@@ -132,6 +136,7 @@ std::unique_ptr<RowRun> deferred(const Setup& st, const Variant& v, const Row& w
     r.accum_format = want.accum_format;
     r.scissor = want.scissor;
     r.skip = want.skip;
+    r.linear_law = want.linear_law;
     r.gbuffer_bytes_per_pixel = run->ds->paths().gbuffer_bytes_per_pixel;
     r.light_geometry = run->ds->paths().light_geometry;
     if (r.light_geometry == LightGeometry::tiles)
@@ -148,6 +153,7 @@ std::unique_ptr<RowRun> forward(const Setup& st, const Variant& v, ForwardMode m
     o.float_target = float_target;
     o.shadows.reuse = false;  // as the deferred rows: the shadow rows' maps drawn in every timed frame
     auto run = std::make_unique<RowRun>();
+    run->scene = &v.scene;
     run->fr = std::make_unique<ForwardRenderer>(st.caps, v.w, v.h, o, st.shaders);
     run->fr->set_scene(v.scene);
     run->row = base_row(st.cfg, v, mode == ForwardMode::single ? Renderer::forward_single : Renderer::forward_multi);
@@ -180,6 +186,7 @@ Variant make_variant(const Setup& st, const std::string& path, const std::string
     v.name = name;
     std::tie(v.w, v.h) = variant_size(st.cfg, spec.set);
     v.scene = bench_scene(load_scene(path), spec);
+    if (spec.set == LightSet::large) v.linear_twin = linear_law_twin(v.scene);
     v.sweep_index = sweep_index;
     v.lights_label = (spec.count < 0 ? std::string("own") : std::to_string(spec.count)) +
                      (spec.set == LightSet::overlap ? "-overlap"
@@ -239,6 +246,19 @@ Runs build_runs(const Setup& st, const Variant& v, bool first, std::vector<std::
             r.light_geometry = g;
             add(r);
         }
+    // On N-large, the default configuration of quad and each geometry again with the linear law
+    // (goal `law`): the light programs' cost per pair under each law, in the same rounds.
+    if (v.linear_twin) {
+        std::vector<LightGeometry> gs = {LightGeometry::quad};
+        gs.insert(gs.end(), st.cfg.geometries.begin(), st.cfg.geometries.end());
+        for (size_t i = 0; i < gs.size(); ++i)
+            if (std::find(gs.begin(), gs.begin() + long(i), gs[i]) == gs.begin() + long(i)) {
+                Row r = config(DepthPath::texture, true);
+                r.light_geometry = gs[i];
+                r.linear_law = true;
+                add(r);
+            }
+    }
     // The other documents' G-buffer: eye-space position stored in a float target, where the GL has one.
     for (DepthPath d : {DepthPath::position16, DepthPath::position32}) {
         ShaderOptions probe;
@@ -295,7 +315,7 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
     for (auto& run : runs) {
         double first = 0;
         for (int i = 0; i < cfg.warmup; ++i) {
-            double ms = run->frame(v.scene, v.w, v.h);
+            double ms = run->frame(*run->scene, v.w, v.h);
             if (i == 0) first = ms;
             if (ms > kSlowFrameMs) break;  // a slow frame is its own warm-up
         }
@@ -310,7 +330,7 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
     for (int f = 0; f < rounds; ++f) {
         for (auto& run : runs) {
             if (f >= run->row.frames) continue;
-            run->ms.push_back(run->frame(v.scene, v.w, v.h));
+            run->ms.push_back(run->frame(*run->scene, v.w, v.h));
             if (f + 1 == run->row.frames)
                 run->image = opaque(run->ds ? run->ds->read_output(v.w, v.h) : read_pixels(v.w, v.h));
         }
@@ -320,7 +340,7 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
     for (auto& run : runs)
         if (run->ds) {
             run->ds->set_counting(true);
-            run->last = run->ds->render(v.scene, v.w, v.h);
+            run->last = run->ds->render(*run->scene, v.w, v.h);
         }
 }
 
@@ -341,16 +361,33 @@ std::map<GbufferLayout, FloorParts> floor_parts(Floors& floors) {
 IdealCount variant_ideal(const Config& cfg, const Variant& v, const Runs& runs) {
     if (v.trace) return ideal_from_eye_depth(v.scene, v.w, v.h, v.trace->eye_depth);
     for (auto& run : runs)
-        if (run->ds && run->ds->options().depth == DepthPath::texture)
+        if (run->ds && run->ds->options().depth == DepthPath::texture && !run->row.linear_law)
             return ideal_from_depth_codes(v.scene, v.w, v.h, run->ds->read_gbuffer_depth_codes());
     return {};
 }
 
-// The default configuration's quad image: every light geometry is compared with it.
-const Image* quad_image(const Runs& runs) {
-    for (auto& run : runs)
-        if (default_configuration(run->row) && run->row.light_geometry == LightGeometry::quad) return &run->image;
+// The default configuration's quad image: every light geometry is compared with it (the
+// linear-law rows with the linear-law quad row's).
+const Image* quad_image(const Runs& runs, bool linear_law = false) {
+    for (auto& run : runs) {
+        Row r = run->row;
+        if (r.linear_law != linear_law) continue;
+        r.linear_law = false;
+        if (default_configuration(r) && r.light_geometry == LightGeometry::quad) return &run->image;
+    }
     return nullptr;
+}
+
+// The linear-law rows' forward reference: the twin drawn once as runs[0] (`ref_row`) draws the scene.
+Image twin_reference(const Setup& st, const Variant& v, const Row& ref_row) {
+    ForwardOptions o;
+    o.mode = ForwardMode::single;
+    o.float_target = ref_row.float_accum.value_or(false);
+    o.shadows.reuse = false;
+    ForwardRenderer fr(st.caps, v.w, v.h, o, st.shaders);
+    fr.set_scene(*v.linear_twin);
+    fr.render(*v.linear_twin);
+    return opaque(read_pixels(v.w, v.h));
 }
 
 // Each row's figures from its frames: times, counts, the floor, the errors against the references.
@@ -386,7 +423,8 @@ void finish_row(const Config& cfg, const Variant& v, RowRun& run, const IdealCou
         r.passes = run.last_forward.passes;
     }
     r.err = compare_images(run.image, ref, 1.0 / 255.0);
-    if (v.trace) r.err_analytic = compare_images_masked(run.image, v.trace->image, v.interior, 1.0 / 255.0);
+    if (v.trace && !r.linear_law)  // the trace has the scene's law
+        r.err_analytic = compare_images_masked(run.image, v.trace->image, v.interior, 1.0 / 255.0);
 }
 
 }  // namespace
@@ -408,7 +446,7 @@ std::vector<std::string> skips_off(const SkipOptions& skip) {
 }
 
 bool default_configuration(const Row& r) {
-    return r.renderer == Renderer::deferred && r.depth == DepthPath::texture && r.scissor &&
+    return r.renderer == Renderer::deferred && !r.linear_law && r.depth == DepthPath::texture && r.scissor &&
            skips_off(r.skip).empty() && !r.gbuffer_half && r.accum_format == AccumFormat::rgba8;
 }
 
@@ -423,6 +461,7 @@ std::string config_text(const Row& r) {
     for (auto& k : skips_off(r.skip)) s += " no-" + k;
     if (r.light_geometry != LightGeometry::quad) s += std::string(" ") + light_geometry_name(r.light_geometry);
     if (r.tile_size && r.tile_lights) s += " " + std::to_string(*r.tile_size) + "/" + std::to_string(*r.tile_lights);
+    if (r.linear_law) s += " linear-law";
     return s;
 }
 
@@ -497,9 +536,11 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
     time_frames(cfg_, v, runs, floors);
     const std::map<GbufferLayout, FloorParts> parts = floor_parts(floors);
     const IdealCount ideal = variant_ideal(cfg_, v, runs);
-    const Image* quad = quad_image(runs);
+    const Image* quad = quad_image(runs), *linear_quad = quad_image(runs, true);
+    const Image linear_ref = v.linear_twin ? twin_reference(st, v, runs[0]->row) : Image{};
     for (auto& run : runs) {
-        finish_row(cfg_, v, *run, ideal, parts, runs[0]->image, quad);
+        const bool linear = run->row.linear_law;  // against the twin's own reference and quad row
+        finish_row(cfg_, v, *run, ideal, parts, linear ? linear_ref : runs[0]->image, linear ? linear_quad : quad);
         const Row& r = run->row;
         say(printf_line("bench [%d/%d] %s, %d lights: %-46s %9.2f ms (%d frames)", index + 1, total, r.scene.c_str(),
                         r.lights, config_text(r).c_str(), r.ms_median, r.frames));

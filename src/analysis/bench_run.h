@@ -67,6 +67,10 @@ struct Row {
     AccumFormat accum_format = AccumFormat::rgba8;  // deferred rows: P-buffer 0 (--accum, docs/hdr.md); JSON `accum`
     LightGeometry light_geometry = LightGeometry::quad;
     std::optional<int> tile_size, tile_lights;
+    // Deferred rows on N-large: the scene's lights drawn with Equation 2's linear law at their own
+    // radii (linear_law_twin), beside the rows with the scene's attenuation law, on the same pixel-light
+    // pairs: goal `law`. Compared with the twin's own forward reference and quad row. JSON `linear_law`.
+    bool linear_law = false;
     bool scissor = false;
     SkipOptions skip;                       // every skip on unless the row turned one off
     int lights = 0, w = 0, h = 0, frames = 0;
@@ -94,7 +98,7 @@ struct Row {
 
 // The default configuration, on which the goals are judged and every light geometry's image is
 // compared: a deferred row with the depth texture, scissor on, every skip on and the RGBA8
-// G-buffer, whatever its light geometry.
+// G-buffer, whatever its light geometry, drawing the scene's own lights (not linear_law).
 bool default_configuration(const Row& r);
 
 // The row's configuration as the tables print it: "forward-multi", "deferred texture sc",

@@ -172,6 +172,11 @@ Scene with_overlapping_lights(const Scene& scene, int n) {
     return out;
 }
 
+Scene linear_law_twin(Scene scene) {
+    for (Light& l : scene.lights) l.attenuation = false;  // radius is the law's cut-off already
+    return scene;
+}
+
 Scene large_lights_scene(int n) {
     if (n < 0) throw Error("bench scenes: negative light count");
     Scene s;

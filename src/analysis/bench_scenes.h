@@ -55,6 +55,12 @@ Scene with_overlapping_lights(const Scene& scene, int n);
 // tests/test_bench_scenes.cpp). n = 32 is the demo's own set; larger n continue the same sequence.
 Scene large_lights_scene(int n);
 
+// `scene` with every light of the attenuation law given Equation 2's linear law at the same radius
+// (its volume, scissor rectangle and pixels unchanged; only the law's arithmetic differs): the
+// bench's linear-law rows on N-large, which price the attenuation law's light programs against the
+// tutorial's on the same pixel-light pairs (goal `law`).
+Scene linear_law_twin(Scene scene);
+
 // with_generated_lights' n lights made spot lights with `shadow` (the default map): each at its
 // place raised by half its radius, shining straight down with a 50-degree half-angle, so the
 // objects between it and the floor cast shadows on it. The bench's shadow rows.
