@@ -8,6 +8,10 @@
 // VOLUME: the light's volume mesh instead (light geometries volume and stencil).
 // ID_VECS (light_tiles.frag): texture coordinates 2.. carry the quad's light slots, two a float.
 // BATCH (light.frag): texture coordinate 2 carries the quad's light slot.
+// VOLUME_BATCH (with BATCH and VOLUME): many lights' volume meshes in one draw, each copy of the unit
+// sphere's mesh (gl_Vertex) carrying its light's slot; the vertex is the light's eye-space centre
+// plus its radius times the unit vertex (batch_pos: eye-space centre, radius), drawn with the
+// frame's projection and an identity modelview, as the mesh of one light is drawn scaled and moved.
 varying vec2 texcoord;
 varying vec3 vpos;
 #ifdef ID_VECS
@@ -16,10 +20,18 @@ varying vec4 ids[ID_VECS];
 #ifdef BATCH
 varying float slot;  // the light's slot in light.frag's arrays, from texture coordinate 2
 #endif
+#ifdef VOLUME_BATCH
+uniform vec4 batch_pos[BATCH];
+#endif
 
 void main()
 {
+#ifdef VOLUME_BATCH
+    vec4 lp = batch_pos[int(gl_MultiTexCoord2.x + 0.5)];
+    gl_Position = gl_ModelViewProjectionMatrix * vec4(lp.xyz + lp.w * gl_Vertex.xyz, 1.0);
+#else
     gl_Position = ftransform();
+#endif
 #ifdef VOLUME
     texcoord = vec2(0.0);
     vpos = vec3(0.0);

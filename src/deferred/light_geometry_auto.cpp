@@ -33,6 +33,7 @@ public:
         : quads_(programs, c.tile_batch),
           shadow_quads_(programs, false, true),  // no depth bounds: the hand-off is only for volumes here
           volume_progs_(programs, "light_volume"),
+          volume_batch_(programs, c.tile_batch, meshes_),
           tiles_(make_tiles_pass(c, programs, width, height)),
           model_(default_light_costs(c.caps.software_rasterizer)),
           calib_(start_calibration()),
@@ -206,8 +207,12 @@ public:
             });
         if (!by_path[int(LightPath::volume)].empty())
             timed(LightPath::volume, raw, [&] {
+                std::vector<const LightDraw*> batched, one_by_one;
+                for (const LightDraw* l : by_path[int(LightPath::volume)])
+                    (LightVolumeBatch::takes(*l) ? batched : one_by_one).push_back(l);
+                volume_batch_.draw(f, batched, q, stats);
                 volume_progs_.begin(f);
-                meshes_.shade_volumes(f, by_path[int(LightPath::volume)], volume_progs_, q, stats);
+                meshes_.shade_volumes(f, one_by_one, volume_progs_, q, stats);
             });
         if (!by_path[int(LightPath::quad)].empty())
             timed(LightPath::quad, raw, [&] {
@@ -311,6 +316,7 @@ private:
     LightQuads shadow_quads_;  // the quad path's shadowed lights, one by one
     LightMeshes meshes_;
     LightPrograms volume_progs_;
+    LightVolumeBatch volume_batch_;  // its point lights' meshes in batches
     std::unique_ptr<TilesPass> tiles_;
     LightCostModel model_;
     LightCostCalibration calib_;

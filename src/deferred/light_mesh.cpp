@@ -96,4 +96,78 @@ void LightMeshes::shade_volumes(const FrameDef& f, const std::vector<const Light
     }
 }
 
+LightVolumeBatch::LightVolumeBatch(ProgramSet& programs, int batch, const LightMeshes& meshes)
+    : progs_(programs, "light_volume_batch"), batch_(batch) {
+    const VolumeMesh& m = meshes.unit_sphere();
+    mesh_indices_ = GLsizei(m.indices.size());
+    std::vector<float> verts;
+    std::vector<uint32_t> idx;
+    verts.reserve(size_t(batch) * m.vertices.size() * 4);
+    idx.reserve(size_t(batch) * m.indices.size());
+    for (int k = 0; k < batch; ++k) {
+        const uint32_t base = uint32_t(size_t(k) * m.vertices.size());
+        for (const glm::vec3& v : m.vertices) verts.insert(verts.end(), {v.x, v.y, v.z, float(k)});
+        for (uint32_t i : m.indices) idx.push_back(base + i);
+    }
+    glGenBuffers(1, &vbo_);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(verts.size() * sizeof(float)), verts.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glGenBuffers(1, &ibo_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo_);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(idx.size() * sizeof(uint32_t)), idx.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
+LightVolumeBatch::~LightVolumeBatch() {
+    if (vbo_) glDeleteBuffers(1, &vbo_);
+    if (ibo_) glDeleteBuffers(1, &ibo_);
+}
+
+bool LightVolumeBatch::takes(const LightDraw& l) {
+    return l.eye.kind == LightVolume::Kind::sphere && l.light->type == Light::Type::point && l.shadow < 0;
+}
+
+void LightVolumeBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightQueries& q,
+                            FrameStats& stats) {
+    if (lights.empty()) return;
+    gl_state().set_camera(f.proj);
+    progs_.begin(f);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo_);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glVertexPointer(3, GL_FLOAT, 4 * sizeof(float), nullptr);
+    glClientActiveTexture(GL_TEXTURE2);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glTexCoordPointer(1, GL_FLOAT, 4 * sizeof(float), reinterpret_cast<const void*>(3 * sizeof(float)));
+    for (LightShader form : {LightShader::point_linear, LightShader::point_inverse, LightShader::any}) {
+        std::vector<const LightDraw*> mine;
+        for (const LightDraw* l : lights)
+            if (l->shader() == form) mine.push_back(l);
+        Program& prog = progs_[form];
+        for (size_t first = 0; first < mine.size(); first += size_t(batch_)) {
+            const size_t n = std::min(mine.size() - first, size_t(batch_));
+            arrays_.clear();
+            for (size_t k = 0; k < n; ++k) arrays_.add(mine[first + k]->params);
+            RenderState s = light_pass_state(prog.id(), false);
+            s.cull = true;
+            s.cull_face = GL_FRONT;  // back faces only, as shade_volumes
+            s.depth_test = true;
+            s.depth_func = GL_GREATER;
+            s.depth_write = false;
+            gl_state().apply(s);
+            arrays_.set(prog, LightArrays::kBatch);
+            q.begin();
+            glDrawElements(GL_TRIANGLES, GLsizei(n) * mesh_indices_, GL_UNSIGNED_INT, nullptr);
+            q.end();
+            ++stats.light_passes;
+        }
+    }
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    glClientActiveTexture(GL_TEXTURE0);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
 }  // namespace dsr

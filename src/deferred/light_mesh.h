@@ -5,6 +5,7 @@
 #include "deferred/frame_stats.h"
 #include "deferred/light_pass.h"
 #include "deferred/light_volume.h"
+#include "gl/gl.h"
 
 namespace dsr {
 
@@ -31,9 +32,36 @@ public:
     void shade_volumes(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightPrograms& progs,
                        LightQueries& q, FrameStats& stats) const;
 
+    const VolumeMesh& unit_sphere() const { return unit_sphere_; }
+
 private:
     VolumeMesh unit_sphere_;  // volume_mesh of the unit sphere at the origin
     float reach_ = 1;         // its farthest vertex from the centre
+};
+
+// The volume geometry's passes for many point lights in a few draws (pseudo-instancing, as
+// LightQuadBatch draws quads): buffer objects hold `batch` copies of the unit sphere's mesh, each
+// vertex with its copy's slot, and light.vert's VOLUME_BATCH places copy k at light k of the
+// batch's uniform arrays. The same back faces, depth test and light program form as
+// shade_volumes, so the same pixels; the CPU sends only the arrays.
+class LightVolumeBatch {
+public:
+    LightVolumeBatch(ProgramSet& programs, int batch, const LightMeshes& meshes);
+    ~LightVolumeBatch();
+    LightVolumeBatch(const LightVolumeBatch&) = delete;
+    LightVolumeBatch& operator=(const LightVolumeBatch&) = delete;
+    // Which lights it draws: point lights (their volume the unit sphere's mesh scaled) without a
+    // shadow map (a batch binds none).
+    static bool takes(const LightDraw& l);
+    // `lights` (each takes() and none past far), one light pass counted per draw.
+    void draw(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightQueries& q, FrameStats& stats);
+
+private:
+    LightPrograms progs_;
+    int batch_;
+    GLsizei mesh_indices_;  // indices of one copy
+    GLuint vbo_ = 0, ibo_ = 0;
+    LightArrays arrays_;
 };
 
 }  // namespace dsr

@@ -27,11 +27,18 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
     // light within the fragment stage's uniform budget (GL 2.0 guarantees 64 vec4s; llvmpipe and
     // NVIDIA give 1024), a few vec4s kept for the other uniforms, and below tile_plan's empty-slot
     // index 255.
-    if (tiles || g == LightGeometry::screen) {
+    if (tiles || g == LightGeometry::screen || g == LightGeometry::volume) {
         GLint comps = 0;
         glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
         const bool groups = tiles && c.opts.tile_plan == TileGrouping::groups;
         c.tile_batch = groups ? c.opts.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
+        // The batched volume meshes (auto, volume) place each copy from the batch's positions in the
+        // vertex stage too: one vec4 a light there, beside the matrices.
+        if (g == LightGeometry::volume || g == LightGeometry::automatic) {
+            GLint vcomps = 0;
+            glGetIntegerv(GL_MAX_VERTEX_UNIFORM_COMPONENTS, &vcomps);
+            c.tile_batch = std::clamp(std::min(c.tile_batch, vcomps / 4 - 32), 1, 128);
+        }
         // Shadowed lights in the batches (shadow.glsl SHADOW_SLOTS): a texture unit each after the
         // G-buffer's four, and twelve vec4s each of uniforms beside the batch's arrays (the atlas
         // form's region included).
@@ -280,6 +287,14 @@ const std::vector<ShaderRow>& shader_rows() {
          [](C c) { return point_linear(with(light_defines(c), {"VOLUME"})); }},
         {"light_volume_point_inverse", "light.vert", "light.frag", "volume mesh, point lights, attenuation law",
          uses_volume, [](C c) { return point_inverse(with(light_defines(c), {"VOLUME"})); }},
+        // The volume meshes of many point lights in one draw (LightVolumeBatch, light_mesh.h).
+        {"light_volume_batch", "light.vert", "light.frag", "volume meshes in batches, any light", uses_volume,
+         [](C c) { return with(batch_defines(c), {"VOLUME", "VOLUME_BATCH"}); }},
+        {"light_volume_batch_point", "light.vert", "light.frag", "volume meshes in batches, the tutorial's point lights",
+         uses_volume, [](C c) { return point_linear(with(batch_defines(c), {"VOLUME", "VOLUME_BATCH"})); }},
+        {"light_volume_batch_point_inverse", "light.vert", "light.frag",
+         "volume meshes in batches, point lights, attenuation law", uses_volume,
+         [](C c) { return point_inverse(with(batch_defines(c), {"VOLUME", "VOLUME_BATCH"})); }},
         // Behind the stencil test the in-shader rejections are redundant (the stencil marks surfaces
         // inside the volume) and harmful: a shader that may discard, in a pass that writes the
         // stencil (zeroing it for the next light), makes the GPU test the stencil after the shader
