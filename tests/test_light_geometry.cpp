@@ -66,6 +66,21 @@ TEST(LightGeometry, AllGeometriesMatchQuadOnTheDefaultScene) {
     }
 }
 
+// The volume geometry draws its point lights' meshes a batch at a time (LightVolumeBatch): a few
+// draws for hundreds of lights, each mesh placed by its light's slot, and the image quad's to the
+// byte (a copy placed at the wrong light, or drawn with the wrong light's data, would show).
+TEST(LightGeometry, VolumesGoInBatches) {
+    const Scene s = with_generated_lights(default_scene(), 256);
+    const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
+    const RenderResult vol = render_scene(s, kW, kH, with_geometry(LightGeometry::volume));
+    expect_same("volumes_in_batches", vol, quad);
+    const int meshes = vol.stats.lights_drawn - vol.stats.lights_as_quads;
+    std::printf("[ counts   ] 256 lights: %d drawn, %d as meshes, %d passes\n", vol.stats.lights_drawn, meshes,
+                vol.stats.light_passes);
+    EXPECT_GT(meshes, 50);
+    EXPECT_LE(vol.stats.light_passes, vol.stats.lights_as_quads + 4);
+}
+
 // What reaches the light shader's pixels falls from quad (the scissor rectangle) to volume (the
 // mesh's outline, depth-tested) to stencil (the surface points inside the volume). Counted with the
 // in-shader light tests off, so light_fragments (occlusion query) is every sample the geometry let

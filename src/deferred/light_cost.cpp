@@ -33,7 +33,10 @@ LightCostModel default_light_costs(bool software_rasterizer) {
         m.quad_draw_ms = 0.045, m.quad_mpx_ms = 21;
         // Against the depth: 1024 lights at 960x540, quads forced, 23.2 -> 17.7 ms.
         m.quad_depth_mpx_ms = 16;
-        m.volume_draw_ms = 0.09, m.volume_mpx_ms = 12;
+        // Volumes in batches (LightVolumeBatch), fitted to `render --light-geometry volume` on own,
+        // 256, 1024, 1024-overlap at 512x512 and 32-large at 800x600 (within 30% on each; a draw
+        // a light, before the batches, was 0.09 and 12).
+        m.volume_draw_ms = 0.049, m.volume_mpx_ms = 6.1;
         m.handoff_mpx_ms = 0.5;
         m.spans_mpx_ms = 6;
         m.tile_pass_mpx_ms = 20, m.tile_light_mpx_ms = 13.5;
@@ -44,14 +47,15 @@ LightCostModel default_light_costs(bool software_rasterizer) {
     } else {
         // An NVIDIA H200 through EGL at 1920x1080, each path forced (tests/gpu_bench.sh part auto,
         // docs/gpu.md): batched quads cost the CPU almost nothing a light (4096 lights, 8.5 Mpx of
-        // rectangles: 0.78 ms), volumes a draw each (1915 of them: 2.3 ms, the CPU's); the tiles'
-        // spans are a read-back the GPU drains for.
+        // rectangles: 0.78 ms); the tiles' spans are a read-back the GPU drains for.
         m.quad_draw_ms = 0.0001, m.quad_mpx_ms = 0.075;
         // Against the depth: 1024 lights (502 drawn, 8.8 Mpx of rectangles) 0.704 -> 0.568 ms, 4096
         // (1915, 8.5 Mpx) 0.776 -> 0.567: 0.015 and 0.025 ms less per Mpx, the mean taken; the
         // hand-off it needs took 0.149 ms at 1920x1080.
         m.quad_depth_mpx_ms = 0.055;
-        m.volume_draw_ms = 0.0009, m.volume_mpx_ms = 0.07;
+        // Volumes in batches (LightVolumeBatch), an H100: 502 lights over 8.8 Mpx of rectangles
+        // 0.613 ms, 1915 over 8.5 Mpx 0.795 (a draw a light, before the batches: 0.0009 and 0.07).
+        m.volume_draw_ms = 0.00014, m.volume_mpx_ms = 0.062;
         m.handoff_mpx_ms = 0.072;
         m.spans_mpx_ms = 0.35;
         m.tile_pass_mpx_ms = 0.3, m.tile_light_mpx_ms = 0.12;
