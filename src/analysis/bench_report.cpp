@@ -157,6 +157,7 @@ Image plot_rows(const std::vector<Row>& rows, const std::vector<std::string>& sc
             s.color = color;
             for (const Row& r : rows) {
                 if (r.scene != scene || r.renderer != kind) continue;
+                if (analytic && !r.err_analytic) continue;  // the linear-law rows: the trace has the scene's law
                 PlotPoint pt;
                 pt.x = r.ms_median;
                 pt.y = analytic ? r.err_analytic->mean_lsb() : r.err.mean_lsb();

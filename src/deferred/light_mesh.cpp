@@ -140,29 +140,23 @@ void LightVolumeBatch::draw(const FrameDef& f, const std::vector<const LightDraw
     glClientActiveTexture(GL_TEXTURE2);
     glEnableClientState(GL_TEXTURE_COORD_ARRAY);
     glTexCoordPointer(1, GL_FLOAT, 4 * sizeof(float), reinterpret_cast<const void*>(3 * sizeof(float)));
-    for (LightShader form : {LightShader::point_linear, LightShader::point_inverse, LightShader::any}) {
-        std::vector<const LightDraw*> mine;
-        for (const LightDraw* l : lights)
-            if (l->shader() == form) mine.push_back(l);
+    for_each_light_batch(lights, batch_, [&](LightShader form, const LightDraw* const* run, size_t n) {
         Program& prog = progs_[form];
-        for (size_t first = 0; first < mine.size(); first += size_t(batch_)) {
-            const size_t n = std::min(mine.size() - first, size_t(batch_));
-            arrays_.clear();
-            for (size_t k = 0; k < n; ++k) arrays_.add(mine[first + k]->params);
-            RenderState s = light_pass_state(prog.id(), false);
-            s.cull = true;
-            s.cull_face = GL_FRONT;  // back faces only, as shade_volumes
-            s.depth_test = true;
-            s.depth_func = GL_GREATER;
-            s.depth_write = false;
-            gl_state().apply(s);
-            arrays_.set(prog, LightArrays::kBatch);
-            q.begin();
-            glDrawElements(GL_TRIANGLES, GLsizei(n) * mesh_indices_, GL_UNSIGNED_INT, nullptr);
-            q.end();
-            ++stats.light_passes;
-        }
-    }
+        arrays_.clear();
+        for (size_t k = 0; k < n; ++k) arrays_.add(run[k]->params);
+        RenderState s = light_pass_state(prog.id(), false);
+        s.cull = true;
+        s.cull_face = GL_FRONT;  // back faces only, as shade_volumes
+        s.depth_test = true;
+        s.depth_func = GL_GREATER;
+        s.depth_write = false;
+        gl_state().apply(s);
+        arrays_.set(prog, LightArrays::kBatch);
+        q.begin();
+        glDrawElements(GL_TRIANGLES, GLsizei(n) * mesh_indices_, GL_UNSIGNED_INT, nullptr);
+        q.end();
+        ++stats.light_passes;
+    });
     glDisableClientState(GL_TEXTURE_COORD_ARRAY);
     glClientActiveTexture(GL_TEXTURE0);
     glDisableClientState(GL_VERTEX_ARRAY);

@@ -272,50 +272,43 @@ void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>
     glClientActiveTexture(GL_TEXTURE2);
     glEnableClientState(GL_TEXTURE_COORD_ARRAY);
     buffers_.begin_frame();
-    for (LightShader form : {LightShader::point_linear, LightShader::point_inverse, LightShader::any}) {
-        std::vector<const LightDraw*> mine;
-        mine.reserve(lights.size());
-        for (const LightDraw* l : lights)
-            if (l->shader() == form) mine.push_back(l);
+    for_each_light_batch(lights, batch_, [&](LightShader form, const LightDraw* const* run, size_t n) {
         Program& prog = progs_[form];
-        for (size_t first = 0; first < mine.size(); first += size_t(batch_)) {
-            const size_t n = std::min(mine.size() - first, size_t(batch_));
-            arrays_.clear();
-            verts_.clear();
-            for (size_t k = 0; k < n; ++k) {
-                const LightDraw& l = *mine[first + k];
-                arrays_.add(l.params);
-                // The rectangle as a quad (x, y, z, slot per corner); a full light's is the viewport.
-                const float x0 = float(l.full ? 0 : l.rect.x0), y0 = float(l.full ? 0 : l.rect.y0);
-                const float x1 = float(l.full ? f.width : l.rect.x1), y1 = float(l.full ? f.height : l.rect.y1);
-                // The pixel camera (glOrtho's near -1, far 1) puts eye z at window depth (1 - z) / 2;
-                // depth 1 (z = -1) lies on the far clip plane, which clipping keeps. A light without a
-                // span (directional, or any with the test off) at depth 1 passes everywhere.
-                const bool span = scene_depth && l.light->type != Light::Type::directional;
-                const float depth = span ? sphere_back_depth(l.params.pos.z, l.params.pos.w, f.zrange.x, f.zrange.y) : 1.0f;
-                const float z = 1.0f - 2.0f * depth, slot = float(k);
-                const float quad[16] = {x0, y0, z, slot, x1, y0, z, slot, x1, y1, z, slot, x0, y1, z, slot};
-                verts_.insert(verts_.end(), quad, quad + 16);
-            }
-            RenderState s = light_pass_state(prog.id(), false);
-            if (scene_depth) {
-                s.depth_test = true;
-                s.depth_func = GL_GEQUAL;
-                s.depth_write = false;
-            }
-            gl_state().apply(s);
-            arrays_.set(prog, LightArrays::kBatch);
-            // Each batch's vertices in a buffer object of its own: on the H200 at 4096 lights the
-            // driver's copies of client arrays took 0.09 ms of CPU a frame, the uploads 0.03-0.06.
-            buffers_.upload_next(verts_.data(), verts_.size() * sizeof(float));
-            glVertexPointer(3, GL_FLOAT, 4 * sizeof(float), nullptr);
-            glTexCoordPointer(1, GL_FLOAT, 4 * sizeof(float), reinterpret_cast<const void*>(3 * sizeof(float)));
-            q.begin();
-            glDrawArrays(GL_QUADS, 0, GLsizei(4 * n));
-            q.end();
-            ++stats.light_passes;
+        arrays_.clear();
+        verts_.clear();
+        for (size_t k = 0; k < n; ++k) {
+            const LightDraw& l = *run[k];
+            arrays_.add(l.params);
+            // The rectangle as a quad (x, y, z, slot per corner); a full light's is the viewport.
+            const float x0 = float(l.full ? 0 : l.rect.x0), y0 = float(l.full ? 0 : l.rect.y0);
+            const float x1 = float(l.full ? f.width : l.rect.x1), y1 = float(l.full ? f.height : l.rect.y1);
+            // The pixel camera (glOrtho's near -1, far 1) puts eye z at window depth (1 - z) / 2;
+            // depth 1 (z = -1) lies on the far clip plane, which clipping keeps. A light without a
+            // span (directional, or any with the test off) at depth 1 passes everywhere.
+            const bool span = scene_depth && l.light->type != Light::Type::directional;
+            const float depth = span ? sphere_back_depth(l.params.pos.z, l.params.pos.w, f.zrange.x, f.zrange.y) : 1.0f;
+            const float z = 1.0f - 2.0f * depth, slot = float(k);
+            const float quad[16] = {x0, y0, z, slot, x1, y0, z, slot, x1, y1, z, slot, x0, y1, z, slot};
+            verts_.insert(verts_.end(), quad, quad + 16);
         }
-    }
+        RenderState s = light_pass_state(prog.id(), false);
+        if (scene_depth) {
+            s.depth_test = true;
+            s.depth_func = GL_GEQUAL;
+            s.depth_write = false;
+        }
+        gl_state().apply(s);
+        arrays_.set(prog, LightArrays::kBatch);
+        // Each batch's vertices in a buffer object of its own: on the H200 at 4096 lights the
+        // driver's copies of client arrays took 0.09 ms of CPU a frame, the uploads 0.03-0.06.
+        buffers_.upload_next(verts_.data(), verts_.size() * sizeof(float));
+        glVertexPointer(3, GL_FLOAT, 4 * sizeof(float), nullptr);
+        glTexCoordPointer(1, GL_FLOAT, 4 * sizeof(float), reinterpret_cast<const void*>(3 * sizeof(float)));
+        q.begin();
+        glDrawArrays(GL_QUADS, 0, GLsizei(4 * n));
+        q.end();
+        ++stats.light_passes;
+    });
     StreamBuffer::unbind();  // later client-array draws read client memory again
     glDisableClientState(GL_TEXTURE_COORD_ARRAY);
     glClientActiveTexture(GL_TEXTURE0);

@@ -3,6 +3,7 @@
 // scissored quad per light (Listings 16-17), which the quad geometry draws for every light and
 // the volume geometries for the lights their mesh cannot serve.
 #pragma once
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -30,7 +31,8 @@ void set_light_params(Program& prog, const LightParams& lp);
 // tiles' batches, screen's, the batched quads'). Kept between frames for its storage.
 class LightArrays {
 public:
-    // The arrays' names in light_tiles.frag and light_screen.frag, and in light.frag's BATCH.
+    // The arrays' names in light_tiles.frag and light_screen.frag, and in light.frag's BATCH (and
+    // batch_pos in light.vert's VOLUME_BATCH).
     static constexpr const char* kLight[5] = {"lightpos", "lightcolor", "lightdir", "lightspot", "lightatt"};
     static constexpr const char* kBatch[5] = {"batch_pos", "batch_color", "batch_dir", "batch_spot", "batch_att"};
     void clear();
@@ -149,6 +151,21 @@ private:
     LightPrograms progs_;
     bool depth_bounds_;
 };
+
+// The batched geometries' order (LightQuadBatch, LightVolumeBatch): `lights` split by their light
+// program's form, and each form's lights in runs of at most `batch`; draw(form, run, n) once a run.
+template <class Draw>
+void for_each_light_batch(const std::vector<const LightDraw*>& lights, int batch, Draw&& draw) {
+    std::vector<const LightDraw*> mine;
+    mine.reserve(lights.size());
+    for (LightShader form : {LightShader::point_linear, LightShader::point_inverse, LightShader::any}) {
+        mine.clear();
+        for (const LightDraw* l : lights)
+            if (l->shader() == form) mine.push_back(l);
+        for (size_t first = 0; first < mine.size(); first += size_t(batch))
+            draw(form, mine.data() + first, std::min(mine.size() - first, size_t(batch)));
+    }
+}
 
 // Many lights' quads in a handful of draws (pseudo-instancing with vertex arrays only, no GL 3
 // instancing): the lights in batches of the uniform arrays' size ("light_batch" programs,

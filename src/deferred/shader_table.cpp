@@ -23,10 +23,10 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
     const LightGeometry g = c.paths.light_geometry;
     const bool tiles = draws_tiles(g);
     const bool fold = c.opts.skip.ambient_pass && !c.opts.ssao.on;  // the light_fold rows
-    // The batch the uniform arrays hold (tiles, auto's quads, screen's lights a draw): five vec4s a
-    // light within the fragment stage's uniform budget (GL 2.0 guarantees 64 vec4s; llvmpipe and
-    // NVIDIA give 1024), a few vec4s kept for the other uniforms, and below tile_plan's empty-slot
-    // index 255.
+    // The batch the uniform arrays hold (tiles, auto's quads, the volume meshes, screen's lights a
+    // draw): five vec4s a light within the fragment stage's uniform budget (GL 2.0 guarantees 64
+    // vec4s; llvmpipe and NVIDIA give 1024), a few vec4s kept for the other uniforms, and below
+    // tile_plan's empty-slot index 255.
     if (tiles || g == LightGeometry::screen || g == LightGeometry::volume) {
         GLint comps = 0;
         glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
