@@ -671,6 +671,20 @@ TEST(Bench, LawGoalPricesTheAttenuationLawOnTheSamePairs) {
                    "met");
     ASSERT_NE(at + 1, g.end());
     EXPECT_EQ(*(at + 1), "  (information: the same for the other geometries: quad 42.00 ms / 40.00 ms = 1.05)");
+    // The withdrawn goal's best deferred row is the scene's, not its faster linear-law twin (11.50 ms).
+    bench::Row fwd = forward_row("large", 32, bench::Renderer::forward_single, 6.0);
+    fwd.lights_label = "32-large";
+    fwd.float_accum = false;
+    rows.push_back(fwd);
+    bool bound = false;
+    for (const std::string& l : bench::geometry_goals(rows, "default", 3))
+        if (l.rfind("  (information, withdrawn as a goal", 0) == 0) {
+            bound = true;
+            EXPECT_NE(l.find("deferred texture sc auto 12.20 ms"), std::string::npos) << l;
+            EXPECT_EQ(l.find("linear-law"), std::string::npos) << l;
+        }
+    EXPECT_TRUE(bound);
+    rows.pop_back();
     // A linear-law row outside the default configuration is not the twin.
     rows.back().skip.depth_prepass = false;
     EXPECT_NE(law_line(rows).find("(no linear-law row)"), std::string::npos);

@@ -176,7 +176,7 @@ std::string forward_bound(const std::vector<Row>& rows, const std::string& label
     const Row* fwd = nullptr;
     for (const Row& r : rows)
         if (r.lights_label == label) {
-            if (r.renderer == Renderer::deferred && skips_off(r.skip).empty() && !r.gbuffer_half &&
+            if (r.renderer == Renderer::deferred && !r.linear_law && skips_off(r.skip).empty() && !r.gbuffer_half &&
                 r.accum_format == AccumFormat::rgba8 && r.light_geometry != LightGeometry::screen && (!best || r.ms_median < best->ms_median))
                 best = &r;
             if (r.renderer == Renderer::forward_single && (!fwd || r.ms_median < fwd->ms_median)) fwd = &r;
@@ -496,7 +496,7 @@ std::string goal_bound(const Goal& g) {
 const Row* find_row(const std::vector<Row>& rows, const std::string& scene, int lights, Renderer renderer,
                     bool default_config) {
     for (const Row& r : rows) {
-        if (r.scene != scene || r.lights != lights || r.renderer != renderer) continue;
+        if (r.scene != scene || r.lights != lights || r.renderer != renderer || r.linear_law) continue;
         if (renderer == Renderer::deferred && default_config &&
             !(default_configuration(r) && r.light_geometry == LightGeometry::quad))
             continue;

@@ -75,9 +75,9 @@ const Goal& goal(const std::string& id);
 // "<= 1.3": the goal's comparison and threshold, as its sentence states them.
 std::string goal_bound(const Goal& g);
 
-// The row a goal is judged on: `scene` with `lights` lights and `renderer`; for deferred rows
-// with default_config, only the default configuration (bench_run.h default_configuration) with
-// the quad geometry. Null when the run has no such row.
+// The row a goal is judged on: `scene` with `lights` lights and `renderer`, never a linear-law
+// twin; for deferred rows with default_config, only the default configuration (bench_run.h
+// default_configuration) with the quad geometry. Null when the run has no such row.
 const Row* find_row(const std::vector<Row>& rows, const std::string& scene, int lights, Renderer renderer,
                     bool default_config = true);
 
