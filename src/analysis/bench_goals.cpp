@@ -523,12 +523,9 @@ const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& sc
 
 const Row* find_linear_law_row(const std::vector<Row>& rows, const std::string& scene, int lights,
                                LightGeometry geometry) {
-    for (const Row& r : rows) {
-        if (!r.linear_law || r.scene != scene || r.lights != lights || r.light_geometry != geometry) continue;
-        Row as_scene = r;
-        as_scene.linear_law = false;
-        if (default_configuration(as_scene)) return &r;
-    }
+    for (const Row& r : rows)
+        if (r.scene == scene && r.lights == lights && default_configuration_twin(r) && r.light_geometry == geometry)
+            return &r;
     return nullptr;
 }
 

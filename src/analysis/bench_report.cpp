@@ -287,8 +287,8 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
           "full-screen pass), on 32-large at the demo's 800x600. `law` times dsr's default light stage on 32-large "
           "against the same frame with every light given the tutorial's linear law at its own radius (the "
           "`linear-law` rows, on the same pixel-light pairs, in the same rounds); within 5%, the medians' noise. "
-          "`auto` compares the auto geometry with the fastest fixed one on each bench scene. `floor` is judged at 1920x1080 with 1024 lights only (the floor "
-          "leaves out the frame's fixed costs, which weigh more the smaller the frame; elsewhere its figure is "
+          "`auto` compares the auto geometry with the fastest fixed one on each bench scene. `floor` is judged at "
+          "1920x1080 with 1024 lights only (the floor leaves out the frame's fixed costs, which weigh more the smaller the frame; elsewhere its figure is "
           "information), `cpu` where the run has 4096 lights. The goal of a deferred row 1.5x faster than forward "
           "single-pass on 32-large is withdrawn: on GL 2.x forward single-pass is the bound there; its figure "
           "follows `demo` as information. Indented lines are information, not goals.\n\n";

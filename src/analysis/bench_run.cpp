@@ -370,10 +370,10 @@ IdealCount variant_ideal(const Config& cfg, const Variant& v, const Runs& runs) 
 // linear-law rows with the linear-law quad row's).
 const Image* quad_image(const Runs& runs, bool linear_law = false) {
     for (auto& run : runs) {
-        Row r = run->row;
-        if (r.linear_law != linear_law) continue;
-        r.linear_law = false;
-        if (default_configuration(r) && r.light_geometry == LightGeometry::quad) return &run->image;
+        const Row& r = run->row;
+        if ((linear_law ? default_configuration_twin(r) : default_configuration(r)) &&
+            r.light_geometry == LightGeometry::quad)
+            return &run->image;
     }
     return nullptr;
 }
@@ -445,10 +445,19 @@ std::vector<std::string> skips_off(const SkipOptions& skip) {
     return out;
 }
 
-bool default_configuration(const Row& r) {
-    return r.renderer == Renderer::deferred && !r.linear_law && r.depth == DepthPath::texture && r.scissor &&
+namespace {
+
+// The default configuration's settings, whatever the lights' law.
+bool default_settings(const Row& r) {
+    return r.renderer == Renderer::deferred && r.depth == DepthPath::texture && r.scissor &&
            skips_off(r.skip).empty() && !r.gbuffer_half && r.accum_format == AccumFormat::rgba8;
 }
+
+}  // namespace
+
+bool default_configuration(const Row& r) { return !r.linear_law && default_settings(r); }
+
+bool default_configuration_twin(const Row& r) { return r.linear_law && default_settings(r); }
 
 std::string config_text(const Row& r) {
     const std::string name = renderer_name(r.renderer);

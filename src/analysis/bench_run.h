@@ -100,6 +100,9 @@ struct Row {
 // compared: a deferred row with the depth texture, scissor on, every skip on and the RGBA8
 // G-buffer, whatever its light geometry, drawing the scene's own lights (not linear_law).
 bool default_configuration(const Row& r);
+// A linear-law row (Row::linear_law) in the default configuration otherwise: the twin of a
+// default_configuration row, which the law goal and the twin's image check read.
+bool default_configuration_twin(const Row& r);
 
 // The row's configuration as the tables print it: "forward-multi", "deferred texture sc",
 // "deferred packed/log sc half no-empty_lights", ...

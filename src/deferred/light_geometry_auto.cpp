@@ -207,12 +207,7 @@ public:
             });
         if (!by_path[int(LightPath::volume)].empty())
             timed(LightPath::volume, raw, [&] {
-                std::vector<const LightDraw*> batched, one_by_one;
-                for (const LightDraw* l : by_path[int(LightPath::volume)])
-                    (LightVolumeBatch::takes(*l) ? batched : one_by_one).push_back(l);
-                volume_batch_.draw(f, batched, q, stats);
-                volume_progs_.begin(f);
-                meshes_.shade_volumes(f, one_by_one, volume_progs_, q, stats);
+                meshes_.shade_volumes(f, by_path[int(LightPath::volume)], volume_batch_, volume_progs_, q, stats);
             });
         if (!by_path[int(LightPath::quad)].empty())
             timed(LightPath::quad, raw, [&] {

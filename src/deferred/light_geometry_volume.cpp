@@ -18,16 +18,12 @@ public:
     VolumeGeometry(const ShaderConfig& c, ProgramSet& programs)
         : quads_(programs, false), progs_(programs, "light_volume"), batch_(programs, c.tile_batch, meshes_) {}
 
-    // The point lights' meshes in batches (LightVolumeBatch), the others (spots, shadowed lights)
-    // one draw each.
     void draw(const FrameDef& f, RenderTargets&, LightQueries& q, FrameStats& stats) override {
         meshes_.draw_quads_past_far(f, quads_, q, stats);
-        std::vector<const LightDraw*> batched, one_by_one;
+        std::vector<const LightDraw*> lights;
         for (const LightDraw& l : f.lights)
-            if (!meshes_.past_far(f, l)) (LightVolumeBatch::takes(l) ? batched : one_by_one).push_back(&l);
-        batch_.draw(f, batched, q, stats);
-        progs_.begin(f);
-        meshes_.shade_volumes(f, one_by_one, progs_, q, stats);
+            if (!meshes_.past_far(f, l)) lights.push_back(&l);
+        meshes_.shade_volumes(f, lights, batch_, progs_, q, stats);
     }
 
 private:

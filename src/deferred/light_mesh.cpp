@@ -77,16 +77,33 @@ void LightMeshes::shade(const LightDraw& l, Program& prog, LightQueries& q, Fram
     ++stats.light_passes;
 }
 
-void LightMeshes::shade_volumes(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightPrograms& progs,
-                                LightQueries& q, FrameStats& stats) const {
-    begin(f);
-    RenderState s = light_pass_state(0, false);
+namespace {
+
+// A volume's light pass with `program`: its back faces only (the camera may be inside), where the
+// volume's far side lies behind the scene surface.
+RenderState volume_pass_state(GLuint program) {
+    RenderState s = light_pass_state(program, false);
     s.cull = true;
-    s.cull_face = GL_FRONT;  // back faces only: the camera may be inside
+    s.cull_face = GL_FRONT;
     s.depth_test = true;
-    s.depth_func = GL_GREATER;  // the volume's far side behind the scene surface
+    s.depth_func = GL_GREATER;
     s.depth_write = false;
-    for (const LightDraw* l : lights) {
+    return s;
+}
+
+}  // namespace
+
+void LightMeshes::shade_volumes(const FrameDef& f, const std::vector<const LightDraw*>& lights,
+                                LightVolumeBatch& batch, LightPrograms& progs, LightQueries& q,
+                                FrameStats& stats) const {
+    std::vector<const LightDraw*> batched, one_by_one;
+    for (const LightDraw* l : lights) (LightVolumeBatch::takes(*l) ? batched : one_by_one).push_back(l);
+    batch.draw(f, batched, q, stats);
+    if (one_by_one.empty()) return;
+    progs.begin(f);
+    begin(f);
+    RenderState s = volume_pass_state(0);
+    for (const LightDraw* l : one_by_one) {
         Program& prog = progs.form(*l);
         s.program = prog.id();
         gl_state().apply(s);
@@ -144,13 +161,7 @@ void LightVolumeBatch::draw(const FrameDef& f, const std::vector<const LightDraw
         Program& prog = progs_[form];
         arrays_.clear();
         for (size_t k = 0; k < n; ++k) arrays_.add(run[k]->params);
-        RenderState s = light_pass_state(prog.id(), false);
-        s.cull = true;
-        s.cull_face = GL_FRONT;  // back faces only, as shade_volumes
-        s.depth_test = true;
-        s.depth_func = GL_GREATER;
-        s.depth_write = false;
-        gl_state().apply(s);
+        gl_state().apply(volume_pass_state(prog.id()));
         arrays_.set(prog, LightArrays::kBatch);
         q.begin();
         glDrawElements(GL_TRIANGLES, GLsizei(n) * mesh_indices_, GL_UNSIGNED_INT, nullptr);

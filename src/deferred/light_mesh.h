@@ -9,6 +9,8 @@
 
 namespace dsr {
 
+class LightVolumeBatch;
+
 class LightMeshes {
 public:
     LightMeshes();
@@ -26,11 +28,12 @@ public:
     // The light's shading pass over its mesh with `prog` (bound, its state applied): parameters,
     // the mesh inside the light's queries, one light pass counted.
     void shade(const LightDraw& l, Program& prog, LightQueries& q, FrameStats& stats) const;
-    // The volume geometry's light passes (light_geometry_volume.cpp) for `lights` (none past far):
-    // back faces, depth test GL_GREATER against the scene's depth in P-buffer 0, each light with
-    // its form of `progs`, whose frame uniforms begin() set.
-    void shade_volumes(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightPrograms& progs,
-                       LightQueries& q, FrameStats& stats) const;
+    // The volume geometry's light passes (light_geometry_volume.cpp, auto's volumes) for `lights`
+    // (none past far): back faces, depth test GL_GREATER against the scene's depth in P-buffer 0.
+    // The point lights `batch` takes (LightVolumeBatch::takes) go in its batches; each of the
+    // others (spots, shadowed lights) is a draw of its own with its form of `progs`.
+    void shade_volumes(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightVolumeBatch& batch,
+                       LightPrograms& progs, LightQueries& q, FrameStats& stats) const;
 
     const VolumeMesh& unit_sphere() const { return unit_sphere_; }
 
