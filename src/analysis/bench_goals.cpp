@@ -513,20 +513,26 @@ const Row* fastest_row(const std::vector<Row>& rows, const std::string& scene, i
     return best;
 }
 
+namespace {
+
+// The first row of `scene` with `lights` lights, this geometry and a configuration `config` accepts.
+const Row* find_configured_row(const std::vector<Row>& rows, const std::string& scene, int lights,
+                               LightGeometry geometry, bool (*config)(const Row&)) {
+    for (const Row& r : rows)
+        if (r.scene == scene && r.lights == lights && config(r) && r.light_geometry == geometry) return &r;
+    return nullptr;
+}
+
+}  // namespace
+
 const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& scene, int lights,
                              LightGeometry geometry) {
-    for (const Row& r : rows)
-        if (r.scene == scene && r.lights == lights && default_configuration(r) && r.light_geometry == geometry)
-            return &r;
-    return nullptr;
+    return find_configured_row(rows, scene, lights, geometry, default_configuration);
 }
 
 const Row* find_linear_law_row(const std::vector<Row>& rows, const std::string& scene, int lights,
                                LightGeometry geometry) {
-    for (const Row& r : rows)
-        if (r.scene == scene && r.lights == lights && default_configuration_twin(r) && r.light_geometry == geometry)
-            return &r;
-    return nullptr;
+    return find_configured_row(rows, scene, lights, geometry, default_configuration_twin);
 }
 
 const Row* find_default_row(const std::vector<Row>& rows, const std::string& scene, int lights) {
