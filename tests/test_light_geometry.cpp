@@ -7,7 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "analysis/bench_scenes.h"
+#include "deferred/light_mesh.h"
+#include "deferred/light_queries.h"
 #include "deferred/paths.h"
+#include "deferred/shader_table.h"
 #include "render_fixture.h"
 
 namespace dsr::test {
@@ -79,6 +82,34 @@ TEST(LightGeometry, VolumesGoInBatches) {
                 vol.stats.light_passes);
     EXPECT_GT(meshes, 50);
     EXPECT_LE(vol.stats.light_passes, vol.stats.lights_as_quads + 4);
+}
+
+// The batch's buffers (copies of the sphere's mesh, about 310 KB at a batch of 128) are built on
+// its first draw, not with the renderer: an auto renderer whose frames draw no volume holds none.
+TEST(LightGeometry, VolumeBatchBuildsItsBuffersOnFirstDraw) {
+    auto ctx = create_context(ContextDesc{"osmesa", kW, kH});
+    ShaderOptions o = with_geometry(LightGeometry::volume);
+    const ShaderConfig c = shader_config(probe_caps(), o);
+    ProgramSet programs(resource_dir("glsl120"), c);
+    const LightMeshes meshes;
+    LightVolumeBatch batch(programs, c.tile_batch, meshes);
+    EXPECT_FALSE(batch.uploaded());
+    Scene s = default_scene();
+    FrameSetup setup;
+    setup.width = kW;
+    setup.height = kH;
+    const FrameDef f = make_frame(s.camera, s.lights, setup);
+    std::vector<const LightDraw*> lights;
+    for (const LightDraw& l : f.lights)
+        if (LightVolumeBatch::takes(l)) lights.push_back(&l);
+    ASSERT_FALSE(lights.empty());
+    LightQueries q(false, false);
+    FrameStats stats;
+    batch.draw(f, {}, q, stats);
+    EXPECT_FALSE(batch.uploaded());  // nothing to draw: still nothing built
+    batch.draw(f, lights, q, stats);
+    EXPECT_TRUE(batch.uploaded());
+    EXPECT_EQ(stats.light_passes, 1);
 }
 
 // What reaches the light shader's pixels falls from quad (the scissor rectangle) to volume (the

@@ -114,14 +114,18 @@ void LightMeshes::shade_volumes(const FrameDef& f, const std::vector<const Light
 }
 
 LightVolumeBatch::LightVolumeBatch(ProgramSet& programs, int batch, const LightMeshes& meshes)
-    : progs_(programs, "light_volume_batch"), batch_(batch) {
-    const VolumeMesh& m = meshes.unit_sphere();
-    mesh_indices_ = GLsizei(m.indices.size());
+    : progs_(programs, "light_volume_batch"), batch_(batch), mesh_(&meshes.unit_sphere()),
+      mesh_indices_(GLsizei(meshes.unit_sphere().indices.size())) {}
+
+// The batch's copies of the mesh, built on the first draw: a renderer whose frames draw no
+// volume (auto on most scenes) holds no buffers (about 310 KB at a batch of 128).
+void LightVolumeBatch::upload() {
+    const VolumeMesh& m = *mesh_;
     std::vector<float> verts;
     std::vector<uint32_t> idx;
-    verts.reserve(size_t(batch) * m.vertices.size() * 4);
-    idx.reserve(size_t(batch) * m.indices.size());
-    for (int k = 0; k < batch; ++k) {
+    verts.reserve(size_t(batch_) * m.vertices.size() * 4);
+    idx.reserve(size_t(batch_) * m.indices.size());
+    for (int k = 0; k < batch_; ++k) {
         const uint32_t base = uint32_t(size_t(k) * m.vertices.size());
         for (const glm::vec3& v : m.vertices) verts.insert(verts.end(), {v.x, v.y, v.z, float(k)});
         for (uint32_t i : m.indices) idx.push_back(base + i);
@@ -148,6 +152,7 @@ bool LightVolumeBatch::takes(const LightDraw& l) {
 void LightVolumeBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightQueries& q,
                             FrameStats& stats) {
     if (lights.empty()) return;
+    if (!vbo_) upload();
     gl_state().set_camera(f.proj);
     progs_.begin(f);
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);

@@ -59,10 +59,15 @@ public:
     // `lights` (each takes() and none past far), one light pass counted per draw.
     void draw(const FrameDef& f, const std::vector<const LightDraw*>& lights, LightQueries& q, FrameStats& stats);
 
+    // Whether its buffers exist (built on the first draw).
+    bool uploaded() const { return vbo_ != 0; }
+
 private:
+    void upload();
     LightPrograms progs_;
     int batch_;
-    GLsizei mesh_indices_;  // indices of one copy
+    const VolumeMesh* mesh_;  // LightMeshes::unit_sphere() of the geometry that owns both
+    GLsizei mesh_indices_;    // indices of one copy
     GLuint vbo_ = 0, ibo_ = 0;
     LightArrays arrays_;
 };
