@@ -101,14 +101,15 @@ void main()
 #ifdef LIGHT_SPHERE_TEST
     // A point outside the sphere gets att = 0 (Equation 2): nothing to add, so no G-buffer reads.
     // A spot adds nothing on or outside its cone either (GL_SPOT_CUTOFF).
-    vec3 d = pos - lightpos.xyz;
+    // l as light_contribution takes it (light_tiles.frag says why).
+    vec3 l = lightpos.xyz - pos;
 #ifdef POINT_LIGHTS
-    if (dot(d, d) >= lightpos.w * lightpos.w)
+    if (dot(l, l) >= lightpos.w * lightpos.w)
         REJECT;
 #else
-    if (lightcolor.w < 1.5 && dot(d, d) >= lightpos.w * lightpos.w)
+    if (lightcolor.w < 1.5 && dot(l, l) >= lightpos.w * lightpos.w)
         REJECT;
-    if (lightcolor.w > 0.5 && lightcolor.w < 1.5 && dot(d, lightdir.xyz) <= length(d) * lightdir.w)
+    if (lightcolor.w > 0.5 && lightcolor.w < 1.5 && -dot(l, lightdir.xyz) <= length(l) * lightdir.w)
         REJECT;
 #endif
 #endif
