@@ -8,6 +8,8 @@
 // counts the rest). SHADOW (with SHADOW_SLOTS K): up to K of the batch's lights are shadowed, each
 // light's slot among the batch's maps in lightspot.z (-1: none), its term scaled by shadow.glsl's
 // lookup as light.frag's SHADOW form scales it (SHADOW_ATLAS: the batch's maps in one atlas).
+// ATT_SHARED (with LIGHT_POINT_INVERSE): every light of the batch has the attenuation constants
+// att_shared, read once instead of lane by lane from lightatt (the same values, so the same image).
 #include "depth_codec.glsl"
 #include "lighting.glsl"
 #include "quantize.glsl"
@@ -22,6 +24,12 @@ uniform vec4 lightcolor[BATCH];
 uniform vec4 lightdir[BATCH];
 uniform vec4 lightspot[BATCH];
 uniform vec4 lightatt[BATCH];
+#ifdef ATT_SHARED
+uniform vec3 att_shared;
+#define LIGHT_ATT(i) vec4(att_shared, 1.0)
+#else
+#define LIGHT_ATT(i) lightatt[i]
+#endif
 uniform vec2 planes;
 uniform vec3 zrange;
 uniform vec2 uv_scale;  // texture coordinates and (light.frag's) view ray from gl_FragCoord
@@ -61,7 +69,7 @@ void shade(int i, vec3 pos, vec3 v, vec3 normal, vec3 diffuse, vec4 specular, fl
         return;
 #endif
 #endif
-    vec3 t = light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], lightatt[i], pos, v, normal,
+    vec3 t = light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], LIGHT_ATT(i), pos, v, normal,
                                 diffuse, specular.rgb, shininess);
 #ifdef SHADOW
     float slot = lightspot[i].z;

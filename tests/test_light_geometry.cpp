@@ -84,6 +84,24 @@ TEST(LightGeometry, VolumesGoInBatches) {
     EXPECT_LE(vol.stats.light_passes, vol.stats.lights_as_quads + 4);
 }
 
+// LearnOpenGL's 32 lights share their attenuation constants: the tiles draw their batch by the form
+// that reads them once (ATT_SHARED), with quad's image. One light's constants changed: the batch
+// goes back to the per-light arrays, again with quad's image (a shared form that took the first
+// light's constants for every light would be off there).
+TEST(LightGeometry, TilesReadSharedAttenuationOnce) {
+    for (bool differ : {false, true}) {
+        Scene s = large_lights_scene(32);
+        if (differ) s.lights[5].kq *= 1.5f;
+        const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
+        const RenderResult tiles = render_scene(s, kW, kH, with_geometry(LightGeometry::tiles));
+        expect_same(differ ? "tiles_attenuation_differs" : "tiles_attenuation_shared", tiles, quad);
+        if (differ)
+            EXPECT_EQ(tiles.stats.tile_att_shared_batches, 0);
+        else
+            EXPECT_GE(tiles.stats.tile_att_shared_batches, 1);
+    }
+}
+
 // The batch's buffers (copies of the sphere's mesh, about 310 KB at a batch of 128) are built on
 // its first draw, not with the renderer: an auto renderer whose frames draw no volume holds none.
 TEST(LightGeometry, VolumeBatchBuildsItsBuffersOnFirstDraw) {

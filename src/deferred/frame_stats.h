@@ -46,6 +46,9 @@ struct FrameStats {
     int light_passes = 0;
     int lights_as_quads = 0;
     long long tile_light_pairs = 0;  // tiles: (tile, light) pairs its plan shaded (tile_plan.h)
+    // tiles: batches drawn by the form that reads the lights' shared attenuation constants once
+    // (light_tiles.frag ATT_SHARED).
+    int tile_att_shared_batches = 0;
     bool tile_depth = false;         // tiles: the plan culled by the tiles' depth spans (tile_depth.h)
     // tiles, wall clock inside the light stage: the depth spans' two passes and read-back (which
     // waits for the G-buffer: on a GPU, a pipeline drain), and the plan with its vertices' upload.
