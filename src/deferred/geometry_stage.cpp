@@ -4,7 +4,6 @@
 #include "deferred/depth_codec.h"
 #include "dsr_error.h"
 #include "gl/check.h"
-#include <cstdlib>
 
 namespace dsr {
 
@@ -95,18 +94,12 @@ void GeometryStage::draw(const FrameDef& f, GpuScene& gpu, RenderTargets& t, Fra
     gl_state().apply(material_pass_state(false));  // the clears write colour
     PBuffer& g = t.gbuffer();
     std::vector<int> all;
-    const int gmode = std::getenv("DSR_GCLEAR") ? std::atoi(std::getenv("DSR_GCLEAR")) : 0;
     for (int i = 0; i < g.color_targets(); ++i) {
         g.set_draw_targets({i});
         glClearColor(clear[i].r, clear[i].g, clear[i].b, clear[i].a);
-        if (gmode == 0) glClear(GL_COLOR_BUFFER_BIT);
+        glClear(GL_COLOR_BUFFER_BIT);
         if (!mrt_) material(i, i == 0);
         all.push_back(i);
-    }
-    if (gmode == 2) {
-        g.set_draw_targets(all);
-        glClearColor(0, 0, 0, 0);
-        glClear(GL_COLOR_BUFFER_BIT);
     }
     // P-buffer 0 after the G-buffer's targets: cleared as Listing 15's pass clears it, and the
     // material pass writes the ambient term where it finds a surface (material.frag AMBIENT_TARGET).
