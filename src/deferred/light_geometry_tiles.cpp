@@ -128,7 +128,6 @@ public:
         const std::vector<bool>* cut = shadowed.empty() ? nullptr : &shadowed;
 
         begin_draws(f);
-        ++frame_;
         buffers_.begin_frame();
         stats.tile_light_pairs = 0;
         if (groups_) {
@@ -178,6 +177,7 @@ private:
                 p->use();
                 p->set("quantize_round", round_);
             }
+        if (att_shared_.id()) begin_att_shared(f);
         glEnableClientState(GL_VERTEX_ARRAY);
         for (int k = 0; k < id_vecs_; ++k) {
             glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
@@ -263,21 +263,24 @@ private:
                            [&](int i) { return glm::vec3(f.lights[size_t(i)].params.att) == a; });
     }
 
-    // The point-inverse form with ATT_SHARED, compiled on first use; its frame uniforms once a frame.
+    // The point-inverse form with ATT_SHARED, compiled on first use; begin_draws sets its frame
+    // uniforms in the frames after, as the table's forms'.
     Program& att_shared_program(const FrameDef& f) {
-        if (!att_shared_.id()) att_shared_ = sources_.build("light_tiles_point_inverse", Defines{"ATT_SHARED"});
-        if (att_shared_frame_ != frame_) {
-            set_light_uniforms(att_shared_, f);  // makes it current
-            att_shared_.set("quantize_round", round_);
-            att_shared_frame_ = frame_;
+        if (!att_shared_.id()) {
+            att_shared_ = sources_.build("light_tiles_point_inverse", Defines{"ATT_SHARED"});
+            begin_att_shared(f);
         }
         return att_shared_;
+    }
+
+    void begin_att_shared(const FrameDef& f) {
+        set_light_uniforms(att_shared_, f);  // makes it current
+        att_shared_.set("quantize_round", round_);
     }
 
     ProgramSources sources_;
     LightPrograms progs_;
     Program att_shared_;  // light_tiles_point_inverse with ATT_SHARED, once a batch needs it
-    unsigned frame_ = 0, att_shared_frame_ = 0;
     int shadow_slots_;  // shadowed lights a batch holds (0: the tiles get none)
     ShadowSlots shadows_;
     int tile_size_, tile_lights_, batch_;
