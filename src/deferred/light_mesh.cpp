@@ -114,8 +114,7 @@ void LightMeshes::shade_volumes(const FrameDef& f, const std::vector<const Light
 }
 
 LightVolumeBatch::LightVolumeBatch(ProgramSet& programs, int batch, const LightMeshes& meshes)
-    : progs_(programs, "light_volume_batch"), batch_(batch), mesh_(&meshes.unit_sphere()),
-      mesh_indices_(GLsizei(meshes.unit_sphere().indices.size())) {}
+    : progs_(programs, "light_volume_batch"), batch_(batch), mesh_(&meshes.unit_sphere()) {}
 
 // The batch's copies of the mesh, built on the first draw: a renderer whose frames draw no
 // volume (auto on most scenes) holds no buffers (about 310 KB at a batch of 128).
@@ -169,7 +168,7 @@ void LightVolumeBatch::draw(const FrameDef& f, const std::vector<const LightDraw
         gl_state().apply(volume_pass_state(prog.id()));
         arrays_.set(prog, LightArrays::kBatch);
         q.begin();
-        glDrawElements(GL_TRIANGLES, GLsizei(n) * mesh_indices_, GL_UNSIGNED_INT, nullptr);
+        glDrawElements(GL_TRIANGLES, GLsizei(n * mesh_->indices.size()), GL_UNSIGNED_INT, nullptr);
         q.end();
         ++stats.light_passes;
     });

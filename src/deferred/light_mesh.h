@@ -66,8 +66,7 @@ private:
     void upload();
     LightPrograms progs_;
     int batch_;
-    const VolumeMesh* mesh_;  // LightMeshes::unit_sphere() of the geometry that owns both
-    GLsizei mesh_indices_;    // indices of one copy
+    const VolumeMesh* mesh_;  // LightMeshes::unit_sphere() of the geometry that owns both: one copy
     GLuint vbo_ = 0, ibo_ = 0;
     LightArrays arrays_;
 };
