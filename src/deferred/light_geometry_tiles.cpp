@@ -88,7 +88,7 @@ public:
         if (depth_)
             stats.tile_depth_ms += wall_ms([&] {
                 targets.fb_unbind_render(P_ACCUM);
-                spans = depth_->spans(f);
+                spans = depth_->spans(f, targets.gbuffer());
                 targets.fb_bind_render(P_ACCUM);
             });
         return spans;

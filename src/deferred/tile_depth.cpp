@@ -1,7 +1,9 @@
 // The tiles' depth spans (tile_depth.h).
 #include "deferred/tile_depth.h"
 
+#include "deferred/render_targets.h"
 #include "deferred/screen_quad.h"
+#include "deferred/tile_spans.h"
 #include "gl/check.h"
 #include "gl/state.h"
 
@@ -11,13 +13,15 @@ TileDepthPass::TileDepthPass(const ShaderConfig& c, ProgramSet& programs, int wi
     : rows_prog_(programs.take("tile_depth")),
       reduce_prog_(programs.take("tile_depth_reduce")),
       tile_size_(c.opts.tile_size),
-      pow2_(!c.caps.npot) {
+      pow2_(!c.caps.npot),
+      readback_(c.caps.software_rasterizer && c.paths.depth_path == DepthPath::texture) {
     resize(width, height);
 }
 
 void TileDepthPass::resize(int w, int h) {
     tiles_.reset();
     rows_.reset();
+    if (readback_) return;  // no buffers of its own
     const int ts = tile_size_;
     PBufferDesc d;
     d.width = (w + ts - 1) / ts;
@@ -29,7 +33,8 @@ void TileDepthPass::resize(int w, int h) {
     tiles_ = std::make_unique<PBuffer>("tile depth", d);
 }
 
-std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f) {
+std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f, const PBuffer& gbuffer) {
+    if (readback_) return spans_by_readback(f, gbuffer);
     const int tx = tiles_->width(), ty = tiles_->height(), rows = rows_->height();
     RenderState s = fixed_function_2d();  // spans written, not blended
     // Pass 1: each tile column's span over each window row.
@@ -66,6 +71,26 @@ std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f) {
     std::vector<DepthSpan> out(size_t(tx) * ty);
     for (size_t i = 0; i < out.size(); ++i) out[i] = DepthSpan{px[4 * i], px[4 * i + 1]};
     return out;
+}
+
+std::vector<DepthSpan> TileDepthPass::spans_by_readback(const FrameDef& f, const PBuffer& gbuffer) {
+    // Texel (x, y) is window pixel (x, y): the G-buffer is the frame's size (padded to powers of
+    // two at most, which the stride takes).
+    const int tw = gbuffer.texture_width(), th = gbuffer.texture_height();
+    depth_.resize(size_t(tw) * size_t(th));
+    normal_.resize(size_t(tw) * size_t(th) * 4);
+    // On unit 4, not one of the G-buffer's 0..3, and unbound again.
+    glActiveTexture(GL_TEXTURE4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glBindTexture(GL_TEXTURE_2D, gbuffer.texture(PBuffer::DEPTH));
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depth_.data());
+    glBindTexture(GL_TEXTURE_2D, gbuffer.texture(G_NORMAL));
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, normal_.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+    check_gl_stage("tile depth spans (read back)");
+    return spans_from_depth(GbufferReadback{depth_.data(), normal_.data(), tw}, f.width, f.height, tile_size_,
+                            f.planes, f.camera.far_plane);
 }
 
 }  // namespace dsr
