@@ -1,9 +1,12 @@
 // The tiles' depth spans (tile_depth.h).
 #include "deferred/tile_depth.h"
 
+#include <string>
+
 #include "deferred/render_targets.h"
 #include "deferred/screen_quad.h"
 #include "deferred/tile_spans.h"
+#include "dsr_error.h"
 #include "gl/check.h"
 #include "gl/state.h"
 
@@ -76,6 +79,9 @@ std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f, const PBuffer& gb
 std::vector<DepthSpan> TileDepthPass::spans_by_readback(const FrameDef& f, const PBuffer& gbuffer) {
     // Texel (x, y) is window pixel (x, y): the G-buffer is the frame's size (padded to powers of
     // two at most, which the stride takes).
+    if (gbuffer.width() != f.width || gbuffer.height() != f.height)
+        throw Error("tile depth spans: the G-buffer (" + std::to_string(gbuffer.width()) + "x" +
+                    std::to_string(gbuffer.height()) + ") is not the frame's size");
     const int tw = gbuffer.texture_width(), th = gbuffer.texture_height();
     depth_.resize(size_t(tw) * size_t(th));
     normal_.resize(size_t(tw) * size_t(th) * 4);

@@ -30,8 +30,6 @@ public:
     // read the G-buffer's normal and depth targets on units 0 and 3 (P-buffer 0 must not be bound);
     // or, where readback(), the two targets read back and the spans made on the CPU.
     std::vector<DepthSpan> spans(const FrameDef& f, const PBuffer& gbuffer);
-    // Whether spans() reads the G-buffer back rather than drawing its passes.
-    bool readback() const { return readback_; }
 
 private:
     std::vector<DepthSpan> spans_by_readback(const FrameDef& f, const PBuffer& gbuffer);
@@ -40,7 +38,7 @@ private:
     Program rows_prog_, reduce_prog_;
     int tile_size_;
     bool pow2_;
-    bool readback_;
+    bool readback_;  // the spans from the G-buffer read back, not from the passes
     std::unique_ptr<PBuffer> rows_;  // RGBA32F: a texel per tile column and window row
     std::unique_ptr<PBuffer> tiles_;  // RGBA32F: a texel per tile, read back
 };
