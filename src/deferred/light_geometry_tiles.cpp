@@ -60,7 +60,7 @@ public:
           stride_(kFixedFloats + 4 * id_vecs_),
           xy_slack_(c.opts.depth == DepthPath::position16 ? 1.0f / 1024.0f : 0.0f),
           round_(c.tile_round) {
-        if (programs.has("tile_depth")) depth_ = std::make_unique<TileDepthPass>(c, programs, width, height);
+        if (tile_depth_culling(c)) depth_ = std::make_unique<TileDepthPass>(c, programs, width, height);
     }
 
     void resize(int width, int height) override {

@@ -213,6 +213,7 @@ bool ambient_fold(const ShaderConfig& c) {
 bool tile_depth(const ShaderConfig& c) {
     return uses_tiles(c) && c.opts.tile_depth && c.caps.fbo && c.caps.texture_float && c.paths.fbo;
 }
+bool tile_depth_passes(const ShaderConfig& c) { return tile_depth(c) && !tile_spans_by_readback(c); }
 
 // Shadow maps (shadow_stage.h, glsl120/shadow.glsl): built only for scenes with shadowed lights.
 bool shadows(const ShaderConfig& c) { return c.opts.shadow_lights; }
@@ -235,6 +236,11 @@ Defines shadow_defines(Defines d, const ShaderConfig& c) {
 std::string tile_size(const ShaderConfig& c) { return "TILE_SIZE " + std::to_string(c.opts.tile_size); }
 
 }  // namespace
+
+bool tile_depth_culling(const ShaderConfig& c) { return tile_depth(c); }
+bool tile_spans_by_readback(const ShaderConfig& c) {
+    return tile_depth(c) && c.caps.software_rasterizer && c.paths.depth_path == DepthPath::texture;
+}
 
 Defines shadow_lookup_defines(bool packed, ShadowFilter filter) {
     Defines d = {"SHADOW"};
@@ -346,9 +352,9 @@ const std::vector<ShaderRow>& shader_rows() {
         {"light_screen_shadow_atlas", "light.vert", "light_screen.frag", "screen: the same, the batch's maps in one atlas",
          screen_shadow_atlas,
          [](C c) { return with(shadow_defines(screen_defines(c), c), {shadow_slots(c), "SHADOW_ATLAS"}); }},
-        {"tile_depth", "post.vert", "tile_depth.frag", "tiles: each tile column's depth span per row", tile_depth,
+        {"tile_depth", "post.vert", "tile_depth.frag", "tiles: each tile column's depth span per row", tile_depth_passes,
          [](C c) { return with(depth_defines(c), {tile_size(c)}); }},
-        {"tile_depth_reduce", "post.vert", "tile_depth_reduce.frag", "tiles: a tile's rows together", tile_depth,
+        {"tile_depth_reduce", "post.vert", "tile_depth_reduce.frag", "tiles: a tile's rows together", tile_depth_passes,
          [](C c) { return Defines{tile_size(c)}; }},
         // The depth hand-off's pass (depth_handoff.h), where it is not a blit.
         {"depth_copy", "post.vert", "depth_copy.frag", "depth hand-off: gl_FragDepth from the G-buffer",

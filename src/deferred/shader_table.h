@@ -51,6 +51,12 @@ using Defines = std::vector<std::string>;
 // shadow form both compile it with these.
 Defines shadow_lookup_defines(bool packed, ShadowFilter filter);
 
+// The tiles' depth culling (tile_depth.h): whether the configuration has it, and whether its
+// spans come from the G-buffer read back to the CPU (a CPU rasteriser with the depth texture)
+// rather than from its two passes, whose programs are then not in the table's set.
+bool tile_depth_culling(const ShaderConfig& c);
+bool tile_spans_by_readback(const ShaderConfig& c);
+
 // log_luminance.frag's taps per side of each block it reduces (final_stage.h).
 constexpr int kLogLuminanceTaps = 4;
 

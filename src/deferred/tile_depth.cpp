@@ -13,11 +13,11 @@
 namespace dsr {
 
 TileDepthPass::TileDepthPass(const ShaderConfig& c, ProgramSet& programs, int width, int height)
-    : rows_prog_(programs.take("tile_depth")),
-      reduce_prog_(programs.take("tile_depth_reduce")),
-      tile_size_(c.opts.tile_size),
-      pow2_(!c.caps.npot),
-      readback_(c.caps.software_rasterizer && c.paths.depth_path == DepthPath::texture) {
+    : tile_size_(c.opts.tile_size), pow2_(!c.caps.npot), readback_(tile_spans_by_readback(c)) {
+    if (!readback_) {
+        rows_prog_ = programs.take("tile_depth");
+        reduce_prog_ = programs.take("tile_depth_reduce");
+    }
     resize(width, height);
 }
 

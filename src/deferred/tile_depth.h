@@ -22,20 +22,21 @@ namespace dsr {
 class TileDepthPass {
 public:
     // Needs the table's "tile_depth" and "tile_depth_reduce" (a float target behind a framebuffer
-    // object); the buffers are made here and at resize, never inside a frame: creating their
-    // textures would disturb the G-buffer's texture bindings.
+    // object), except where the spans are read back (tile_spans_by_readback); the buffers are made
+    // here and at resize, never inside a frame: creating their textures would disturb the
+    // G-buffer's texture bindings.
     TileDepthPass(const ShaderConfig& c, ProgramSet& programs, int width, int height);
     void resize(int width, int height);
     // Each tile's span, row by row: its two passes into its own buffers and the read-back, which
     // read the G-buffer's normal and depth targets on units 0 and 3 (P-buffer 0 must not be bound);
-    // or, where readback(), the two targets read back and the spans made on the CPU.
+    // or, where readback_, the two targets read back and the spans made on the CPU.
     std::vector<DepthSpan> spans(const FrameDef& f, const PBuffer& gbuffer);
 
 private:
     std::vector<DepthSpan> spans_by_readback(const FrameDef& f, const PBuffer& gbuffer);
     std::vector<float> depth_;          // the read-back's storage, kept between frames
     std::vector<unsigned char> normal_;
-    Program rows_prog_, reduce_prog_;
+    Program rows_prog_, reduce_prog_;  // the passes' (none where readback_)
     int tile_size_;
     bool pow2_;
     bool readback_;  // the spans from the G-buffer read back, not from the passes
