@@ -239,6 +239,43 @@ TEST(Scissor, ContainsEveryVisibleSpherePointAndIsTight) {
     EXPECT_LT(mean_ratio, 1.1);
 }
 
+// make_frame computes its spheres' rectangles two at a time (light_scissors, one light a SIMD
+// lane). The test above checks a lone light, lane 0; here every sphere of every family, in a batch
+// and shifted by one so that it is drawn in each lane, must get the lone light's rectangle.
+TEST(Scissor, EachLaneOfABatchIsTheLoneLightsRectangle) {
+    Sampler g(20261206u);
+    int compared = 0, nonempty = 0;
+    for (int round = 0; round < 400; ++round) {
+        const Camera cam = g.camera();
+        std::vector<dsr::EyeSphere> batch;
+        for (int i = 0; i < 37; ++i) {  // odd: the last light of a batch is a lane alone
+            const Sphere s = make_sphere(g, Family(std::uniform_int_distribution<int>(0, kFamilies - 1)(g.rng())), cam);
+            batch.push_back({s.c, s.r});
+        }
+        for (size_t shift = 0; shift < 2; ++shift) {
+            std::vector<ScissorRect> rects(batch.size() - shift, ScissorRect{-7, -7, -7, -7});
+            dsr::light_scissors(batch.data() + shift, rects.size(), cam.p00, cam.p11, cam.near_plane, cam.w, cam.h,
+                                rects.data());
+            for (size_t i = 0; i < rects.size(); ++i) {
+                const dsr::EyeSphere& e = batch[i + shift];
+                const ScissorRect lone = scissor({e.centre, e.radius}, cam);
+                const ScissorRect& r = rects[i];
+                ASSERT_TRUE(r.x0 == lone.x0 && r.y0 == lone.y0 && r.x1 == lone.x1 && r.y1 == lone.y1)
+                    << "lane " << (i % 2) << ": [" << r.x0 << "," << r.x1 << ")x[" << r.y0 << "," << r.y1
+                    << ") against " << describe({e.centre, e.radius}, cam, lone);
+                ++compared;
+                nonempty += !lone.empty();
+            }
+        }
+    }
+    EXPECT_GT(nonempty, compared / 4);  // the batches held lights that reach the screen
+    // A bad sphere anywhere in the batch: the error, and no rectangle written.
+    std::vector<dsr::EyeSphere> bad = {{{0, 0, -5}, 1}, {{0, 0, -5}, 1}, {{0, NAN, -5}, 1}};
+    std::vector<ScissorRect> rects(3, ScissorRect{-7, -7, -7, -7});
+    EXPECT_THROW(dsr::light_scissors(bad.data(), 3, 1, 1, 0.1f, 64, 64, rects.data()), dsr::Error);
+    for (const ScissorRect& r : rects) EXPECT_EQ(r.x0, -7);
+}
+
 TEST(Scissor, ExplicitCases) {
     const float p = 1.0f / std::tan(glm::radians(30.0f));  // 60 degree square frustum
     // Centred sphere well in front: symmetric rect around the middle.

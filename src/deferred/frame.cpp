@@ -7,6 +7,7 @@
 
 #include "deferred/culling.h"
 #include "deferred/reconstruct.h"
+#include "deferred/scissor.h"
 #include "dsr_error.h"
 
 namespace dsr {
@@ -26,13 +27,19 @@ namespace {
 // Listing 17 lines 11-31: frustum culling, the empty-light skip and each light's scissor
 // rectangle (Listing 16), whatever geometry then draws the light. Culling and the rectangle come
 // from the light's volume (light_volume.h): a sphere as in the tutorial, a spot's cone, or a
-// directional light's full screen (never culled, never scissored).
+// directional light's full screen (never culled, never scissored). Three sweeps: the lights that
+// survive culling, then their rectangles (the spheres' all at once, light_scissors), then the
+// lights whose rectangle is empty dropped.
 void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_empty, bool shadows) {
     const auto frustum = frustum_planes(f.proj * f.view);
     const int w = f.width, h = f.height;
     const EyeTransform eye_of(f.camera);
     f.lights.reserve(lights.size());
     f.lights_total = int(lights.size());
+    std::vector<EyeSphere> spheres;
+    std::vector<size_t> sphere_of;  // the f.lights entry of each sphere
+    spheres.reserve(lights.size());
+    sphere_of.reserve(lights.size());
     for (size_t i = 0; i < lights.size(); ++i) {
         const Light& light = lights[i];
         const LightVolume volume = light_volume(light);
@@ -47,7 +54,27 @@ void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_emp
         // In double, rounded once (Camera::to_eye): far from the origin, view * pos in float would
         // lose the light's position to the world coordinates' rounding (stress case coords).
         const LightVolume eye = to_eye(volume, eye_of);
-        ScissorRect r = volume_scissor(eye, f.proj[0][0], f.proj[1][1], f.camera.near_plane, w, h);
+        // The volume's eye-space position is the light's (Camera::to_eye's arithmetic), but for a
+        // directional light, whose volume has none.
+        const glm::vec3 eye_pos = volume.kind == LightVolume::Kind::full_screen ? eye_of.to_eye(light.pos) : eye.pos;
+        if (eye.kind == LightVolume::Kind::sphere) {
+            sphere_of.push_back(f.lights.size());
+            spheres.push_back(EyeSphere{eye.pos, eye.radius});
+        }
+        f.lights.push_back(LightDraw{&light, i, light_params(light, eye_of.view, eye_pos), eye, {}, false});
+    }
+
+    std::vector<ScissorRect> sphere_rects(spheres.size());
+    light_scissors(spheres.data(), spheres.size(), f.proj[0][0], f.proj[1][1], f.camera.near_plane, w, h,
+                   sphere_rects.data());
+    for (size_t k = 0; k < spheres.size(); ++k) f.lights[sphere_of[k]].rect = sphere_rects[k];
+
+    size_t kept = 0;
+    for (size_t j = 0; j < f.lights.size(); ++j) {
+        LightDraw& l = f.lights[j];
+        ScissorRect r = l.eye.kind == LightVolume::Kind::sphere
+                            ? l.rect
+                            : volume_scissor(l.eye, f.proj[0][0], f.proj[1][1], f.camera.near_plane, w, h);
         long long n = r.area();
         if (n <= 0) {
             if (skip_empty) {  // the volume reaches no visible pixel: Listing 17 line 31
@@ -57,16 +84,15 @@ void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_emp
             r = ScissorRect{0, 0, w, h};  // without the skip: shade the screen for nothing
             n = (long long)w * h;
         }
-        const bool full = !f.scissors || n == (long long)w * h;
-        if (full) r = ScissorRect{0, 0, w, h};
-        f.scissor_pixels += r.area();
-        // The volume's eye-space position is the light's (Camera::to_eye's arithmetic), but for a
-        // directional light, whose volume has none.
-        const glm::vec3 eye_pos = volume.kind == LightVolume::Kind::full_screen ? eye_of.to_eye(light.pos) : eye.pos;
-        f.lights.push_back(LightDraw{&light, i, light_params(light, eye_of.view, eye_pos), eye, r, full});
+        l.full = !f.scissors || n == (long long)w * h;
+        l.rect = l.full ? ScissorRect{0, 0, w, h} : r;
+        f.scissor_pixels += l.rect.area();
         // Maps only for the visible shadowed lights: the shadow stage draws one per index.
-        if (shadows && light.shadow.on) f.lights.back().shadow = f.shadowed_lights++;
+        if (shadows && l.light->shadow.on) l.shadow = f.shadowed_lights++;
+        if (kept != j) f.lights[kept] = l;
+        ++kept;
     }
+    f.lights.erase(f.lights.begin() + std::ptrdiff_t(kept), f.lights.end());
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // The light scissor rectangle of §3.4.2 / Listing 16 (Lengyel's tangent planes) as pure math,
 // so it can be tested against brute force without GL.
 #pragma once
+#include <cstddef>
+
 #include <glm/glm.hpp>
 
 namespace dsr {
@@ -23,6 +25,19 @@ struct ScissorRect {
 // Throws dsr::Error on non-finite input, radius < 0, p00/p11/near_plane <= 0 or a negative size.
 ScissorRect light_scissor(glm::vec3 light_eye, float radius, float p00, float p11,
                           float near_plane, int width, int height);
+
+// A sphere in eye space, for light_scissors.
+struct EyeSphere {
+    glm::vec3 centre{0};
+    float radius = 0;
+};
+
+// light_scissor for n spheres at once (make_frame's lights): rects[i] is
+// light_scissor(spheres[i].centre, spheres[i].radius, ...), the same arithmetic a pair of lights
+// at a time in SIMD lanes, so that one light's divisions and square roots need not wait on the
+// last's. Throws as light_scissor does, for the first bad sphere, before writing any rectangle.
+void light_scissors(const EyeSphere* spheres, size_t n, float p00, float p11, float near_plane, int width,
+                    int height, ScissorRect* rects);
 
 // The pixel rectangle of a region whose eye-space points (all at z <= -near) have x / (-z) in
 // [xlo, xhi] and y / (-z) in [ylo, yhi]: the same outward rounding and clamping as light_scissor.
