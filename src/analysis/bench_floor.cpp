@@ -20,7 +20,7 @@ namespace dsr::bench {
 
 std::optional<double> floor_ms(const FloorParts& f, std::optional<long long> ideal) {
     if (!ideal) return std::nullopt;
-    return f.fill_ms + double(*ideal) * f.light_ns_per_fragment * 1e-6 + f.post_ms;
+    return f.fill_ms + double(*ideal) * f.light_ns_per_fragment * 1e-6 + f.post_ms + f.output_ms;
 }
 
 std::optional<double> floor_ratio(double ms_median, std::optional<double> floor) {
@@ -73,7 +73,7 @@ FloorBench::~FloorBench() = default;
 
 void FloorBench::set_scene(const Scene& scene) { gpu_ = std::make_unique<GpuScene>(scene); }
 
-double FloorBench::fill_frame(const Scene& scene) {
+double FloorBench::fill_frame(const Scene& scene, bool clear_output) {
     if (!gpu_) throw Error("bench floor: fill_frame before set_scene");
     glFinish();  // nothing of the previous work in this frame's time
     const double t0 = now_ms();
@@ -98,6 +98,11 @@ double FloorBench::fill_frame(const Scene& scene) {
     gpu_->draw_all();
     gpu_->unbind();
     gbuf_->unbind_render();
+    if (clear_output) {
+        accum_->bind_render();
+        glClear(GL_COLOR_BUFFER_BIT);  // the state above: no scissor, every channel written
+        accum_->unbind_render();
+    }
     glFinish();
     const double ms = now_ms() - t0;
     check_gl("bench floor: fill pass");

@@ -11,7 +11,14 @@
 //       back to back and timed as one batch; median over batches of batch_ms / (passes x w x h).
 //   (c) post floor: each post pass's texel reads over its buffer, each read costed at a quarter
 //       of (b) (b's fragment makes four reads). The bench's rows run with post off, so (c) = 0.
-// floor_ms = (a) + ideal_fragments x (b) + (c); floor_ratio = ms_median / floor_ms.
+//   (d) output floor: one clear of an RGBA8 target like P-buffer 0. (b) writes only the lit pixels,
+//       but a frame writes every pixel of its output at least once (the clear's background, the
+//       ambient term); without (d) the floor's image would be undefined wherever no light
+//       reaches. Timed inside (a)'s frames, so that the floor pays one glFinish as a row does: each
+//       round times a fill frame without the clear and one with it; (d) is the difference of
+//       their medians, and (a) + (d) the median of the frames with it. Where the clear costs less
+//       than the frames' spread (llvmpipe at small sizes) (d) may come out below zero.
+// floor_ms = (a) + ideal_fragments x (b) + (c) + (d); floor_ratio = ms_median / floor_ms.
 #pragma once
 #include <memory>
 #include <optional>
@@ -47,9 +54,10 @@ struct FloorParts {
     double fill_ms = 0;             // (a)
     double light_ns_per_fragment = 0;  // (b), nanoseconds
     double post_ms = 0;             // (c)
+    double output_ms = 0;           // (d)
 };
 
-// (a) + ideal x (b) + (c), in ms. Null when there is no ideal count.
+// (a) + ideal x (b) + (c) + (d), in ms. Null when there is no ideal count.
 std::optional<double> floor_ms(const FloorParts& f, std::optional<long long> ideal_fragments);
 // ms_median / floor_ms; null when the floor is null or not positive.
 std::optional<double> floor_ratio(double ms_median, std::optional<double> floor);
@@ -68,7 +76,8 @@ public:
     ~FloorBench();
     void set_scene(const Scene& scene);
     // One (a) frame: clear, the triangles once, glFinish; returns its wall time in ms.
-    double fill_frame(const Scene& scene);
+    // With clear_output, (d)'s clear of the output target too, before the glFinish.
+    double fill_frame(const Scene& scene, bool clear_output = false);
     // (b): `batches` batches of full-screen passes, each long enough to time (about 30 ms; at
     // least 2 passes); the median ns per fragment. Reads what the last fill_frame wrote.
     double light_ns_per_fragment(int batches = 5);

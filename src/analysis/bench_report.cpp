@@ -66,6 +66,7 @@ json row_json(const Row& r) {
     j["floor_fill_ms"] = opt(r.floor_fill_ms);
     j["floor_light_ns"] = opt(r.floor_light_ns);
     j["floor_post_ms"] = opt(r.floor_post_ms);
+    j["floor_output_ms"] = opt(r.floor_output_ms);
     j["floor_ms"] = opt(r.floor_ms);
     j["floor_ratio"] = opt(r.floor_ratio);
     j["light_passes"] = opt(r.light_passes);
@@ -317,13 +318,18 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
           "width x height).\n"
           "- (c) *post floor*: each post pass's texel reads over its buffer (bloom: two blurs of `bloom_taps` "
           "reads at 1/`bloom_scale`, one add; anti-alias: 9 reads per source and 9 of the colour), each read "
-          "costed at (b) / 4. Every row here runs with post off, so (c) = 0 in every row.\n\n"
-          "*floor ms* = (a) + *ideal* x (b) + (c); *floor ratio* = *ms med* / *floor ms* (goal "
+          "costed at (b) / 4. Every row here runs with post off, so (c) = 0 in every row.\n"
+          "- (d) *output floor*: one clear of an RGBA8 target like P-buffer 0. (b) writes only the lit pixels, "
+          "but a frame writes every pixel of its output at least once (the background, the ambient term): "
+          "without (d) the floor's image would be undefined wherever no light reaches. Each round times a fill "
+          "frame of (a) without the clear and one with it before its glFinish (one glFinish, as a row pays); (d) "
+          "is the difference of their medians (below zero where the clear costs less than the frames' spread).\n\n"
+          "*floor ms* = (a) + *ideal* x (b) + (c) + (d); *floor ratio* = *ms med* / *floor ms* (goal "
        << goal_bound(goal("floor")) << "). The "
-          "floor leaves out what a deferred frame does beyond these (the ambient term, a pass of its own or one "
-          "more target the material pass writes, the copy to the main "
+          "floor leaves out what a deferred frame does beyond these (the ambient term's reads and arithmetic, a "
+          "pass of its own or one more target the material pass writes, the copy to the main "
           "buffer, per-light set-up), so it is a lower bound, not a target any renderer is known to reach. The "
-          "parts of each row are in the JSON (`floor_fill_ms`, `floor_light_ns`, `floor_post_ms`).\n\n"
+          "parts of each row are in the JSON (`floor_fill_ms`, `floor_light_ns`, `floor_post_ms`, `floor_output_ms`).\n\n"
        << light_geometry_markdown(s.rows)
        << "## Table\n\n"
        << "- *configuration*: `deferred DEPTH[/ENCODING] sc|-` (scissor on or off), `half` for half-float "

@@ -93,7 +93,7 @@ using Runs = std::vector<std::unique_ptr<RowRun>>;
 // fill times measured in the timed rounds.
 struct Floors {
     std::map<GbufferLayout, std::unique_ptr<FloorBench>> bench;
-    std::map<GbufferLayout, std::vector<double>> fill_ms;
+    std::map<GbufferLayout, std::vector<double>> fill_ms, fill_output_ms;  // (a); (a) and (d)
 };
 
 Row base_row(const Config& cfg, const Variant& v, Renderer renderer) {
@@ -334,8 +334,11 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
             if (f + 1 == run->row.frames)
                 run->image = opaque(run->ds ? run->ds->read_output(v.w, v.h) : read_pixels(v.w, v.h));
         }
-        if (f < cfg.frames)  // (a) in the same rounds, as many frames as the fast rows
-            for (auto& [l, fb] : floors.bench) floors.fill_ms[l].push_back(fb->fill_frame(v.scene));
+        if (f < cfg.frames)  // (a) and (d) in the same rounds, as many frames as the fast rows
+            for (auto& [l, fb] : floors.bench) {
+                floors.fill_ms[l].push_back(fb->fill_frame(v.scene));
+                floors.fill_output_ms[l].push_back(fb->fill_frame(v.scene, true));
+            }
     }
     for (auto& run : runs)
         if (run->ds) {
@@ -344,12 +347,13 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
         }
 }
 
-// (a) and (b) of each layout's floor; (c) depends on the row's post options (finish_rows).
+// (a), (b) and (d) of each layout's floor; (c) depends on the row's post options (finish_rows).
 std::map<GbufferLayout, FloorParts> floor_parts(Floors& floors) {
     std::map<GbufferLayout, FloorParts> parts;
     for (auto& [l, fb] : floors.bench) {
         FloorParts p;
         p.fill_ms = median(floors.fill_ms[l]);
+        p.output_ms = median(floors.fill_output_ms[l]) - p.fill_ms;
         p.light_ns_per_fragment = fb->light_ns_per_fragment();
         parts[l] = p;
     }
@@ -416,6 +420,7 @@ void finish_row(const Config& cfg, const Variant& v, RowRun& run, const IdealCou
             r.floor_fill_ms = fp.fill_ms;
             r.floor_light_ns = fp.light_ns_per_fragment;
             r.floor_post_ms = fp.post_ms;
+            r.floor_output_ms = fp.output_ms;
             r.floor_ms = floor_ms(fp, ideal.fragments);
             r.floor_ratio = floor_ratio(r.ms_median, r.floor_ms);
         }

@@ -85,7 +85,7 @@ struct Row {
     std::optional<std::string> ideal_source;  // "analytic" (exact eye depth) | "depth24" (G-buffer depth in double)
     std::optional<int> lights_drawn, passes;
     // The frame's floor (bench_floor.h), deferred rows: its parts, floor_ms and ms_median / floor_ms.
-    std::optional<double> floor_fill_ms, floor_light_ns, floor_post_ms, floor_ms, floor_ratio;
+    std::optional<double> floor_fill_ms, floor_light_ns, floor_post_ms, floor_output_ms, floor_ms, floor_ratio;
     ImageDiff err;                          // vs the forward reference
     std::optional<ImageDiff> err_analytic;  // vs the analytic reference, interior pixels
     std::optional<ImageDiff> err_quad;      // deferred rows: vs the default quad row's image
