@@ -73,7 +73,7 @@ FloorBench::~FloorBench() = default;
 
 void FloorBench::set_scene(const Scene& scene) { gpu_ = std::make_unique<GpuScene>(scene); }
 
-double FloorBench::fill_frame(const Scene& scene, bool clear_output) {
+double FloorBench::fill_frame(const Scene& scene) {
     if (!gpu_) throw Error("bench floor: fill_frame before set_scene");
     glFinish();  // nothing of the previous work in this frame's time
     const double t0 = now_ms();
@@ -98,11 +98,6 @@ double FloorBench::fill_frame(const Scene& scene, bool clear_output) {
     gpu_->draw_all();
     gpu_->unbind();
     gbuf_->unbind_render();
-    if (clear_output) {
-        accum_->bind_render();
-        glClear(GL_COLOR_BUFFER_BIT);  // the state above: no scissor, every channel written
-        accum_->unbind_render();
-    }
     glFinish();
     const double ms = now_ms() - t0;
     check_gl("bench floor: fill pass");
@@ -150,6 +145,44 @@ double FloorBench::light_ns_per_fragment(int batches) {
     for (int b = 0; b < batches; ++b)
         ns.push_back(light_batch_ms(passes) * 1e6 / (double(passes) * w_ * h_));
     return median(ns);
+}
+
+// `n` times a one-pixel point into the output target, each after a clear of the whole target with
+// `clear`; glFinish-bounded wall ms. The point keeps a GL from merging a clear into the next one.
+double FloorBench::output_batch_ms(int n, bool clear) {
+    glFinish();
+    const double t0 = now_ms();
+    accum_->bind_render();
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, w_, 0, h_, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    gl_state().apply(RenderState{});  // fixed function, no scissor, every channel written
+    glClearColor(0, 0, 0, 0);
+    for (int i = 0; i < n; ++i) {
+        if (clear) glClear(GL_COLOR_BUFFER_BIT);
+        glBegin(GL_POINTS);
+        glVertex2f(0.5f, 0.5f);
+        glEnd();
+    }
+    accum_->unbind_render();
+    glFinish();
+    const double ms = now_ms() - t0;
+    check_gl("bench floor: output clears");
+    return ms;
+}
+
+double FloorBench::output_clear_ms(int batches) {
+    output_batch_ms(2, true);  // warm-up
+    const double one = std::max(1e-3, output_batch_ms(4, true) / 4);
+    const int n = std::clamp(int(30.0 / one), 4, 1024);
+    std::vector<double> with, without;
+    for (int b = 0; b < batches; ++b) {
+        with.push_back(output_batch_ms(n, true));
+        without.push_back(output_batch_ms(n, false));
+    }
+    return std::max(0.0, (median(with) - median(without)) / n);
 }
 
 }  // namespace dsr::bench

@@ -14,10 +14,9 @@
 //   (d) output floor: one clear of an RGBA8 target like P-buffer 0. (b) writes only the lit pixels,
 //       but a frame writes every pixel of its output at least once (the clear's background, the
 //       ambient term); without (d) the floor's image would be undefined wherever no light
-//       reaches. Timed inside (a)'s frames, so that the floor pays one glFinish as a row does: each
-//       round times a fill frame without the clear and one with it; (d) is the difference of
-//       their medians, and (a) + (d) the median of the frames with it. Where the clear costs less
-//       than the frames' spread (llvmpipe at small sizes) (d) may come out below zero.
+//       reaches. Timed like (b), without a glFinish of its own: batches of n clears, each followed
+//       by a one-pixel point (so that no GL merges one clear into the next), against batches of
+//       the n points alone, about 30 ms a batch; (d) = the difference of the two medians / n.
 // floor_ms = (a) + ideal_fragments x (b) + (c) + (d); floor_ratio = ms_median / floor_ms.
 #pragma once
 #include <memory>
@@ -76,15 +75,17 @@ public:
     ~FloorBench();
     void set_scene(const Scene& scene);
     // One (a) frame: clear, the triangles once, glFinish; returns its wall time in ms.
-    // With clear_output, (d)'s clear of the output target too, before the glFinish.
-    double fill_frame(const Scene& scene, bool clear_output = false);
+    double fill_frame(const Scene& scene);
     // (b): `batches` batches of full-screen passes, each long enough to time (about 30 ms; at
     // least 2 passes); the median ns per fragment. Reads what the last fill_frame wrote.
     double light_ns_per_fragment(int batches = 5);
+    // (d): `batches` pairs of batches, with and without the clears; ms a clear (0 at least).
+    double output_clear_ms(int batches = 5);
     const GbufferLayout& layout() const { return layout_; }
 
 private:
     double light_batch_ms(int passes);
+    double output_batch_ms(int n, bool clear);
     int w_, h_;
     GbufferLayout layout_;
     std::unique_ptr<PBuffer> gbuf_, accum_;

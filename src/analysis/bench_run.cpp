@@ -93,7 +93,7 @@ using Runs = std::vector<std::unique_ptr<RowRun>>;
 // fill times measured in the timed rounds.
 struct Floors {
     std::map<GbufferLayout, std::unique_ptr<FloorBench>> bench;
-    std::map<GbufferLayout, std::vector<double>> fill_ms, fill_output_ms;  // (a); (a) and (d)
+    std::map<GbufferLayout, std::vector<double>> fill_ms;
 };
 
 Row base_row(const Config& cfg, const Variant& v, Renderer renderer) {
@@ -334,11 +334,8 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
             if (f + 1 == run->row.frames)
                 run->image = opaque(run->ds ? run->ds->read_output(v.w, v.h) : read_pixels(v.w, v.h));
         }
-        if (f < cfg.frames)  // (a) and (d) in the same rounds, as many frames as the fast rows
-            for (auto& [l, fb] : floors.bench) {
-                floors.fill_ms[l].push_back(fb->fill_frame(v.scene));
-                floors.fill_output_ms[l].push_back(fb->fill_frame(v.scene, true));
-            }
+        if (f < cfg.frames)  // (a) in the same rounds, as many frames as the fast rows
+            for (auto& [l, fb] : floors.bench) floors.fill_ms[l].push_back(fb->fill_frame(v.scene));
     }
     for (auto& run : runs)
         if (run->ds) {
@@ -353,7 +350,7 @@ std::map<GbufferLayout, FloorParts> floor_parts(Floors& floors) {
     for (auto& [l, fb] : floors.bench) {
         FloorParts p;
         p.fill_ms = median(floors.fill_ms[l]);
-        p.output_ms = median(floors.fill_output_ms[l]) - p.fill_ms;
+        p.output_ms = fb->output_clear_ms();
         p.light_ns_per_fragment = fb->light_ns_per_fragment();
         parts[l] = p;
     }
