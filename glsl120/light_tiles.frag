@@ -129,6 +129,12 @@ void main()
 #else
     vec4 q3 = vec4(65535.0);
 #endif
+    // A discarded lane (the background) leaves the loop at once: llvmpipe (Mesa 22.3) runs a lane
+    // group on past a discard, so the loop went on until its last slot for groups no pixel of which
+    // is lit (every pixel discarded after its G-buffer reads: the light stage 25.5 ms on
+    // 1024-overlap at 640x360, 7.4 with the loop left; as built 25.0).
+    if (len <= 0.1)
+        q0.x = 65535.0;
     for (int k = 0; k < (MAX_LIGHTS + 1) / 2; ++k) {
         float pair = floor(q0.x + 0.5);
         q0 = vec4(q0.yzw, q1.x);
@@ -145,8 +151,9 @@ void main()
         shade(int(lo), pos, v, normal, diffuse, specular, shininess, c, any);
     }
 #else
+    int count = len <= 0.1 ? 0 : light_count;  // a discarded lane leaves the loop at once (above)
     for (int k = 0; k < MAX_LIGHTS; ++k) {
-        if (k >= light_count)
+        if (k >= count)
             break;
         shade(k, pos, v, normal, diffuse, specular, shininess, c, any);
     }
