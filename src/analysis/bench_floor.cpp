@@ -104,8 +104,9 @@ double FloorBench::fill_frame(const Scene& scene) {
     return ms;
 }
 
-double FloorBench::light_batch_ms(int passes) {
-    const int targets[4] = {0, 1, 2, layout_.depth_texture ? PBuffer::DEPTH : 3};
+// draw() into the output target under the pixel camera, between two glFinish calls: its wall ms.
+template <class Draw>
+double FloorBench::output_pass_ms(const char* what, Draw&& draw) {
     glFinish();
     const double t0 = now_ms();
     accum_->bind_render();
@@ -114,27 +115,34 @@ double FloorBench::light_batch_ms(int passes) {
     glOrtho(0, w_, 0, h_, -1, 1);
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
-    RenderState s;  // the light pass's state: additive, no depth test
-    s.blend = true;
-    s.blend_src = s.blend_dst = GL_ONE;
-    s.program = light_->id();
-    gl_state().apply(s);
-    for (int u = 0; u < 4; ++u) gbuf_->bind_texture(targets[u], u);
-    for (int i = 0; i < passes; ++i) {
-        glBegin(GL_QUADS);
-        const float xs[4] = {0, float(w_), float(w_), 0}, ys[4] = {0, 0, float(h_), float(h_)};
-        for (int k = 0; k < 4; ++k) {
-            glMultiTexCoord2f(GL_TEXTURE0, xs[k] / float(w_), ys[k] / float(h_));
-            glVertex2f(xs[k], ys[k]);
-        }
-        glEnd();
-    }
-    for (int u = 3; u >= 0; --u) gbuf_->unbind_texture(targets[u], u);
+    draw();
     accum_->unbind_render();
     glFinish();
     const double ms = now_ms() - t0;
-    check_gl("bench floor: light passes");
+    check_gl(what);
     return ms;
+}
+
+double FloorBench::light_batch_ms(int passes) {
+    const int targets[4] = {0, 1, 2, layout_.depth_texture ? PBuffer::DEPTH : 3};
+    return output_pass_ms("bench floor: light passes", [&] {
+        RenderState s;  // the light pass's state: additive, no depth test
+        s.blend = true;
+        s.blend_src = s.blend_dst = GL_ONE;
+        s.program = light_->id();
+        gl_state().apply(s);
+        for (int u = 0; u < 4; ++u) gbuf_->bind_texture(targets[u], u);
+        for (int i = 0; i < passes; ++i) {
+            glBegin(GL_QUADS);
+            const float xs[4] = {0, float(w_), float(w_), 0}, ys[4] = {0, 0, float(h_), float(h_)};
+            for (int k = 0; k < 4; ++k) {
+                glMultiTexCoord2f(GL_TEXTURE0, xs[k] / float(w_), ys[k] / float(h_));
+                glVertex2f(xs[k], ys[k]);
+            }
+            glEnd();
+        }
+        for (int u = 3; u >= 0; --u) gbuf_->unbind_texture(targets[u], u);
+    });
 }
 
 double FloorBench::light_ns_per_fragment(int batches) {
@@ -148,29 +156,18 @@ double FloorBench::light_ns_per_fragment(int batches) {
 }
 
 // `n` times a one-pixel point into the output target, each after a clear of the whole target with
-// `clear`; glFinish-bounded wall ms. The point keeps a GL from merging a clear into the next one.
+// `clear`. The point keeps a GL from merging a clear into the next one.
 double FloorBench::output_batch_ms(int n, bool clear) {
-    glFinish();
-    const double t0 = now_ms();
-    accum_->bind_render();
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, w_, 0, h_, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    gl_state().apply(RenderState{});  // fixed function, no scissor, every channel written
-    glClearColor(0, 0, 0, 0);
-    for (int i = 0; i < n; ++i) {
-        if (clear) glClear(GL_COLOR_BUFFER_BIT);
-        glBegin(GL_POINTS);
-        glVertex2f(0.5f, 0.5f);
-        glEnd();
-    }
-    accum_->unbind_render();
-    glFinish();
-    const double ms = now_ms() - t0;
-    check_gl("bench floor: output clears");
-    return ms;
+    return output_pass_ms("bench floor: output clears", [&] {
+        gl_state().apply(RenderState{});  // fixed function, no scissor, every channel written
+        glClearColor(0, 0, 0, 0);
+        for (int i = 0; i < n; ++i) {
+            if (clear) glClear(GL_COLOR_BUFFER_BIT);
+            glBegin(GL_POINTS);
+            glVertex2f(0.5f, 0.5f);
+            glEnd();
+        }
+    });
 }
 
 double FloorBench::output_clear_ms(int batches) {

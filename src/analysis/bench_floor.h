@@ -84,6 +84,8 @@ public:
     const GbufferLayout& layout() const { return layout_; }
 
 private:
+    template <class Draw>
+    double output_pass_ms(const char* what, Draw&& draw);
     double light_batch_ms(int passes);
     double output_batch_ms(int n, bool clear);
     int w_, h_;
