@@ -17,6 +17,7 @@
 //       reaches. Timed like (b), without a glFinish of its own: batches of n clears, each followed
 //       by a one-pixel point (so that no GL merges one clear into the next), against batches of
 //       the n points alone, about 30 ms a batch; (d) = the difference of the two medians / n.
+//       Once per scene variant: the target is the same whatever the G-buffer layout.
 // floor_ms = (a) + ideal_fragments x (b) + (c) + (d); floor_ratio = ms_median / floor_ms.
 #pragma once
 #include <memory>

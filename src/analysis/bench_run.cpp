@@ -347,10 +347,12 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
 // (a), (b) and (d) of each layout's floor; (c) depends on the row's post options (finish_rows).
 std::map<GbufferLayout, FloorParts> floor_parts(Floors& floors) {
     std::map<GbufferLayout, FloorParts> parts;
+    std::optional<double> output_ms;  // (d): the same RGBA8 target whatever the layout, timed once
     for (auto& [l, fb] : floors.bench) {
         FloorParts p;
         p.fill_ms = median(floors.fill_ms[l]);
-        p.output_ms = fb->output_clear_ms();
+        if (!output_ms) output_ms = fb->output_clear_ms();
+        p.output_ms = *output_ms;
         p.light_ns_per_fragment = fb->light_ns_per_fragment();
         parts[l] = p;
     }
