@@ -820,7 +820,7 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     const nlohmann::ordered_json whole = bench::to_json(s);
     for (auto it = whole.begin(); it != whole.end(); ++it) top.push_back(it.key());
     EXPECT_EQ(top, (std::vector<std::string>{"machine", "gl_renderer", "gl_version", "config", "seconds", "goals",
-                                             "invocation_probe", "notes", "rows"}));
+                                             "invocation_probe", "notes", "skip_savings", "rows"}));
     EXPECT_TRUE(whole["invocation_probe"].is_null());  // not probed: null, never zeros
 }
 

@@ -1,5 +1,6 @@
 // The benchmark's tables, JSON, plot and report (bench_report.h); the goals are bench_goals.cpp's.
 #include "analysis/bench_report.h"
+#include "analysis/bench_skips.h"
 
 #include <algorithm>
 #include <cmath>
@@ -192,6 +193,7 @@ json to_json(const Summary& s) {
     else
         j["invocation_probe"] = nullptr;
     j["notes"] = s.notes;
+    j["skip_savings"] = skip_savings_json(skip_savings(s.rows));
     j["rows"] = json::array();
     for (const Row& r : s.rows) j["rows"].push_back(row_json(r));
     return j;
@@ -332,6 +334,7 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
           "buffer, per-light set-up), so it is a lower bound, not a target any renderer is known to reach. The "
           "parts of each row are in the JSON (`floor_fill_ms`, `floor_light_ns`, `floor_post_ms`, `floor_output_ms`).\n\n"
        << light_geometry_markdown(s.rows)
+       << skip_savings_markdown(skip_savings(s.rows))
        << "## Table\n\n"
        << "- *configuration*: `deferred DEPTH[/ENCODING] sc|-` (scissor on or off), `half` for half-float "
           "G-buffer targets (RGBA8 otherwise, as the tutorial), `accum-half` / `accum-float` for P-buffer 0 in "

@@ -41,7 +41,7 @@ struct Summary {
     std::optional<InvocationProbe> invocation_probe;  // null where the GL cannot be probed
 };
 
-// docs/benchmarks.json: machine, GL, config, seconds, goals, notes, rows.
+// docs/benchmarks.json: machine, GL, config, seconds, goals, notes, skip_savings (bench_skips.h), rows.
 nlohmann::ordered_json to_json(const Summary& s);
 
 // What `dsr bench` prints on stdout, short enough to read at a glance: one line on the run, each

@@ -77,6 +77,17 @@ const std::pair<const char*, bool SkipOptions::*> kSkips[] = {
     {"final", &SkipOptions::final_pass},
 };
 
+}  // namespace
+
+std::vector<std::string> skip_flags_off(const SkipOptions& skip) {
+    std::vector<std::string> out;
+    for (const auto& s : kSkips)
+        if (!(skip.*s.second)) out.push_back(s.first);
+    return out;
+}
+
+namespace {
+
 std::vector<RenderOption> make_table() {
     std::vector<RenderOption> t;
     auto add = [&t](RenderOption o, std::string help) { t.push_back(with_help(std::move(o), std::move(help))); };

@@ -60,6 +60,9 @@ RenderOption integer_option(std::string name, int lo, int hi, int ShaderOptions:
 
 // Every option, in the order the panel shows them.
 const std::vector<RenderOption>& render_options();
+// --no-skip's names ("variants", "empty-lights", ...) of the skips `skip` has turned off, in the
+// option's order: how the bench's report names a row's skips.
+std::vector<std::string> skip_flags_off(const SkipOptions& skip);
 // The entry of `name` ("scissor", "no-skip", ...), null when there is none.
 const RenderOption* find_render_option(const std::string& name);
 // The value's error, or "" when it is one `o` takes ("expected on|off, got 'maybe'").
