@@ -39,6 +39,24 @@ bool met(const Goal& g, const Figure& f) {
     return g.comparison == Comparison::at_most ? f.value <= g.threshold * f.scale : f.value >= g.threshold * f.scale;
 }
 
+// A ratio goal round by round: frame i of each row of a variant ran in round i (Row::frames_ms),
+// so num[i] / den[i] is the goal's figure with both frames under the same load from elsewhere on
+// the machine. The figures' range and in how many rounds the goal held, after the verdict: a
+// verdict on medians that holds in few rounds is the noise's. "" with fewer than two rounds.
+std::string per_round(const Goal& g, const std::vector<double>& num, const std::vector<double>& den) {
+    std::vector<double> r;
+    int held = 0;
+    for (size_t i = 0; i < std::min(num.size(), den.size()); ++i) {
+        if (!(den[i] > 0)) continue;
+        r.push_back(num[i] / den[i]);
+        held += met(g, judged(num[i], den[i], "")) ? 1 : 0;
+    }
+    if (r.size() < 2) return "";
+    std::sort(r.begin(), r.end());
+    return "; round by round " + format_number("%.2f", r.front()) + "-" + format_number("%.2f", r.back()) +
+           ", held in " + std::to_string(held) + " of " + std::to_string(r.size()) + " rounds";
+}
+
 // The rows that turned off the light sphere test alone: the depth-span test without it.
 bool only_sphere_test_off(const Row& r) {
     SkipOptions only;
@@ -107,9 +125,11 @@ Figure speed(const Goal& g, const GoalInput& in) {
     const Row* m = fastest_row(in.rows, in.scene, n, Renderer::forward_multi);
     if (!d || !m) return not_judged();
     const double ratio = m->ms_median / d->ms_median;
-    return judged(ratio, 1,
-                  config_text(*m) + " " + ms(m->ms_median) + " / " + ms(d->ms_median) + " = " +
-                      format_number("%.1f", ratio) + "x");
+    Figure f = judged(ratio, 1,
+                      config_text(*m) + " " + ms(m->ms_median) + " / " + ms(d->ms_median) + " = " +
+                          format_number("%.1f", ratio) + "x");
+    f.after = per_round(g, m->frames_ms, d->frames_ms);
+    return f;
 }
 
 // The CPU time of a frame (FrameStats ms.cpu: the submitting thread's) of dsr's default at the
@@ -150,9 +170,11 @@ Figure tiles(const Goal& g, const GoalInput& in) {
             if (!tt) tt = find_geometry_row(in.rows, r.scene, r.lights, LightGeometry::tiles);
         }
     if (!tq || !tt) return not_judged();
-    return judged(tq->ms_median, tt->ms_median,
-                  ms(tq->ms_median) + " / " + ms(tt->ms_median) + " = " +
-                      format_number("%.2f", tq->ms_median / tt->ms_median) + "x");
+    Figure f = judged(tq->ms_median, tt->ms_median,
+                      ms(tq->ms_median) + " / " + ms(tt->ms_median) + " = " +
+                          format_number("%.2f", tq->ms_median / tt->ms_median) + "x");
+    f.after = per_round(g, tq->frames_ms, tt->frames_ms);
+    return f;
 }
 
 // The scene variant and light count the run measured for the --lights entry `label` (its rows
@@ -265,6 +287,7 @@ Figure demo(const Goal& g, const GoalInput& in) {
                            "x (dsr's default geometry: " + (automatic ? "auto" : "quad, the run has no auto row") +
                            "; " + std::to_string(s->w) + "x" + std::to_string(s->h) +
                            (demo_size ? ", the demo's size" : ", not the demo's 800x600") + ")");
+            f.after = per_round(g, s->frames_ms, d->frames_ms);
         }
     }
     const std::string estimate = demo_estimate(in.rows, g.on);
@@ -294,6 +317,7 @@ Figure law(const Goal& g, const GoalInput& in) {
                       "light stage, attenuation law / linear law, " + std::string(light_geometry_name(a->light_geometry)) +
                           ": " + working(*a, *l) +
                           (a->ideal_fragments ? " (" + std::to_string(*a->ideal_fragments) + " ideal pairs each)" : ""));
+    f.after = per_round(g, a->lights_frames_ms, l->lights_frames_ms);
     std::string others;
     for (LightGeometry geo : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles,
                               LightGeometry::screen}) {
@@ -323,9 +347,11 @@ Figure automatic(const Goal& g, const GoalInput& in) {
         if (r && (!best || r->ms_median < best->ms_median)) best = r;
     }
     if (!best) return not_judged(std::string(kNotMeasured) + " (no row of a fixed geometry)", kNotMeasured);
-    return judged(a->ms_median, best->ms_median,
-                  "auto " + ms(a->ms_median) + " / " + light_geometry_name(best->light_geometry) + " " +
-                      ms(best->ms_median) + " = " + format_number("%.2f", a->ms_median / best->ms_median));
+    Figure f = judged(a->ms_median, best->ms_median,
+                      "auto " + ms(a->ms_median) + " / " + light_geometry_name(best->light_geometry) + " " +
+                          ms(best->ms_median) + " = " + format_number("%.2f", a->ms_median / best->ms_median));
+    f.after = per_round(g, a->frames_ms, best->frames_ms);
+    return f;
 }
 
 // Every geometry's image against quad's, every scene variant of the run: the largest difference.

@@ -43,6 +43,7 @@ json row_json(const Row& r) {
     j["ms_median"] = r.ms_median;
     j["ms_min"] = r.ms_min;
     j["ms_max"] = r.ms_max;
+    j["frames_ms"] = r.frames_ms;  // the timed frames, round by round (bench_run.h)
     j["cpu_ms_median"] = r.cpu_ms;
     j["light_fragments"] = deferred && r.light_fragments ? json(*r.light_fragments) : json(nullptr);
     j["ideal_fragments"] = deferred && r.ideal_fragments ? json(*r.ideal_fragments) : json(nullptr);
@@ -73,6 +74,7 @@ json row_json(const Row& r) {
     j["light_passes"] = opt(r.light_passes);
     j["depth_copy_ms"] = opt(r.depth_copy_ms);
     j["lights_ms"] = opt(r.lights_ms);
+    j["lights_frames_ms"] = r.renderer == Renderer::deferred ? json(r.lights_frames_ms) : json(nullptr);
     j["max_lsb_vs_quad"] = r.err_quad ? json(r.err_quad->max_lsb()) : json(nullptr);
     return j;
 }

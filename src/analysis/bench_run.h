@@ -77,6 +77,10 @@ struct Row {
     std::string lights_label;               // the --lights entry it came from: "own", "32", "1024-overlap", ...
     int sweep_index = 0;                    // place of its light count in --lights (plot marker size)
     double ms_median = 0, ms_min = 0, ms_max = 0;
+    // The timed frames, round by round: frame i of every row of a variant ran in round i (a slow
+    // row, given fewer frames, in the first ones), so two rows' frames pair up round by round.
+    // lights_frames_ms: deferred rows' light stages, the same way (empty on forward rows).
+    std::vector<double> frames_ms, lights_frames_ms;
     double cpu_ms = 0;  // median CPU time of the submitting thread per frame (dsr_clock.h thread_cpu_ms)
     // light_fragments: samples that passed the light passes (occlusion queries); light_invocations:
     // fragments that entered the light shader (ARB_pipeline_statistics_query); null where the GL
