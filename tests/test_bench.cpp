@@ -248,9 +248,12 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
         // One thread's CPU time: positive, and no more than the frame's wall time.
         EXPECT_GT(row["cpu_ms_median"].get<double>(), 0.0);
         EXPECT_LE(row["cpu_ms_median"].get<double>(), row["ms_max"].get<double>() + 0.5);
+        // The timed frames round by round, and no warm-up frame among the light stages.
+        EXPECT_EQ(row["frames_ms"].size(), size_t(row["frames"].get<int>()));
         const std::string kind = row["renderer"];
         if (kind == "deferred") {
             ++deferred;
+            EXPECT_EQ(row["lights_frames_ms"].size(), row["frames_ms"].size());
             EXPECT_TRUE(row["depth"] == "texture" || row["depth"] == "packed" || row["depth"] == "position16" ||
                         row["depth"] == "position32");
             const long long frags = row["light_fragments"], ideal = row["ideal_fragments"];
