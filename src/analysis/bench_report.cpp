@@ -214,7 +214,8 @@ std::string text_summary(const Summary& s, const std::string& report_path, const
     for (const GoalResult& g : s.goal_results) {
         const char* verdict = g.verdict == Verdict::met ? "met       " : g.verdict == Verdict::not_met ? "NOT met   " : "not judged";
         const Figure& f = g.figure;
-        o << "  " << verdict << "  " << g.plain << ": " << (f.judged || f.brief.empty() ? f.working : f.brief) << "\n";
+        o << "  " << verdict << "  " << g.plain << ": " << (f.judged || f.brief.empty() ? f.working : f.brief)
+          << (f.judged ? f.after : std::string()) << "\n";
     }
     if (!report_path.empty())
         o << "the full table (" << s.rows.size() << " rows), each goal's working"
@@ -296,7 +297,10 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
           "1920x1080 with 1024 lights only (the floor leaves out the frame's fixed costs, which weigh more the smaller the frame; elsewhere its figure is "
           "information), `cpu` where the run has 4096 lights. The goal of a deferred row 1.5x faster than forward "
           "single-pass on 32-large is withdrawn: on GL 2.x forward single-pass is the bound there; its figure "
-          "follows `demo` as information. Indented lines are information, not goals.\n\n";
+          "follows `demo` as information. A goal that compares two rows ends with its figure round by round (the "
+          "rows' frames run in rounds, one frame of each row a round): the range, and in how many rounds the goal "
+          "held; a verdict on the medians that holds in few rounds is the machine's noise. Indented lines are "
+          "information, not goals.\n\n";
     for (auto& g : s.goals) md << "- " << g << "\n";
     for (auto& n : s.notes) md << "\nNote: " << n << ".\n";
     md << "\n## Run time against error\n\n![run time against error](" << plot_name << ")\n\n"
