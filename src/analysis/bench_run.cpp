@@ -19,6 +19,7 @@
 #include "analysis/bench_scenes.h"
 #include "analysis/ideal_fragments.h"
 #include "deferred/deferred_shader.h"
+#include "deferred/option_table.h"
 #include "forward/forward_renderer.h"
 #include "gl/readback.h"
 
@@ -28,20 +29,6 @@ namespace {
 
 constexpr double kSlowFrameMs = 2000;   // above this, fewer frames (see frames_for)
 constexpr double kSlowRowBudgetMs = 20000;
-
-// The skips by the names the rows print, in SkipOptions' order.
-struct SkipField {
-    const char* name;
-    bool SkipOptions::*on;
-};
-constexpr SkipField kSkipFields[] = {{"material_variants", &SkipOptions::material_variants},
-                                     {"empty_lights", &SkipOptions::empty_lights},
-                                     {"light_depth_test", &SkipOptions::light_depth_test},
-                                     {"light_sphere_test", &SkipOptions::light_sphere_test},
-                                     {"depth_prepass", &SkipOptions::depth_prepass},
-                                     {"ambient_target", &SkipOptions::ambient_target},
-                                     {"ambient_pass", &SkipOptions::ambient_pass},
-                                     {"final_pass", &SkipOptions::final_pass}};
 
 // What every job of one scene variant reads: the sweep, the GL and the shaders.
 struct Setup {
@@ -228,7 +215,7 @@ Runs build_runs(const Setup& st, const Variant& v, bool first, std::vector<std::
     // Each skip turned off alone, on the default configuration (depth texture, scissor on). The
     // fold skips the ambient pass only where the material pass does not write it, so its row turns
     // both off: the tutorial's ambient pass, against the ambient target's row (the fold where it can).
-    for (const SkipField& k : kSkipFields) {
+    for (const SkipName& k : skip_names()) {
         Row r = config(DepthPath::texture, true);
         r.skip.*k.on = false;
         if (k.on == &SkipOptions::ambient_pass) r.skip.ambient_target = false;
@@ -451,8 +438,8 @@ const char* renderer_name(Renderer r) {
 
 std::vector<std::string> skips_off(const SkipOptions& skip) {
     std::vector<std::string> out;
-    for (const SkipField& k : kSkipFields)
-        if (!(skip.*k.on)) out.push_back(k.name);
+    for (const SkipName& k : skip_names())
+        if (!(skip.*k.on)) out.push_back(k.field);
     return out;
 }
 

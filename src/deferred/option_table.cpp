@@ -65,24 +65,26 @@ RenderOption with_help(RenderOption o, std::string help) {
     return o;
 }
 
-// The skips of --no-skip, by name, and the SkipOptions field each turns off.
-const std::pair<const char*, bool SkipOptions::*> kSkips[] = {
-    {"variants", &SkipOptions::material_variants},
-    {"empty-lights", &SkipOptions::empty_lights},
-    {"light-depth-test", &SkipOptions::light_depth_test},
-    {"light-sphere-test", &SkipOptions::light_sphere_test},
-    {"depth-prepass", &SkipOptions::depth_prepass},
-    {"ambient-target", &SkipOptions::ambient_target},
-    {"ambient", &SkipOptions::ambient_pass},
-    {"final", &SkipOptions::final_pass},
-};
-
 }  // namespace
+
+const std::vector<SkipName>& skip_names() {
+    static const std::vector<SkipName> names = {
+        {"variants", "material_variants", &SkipOptions::material_variants},
+        {"empty-lights", "empty_lights", &SkipOptions::empty_lights},
+        {"light-depth-test", "light_depth_test", &SkipOptions::light_depth_test},
+        {"light-sphere-test", "light_sphere_test", &SkipOptions::light_sphere_test},
+        {"depth-prepass", "depth_prepass", &SkipOptions::depth_prepass},
+        {"ambient-target", "ambient_target", &SkipOptions::ambient_target},
+        {"ambient", "ambient_pass", &SkipOptions::ambient_pass},
+        {"final", "final_pass", &SkipOptions::final_pass},
+    };
+    return names;
+}
 
 std::vector<std::string> skip_flags_off(const SkipOptions& skip) {
     std::vector<std::string> out;
-    for (const auto& s : kSkips)
-        if (!(skip.*s.second)) out.push_back(s.first);
+    for (const SkipName& s : skip_names())
+        if (!(skip.*s.on)) out.push_back(s.flag);
     return out;
 }
 
@@ -152,20 +154,18 @@ std::vector<RenderOption> make_table() {
             [](RenderOptions& r, const std::string& v) { r.shader.listing2_literal = v == "listing"; }),
         "Listing 2 as Equations 1-5 say, or with its view and half vectors as printed");
     std::vector<std::string> skips;
-    for (const auto& s : kSkips) skips.push_back(s.first);
+    for (const SkipName& s : skip_names()) skips.push_back(s.flag);
     add(RenderOption{"no-skip", OptionKind::subset, skips, 0, 0, true,
                      [](const RenderOptions& r) {
-                         std::vector<std::string> off;
-                         for (const auto& s : kSkips)
-                             if (!(r.shader.skip.*s.second)) off.push_back(s.first);
+                         const std::vector<std::string> off = skip_flags_off(r.shader.skip);
                          return off.empty() ? std::string("none") : joined(off, ",");
                      },
                      [](RenderOptions& r, const std::string& v) {
                          const std::vector<std::string> off = split_commas(v);
-                         for (const auto& s : kSkips) {
+                         for (const SkipName& s : skip_names()) {
                              bool listed = false;
-                             for (const std::string& k : off) listed |= k == s.first;
-                             r.shader.skip.*s.second = !listed;
+                             for (const std::string& k : off) listed |= k == s.flag;
+                             r.shader.skip.*s.on = !listed;
                          }
                      }},
         "work the renderer skips where a scene does not need it, turned off: the tangent-space work and map "

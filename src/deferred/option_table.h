@@ -60,8 +60,16 @@ RenderOption integer_option(std::string name, int lo, int hi, int ShaderOptions:
 
 // Every option, in the order the panel shows them.
 const std::vector<RenderOption>& render_options();
-// --no-skip's names ("variants", "empty-lights", ...) of the skips `skip` has turned off, in the
-// option's order: how the bench's report names a row's skips.
+// The skips, one entry each in SkipOptions' order: --no-skip's name ("variants", "empty-lights",
+// ...), the field's name (the bench's `skips_off` and `no-NAME` rows: "material_variants", ...) and
+// the field. The one list both read.
+struct SkipName {
+    const char* flag;
+    const char* field;
+    bool SkipOptions::*on;
+};
+const std::vector<SkipName>& skip_names();
+// --no-skip's names of the skips `skip` has turned off, in the option's order.
 std::vector<std::string> skip_flags_off(const SkipOptions& skip);
 // The entry of `name` ("scissor", "no-skip", ...), null when there is none.
 const RenderOption* find_render_option(const std::string& name);
