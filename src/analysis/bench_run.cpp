@@ -436,12 +436,7 @@ const char* renderer_name(Renderer r) {
     return "?";
 }
 
-std::vector<std::string> skips_off(const SkipOptions& skip) {
-    std::vector<std::string> out;
-    for (const SkipName& k : skip_names())
-        if (!(skip.*k.on)) out.push_back(k.field);
-    return out;
-}
+std::vector<std::string> skips_off(const SkipOptions& skip) { return skip_names_off(skip, &SkipName::field); }
 
 namespace {
 

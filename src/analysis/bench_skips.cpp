@@ -41,7 +41,7 @@ std::vector<SkipSaving> skip_savings(const std::vector<Row>& rows) {
         SkipSaving s;
         s.scene = off.scene;
         s.lights_label = off.lights_label;
-        s.skips_off = skip_flags_off(off.skip);
+        s.skips_off = skip_names_off(off.skip, &SkipName::flag);
         s.with_ms = base->ms_median, s.with_min = base->ms_min, s.with_max = base->ms_max;
         s.without_ms = off.ms_median;
         s.with_lights_ms = base->lights_ms;

@@ -81,10 +81,10 @@ const std::vector<SkipName>& skip_names() {
     return names;
 }
 
-std::vector<std::string> skip_flags_off(const SkipOptions& skip) {
+std::vector<std::string> skip_names_off(const SkipOptions& skip, const char* SkipName::*name) {
     std::vector<std::string> out;
     for (const SkipName& s : skip_names())
-        if (!(skip.*s.on)) out.push_back(s.flag);
+        if (!(skip.*s.on)) out.push_back(s.*name);
     return out;
 }
 
@@ -157,7 +157,7 @@ std::vector<RenderOption> make_table() {
     for (const SkipName& s : skip_names()) skips.push_back(s.flag);
     add(RenderOption{"no-skip", OptionKind::subset, skips, 0, 0, true,
                      [](const RenderOptions& r) {
-                         const std::vector<std::string> off = skip_flags_off(r.shader.skip);
+                         const std::vector<std::string> off = skip_names_off(r.shader.skip, &SkipName::flag);
                          return off.empty() ? std::string("none") : joined(off, ",");
                      },
                      [](RenderOptions& r, const std::string& v) {

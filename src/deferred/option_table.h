@@ -69,8 +69,9 @@ struct SkipName {
     bool SkipOptions::*on;
 };
 const std::vector<SkipName>& skip_names();
-// --no-skip's names of the skips `skip` has turned off, in the option's order.
-std::vector<std::string> skip_flags_off(const SkipOptions& skip);
+// The names (`name`: &SkipName::flag or &SkipName::field) of the skips `skip` has turned off, in
+// SkipOptions' order.
+std::vector<std::string> skip_names_off(const SkipOptions& skip, const char* SkipName::*name);
 // The entry of `name` ("scissor", "no-skip", ...), null when there is none.
 const RenderOption* find_render_option(const std::string& name);
 // The value's error, or "" when it is one `o` takes ("expected on|off, got 'maybe'").
