@@ -1,7 +1,9 @@
 // What each skip saves (analysis/bench_skips.h): which rows pair up, the sign of a saving, and the
-// report's table, on hand-made rows.
+// report's table, on hand-made rows; and the order of the rows in the bench's rounds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -78,4 +80,25 @@ TEST(BenchSkips, TheTableHasAColumnPerSkipAndALinePerVariant) {
     EXPECT_NE(md.find("| default | own | 10.00 (9.50-11.00) | +2.50 | -0.75 |"), std::string::npos) << md;
     EXPECT_NE(md.find("| default | 256 | 20.00 (19.50-21.00) | +3.00 | - |"), std::string::npos) << md;
     EXPECT_NE(bench::skip_savings_markdown({}).find("no row with a skip turned off"), std::string::npos);
+}
+
+// The rounds take the rows in an order of their own: a permutation each round, the same in every
+// run, so no row follows the same row every round (in one fixed order, the row after a long one
+// paid for it in every frame).
+TEST(BenchRounds, EachRoundAPermutationOfItsOwn) {
+    const size_t n = 30;
+    std::set<size_t> predecessors;  // of row 5, over the rounds
+    std::set<std::vector<size_t>> orders;
+    for (int round = 0; round < 10; ++round) {
+        const std::vector<size_t> o = bench::round_order(n, round);
+        EXPECT_EQ(o, bench::round_order(n, round));  // the same in every run
+        std::vector<size_t> sorted = o;
+        std::sort(sorted.begin(), sorted.end());
+        for (size_t i = 0; i < n; ++i) ASSERT_EQ(sorted[i], i);
+        orders.insert(o);
+        const size_t at = size_t(std::find(o.begin(), o.end(), size_t(5)) - o.begin());
+        if (at > 0) predecessors.insert(o[at - 1]);
+    }
+    EXPECT_EQ(orders.size(), 10u);
+    EXPECT_GE(predecessors.size(), 6u);
 }

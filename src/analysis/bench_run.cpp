@@ -11,6 +11,8 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <numeric>
+#include <random>
 #include <tuple>
 
 #include "dsr_clock.h"
@@ -294,8 +296,22 @@ Floors build_floors(const Setup& st, const Variant& v, const Runs& runs, bool fi
 
 // Warm-up, then the timed frames interleaved across rows (one frame of each row per round), so a
 // burst of load from elsewhere on the machine spreads over all rows instead of biasing one; the
-// floor's fill frames in the same rounds. Each row keeps its last frame's image. Then one counted
-// frame per deferred row, whose counts go in the row.
+// floor's fill frames in the same rounds. Each round takes the rows in an order of its own
+// (round_order): in one fixed order a row paid for the row before it, the same one every round.
+// Each row keeps its last frame's image. Then one counted frame per deferred row, whose counts go
+// in the row.
+}  // namespace
+
+std::vector<size_t> round_order(size_t rows, int round) {
+    std::vector<size_t> order(rows);
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::mt19937 rng(unsigned(round) + 1u);  // the same orders in every run
+    std::shuffle(order.begin(), order.end(), rng);
+    return order;
+}
+
+namespace {
+
 void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors) {
     for (auto& [l, fb] : floors.bench)
         for (int i = 0; i < cfg.warmup; ++i) fb->fill_frame(v.scene);
@@ -320,7 +336,8 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
     for (auto& run : runs)
         if (run->ds) run->ds->set_counting(false);
     for (int f = 0; f < rounds; ++f) {
-        for (auto& run : runs) {
+        for (size_t i : round_order(runs.size(), f)) {
+            auto& run = runs[i];
             if (f >= run->row.frames) continue;
             run->ms.push_back(run->frame(*run->scene, v.w, v.h));
             if (f + 1 == run->row.frames)

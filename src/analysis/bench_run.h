@@ -121,6 +121,12 @@ std::pair<int, int> variant_size(const Config& cfg, LightSet set);
 // The context the sweep needs: as large as every variant of cfg.lights in each dimension.
 std::pair<int, int> context_size(const Config& cfg);
 
+// The order in which round `round` of the timed frames takes a variant's rows (indices 0..rows-1):
+// a permutation of its own each round, the same in every run. In one fixed order a GPU's row that
+// followed a long one (quad without the scissor, 45 ms at 1024 lights) paid 0.1-0.5 ms more a frame,
+// most of it CPU time after the long wait, every round (an H100 at 1920x1080).
+std::vector<size_t> round_order(size_t rows, int round);
+
 // Frames to time after warm-up: the configured count, unless one frame takes over 2 s (forward
 // passes at 1024 lights on a software rasteriser), then as many as fit in 20 s, at least 3.
 int frames_for(double first_ms, int frames);
