@@ -294,12 +294,6 @@ Floors build_floors(const Setup& st, const Variant& v, const Runs& runs, bool fi
     return floors;
 }
 
-// Warm-up, then the timed frames interleaved across rows (one frame of each row per round), so a
-// burst of load from elsewhere on the machine spreads over all rows instead of biasing one; the
-// floor's fill frames in the same rounds. Each round takes the rows in an order of its own
-// (round_order): in one fixed order a row paid for the row before it, the same one every round.
-// Each row keeps its last frame's image. Then one counted frame per deferred row, whose counts go
-// in the row.
 }  // namespace
 
 std::vector<size_t> round_order(size_t rows, int round) {
@@ -312,6 +306,12 @@ std::vector<size_t> round_order(size_t rows, int round) {
 
 namespace {
 
+// Warm-up, then the timed frames interleaved across rows (one frame of each row per round), so a
+// burst of load from elsewhere on the machine spreads over all rows instead of biasing one; the
+// floor's fill frames in the same rounds. Each round takes the rows in an order of its own
+// (round_order): in one fixed order a row paid for the row before it, the same one every round.
+// Each row keeps its last frame's image. Then one counted frame per deferred row, whose counts go
+// in the row.
 void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors) {
     for (auto& [l, fb] : floors.bench)
         for (int i = 0; i < cfg.warmup; ++i) fb->fill_frame(v.scene);
