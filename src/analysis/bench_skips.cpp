@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "analysis/number_format.h"
+#include "dsr_text.h"
 #include "deferred/option_table.h"
 
 namespace dsr::bench {
@@ -20,12 +21,6 @@ bool quad_default_but_skips(const Row& r) {
 
 bool same_variant(const Row& a, const Row& b) {
     return a.scene == b.scene && a.lights_label == b.lights_label && a.lights == b.lights && a.w == b.w && a.h == b.h;
-}
-
-std::string joined(const std::vector<std::string>& names, const char* sep) {
-    std::string s;
-    for (const std::string& n : names) s += (s.empty() ? "" : sep) + n;
-    return s;
 }
 
 }  // namespace

@@ -7,16 +7,11 @@
 
 #include "app/render_flags.h"
 #include "dsr_error.h"
+#include "dsr_text.h"
 
 namespace dsr {
 
 namespace {
-
-std::string joined(const std::vector<std::string>& v, const char* sep) {
-    std::string s;
-    for (const std::string& x : v) s += (s.empty() ? "" : sep) + x;
-    return s;
-}
 
 std::string format_number(double v) {
     char buf[32];

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/command_table.h"
+#include "dsr_text.h"
 #include "deferred/option_table.h"
 #include "gl/cap_names.h"
 
@@ -15,12 +16,6 @@ namespace {
 
 constexpr size_t kWidth = 100;  // help lines wrap before this column
 constexpr size_t kColumn = 26;  // where an option's text starts
-
-std::string joined(const std::vector<std::string>& v, const std::string& sep) {
-    std::string s;
-    for (size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
-    return s;
-}
 
 // `text`'s words wrapped before kWidth; the first line starts at column `first`, the others at `indent`.
 std::string wrap(const std::string& text, size_t first, size_t indent) {

@@ -3,6 +3,7 @@
 #include "deferred/option_table.h"
 #include "scene/user_file.h"
 
+#include "dsr_text.h"
 #include "scene/scene.h"
 
 #include <cerrno>
@@ -15,12 +16,6 @@ namespace dsr {
 namespace {
 
 std::string on_off(bool b) { return b ? "on" : "off"; }
-
-std::string joined(const std::vector<std::string>& v, const char* sep) {
-    std::string s;
-    for (const std::string& x : v) s += (s.empty() ? "" : sep) + x;
-    return s;
-}
 
 std::vector<std::string> split_commas(const std::string& list) {
     std::vector<std::string> out;
