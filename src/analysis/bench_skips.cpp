@@ -26,13 +26,15 @@ bool same_variant(const Row& a, const Row& b) {
 }  // namespace
 
 std::vector<SkipSaving> skip_savings(const std::vector<Row>& rows) {
+    std::vector<const Row*> bases;  // the every-skip quad rows, one per variant
+    for (const Row& r : rows)
+        if (default_configuration(r) && r.light_geometry == LightGeometry::quad) bases.push_back(&r);
     std::vector<SkipSaving> out;
     for (const Row& off : rows) {
-        if (!quad_default_but_skips(off) || skips_off(off.skip).empty()) continue;
-        const auto base = std::find_if(rows.begin(), rows.end(), [&](const Row& r) {
-            return same_variant(r, off) && quad_default_but_skips(r) && skips_off(r.skip).empty();
-        });
-        if (base == rows.end()) continue;
+        if (skips_off(off.skip).empty() || !quad_default_but_skips(off)) continue;
+        const auto it = std::find_if(bases.begin(), bases.end(), [&](const Row* b) { return same_variant(*b, off); });
+        if (it == bases.end()) continue;
+        const Row* base = *it;
         SkipSaving s;
         s.scene = off.scene;
         s.lights_label = off.lights_label;
