@@ -250,10 +250,18 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
         EXPECT_LE(row["cpu_ms_median"].get<double>(), row["ms_max"].get<double>() + 0.5);
         // The timed frames round by round, and no warm-up frame among the light stages.
         EXPECT_EQ(row["frames_ms"].size(), size_t(row["frames"].get<int>()));
+        EXPECT_EQ(row["cpu_frames_ms"].size(), row["frames_ms"].size());
         const std::string kind = row["renderer"];
         if (kind == "deferred") {
             ++deferred;
             EXPECT_EQ(row["lights_frames_ms"].size(), row["frames_ms"].size());
+            // Each frame's CPU parts lie within its whole, so their medians within the largest whole.
+            const std::vector<double> cpu = row["cpu_frames_ms"];
+            const double most = *std::max_element(cpu.begin(), cpu.end());
+            EXPECT_GE(row["cpu_make_frame_ms"].get<double>(), 0.0);
+            EXPECT_LE(row["cpu_make_frame_ms"].get<double>(), most);
+            EXPECT_GT(row["cpu_lights_ms"].get<double>(), 0.0);
+            EXPECT_LE(row["cpu_lights_ms"].get<double>(), most);
             EXPECT_TRUE(row["depth"] == "texture" || row["depth"] == "packed" || row["depth"] == "position16" ||
                         row["depth"] == "position32");
             const long long frags = row["light_fragments"], ideal = row["ideal_fragments"];
@@ -291,6 +299,7 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
             EXPECT_TRUE(kind == "forward-single" || kind == "forward-multi") << kind;
             EXPECT_TRUE(row["accum"] == "float" || row["accum"] == "rgba8") << row.dump();
             EXPECT_TRUE(row["light_invocations"].is_null());
+            EXPECT_TRUE(row["cpu_lights_ms"].is_null());
             EXPECT_TRUE(row["floor_ratio"].is_null());
             EXPECT_TRUE(row["light_fragments"].is_null());
             EXPECT_TRUE(row["ideal_fragments"].is_null());
@@ -798,7 +807,8 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     const nlohmann::ordered_json f = bench::row_json(forward_row("default", 3, bench::Renderer::forward_single, 2.0));
     const std::vector<std::string> keys = {
         "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "gbuffer_bytes_per_pixel", "light_geometry", "tile_size", "tile_lights", "scissor", "skips_off", "linear_law",
-        "lights", "lights_label", "size", "frames", "ms_median", "ms_min", "ms_max", "frames_ms", "cpu_ms_median", "light_fragments",
+        "lights", "lights_label", "size", "frames", "ms_median", "ms_min", "ms_max", "frames_ms", "cpu_ms_median", "cpu_frames_ms",
+        "cpu_make_frame_ms", "cpu_lights_ms", "light_fragments",
         "ideal_fragments", "fragments_ratio", "scissor_pixels", "lights_drawn", "passes", "max_lsb", "mean_lsb",
         "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic", "light_invocations",
         "invocations_ratio", "ideal_source", "floor_fill_ms", "floor_light_ns", "floor_post_ms", "floor_output_ms", "floor_ms",

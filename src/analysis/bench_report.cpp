@@ -45,6 +45,9 @@ json row_json(const Row& r) {
     j["ms_max"] = r.ms_max;
     j["frames_ms"] = r.frames_ms;  // the timed frames, round by round (bench_run.h)
     j["cpu_ms_median"] = r.cpu_ms;
+    j["cpu_frames_ms"] = r.cpu_frames_ms;
+    j["cpu_make_frame_ms"] = r.cpu_make_frame_ms ? json(*r.cpu_make_frame_ms) : json(nullptr);
+    j["cpu_lights_ms"] = r.cpu_lights_ms ? json(*r.cpu_lights_ms) : json(nullptr);
     j["light_fragments"] = deferred && r.light_fragments ? json(*r.light_fragments) : json(nullptr);
     j["ideal_fragments"] = deferred && r.ideal_fragments ? json(*r.ideal_fragments) : json(nullptr);
     j["fragments_ratio"] = deferred && r.light_fragments && r.ideal_fragments && *r.ideal_fragments > 0

@@ -58,7 +58,7 @@ struct RowRun {
     const Scene* scene = nullptr;  // what it draws: the variant's scene, or its linear_twin
     std::unique_ptr<DeferredShader> ds;
     std::unique_ptr<ForwardRenderer> fr;
-    std::vector<double> ms, depth_copy_ms, lights_ms, cpu_ms;
+    std::vector<double> ms, depth_copy_ms, lights_ms, cpu_ms, cpu_make_frame_ms, cpu_lights_ms;
     FrameStats last;
     ForwardStats last_forward;
     Image image;
@@ -69,6 +69,8 @@ struct RowRun {
             depth_copy_ms.push_back(last.ms.depth_copy);
             lights_ms.push_back(last.ms.lights);
             cpu_ms.push_back(last.ms.cpu);
+            cpu_make_frame_ms.push_back(last.ms.cpu_make_frame);
+            cpu_lights_ms.push_back(last.ms.cpu_lights);
             return last.ms.frame;
         }
         last_forward = fr->render(s);
@@ -328,6 +330,8 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
         run->depth_copy_ms.clear();
         run->lights_ms.clear();
         run->cpu_ms.clear();
+        run->cpu_make_frame_ms.clear();
+        run->cpu_lights_ms.clear();
     }
     int rounds = 0;
     for (auto& run : runs) rounds = std::max(rounds, run->row.frames);
@@ -411,6 +415,7 @@ void finish_row(const Config& cfg, const Variant& v, RowRun& run, const IdealCou
     r.ms_min = *std::min_element(run.ms.begin(), run.ms.end());
     r.ms_max = *std::max_element(run.ms.begin(), run.ms.end());
     r.cpu_ms = median(run.cpu_ms);
+    r.cpu_frames_ms = run.cpu_ms;
     if (run.ds) {
         r.light_fragments = run.last.counted_light_fragments();
         r.light_invocations = run.last.light_invocations;
@@ -420,6 +425,8 @@ void finish_row(const Config& cfg, const Variant& v, RowRun& run, const IdealCou
         r.depth_copy_ms = median(run.depth_copy_ms);
         r.lights_ms = median(run.lights_ms);
         r.lights_frames_ms = run.lights_ms;
+        r.cpu_make_frame_ms = median(run.cpu_make_frame_ms);
+        r.cpu_lights_ms = median(run.cpu_lights_ms);
         if (quad) r.err_quad = compare_images(run.image, *quad, 1.0 / 255.0);
         r.ideal_fragments = ideal.fragments;
         r.ideal_source = ideal.source;

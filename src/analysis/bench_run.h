@@ -82,6 +82,10 @@ struct Row {
     // lights_frames_ms: deferred rows' light stages, the same way (empty on forward rows).
     std::vector<double> frames_ms, lights_frames_ms;
     double cpu_ms = 0;  // median CPU time of the submitting thread per frame (dsr_clock.h thread_cpu_ms)
+    // Deferred rows, the CPU's frame in parts (FrameStats ms.cpu_make_frame, ms.cpu_lights: the frame's
+    // set-up and culling, the light stage's submission), medians, and the CPU time of each timed frame.
+    std::optional<double> cpu_make_frame_ms, cpu_lights_ms;
+    std::vector<double> cpu_frames_ms;
     // light_fragments: samples that passed the light passes (occlusion queries); light_invocations:
     // fragments that entered the light shader (ARB_pipeline_statistics_query); null where the GL
     // lacks the query. ideal_fragments: from exact surface points (ideal_source says which).
