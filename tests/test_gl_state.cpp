@@ -14,12 +14,12 @@ std::string describe(const RenderState& s) {
     char b[512];
     std::snprintf(b, sizeof b,
                   "blend %d %#x %#x depth %d %#x w%d stencil %d f(%#x %d %#x %#x %#x %#x %#x) b(%#x %d) cull %d %#x "
-                  "scissor %d color %d alpha %d %#x %.2f tex %d %#x program %u dither %d",
+                  "scissor %d color %d alpha %d %#x %.2f tex %d %#x program %u dither %d point %.1f",
                   s.blend, s.blend_src, s.blend_dst, s.depth_test, s.depth_func, s.depth_write, s.stencil_test,
                   s.stencil_front.func, s.stencil_front.ref, s.stencil_front.mask, s.stencil_front.fail,
                   s.stencil_front.zfail, s.stencil_front.zpass, s.stencil_front.write_mask, s.stencil_back.func,
                   s.stencil_back.ref, s.cull, s.cull_face, s.scissor, s.color_write, s.alpha_test, s.alpha_func,
-                  s.alpha_ref, s.texture_2d, s.tex_env, s.program, s.dither);
+                  s.alpha_ref, s.texture_2d, s.tex_env, s.program, s.dither, double(s.point_size));
     return b;
 }
 
@@ -47,6 +47,7 @@ void scramble() {
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_ADD);
     glUseProgram(0);
     glEnable(GL_DITHER);
+    glPointSize(7.0f);
     gl_state().reset();
 }
 
@@ -96,6 +97,7 @@ struct Config {
     std::vector<std::string> caps_off;
     DepthPath depth;
     bool shadows = false;  // the first light casts shadows (the shadow stage draws before the lights)
+    LightGeometry geometry = LightGeometry::automatic;
 };
 
 const Config kConfigs[] = {
@@ -107,6 +109,7 @@ const Config kConfigs[] = {
     {"shadows", {}, DepthPath::texture, true},
     {"no-fbo shadows (maps copied from the main buffer)", {"no-fbo"}, DepthPath::texture, true},
     {"no-fbo packed shadows", {"no-fbo", "no-depth-texture"}, DepthPath::packed, true},
+    {"tiles (drawn as points here)", {}, DepthPath::texture, false, LightGeometry::tiles},
 };
 
 // The default scene, its first light casting shadows where c asks.
@@ -122,6 +125,7 @@ TEST(GlState, CacheMatchesGlAfterEveryStage) {
         ShaderOptions o = with_post();
         o.depth = c.depth;
         o.shadow_lights = c.shadows;
+        o.light_geometry = c.geometry;
         StageRun r = run_stages(scene, 96, 64, o, c.caps_off, false);
         for (const auto& m : r.mismatches) ADD_FAILURE() << c.name << ", after " << m;
     }
@@ -133,6 +137,7 @@ TEST(GlState, NoStageReliesOnWhatThePreviousLeft) {
         ShaderOptions o = with_post();
         o.depth = c.depth;
         o.shadow_lights = c.shadows;
+        o.light_geometry = c.geometry;
         StageRun clean = run_stages(scene, 96, 64, o, c.caps_off, false);
         StageRun scrambled = run_stages(scene, 96, 64, o, c.caps_off, true);
         ImageDiff d = compare_images(scrambled.image, clean.image, 0.5 / 255.0);

@@ -266,6 +266,27 @@ TEST(LightGeometry, TilesOfOneLightPerPassMatchQuad) {
     EXPECT_LT(eight.stats.light_passes, one.stats.light_passes);
 }
 
+// Tiles drawn as points of the tile's size and as quads give quad's image, at a size whose last
+// column and row of tiles are partial (those stay quads: a point whose centre lies outside the
+// viewport is clipped whole), with either plan and with several lights a pass.
+TEST(LightGeometry, TilesAsPointsOrQuadsMatchQuad) {
+    const int w = 120, h = 100;  // 16-pixel tiles: 7.5 x 6.25
+    const Scene s = with_overlapping_lights(default_scene(), 64);
+    const RenderResult quad = render_scene(s, w, h, with_geometry(LightGeometry::quad));
+    for (TileGrouping plan : {TileGrouping::lists, TileGrouping::groups})
+        for (TileShape shape : {TileShape::points, TileShape::quads}) {
+            ShaderOptions o = with_geometry(LightGeometry::tiles);
+            o.tile_size = 16;
+            o.tile_plan = plan;
+            o.tile_shape = shape;
+            const RenderResult r = render_scene(s, w, h, o);
+            const std::string name = std::string("tiles_") + (plan == TileGrouping::groups ? "groups_" : "lists_") +
+                                     (shape == TileShape::points ? "points" : "quads");
+            ASSERT_EQ(r.paths.tile_points, shape == TileShape::points) << name;
+            expect_same(name, r, quad);
+        }
+}
+
 }  // namespace dsr::test
 
 namespace dsr::test {

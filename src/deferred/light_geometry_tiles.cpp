@@ -56,6 +56,7 @@ public:
           tile_lights_(c.opts.tile_lights),
           batch_(c.tile_batch),
           groups_(c.opts.tile_plan == TileGrouping::groups),
+          points_(c.paths.tile_points),
           id_vecs_(groups_ ? 0 : tile_id_vecs(c.opts.tile_lights)),
           stride_(kFixedFloats + 4 * id_vecs_),
           xy_slack_(c.opts.depth == DepthPath::position16 ? 1.0f / 1024.0f : 0.0f),
@@ -195,30 +196,52 @@ private:
         StreamBuffer::unbind();
     }
 
-    // A batch's draws as vertices (first_[d]: draw d's first vertex) into a buffer object of its
-    // own (StreamBuffers), left bound.
+    // A batch's draws as vertices into a buffer object of its own (StreamBuffers), left bound. Draw
+    // d's vertices are first_[d] .. first_[d + 1]: quads (four vertices each) from first_[d], then,
+    // with points_, from points_at_[d] one vertex a whole tile, at its centre (a quad the plan
+    // merged from several tiles gives a point for each; a partial tile at the frame's edge stays a
+    // quad, as a point with its centre outside the viewport would be clipped whole).
     void upload(const TileDraw* draws, size_t n_draws) {
-        size_t quads = 0;
-        for (size_t di = 0; di < n_draws; ++di) quads += draws[di].quads.size();
+        const int ts = tile_size_;
+        auto whole = [&](const TileQuad& tq) {
+            return points_ && (tq.x1 - tq.x0) % ts == 0 && (tq.y1 - tq.y0) % ts == 0;
+        };
+        size_t verts = 0;
+        for (size_t di = 0; di < n_draws; ++di)
+            for (const TileQuad& tq : draws[di].quads)
+                verts += whole(tq) ? size_t((tq.x1 - tq.x0) / ts) * size_t((tq.y1 - tq.y0) / ts) : 4;
         // A member, so its storage is reused: a fresh multi-megabyte vector each frame cost page
         // faults (at 1920x1080 on llvmpipe, building these vertices took 1.5-2.9 ms a frame that way).
-        verts_.resize(quads * 4 * size_t(stride_));
+        verts_.resize(verts * size_t(stride_));
         first_.assign(n_draws + 1, 0);
+        points_at_.assign(n_draws, 0);
         float* out = verts_.data();
+        auto vertex_at = [&] { return size_t(out - verts_.data()) / size_t(stride_); };
         for (size_t di = 0; di < n_draws; ++di) {
-            for (const TileQuad& tq : draws[di].quads) {
-                float ids[16];
-                auto slot = [&](size_t k) { return k < tq.slots.size() ? float(tq.slots[k]) : kNoLight; };
-                for (int j = 0; j < 4 * id_vecs_; ++j) ids[j] = slot(2 * size_t(j)) * 256.0f + slot(2 * size_t(j) + 1);
-                const float xs[4] = {float(tq.x0), float(tq.x1), float(tq.x1), float(tq.x0)};
-                const float ys[4] = {float(tq.y0), float(tq.y0), float(tq.y1), float(tq.y1)};
-                for (int c = 0; c < 4; ++c) {
-                    *out++ = xs[c], *out++ = ys[c];
-                    out = std::copy(ids, ids + 4 * id_vecs_, out);
+            for (int pass = 0; pass < 2; ++pass) {  // the quads, then the points
+                if (pass == 1) points_at_[di] = vertex_at();
+                for (const TileQuad& tq : draws[di].quads) {
+                    if (whole(tq) != (pass == 1)) continue;
+                    float ids[16];
+                    auto slot = [&](size_t k) { return k < tq.slots.size() ? float(tq.slots[k]) : kNoLight; };
+                    for (int j = 0; j < 4 * id_vecs_; ++j) ids[j] = slot(2 * size_t(j)) * 256.0f + slot(2 * size_t(j) + 1);
+                    auto emit = [&](float x, float y) {
+                        *out++ = x, *out++ = y;
+                        out = std::copy(ids, ids + 4 * id_vecs_, out);
+                    };
+                    if (pass == 1) {
+                        for (int y = tq.y0; y < tq.y1; y += ts)
+                            for (int x = tq.x0; x < tq.x1; x += ts) emit(float(x) + 0.5f * float(ts), float(y) + 0.5f * float(ts));
+                        continue;
+                    }
+                    const float xs[4] = {float(tq.x0), float(tq.x1), float(tq.x1), float(tq.x0)};
+                    const float ys[4] = {float(tq.y0), float(tq.y0), float(tq.y1), float(tq.y1)};
+                    for (int c = 0; c < 4; ++c) emit(xs[c], ys[c]);
                 }
             }
-            first_[di + 1] = size_t(out - verts_.data()) / size_t(stride_);
+            first_[di + 1] = vertex_at();
         }
+        if (!points_) points_at_.assign(first_.begin() + 1, first_.end());
         buffers_.upload_next(verts_.data(), verts_.size() * sizeof(float));
     }
 
@@ -233,7 +256,9 @@ private:
             ++stats.tile_att_shared_batches;
         }
         Program& prog = *form;
-        gl_state().apply(light_pass_state(prog.id(), false));
+        RenderState state = light_pass_state(prog.id(), false);
+        if (points_) state.point_size = float(tile_size_);
+        gl_state().apply(state);
         const GLsizei bytes = GLsizei(stride_ * sizeof(float));
         auto at = [](int fl) { return reinterpret_cast<const void*>(size_t(fl) * sizeof(float)); };  // buffer offsets
         glVertexPointer(2, GL_FLOAT, bytes, at(0));
@@ -247,11 +272,13 @@ private:
         if (groups_) prog.set("light_count", arrays_.size());
         const size_t n_draws = first_.size() - 1;
         for (size_t di = 0; di < n_draws; ++di) {
+            const size_t quads = points_at_[di] - first_[di], points = first_[di + 1] - points_at_[di];
             q.begin();
-            glDrawArrays(GL_QUADS, GLint(first_[di]), GLsizei(first_[di + 1] - first_[di]));
+            if (quads > 0) glDrawArrays(GL_QUADS, GLint(first_[di]), GLsizei(quads));
+            if (points > 0) glDrawArrays(GL_POINTS, GLint(points_at_[di]), GLsizei(points));
             q.end();
+            stats.light_passes += int(quads > 0) + int(points > 0);
         }
-        stats.light_passes += int(n_draws);
         shadows_.unbind();
     }
 
@@ -285,6 +312,7 @@ private:
     ShadowSlots shadows_;
     int tile_size_, tile_lights_, batch_;
     bool groups_;
+    bool points_;  // Paths::tile_points: whole tiles as points of the tile's size
     int id_vecs_, stride_;
     float xy_slack_;  // position16 stores x and y as half floats, up to 2^-11 off the ray, relative: two such steps
     float round_;     // light_tiles.frag's quantize_round (gl/rounding_probe.h)
@@ -292,7 +320,7 @@ private:
     // Kept between frames for their storage only.
     StreamBuffers buffers_;  // one per batch of a frame
     std::vector<float> verts_;
-    std::vector<size_t> first_;
+    std::vector<size_t> first_, points_at_;  // upload(): each draw's first vertex, and its first point
     std::vector<TileDraw> draws_;
     LightArrays arrays_;
 };

@@ -40,6 +40,10 @@ struct Paths {
     LightGeometry light_geometry = LightGeometry::quad;
     std::string light_geometry_note;
     int tile_size = 16, tile_lights = 32;  // tiles: as asked, or the GL's defaults for 0 (auto)
+    // tiles: whole tiles drawn as points of the tile's size, not quads (ShaderOptions::tile_shape;
+    // a partial tile at the frame's edge stays a quad: a point whose centre lies outside the
+    // viewport is clipped whole).
+    bool tile_points = false;
     enum class StencilFaces { separate, two_side_ext, one_sided };  // GL 2.0 | EXT_stencil_two_side | two passes
     StencilFaces stencil_faces = StencilFaces::separate;
     // P-buffers 0 and 1 get a depth attachment the G-buffer's depth is handed to (the volume,

@@ -41,6 +41,9 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
     c.renderer = gl_string(GL_RENDERER);
     for (const char* sw : {"llvmpipe", "softpipe", "swrast"})
         c.software_rasterizer = c.software_rasterizer || c.renderer.find(sw) != std::string::npos;
+    GLfloat point_range[2] = {1, 1};
+    glGetFloatv(GL_ALIASED_POINT_SIZE_RANGE, point_range);
+    c.max_point_size = point_range[1];
     c.version = gl_string(GL_VERSION);
     c.glsl_version = gl_string(GL_SHADING_LANGUAGE_VERSION);
     std::sscanf(c.version.c_str(), "%d.%d", &c.gl_major, &c.gl_minor);

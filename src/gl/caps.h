@@ -41,6 +41,9 @@ struct Caps {
     // A CPU rasteriser (Mesa's llvmpipe, softpipe or swrast, by GL_RENDERER): the tiles geometry's
     // defaults (options.h) and forward.frag's view vector form (forward_renderer.cpp) differ there.
     bool software_rasterizer = false;
+    // GL_ALIASED_POINT_SIZE_RANGE's upper end (core in 1.2): the largest square a point rasterises
+    // to, which the tiles geometry may draw a tile as (Paths::tile_points).
+    float max_point_size = 1;
     std::vector<std::string> forced_off;  // names hidden by --caps / DSR_CAPS
 };
 

@@ -16,7 +16,8 @@ bool RenderState::operator==(const RenderState& o) const {
            stencil_two_side_ext == o.stencil_two_side_ext && depth_bounds_test == o.depth_bounds_test && cull == o.cull &&
            cull_face == o.cull_face && scissor == o.scissor && color_write == o.color_write &&
            alpha_test == o.alpha_test && alpha_func == o.alpha_func && alpha_ref == o.alpha_ref &&
-           texture_2d == o.texture_2d && tex_env == o.tex_env && program == o.program && dither == o.dither;
+           texture_2d == o.texture_2d && tex_env == o.tex_env && program == o.program && dither == o.dither &&
+           point_size == o.point_size;
 }
 
 RenderState fixed_function_2d() { return RenderState{}; }
@@ -135,6 +136,7 @@ void GlState::apply(const RenderState& s) {
     if (diff(s.tex_env != c.tex_env)) glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(s.tex_env));
     if (diff(s.program != c.program)) glUseProgram(s.program);
     if (diff(s.dither != c.dither)) enable(GL_DITHER, s.dither);
+    if (diff(s.point_size != c.point_size)) glPointSize(s.point_size);
     cur_ = s;
     valid_ = true;
 }
@@ -191,6 +193,7 @@ RenderState read_gl_state() {
     glActiveTexture(GLenum(active));
     s.program = GLuint(geti(GL_CURRENT_PROGRAM));
     s.dither = glIsEnabled(GL_DITHER);
+    glGetFloatv(GL_POINT_SIZE, &s.point_size);
     return s;
 }
 

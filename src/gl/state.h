@@ -56,6 +56,8 @@ struct RenderState {
     // differently at each pixel, and over many additive passes (one a light, Listing 14) the
     // per-pixel bias adds up, so the geometries that sum lights in a shader would no longer match.
     bool dither = false;
+    // glPointSize(1): the tiles geometry draws its tiles as points of the tile's size (Paths::tile_points).
+    GLfloat point_size = 1;
 
     bool operator==(const RenderState& o) const;
     bool operator!=(const RenderState& o) const { return !(*this == o); }
