@@ -257,21 +257,19 @@ TEST(Paths, TileDefaultsFollowTheRasteriser) {
     EXPECT_NE(choose_paths(c, o).refused.find("tile size must be 8..512"), std::string::npos);
 }
 
-// Tiles as points where asked, or by default on a CPU rasteriser, and only where the GL's points
-// are as large as a tile; else quads.
-TEST(Paths, TilesArePointsOnACpuRasteriserWherePointsAreLargeEnough) {
+// Tiles as points by default, on a CPU rasteriser or a GPU, only where the GL's points are as
+// large as a tile; else, or where asked, quads.
+TEST(Paths, TilesArePointsWherePointsAreLargeEnough) {
     ShaderOptions o;
     o.light_geometry = LightGeometry::tiles;
     Caps c = caps_for(0);
     c.max_point_size = 64;
     for (bool sw : {true, false}) {
         c.software_rasterizer = sw;
-        EXPECT_EQ(choose_paths(c, o).tile_points, sw) << sw;
         o.tile_shape = TileShape::points;
         EXPECT_TRUE(choose_paths(c, o).tile_points) << sw;
         o.tile_shape = TileShape::quads;
         EXPECT_FALSE(choose_paths(c, o).tile_points) << sw;
-        o.tile_shape = TileShape::automatic;
     }
     o.tile_shape = TileShape::points;
     o.tile_size = 64;

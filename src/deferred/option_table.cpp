@@ -142,18 +142,12 @@ std::vector<RenderOption> make_table() {
             [](RenderOptions& r, const std::string& v) { r.shader.tile_plan = v == "groups" ? TileGrouping::groups : TileGrouping::lists; }),
         "tiles: each tile its exact light list, or lights in screen-order groups drawn over the union of their tiles");
     add(choice(
-            "tile-shape", {"auto", "quads", "points"},
-            [](const RenderOptions& r) {
-                static const char* names[] = {"auto", "quads", "points"};
-                return std::string(names[int(r.shader.tile_shape)]);
-            },
-            [](RenderOptions& r, const std::string& v) {
-                r.shader.tile_shape = v == "quads" ? TileShape::quads : v == "points" ? TileShape::points : TileShape::automatic;
-            }),
-        "tiles: each tile drawn as a quad, or as a point of the tile's size (one square: a CPU rasteriser shades "
-        "the pixel blocks along a quad's diagonal once for each of its triangles); auto: points on a CPU "
-        "rasteriser, else quads; points only where the GL's points are as large as a tile, else quads (the "
-        "same image either way)");
+            "tile-shape", {"points", "quads"},
+            [](const RenderOptions& r) { return std::string(r.shader.tile_shape == TileShape::quads ? "quads" : "points"); },
+            [](RenderOptions& r, const std::string& v) { r.shader.tile_shape = v == "quads" ? TileShape::quads : TileShape::points; }),
+        "tiles: each whole tile drawn as a point of the tile's size, one square primitive (where the GL's points "
+        "are as large as a tile, else a quad), or as a quad, two triangles, whose diagonal a rasteriser shades "
+        "partly twice (the same image either way)");
     add(switch_option("tile-depth", &ShaderOptions::tile_depth),
         "tiles: leave out each tile's lights whose sphere misses the depth span of its surfaces (needs float targets)");
     add(choice(

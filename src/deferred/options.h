@@ -44,10 +44,9 @@ enum class RenderTarget { automatic, fbo, copy, pbuffer };
 // The tiles geometry's plan (tile_plan.h): exact per-tile light lists, or groups of lights drawn
 // over the union of their tiles.
 enum class TileGrouping { lists, groups };
-// How the tiles geometry draws a tile: as a quad (two triangles) or as a point of the tile's size
-// (one square primitive); automatic: points on a CPU rasteriser where the GL's points are large
-// enough (Paths::tile_points).
-enum class TileShape { automatic, quads, points };
+// How the tiles geometry draws a tile: as a point of the tile's size (one square primitive) where
+// the GL's points are as large as a tile, else as a quad (two triangles) (Paths::tile_points).
+enum class TileShape { points, quads };
 
 // How the G-buffer's depth reaches P-buffer 0's depth buffer (depth_handoff.cpp): automatic picks
 // blit where EXT_framebuffer_blit and framebuffer objects exist, else pass (a full-screen pass
@@ -162,7 +161,7 @@ struct ShaderOptions {
     int tile_lights = 0;
     RenderTarget render_target = RenderTarget::automatic;
     TileGrouping tile_plan = TileGrouping::lists;
-    TileShape tile_shape = TileShape::automatic;
+    TileShape tile_shape = TileShape::points;
     bool tile_depth = true;         // tiles: leave out a tile's lights that miss its surfaces' depth span (tile_depth.h)
     SsaoOptions ssao;
     // The forward stage after the light passes (forward_stage.h, docs/forward.md).

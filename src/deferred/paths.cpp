@@ -104,10 +104,10 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     p.tile_lights = opts.tile_lights ? opts.tile_lights : caps.software_rasterizer ? 32 : 8;
     // llvmpipe shades a 4x4 pixel block once for each triangle that covers part of it, so a tile's
     // quad pays for the blocks along its diagonal twice; a point is one square primitive (llvmpipe
-    // rasterises points itself, as squares). 32-large at 800x600: the tiles' light stage 5% lower.
-    const bool points_asked = opts.tile_shape == TileShape::points ||
-                              (opts.tile_shape == TileShape::automatic && caps.software_rasterizer);
-    p.tile_points = points_asked && float(p.tile_size) <= caps.max_point_size;
+    // rasterises points itself, as squares). The tiles' light stage with points: 5% lower on
+    // 32-large at 800x600 on llvmpipe, 4% on 1024-overlap at 1920x1080 on an H100
+    // (docs/light_geometry.md).
+    p.tile_points = opts.tile_shape != TileShape::quads && float(p.tile_size) <= caps.max_point_size;
     if (opts.light_geometry == LightGeometry::stencil) {
         const char* missing = !caps.stencil ? "a stencil buffer"
                               : p.fbo && !caps.packed_depth_stencil ? "EXT_packed_depth_stencil"
