@@ -241,7 +241,6 @@ private:
             }
             first_[di + 1] = vertex_at();
         }
-        if (!points_) points_at_.assign(first_.begin() + 1, first_.end());
         buffers_.upload_next(verts_.data(), verts_.size() * sizeof(float));
     }
 
