@@ -58,7 +58,11 @@ struct RowRun {
     const Scene* scene = nullptr;  // what it draws: the variant's scene, or its linear_twin
     std::unique_ptr<DeferredShader> ds;
     std::unique_ptr<ForwardRenderer> fr;
-    std::vector<double> ms, depth_copy_ms, lights_ms, cpu_ms, cpu_make_frame_ms, cpu_lights_ms;
+    std::vector<double> ms;  // the timed frames' wall times
+    // What each frame took beside its wall time, warm-up frames included until time_frames drops them.
+    struct Samples {
+        std::vector<double> depth_copy_ms, lights_ms, cpu_ms, cpu_make_frame_ms, cpu_lights_ms;
+    } samples;
     FrameStats last;
     ForwardStats last_forward;
     Image image;
@@ -66,15 +70,15 @@ struct RowRun {
     double frame(const Scene& s, int w, int h) {
         if (ds) {
             last = ds->render(s, w, h);
-            depth_copy_ms.push_back(last.ms.depth_copy);
-            lights_ms.push_back(last.ms.lights);
-            cpu_ms.push_back(last.ms.cpu);
-            cpu_make_frame_ms.push_back(last.ms.cpu_make_frame);
-            cpu_lights_ms.push_back(last.ms.cpu_lights);
+            samples.depth_copy_ms.push_back(last.ms.depth_copy);
+            samples.lights_ms.push_back(last.ms.lights);
+            samples.cpu_ms.push_back(last.ms.cpu);
+            samples.cpu_make_frame_ms.push_back(last.ms.cpu_make_frame);
+            samples.cpu_lights_ms.push_back(last.ms.cpu_lights);
             return last.ms.frame;
         }
         last_forward = fr->render(s);
-        cpu_ms.push_back(last_forward.ms_cpu);
+        samples.cpu_ms.push_back(last_forward.ms_cpu);
         return last_forward.ms_frame;
     }
 };
@@ -327,11 +331,7 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
         run->row.frames = frames_for(first, cfg.frames);
         // The medians are the timed frames': the warm-up's (the first with the shaders' compiles)
         // used to sit among them in the light stage's, the hand-off's and the CPU's.
-        run->depth_copy_ms.clear();
-        run->lights_ms.clear();
-        run->cpu_ms.clear();
-        run->cpu_make_frame_ms.clear();
-        run->cpu_lights_ms.clear();
+        run->samples = {};
     }
     int rounds = 0;
     for (auto& run : runs) rounds = std::max(rounds, run->row.frames);
@@ -414,19 +414,19 @@ void finish_row(const Config& cfg, const Variant& v, RowRun& run, const IdealCou
     r.frames_ms = run.ms;
     r.ms_min = *std::min_element(run.ms.begin(), run.ms.end());
     r.ms_max = *std::max_element(run.ms.begin(), run.ms.end());
-    r.cpu_ms = median(run.cpu_ms);
-    r.cpu_frames_ms = run.cpu_ms;
+    r.cpu_ms = median(run.samples.cpu_ms);
+    r.cpu_frames_ms = run.samples.cpu_ms;
     if (run.ds) {
         r.light_fragments = run.last.counted_light_fragments();
         r.light_invocations = run.last.light_invocations;
         r.scissor_pixels = run.last.scissor_pixels;
         r.lights_drawn = run.last.lights_drawn;
         r.light_passes = run.last.light_passes;
-        r.depth_copy_ms = median(run.depth_copy_ms);
-        r.lights_ms = median(run.lights_ms);
-        r.lights_frames_ms = run.lights_ms;
-        r.cpu_make_frame_ms = median(run.cpu_make_frame_ms);
-        r.cpu_lights_ms = median(run.cpu_lights_ms);
+        r.depth_copy_ms = median(run.samples.depth_copy_ms);
+        r.lights_ms = median(run.samples.lights_ms);
+        r.lights_frames_ms = run.samples.lights_ms;
+        r.cpu_make_frame_ms = median(run.samples.cpu_make_frame_ms);
+        r.cpu_lights_ms = median(run.samples.cpu_lights_ms);
         if (quad) r.err_quad = compare_images(run.image, *quad, 1.0 / 255.0);
         r.ideal_fragments = ideal.fragments;
         r.ideal_source = ideal.source;
