@@ -133,23 +133,30 @@ void main()
     // group on past a discard, so the loop went on until its last slot for groups no pixel of which
     // is lit (every pixel discarded after its G-buffer reads: the light stage 25.5 ms on
     // 1024-overlap at 640x360, 7.4 with the loop left; as built 25.0).
-    if (len <= 0.1)
-        q0.x = 65535.0;
-    for (int k = 0; k < (MAX_LIGHTS + 1) / 2; ++k) {
-        float pair = floor(q0.x + 0.5);
+    // The loop is a do-while whose test, at the end of an iteration, looks at the next pair: a CPU
+    // rasteriser runs an `if` or a `break` by masking lanes, not by jumping, and leaves a loop only
+    // at the end of an iteration, so a for loop's iteration that finds the empty pair still ran
+    // both shade() calls with no lane on (every list of an even length paid two wasted terms). The
+    // light stage 30.40 against 28.43 ms, lower in 5 of 6 alternations (llvmpipe, 32-large at
+    // 800x600); the same image.
+    float pair = len <= 0.1 ? 65535.0 : floor(q0.x + 0.5);
+    int k = 0;
+    do {
         q0 = vec4(q0.yzw, q1.x);
         q1 = vec4(q1.yzw, q2.x);
         q2 = vec4(q2.yzw, q3.x);
         q3 = vec4(q3.yzw, 65535.0);
         float hi = floor(pair / 256.0);
         if (hi > 254.5)
-            break;
+            break;  // an empty list: a lane of the background
         shade(int(hi), pos, v, normal, diffuse, specular, shininess, c, any);
         float lo = pair - 256.0 * hi;
         if (lo > 254.5)
-            break;
+            break;  // an odd list's end: its lo term runs masked, once
         shade(int(lo), pos, v, normal, diffuse, specular, shininess, c, any);
-    }
+        pair = floor(q0.x + 0.5);
+        ++k;
+    } while (k < (MAX_LIGHTS + 1) / 2 && pair < 65279.5);
 #else
     int count = len <= 0.1 ? 0 : light_count;  // a discarded lane leaves the loop at once (above)
     for (int k = 0; k < MAX_LIGHTS; ++k) {
