@@ -14,6 +14,7 @@
 #include "lighting.glsl"
 #include "quantize.glsl"
 #include "shadow.glsl"
+#include "tile_light.glsl"
 
 uniform sampler2D normal_map;    // unit 0
 uniform sampler2D diffuse_map;   // unit 1
@@ -40,54 +41,22 @@ varying vec4 ids[ID_VECS];  // --tile-plan lists: this quad's light slots
 uniform int light_count;    // --tile-plan groups: the draw's group, slots 0 .. light_count-1
 #endif
 
-// Light slot i of the batch at surface point pos: its term, clamped and rounded as its own pass
+// Light slot i of the batch at surface point pos: its term (tile_light.glsl), as its own pass
 // would blend it, added to c.
 void shade(int i, vec3 pos, vec3 v, vec3 normal, vec3 diffuse, vec4 specular, float shininess, inout vec3 c, inout bool any)
 {
-    vec4 lp = lightpos[i];
-    float type = lightcolor[i].w;
-#ifdef POINT_LIGHTS
-    type = 0.0;
-#endif
-    // The depth test only where the sphere test is off: a point outside the depth span is outside
-    // the sphere too (|dz| > r gives dot(d, d) >= r * r, rounding being monotonic), and the span's
-    // test before the sphere's took 1-2% more of the stage (llvmpipe, 32-large at 800x600).
-#if defined(LIGHT_DEPTH_TEST) && !defined(LIGHT_SPHERE_TEST)
-    if (type < 1.5 && abs(pos.z - lp.z) > lp.w)
+    vec3 t;
+    if (!tile_light_term(lightpos[i], lightcolor[i], lightdir[i], lightspot[i], LIGHT_ATT(i), pos, v, normal, diffuse,
+                         specular.rgb, shininess, t))
         return;
-#endif
-#ifdef LIGHT_SPHERE_TEST
-    // The vector from pos to the light, as light_contribution takes it (l = Lpos.xyz - p), so the
-    // compiler computes it and dot(l, l) once for both: the test's pos - light (its negation, the
-    // same squares) cost the tiles' light stage 0.2-1.5 ms more in 6 of 7 alternations (llvmpipe,
-    // 32-large at 800x600, about 20 ms).
-    vec3 l = lp.xyz - pos;
-    if (type < 1.5 && dot(l, l) >= lp.w * lp.w)
-        return;
-#ifndef POINT_LIGHTS
-    if (type > 0.5 && type < 1.5 && -dot(l, lightdir[i].xyz) <= length(l) * lightdir[i].w)
-        return;
-#endif
-#endif
-    vec3 t = light_contribution(lp, lightcolor[i], lightdir[i], lightspot[i], LIGHT_ATT(i), pos, v, normal,
-                                diffuse, specular.rgb, shininess);
 #ifdef SHADOW
     float slot = lightspot[i].z;
     if (slot > -0.5) {
-        vec3 to_light = lightcolor[i].w > 1.5 ? -lightdir[i].xyz : normalize(lp.xyz - pos);  // light.frag's
+        vec3 to_light = lightcolor[i].w > 1.5 ? -lightdir[i].xyz : normalize(lightpos[i].xyz - pos);  // light.frag's
         t *= shadow_factor(int(slot + 0.5), pos, normal, to_light);
     }
 #endif
-#ifndef ACCUM_FLOAT
-    t = clamp(t, 0.0, 1.0);  // a float P-buffer 0 (ACCUM_FLOAT) clamps nothing: the term as its pass would add it
-#endif
-    // Each light's term clamped to [0, 1] as its own pass's blend would be and, into the RGBA8
-    // P-buffer 0, rounded to the 8-bit step that pass would have written, as this GL rounds: the
-    // sum then matches the quad geometry's image instead of differing by up to N/2 LSB.
-#ifdef QUANTIZE_8BIT
-    t = quantize8_byte(t);  // bytes, summed exactly; main() scales the sum once
-#endif
-    c += t;
+    c += tile_light_blended(t);
     any = true;
 }
 

@@ -287,7 +287,8 @@ TEST(Cli, LongBadValuesAreEchoedCut) {
         RunResult r = run(c);
         EXPECT_NE(r.status, 0) << c.substr(0, 40);
         EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << c.substr(0, 40);
-        EXPECT_LT(r.output.size(), 400u) << c.substr(0, 40) << ": " << r.output.substr(0, 200);
+        // (--caps's line names every capability it takes: about 400 characters)
+        EXPECT_LT(r.output.size(), 500u) << c.substr(0, 40) << ": " << r.output.substr(0, 200);
     }
 }
 

@@ -256,14 +256,61 @@ TEST(LightGeometry, DepthBoundsRefusedWithoutTheExtension) {
 TEST(LightGeometry, TilesOfOneLightPerPassMatchQuad) {
     const Scene s = default_scene();
     const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
-    ShaderOptions o = with_geometry(LightGeometry::tiles);
-    o.tile_size = 16;
-    o.tile_lights = 1;
-    const RenderResult one = render_scene(s, kW, kH, o);
-    expect_same("tiles_16x1", one, quad);
-    o.tile_lights = 8;
-    const RenderResult eight = render_scene(s, kW, kH, o);
-    EXPECT_LT(eight.stats.light_passes, one.stats.light_passes);
+    for (TileFetch fetch : {TileFetch::fragment, TileFetch::vertex}) {
+        const std::string name = fetch == TileFetch::vertex ? "vertex" : "fragment";
+        ShaderOptions o = with_geometry(LightGeometry::tiles);
+        o.tile_size = 16;
+        o.tile_lights = 1;
+        o.tile_fetch = fetch;
+        const RenderResult one = render_scene(s, kW, kH, o);
+        expect_same("tiles_16x1_" + name, one, quad);
+        o.tile_lights = 8;
+        const RenderResult eight = render_scene(s, kW, kH, o);
+        expect_same("tiles_16x8_" + name, eight, quad);
+        // One draw a layer; the vertex fetch draws a layer's tiles by their count of lights.
+        if (fetch == TileFetch::fragment) EXPECT_LT(eight.stats.light_passes, one.stats.light_passes);
+    }
+}
+
+// The tiles' vertex fetch (--tile-fetch vertex): the vertex shader reads a tile's lights once and
+// hands them on flat, to a program for each count of lights. Quad's image with point lights of the
+// linear law (overlapping, at a size whose last row and column of tiles are partial, 3 lights a
+// pass so that tiles have several layers and counts; and with 16), and of one attenuation
+// (LearnOpenGL's 32); and where a batch does not qualify (one light's constants changed, a spot
+// light among point lights), which the fragment shader then draws, still with quad's image.
+TEST(LightGeometry, TilesVertexFetchMatchesQuad) {
+    struct Case {
+        std::string name;
+        Scene scene;
+        int w, h, per_pass;
+        bool vertex;  // every batch by the vertex fetch, else none
+    };
+    Scene differs = large_lights_scene(32);
+    differs.lights[5].kq *= 1.5f;
+    Scene spot = with_overlapping_lights(default_scene(), 64);
+    spot.lights[7].type = Light::Type::spot;
+    spot.lights[7].dir = glm::vec3(0, -1, 0);
+    const std::vector<Case> cases = {
+        {"linear_3", with_overlapping_lights(default_scene(), 64), 120, 100, 3, true},
+        {"linear_16", with_overlapping_lights(default_scene(), 64), 120, 100, 16, true},
+        {"shared_attenuation", large_lights_scene(32), kW, kH, 16, true},
+        {"attenuation_differs", differs, kW, kH, 16, false},
+        {"spot", spot, 120, 100, 16, false},
+    };
+    for (const Case& k : cases) {
+        const RenderResult quad = render_scene(k.scene, k.w, k.h, with_geometry(LightGeometry::quad));
+        ShaderOptions o = with_geometry(LightGeometry::tiles);
+        o.tile_size = 16;
+        o.tile_lights = k.per_pass;
+        o.tile_fetch = TileFetch::vertex;
+        const RenderResult r = render_scene(k.scene, k.w, k.h, o);
+        ASSERT_TRUE(r.paths.tile_fetch_vertex) << k.name;
+        expect_same("tiles_vertex_" + k.name, r, quad);
+        if (k.vertex)
+            EXPECT_GE(r.stats.tile_vertex_batches, 1) << k.name;
+        else
+            EXPECT_EQ(r.stats.tile_vertex_batches, 0) << k.name;
+    }
 }
 
 // Tiles drawn as points of the tile's size and as quads give quad's image, at a size whose last

@@ -278,6 +278,55 @@ TEST(Paths, TilesArePointsWherePointsAreLargeEnough) {
     EXPECT_FALSE(choose_paths(c, o).tile_points);  // a point that small would leave the tile's edge unlit
 }
 
+// The tiles' vertex fetch: auto takes it on a CPU rasteriser with GLSL 1.30, at as many lights a
+// pass as the varyings hold (8 components a light, at most 16), and the fragment fetch elsewhere:
+// on a GPU, without GLSL 1.30, with the groups plan, or where more lights a pass are asked for.
+// Asked for where it cannot run, it is refused in one line.
+TEST(Paths, TilesFetchTheirLightsInTheVertexShaderWhereTheyCan) {
+    ShaderOptions o;
+    o.light_geometry = LightGeometry::tiles;
+    Caps c = caps_for(0);
+    c.glsl130 = true;
+    c.max_varying_components = 128;
+    c.software_rasterizer = true;
+    Paths p = choose_paths(c, o);
+    EXPECT_TRUE(p.tile_fetch_vertex);
+    EXPECT_EQ(p.tile_vertex_lights, 16);
+    EXPECT_EQ(p.tile_lights, 16);
+    c.max_varying_components = 64;  // OpenGL 3.0's least
+    p = choose_paths(c, o);
+    EXPECT_EQ(p.tile_lights, 8);
+    EXPECT_TRUE(p.tile_fetch_vertex);
+    o.tile_lights = 12;  // more than the varyings hold: the fragment fetch
+    EXPECT_FALSE(choose_paths(c, o).tile_fetch_vertex);
+    o.tile_fetch = TileFetch::vertex;
+    EXPECT_NE(choose_paths(c, o).refused.find("at most 8 lights"), std::string::npos) << choose_paths(c, o).refused;
+    o.tile_lights = 0;
+    o.tile_fetch = TileFetch::automatic;
+    c.max_varying_components = 128;
+    o.tile_plan = TileGrouping::groups;
+    EXPECT_FALSE(choose_paths(c, o).tile_fetch_vertex);
+    o.tile_fetch = TileFetch::vertex;
+    EXPECT_FALSE(choose_paths(c, o).refused.empty());
+    o.tile_plan = TileGrouping::lists;
+    o.tile_fetch = TileFetch::automatic;
+    c.software_rasterizer = false;
+    p = choose_paths(c, o);
+    EXPECT_FALSE(p.tile_fetch_vertex);
+    EXPECT_EQ(p.tile_lights, 8);  // a GPU's default
+    o.tile_fetch = TileFetch::vertex;
+    p = choose_paths(c, o);
+    EXPECT_TRUE(p.tile_fetch_vertex && p.refused.empty()) << p.refused;
+    EXPECT_EQ(p.tile_lights, 16);
+    c.glsl130 = false;
+    c.software_rasterizer = true;
+    EXPECT_NE(choose_paths(c, o).refused.find("GLSL 1.30"), std::string::npos);
+    o.tile_fetch = TileFetch::automatic;
+    p = choose_paths(c, o);
+    EXPECT_FALSE(p.tile_fetch_vertex);
+    EXPECT_EQ(p.tile_lights, 32);
+}
+
 // Where a frame may hand the depth off (the geometries that test against the scene's depth, or the
 // forward stage), the hand-off's pass can write the ambient term; on a GPU it then takes the ambient
 // target's place, on a CPU rasteriser the target stays and only a hand-off that is a pass anyway

@@ -51,9 +51,12 @@ int cmd_info(const std::vector<std::string>& argv) {
     ShaderOptions tiles = defaults;
     tiles.light_geometry = LightGeometry::tiles;
     const Paths tp = choose_paths(caps, tiles);
-    std::printf("  --light-geometry tiles: %d-pixel tiles, %d lights a pass (auto: %s), drawn as %s (points up to %g pixels)\n",
+    std::printf("  --light-geometry tiles: %d-pixel tiles, %d lights a pass (auto: %s), drawn as %s (points up to %g pixels),\n"
+                "    their lights read %s\n",
                 tp.tile_size, tp.tile_lights, caps.software_rasterizer ? "a CPU rasteriser's" : "a GPU's",
-                tp.tile_points ? "points" : "quads", double(caps.max_point_size));
+                tp.tile_points ? "points" : "quads", double(caps.max_point_size),
+                tp.tile_fetch_vertex ? "once a tile by the vertex shader (GLSL 1.30 flat varyings)"
+                                     : "at every pixel by the fragment shader");
     std::printf("  --light-geometry auto: each light by the cheapest path; the cost model's constants (%s),\n"
                 "  each path's scaled by what its passes took in the frames before%s:\n%s",
                 caps.software_rasterizer ? "a CPU rasteriser's" : "a GPU's",

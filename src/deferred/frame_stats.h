@@ -49,6 +49,8 @@ struct FrameStats {
     // tiles: batches drawn by the form that reads the lights' shared attenuation constants once
     // (light_tiles.frag ATT_SHARED).
     int tile_att_shared_batches = 0;
+    // tiles: batches whose lights the vertex shader read (Paths::tile_fetch_vertex; light_tiles_flat.vert).
+    int tile_vertex_batches = 0;
     bool tile_depth = false;         // tiles: the plan culled by the tiles' depth spans (tile_depth.h)
     // tiles, wall clock inside the light stage: the depth spans' two passes and read-back (which
     // waits for the G-buffer: on a GPU, a pipeline drain), and the plan with its vertices' upload.

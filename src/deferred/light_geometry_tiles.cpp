@@ -17,7 +17,13 @@
 // ATT_SHARED): a CPU rasteriser reads an array at an index from the vertices lane by lane, and
 // the shared form took 32-large's light stage on llvmpipe 0.25-0.9 ms lower (of about 20 ms, six
 // alternations).
+// With the vertex fetch (Paths::tile_fetch_vertex, --tile-fetch), a batch of point lights of the
+// linear law or of one attenuation is drawn by light_tiles_flat.vert/.frag instead: a tile's
+// vertices carry its slots one a float, the vertex shader reads its lights out of the arrays once
+// and the fragment shader takes them flat, by programs built for each count of lights (a tile's
+// draws are split by count: the terms are written out in a row, none masked off).
 #include <algorithm>
+#include <array>
 
 #include "deferred/light_geometry_tiles.h"
 #include "deferred/light_pass.h"
@@ -59,9 +65,17 @@ public:
           points_(c.paths.tile_points),
           id_vecs_(groups_ ? 0 : tile_id_vecs(c.opts.tile_lights)),
           stride_(kFixedFloats + 4 * id_vecs_),
+          vertex_fetch_(c.paths.tile_fetch_vertex && !groups_),
+          flat_vecs_(vertex_fetch_ ? (c.opts.tile_lights + 3) / 4 : 0),
+          flat_stride_(kFixedFloats + 4 * flat_vecs_),
           xy_slack_(c.opts.depth == DepthPath::position16 ? 1.0f / 1024.0f : 0.0f),
           round_(c.tile_round) {
         if (tile_depth_culling(c)) depth_ = std::make_unique<TileDepthPass>(c, programs, width, height);
+        if (vertex_fetch_) {
+            flat_sources_ = std::make_unique<ProgramSources>(programs.sources("light_tiles_flat"));
+            flat_[0][size_t(tile_lights_)] = programs.take("light_tiles_flat_point");
+            flat_[1][size_t(tile_lights_)] = programs.take("light_tiles_flat_point_inverse");
+        }
     }
 
     void resize(int width, int height) override {
@@ -149,12 +163,20 @@ public:
                                                         cut, shadow_slots_);
             });
             for (int b = 0; b < int(planner->batches().size()); ++b) {
+                const std::vector<int>& batch = planner->batches()[size_t(b)];
+                const int flat = flat_form(f, batch);
                 plan_ms += wall_ms([&] {
                     draws_.clear();
                     stats.tile_light_pairs += planner->plan_batch(b, draws_);
-                    upload(draws_.data(), draws_.size());
+                    if (flat >= 0)
+                        upload_flat(draws_.data(), draws_.size());
+                    else
+                        upload(draws_.data(), draws_.size());
                 });
-                draw_batch(f, planner->batches()[size_t(b)], q, stats);
+                if (flat >= 0)
+                    draw_flat(f, batch, flat, q, stats);
+                else
+                    draw_batch(f, batch, q, stats);
                 glFlush();
             }
         }
@@ -179,15 +201,18 @@ private:
                 p->set("quantize_round", round_);
             }
         if (att_shared_.id()) begin_att_shared(f);
+        for (auto& form : flat_)
+            for (Program& p : form)
+                if (p.id()) begin_flat(p, f);
         glEnableClientState(GL_VERTEX_ARRAY);
-        for (int k = 0; k < id_vecs_; ++k) {
+        for (int k = 0; k < std::max(id_vecs_, flat_vecs_); ++k) {
             glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
             glEnableClientState(GL_TEXTURE_COORD_ARRAY);
         }
     }
 
     void end_draws() {
-        for (int k = id_vecs_ - 1; k >= 0; --k) {
+        for (int k = std::max(id_vecs_, flat_vecs_) - 1; k >= 0; --k) {
             glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
             glDisableClientState(GL_TEXTURE_COORD_ARRAY);
         }
@@ -281,6 +306,110 @@ private:
         shadows_.unbind();
     }
 
+    // The vertex fetch's form for a batch: 0 for point lights of the linear law, 1 for point lights
+    // of the attenuation law that share its constants; -1 (light_tiles.frag draws it): no vertex
+    // fetch, another kind of light or law, differing constants, or a shadowed light.
+    int flat_form(const FrameDef& f, const std::vector<int>& batch) const {
+        if (!vertex_fetch_ || batch.empty()) return -1;
+        for (int i : batch)
+            if (f.lights[size_t(i)].shadow >= 0) return -1;
+        const LightShader s = LightPrograms::common(f, batch);
+        if (s == LightShader::point_linear) return 0;
+        if (s == LightShader::point_inverse && shares_attenuation(f, batch)) return 1;
+        return -1;
+    }
+
+    // A batch's draws for the vertex fetch: each vertex the window position and its tile's slots,
+    // one a float (texture coordinates 2..); ranges_ in draw order, within a draw by count of
+    // lights (a program each), quads then points (points_ as upload() makes them).
+    void upload_flat(const TileDraw* draws, size_t n_draws) {
+        const int ts = tile_size_;
+        auto whole = [&](const TileQuad& tq) {
+            return points_ && (tq.x1 - tq.x0) % ts == 0 && (tq.y1 - tq.y0) % ts == 0;
+        };
+        size_t verts = 0;
+        for (size_t di = 0; di < n_draws; ++di)
+            for (const TileQuad& tq : draws[di].quads)
+                verts += whole(tq) ? size_t((tq.x1 - tq.x0) / ts) * size_t((tq.y1 - tq.y0) / ts) : 4;
+        verts_.resize(verts * size_t(flat_stride_));
+        ranges_.clear();
+        float* out = verts_.data();
+        auto vertex_at = [&] { return size_t(out - verts_.data()) / size_t(flat_stride_); };
+        for (size_t di = 0; di < n_draws; ++di) {
+            for (int n = 1; n <= tile_lights_; ++n) {
+                for (int pass = 0; pass < 2; ++pass) {  // the quads, then the points
+                    const size_t first = vertex_at();
+                    for (const TileQuad& tq : draws[di].quads) {
+                        if (int(tq.slots.size()) != n || whole(tq) != (pass == 1)) continue;
+                        auto emit = [&](float x, float y) {
+                            *out++ = x, *out++ = y;
+                            for (int k = 0; k < 4 * flat_vecs_; ++k) *out++ = k < n ? float(tq.slots[size_t(k)]) : kNoLight;
+                        };
+                        if (pass == 1) {
+                            for (int y = tq.y0; y < tq.y1; y += ts)
+                                for (int x = tq.x0; x < tq.x1; x += ts) emit(float(x) + 0.5f * float(ts), float(y) + 0.5f * float(ts));
+                            continue;
+                        }
+                        const float xs[4] = {float(tq.x0), float(tq.x1), float(tq.x1), float(tq.x0)};
+                        const float ys[4] = {float(tq.y0), float(tq.y0), float(tq.y1), float(tq.y1)};
+                        for (int c = 0; c < 4; ++c) emit(xs[c], ys[c]);
+                    }
+                    if (vertex_at() > first) ranges_.push_back({pass == 1 ? GLenum(GL_POINTS) : GLenum(GL_QUADS), first, vertex_at() - first, n});
+                }
+            }
+        }
+        buffers_.upload_next(verts_.data(), verts_.size() * sizeof(float));
+    }
+
+    // The uploaded ranges, each by the form's program for its count of lights, the batch's lights
+    // in its arrays (position and colour are all it reads; att_shared for the attenuation law).
+    void draw_flat(const FrameDef& f, const std::vector<int>& batch, int form, LightQueries& q, FrameStats& stats) {
+        arrays_.clear();
+        for (int i : batch) arrays_.add(f.lights[size_t(i)].params);
+        if (form == 1) ++stats.tile_att_shared_batches;
+        ++stats.tile_vertex_batches;
+        const GLsizei bytes = GLsizei(flat_stride_ * sizeof(float));
+        auto at = [](int fl) { return reinterpret_cast<const void*>(size_t(fl) * sizeof(float)); };  // buffer offsets
+        glVertexPointer(2, GL_FLOAT, bytes, at(0));
+        for (int k = 0; k < flat_vecs_; ++k) {
+            glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
+            glTexCoordPointer(4, GL_FLOAT, bytes, at(kFixedFloats + 4 * k));
+        }
+        int bound = 0;
+        for (const FlatRange& r : ranges_) {
+            if (r.lights != bound) {
+                Program& prog = flat_program(f, form, r.lights);
+                RenderState state = light_pass_state(prog.id(), false);
+                if (points_) state.point_size = float(tile_size_);
+                gl_state().apply(state);
+                arrays_.set(prog, LightArrays::kLight);
+                if (form == 1) prog.set("att_shared", glm::vec3(f.lights[size_t(batch[0])].params.att));
+                bound = r.lights;
+            }
+            q.begin();
+            glDrawArrays(r.mode, GLint(r.first), GLsizei(r.count));
+            q.end();
+            ++stats.light_passes;
+        }
+    }
+
+    // The form's program for `lights` lights: the table's for tile_lights, the others built on
+    // first use (their frame uniforms set then, and by begin_draws in the frames after).
+    Program& flat_program(const FrameDef& f, int form, int lights) {
+        Program& p = flat_[size_t(form)][size_t(lights)];
+        if (!p.id()) {
+            p = flat_sources_->build(form == 0 ? "light_tiles_flat_point" : "light_tiles_flat_point_inverse",
+                                     Defines{"LIGHTS " + std::to_string(lights)});
+            begin_flat(p, f);
+        }
+        return p;
+    }
+
+    void begin_flat(Program& p, const FrameDef& f) {
+        set_light_uniforms(p, f);  // makes it current
+        p.set("quantize_round", round_);
+    }
+
     // Whether every light of the batch (point lights with the attenuation law: the batch's form
     // says so) has the first one's constants, to the bit.
     static bool shares_attenuation(const FrameDef& f, const std::vector<int>& batch) {
@@ -313,6 +442,8 @@ private:
     bool groups_;
     bool points_;  // Paths::tile_points: whole tiles as points of the tile's size
     int id_vecs_, stride_;
+    bool vertex_fetch_;          // Paths::tile_fetch_vertex (lists only)
+    int flat_vecs_, flat_stride_;  // its vertices: slots one a float, in flat_vecs_ vec4s
     float xy_slack_;  // position16 stores x and y as half floats, up to 2^-11 off the ray, relative: two such steps
     float round_;     // light_tiles.frag's quantize_round (gl/rounding_probe.h)
     std::unique_ptr<TileDepthPass> depth_;  // null without depth culling
@@ -322,6 +453,16 @@ private:
     std::vector<size_t> first_, points_at_;  // upload(): each draw's first vertex, and its first point
     std::vector<TileDraw> draws_;
     LightArrays arrays_;
+    // The vertex fetch: its programs by form (linear, shared attenuation) and count of lights
+    // (index 0 unused), and a batch's ranges of vertices, each drawn by one of them.
+    struct FlatRange {
+        GLenum mode;
+        size_t first, count;
+        int lights;
+    };
+    std::unique_ptr<ProgramSources> flat_sources_;
+    std::array<std::array<Program, SlotList::kCapacity + 1>, 2> flat_;
+    std::vector<FlatRange> ranges_;
 };
 
 }  // namespace

@@ -135,7 +135,8 @@ std::vector<RenderOption> make_table() {
     add(integer_option("tile-size", 8, 512, &ShaderOptions::tile_size, true),
         "tiles: pixels per tile side; auto: 16 on a CPU rasteriser such as llvmpipe, else 32 (`dsr info` says which)");
     add(integer_option("tile-lights", 1, 32, &ShaderOptions::tile_lights, true),
-        "tiles: lights per pass; auto: 32 on a CPU rasteriser, else 8");
+        "tiles: lights per pass; auto: with --tile-fetch vertex as many as the varyings hold (16 on llvmpipe), "
+        "else 32 on a CPU rasteriser, else 8");
     add(choice(
             "tile-plan", {"lists", "groups"},
             [](const RenderOptions& r) { return std::string(r.shader.tile_plan == TileGrouping::groups ? "groups" : "lists"); },
@@ -148,6 +149,19 @@ std::vector<RenderOption> make_table() {
         "tiles: each whole tile drawn as a point of the tile's size, one square primitive (where the GL's points "
         "are as large as a tile, else a quad), or as a quad, two triangles, whose diagonal a rasteriser shades "
         "partly twice (the same image either way)");
+    add(choice(
+            "tile-fetch", {"auto", "vertex", "fragment"},
+            [](const RenderOptions& r) {
+                static const char* names[] = {"auto", "vertex", "fragment"};
+                return std::string(names[int(r.shader.tile_fetch)]);
+            },
+            [](RenderOptions& r, const std::string& v) {
+                r.shader.tile_fetch = v == "vertex" ? TileFetch::vertex : v == "fragment" ? TileFetch::fragment : TileFetch::automatic;
+            }),
+        "tiles: where a tile's lights are read from the batch's arrays: once a tile, by the vertex shader, into flat "
+        "varyings (GLSL 1.30; up to 16 lights a pass, a program for each count; batches of point lights of the "
+        "linear law or of one attenuation), or at every pixel, by the fragment shader; auto: vertex on a CPU "
+        "rasteriser, else fragment (the same image either way)");
     add(switch_option("tile-depth", &ShaderOptions::tile_depth),
         "tiles: leave out each tile's lights whose sphere misses the depth span of its surfaces (needs float targets)");
     add(choice(

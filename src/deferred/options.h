@@ -47,6 +47,11 @@ enum class TileGrouping { lists, groups };
 // How the tiles geometry draws a tile: as a point of the tile's size (one square primitive) where
 // the GL's points are as large as a tile, else as a quad (two triangles) (Paths::tile_points).
 enum class TileShape { points, quads };
+// Where the tiles geometry reads a tile's lights out of the batch's uniform arrays
+// (Paths::tile_fetch_vertex): once a tile, in the vertex shader, handed on as flat varyings
+// (light_tiles_flat.vert, GLSL 1.30), or at every pixel, in the fragment shader (light_tiles.frag);
+// automatic: vertex on a CPU rasteriser where it can, else fragment.
+enum class TileFetch { automatic, vertex, fragment };
 
 // How the G-buffer's depth reaches P-buffer 0's depth buffer (depth_handoff.cpp): automatic picks
 // blit where EXT_framebuffer_blit and framebuffer objects exist, else pass (a full-screen pass
@@ -156,12 +161,14 @@ struct ShaderOptions {
     // and 32 (llvmpipe at 256x256: as fast as 8 pixels on 1024-overlap, faster on 32-large, and
     // 32 pixels let 3x more tile-light pairs through the depth culling), else 32 and 8 (the H200:
     // 7.16 against 9.13 ms on 1024-overlap at 1920x1080, 6.77 against 8.44 on 32-large;
-    // docs/light_geometry.md).
+    // docs/light_geometry.md). With the tiles' vertex fetch (Paths::tile_fetch_vertex) the lights a
+    // pass are as many as its flat varyings hold, 16 at most.
     int tile_size = 0;
     int tile_lights = 0;
     RenderTarget render_target = RenderTarget::automatic;
     TileGrouping tile_plan = TileGrouping::lists;
     TileShape tile_shape = TileShape::points;
+    TileFetch tile_fetch = TileFetch::automatic;
     bool tile_depth = true;         // tiles: leave out a tile's lights that miss its surfaces' depth span (tile_depth.h)
     SsaoOptions ssao;
     // The forward stage after the light passes (forward_stage.h, docs/forward.md).

@@ -101,7 +101,21 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     // framebuffer objects a packed depth-stencil attachment, without them the main buffer's.
     p.light_geometry = opts.light_geometry;
     p.tile_size = opts.tile_size ? opts.tile_size : caps.software_rasterizer ? 16 : 32;
-    p.tile_lights = opts.tile_lights ? opts.tile_lights : caps.software_rasterizer ? 32 : 8;
+    // A CPU rasteriser runs the fragment shader on lanes of 8 pixels and reads an array at an
+    // index it takes from a varying lane by lane, element by element: in the tiles' light shader
+    // that read, its loop and the loop's masked last terms were a third of the light stage
+    // (llvmpipe, 32-large at 800x600). Read once a tile by the vertex shader and handed on flat,
+    // the lights cost the fragment shader a constant read, and each count of lights gets a program
+    // of its own with the lights' terms in a row (light_geometry_tiles.cpp).
+    p.tile_vertex_lights = caps.glsl130 ? std::min(16, caps.max_varying_components / 8) : 0;
+    const bool vertex_fetch = p.tile_vertex_lights > 0 && opts.tile_plan == TileGrouping::lists;
+    p.tile_fetch_vertex = opts.tile_fetch == TileFetch::vertex ||
+                          (opts.tile_fetch == TileFetch::automatic && caps.software_rasterizer && vertex_fetch &&
+                           (opts.tile_lights == 0 || opts.tile_lights <= p.tile_vertex_lights));
+    p.tile_lights = opts.tile_lights                                  ? opts.tile_lights
+                    : p.tile_fetch_vertex && p.tile_vertex_lights > 0 ? p.tile_vertex_lights
+                    : caps.software_rasterizer                        ? 32
+                                                                      : 8;
     // llvmpipe shades a 4x4 pixel block once for each triangle that covers part of it, so a tile's
     // quad pays for the blocks along its diagonal twice; a point is one square primitive (llvmpipe
     // rasterises points itself, as squares). The tiles' light stage with points: 5% lower on
@@ -180,6 +194,13 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     else if (draws_tiles(opts.light_geometry) &&
              (p.tile_size < 8 || p.tile_size > 512 || p.tile_lights < 1 || p.tile_lights > 32))
         p.refused = "tiles: tile size must be 8..512 and lights per pass 1..32";
+    else if (draws_tiles(opts.light_geometry) && p.tile_fetch_vertex && !caps.glsl130)
+        p.refused = "--tile-fetch vertex needs GLSL 1.30 (flat varyings), which this GL lacks" + forced_note(caps, "no-glsl130");
+    else if (draws_tiles(opts.light_geometry) && p.tile_fetch_vertex && opts.tile_plan != TileGrouping::lists)
+        p.refused = "--tile-fetch vertex applies to --tile-plan lists (groups read their lights with a uniform count)";
+    else if (draws_tiles(opts.light_geometry) && p.tile_fetch_vertex && p.tile_lights > p.tile_vertex_lights)
+        p.refused = "--tile-fetch vertex holds at most " + std::to_string(p.tile_vertex_lights) +
+                    " lights a pass on this GL (8 varying components a light, and 16), not " + std::to_string(p.tile_lights);
     return p;
 }
 

@@ -44,6 +44,11 @@ struct Paths {
     // a partial tile at the frame's edge stays a quad: a point whose centre lies outside the
     // viewport is clipped whole).
     bool tile_points = false;
+    // tiles: a tile's lights read once, by the vertex shader, into flat varyings (TileFetch::vertex;
+    // light_tiles_flat.vert), at most tile_vertex_lights a pass (GL_MAX_VARYING_COMPONENTS over the
+    // 8 a light takes, and 16); else read at every pixel (light_tiles.frag).
+    bool tile_fetch_vertex = false;
+    int tile_vertex_lights = 0;
     enum class StencilFaces { separate, two_side_ext, one_sided };  // GL 2.0 | EXT_stencil_two_side | two passes
     StencilFaces stencil_faces = StencilFaces::separate;
     // P-buffers 0 and 1 get a depth attachment the G-buffer's depth is handed to (the volume,

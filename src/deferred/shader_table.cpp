@@ -197,6 +197,10 @@ bool uses_batches(const ShaderConfig& c) { return is_auto(c); }
 Defines batch_defines(const ShaderConfig& c) { return with(light_defines(c), {"BATCH " + std::to_string(c.tile_batch)}); }
 bool uses_stencil(const ShaderConfig& c) { return geometry_is(c, LightGeometry::stencil); }
 bool uses_tiles(const ShaderConfig& c) { return draws_tiles(c.paths.light_geometry); }
+// The tiles' vertex fetch (Paths::tile_fetch_vertex): batches of point lights of one law read once
+// a tile; the table's programs hold tile_lights lights, light_geometry_tiles.cpp builds one for
+// each count it draws.
+bool uses_tile_fetch_vertex(const ShaderConfig& c) { return uses_tiles(c) && c.paths.tile_fetch_vertex; }
 Defines point_linear(Defines d) { return with(std::move(d), {"LIGHT_POINT_ONLY"}); }
 Defines point_inverse(Defines d) { return with(std::move(d), {"LIGHT_POINT_INVERSE"}); }
 bool uses_screen(const ShaderConfig& c) { return geometry_is(c, LightGeometry::screen); }
@@ -333,6 +337,12 @@ const std::vector<ShaderRow>& shader_rows() {
          [](C c) { return point_linear(tiles_defines(c)); }},
         {"light_tiles_point_inverse", "light.vert", "light_tiles.frag", "tiles: point lights, attenuation law",
          uses_tiles, [](C c) { return point_inverse(tiles_defines(c)); }},
+        {"light_tiles_flat_point", "light_tiles_flat.vert", "light_tiles_flat.frag",
+         "tiles, lights read by the vertex shader: the tutorial's point lights", uses_tile_fetch_vertex,
+         [](C c) { return point_linear(tiles_defines(c)); }},
+        {"light_tiles_flat_point_inverse", "light_tiles_flat.vert", "light_tiles_flat.frag",
+         "tiles, lights read by the vertex shader: point lights of one attenuation", uses_tile_fetch_vertex,
+         [](C c) { return with(point_inverse(tiles_defines(c)), {"ATT_SHARED"}); }},
         {"light_tiles_shadow", "light.vert", "light_tiles.frag", "tiles: any light, some with shadow maps",
          tiles_shadow, [](C c) { return with(shadow_defines(tiles_defines(c), c), {shadow_slots(c)}); }},
         {"light_tiles_shadow_atlas", "light.vert", "light_tiles.frag", "tiles: the same, the batch's maps in one atlas",

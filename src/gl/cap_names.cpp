@@ -17,6 +17,7 @@ const std::vector<CapName>& cap_names() {
         {"no-float-blend", "blending into float targets", "--accum half and float are refused"},
         {"no-srgb-texture", "EXT_texture_sRGB", "--textures srgb decodes colour maps on upload into RGBA16"},
         {"no-glsl", "GLSL 1.20", "dsr refuses to render, in one line"},
+        {"no-glsl130", "GLSL 1.30", "the tiles read their lights at every pixel (--tile-fetch fragment)"},
         {"no-occlusion-query", "ARB_occlusion_query", "light_fragments is not counted (null in --stats)"},
         {"no-pipeline-stats", "ARB_pipeline_statistics_query", "light_invocations is not counted (null in --stats)"},
         {"no-stencil", "the main frame buffer's 8-bit stencil", "--light-geometry stencil falls back to volume"},

@@ -52,6 +52,10 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
     bool gl20 = at_least(c.gl_major, c.gl_minor, 2, 0);
     c.glsl120 = at_least(c.glsl_major, c.glsl_minor, 1, 20) &&
                 (gl20 || has_extension("GL_ARB_shading_language_100")) && !off("no-glsl");
+    c.glsl130 = c.glsl120 && at_least(c.glsl_major, c.glsl_minor, 1, 30) && !off("no-glsl130");
+    GLint varyings = 0;
+    glGetIntegerv(GL_MAX_VARYING_FLOATS, &varyings);  // the same enum as GL_MAX_VARYING_COMPONENTS
+    c.max_varying_components = varyings;
     c.draw_buffers = (gl20 || has_extension("GL_ARB_draw_buffers")) && !off("no-mrt");
     GLint mdb = 1;
     if (c.draw_buffers) glGetIntegerv(GL_MAX_DRAW_BUFFERS_ARB, &mdb);
@@ -112,6 +116,8 @@ std::string describe(const Caps& c) {
       << "GLSL           " << c.glsl_version << "\n"
       << "capabilities (source extension):\n"
       << "  " << yn(c.glsl120) << " GLSL 1.20                (OpenGL 2.1)\n"
+      << "  " << yn(c.glsl130) << " GLSL 1.30                (OpenGL 3.0: flat varyings), " << c.max_varying_components
+      << " varying components\n"
       << "  " << yn(c.draw_buffers) << " multiple render targets  (ARB_draw_buffers), max "
       << c.max_draw_buffers << "\n"
       << "  " << yn(c.depth_texture) << " depth textures           (ARB_depth_texture)\n"

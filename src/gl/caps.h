@@ -12,6 +12,10 @@ struct Caps {
     std::string vendor, renderer, version, glsl_version;
     int gl_major = 0, gl_minor = 0, glsl_major = 0, glsl_minor = 0;
     bool glsl120 = false;            // GLSL 1.20 (OpenGL 2.1): every shader is #version 120
+    // GLSL 1.30 (OpenGL 3.0): flat varyings and roundEven, for the tiles' vertex fetch
+    // (light_tiles_flat.vert/.frag, Paths::tile_fetch_vertex); every other shader stays 1.20.
+    bool glsl130 = false;
+    int max_varying_components = 0;  // GL_MAX_VARYING_COMPONENTS (GL_MAX_VARYING_FLOATS before 3.0)
     bool draw_buffers = false;       // ARB_draw_buffers (core in 2.0): MRT, §3.2
     int max_draw_buffers = 1;        // GL_MAX_DRAW_BUFFERS
     bool depth_texture = false;      // ARB_depth_texture: the depth-texture path, §3.3.2
