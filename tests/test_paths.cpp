@@ -278,9 +278,9 @@ TEST(Paths, TilesArePointsWherePointsAreLargeEnough) {
     EXPECT_FALSE(choose_paths(c, o).tile_points);  // a point that small would leave the tile's edge unlit
 }
 
-// The tiles' vertex fetch: auto takes it on a CPU rasteriser with GLSL 1.30, at as many lights a
-// pass as the varyings hold (8 components a light, at most 16), and the fragment fetch elsewhere:
-// on a GPU, without GLSL 1.30, with the groups plan, or where more lights a pass are asked for.
+// The tiles' vertex fetch: auto takes it where the GL has GLSL 1.30, at as many lights a pass as
+// the varyings hold (8 components a light, at most 16), and the fragment fetch elsewhere: without
+// GLSL 1.30, with the groups plan, or where more lights a pass are asked for.
 // Asked for where it cannot run, it is refused in one line.
 TEST(Paths, TilesFetchTheirLightsInTheVertexShaderWhereTheyCan) {
     ShaderOptions o;
@@ -310,21 +310,23 @@ TEST(Paths, TilesFetchTheirLightsInTheVertexShaderWhereTheyCan) {
     EXPECT_FALSE(choose_paths(c, o).refused.empty());
     o.tile_plan = TileGrouping::lists;
     o.tile_fetch = TileFetch::automatic;
-    c.software_rasterizer = false;
-    p = choose_paths(c, o);
-    EXPECT_FALSE(p.tile_fetch_vertex);
-    EXPECT_EQ(p.tile_lights, 8);  // a GPU's default
-    o.tile_fetch = TileFetch::vertex;
+    c.software_rasterizer = false;  // a GPU: the same
+    c.max_varying_components = 124;
     p = choose_paths(c, o);
     EXPECT_TRUE(p.tile_fetch_vertex && p.refused.empty()) << p.refused;
-    EXPECT_EQ(p.tile_lights, 16);
+    EXPECT_EQ(p.tile_lights, 15);
+    o.tile_fetch = TileFetch::fragment;
+    EXPECT_EQ(choose_paths(c, o).tile_lights, 8);  // a GPU's default without it
+    o.tile_fetch = TileFetch::vertex;
     c.glsl130 = false;
-    c.software_rasterizer = true;
     EXPECT_NE(choose_paths(c, o).refused.find("GLSL 1.30"), std::string::npos);
     o.tile_fetch = TileFetch::automatic;
-    p = choose_paths(c, o);
-    EXPECT_FALSE(p.tile_fetch_vertex);
-    EXPECT_EQ(p.tile_lights, 32);
+    for (bool sw : {true, false}) {
+        c.software_rasterizer = sw;
+        p = choose_paths(c, o);
+        EXPECT_FALSE(p.tile_fetch_vertex);
+        EXPECT_EQ(p.tile_lights, sw ? 32 : 8);
+    }
 }
 
 // Where a frame may hand the depth off (the geometries that test against the scene's depth, or the

@@ -135,8 +135,8 @@ std::vector<RenderOption> make_table() {
     add(integer_option("tile-size", 8, 512, &ShaderOptions::tile_size, true),
         "tiles: pixels per tile side; auto: 16 on a CPU rasteriser such as llvmpipe, else 32 (`dsr info` says which)");
     add(integer_option("tile-lights", 1, 32, &ShaderOptions::tile_lights, true),
-        "tiles: lights per pass; auto: with --tile-fetch vertex as many as the varyings hold (16 on llvmpipe), "
-        "else 32 on a CPU rasteriser, else 8");
+        "tiles: lights per pass; auto: with --tile-fetch vertex as many as the varyings hold (16 on llvmpipe, 15 "
+        "on an H100), else 32 on a CPU rasteriser, else 8");
     add(choice(
             "tile-plan", {"lists", "groups"},
             [](const RenderOptions& r) { return std::string(r.shader.tile_plan == TileGrouping::groups ? "groups" : "lists"); },
@@ -160,8 +160,8 @@ std::vector<RenderOption> make_table() {
             }),
         "tiles: where a tile's lights are read from the batch's arrays: once a tile, by the vertex shader, into flat "
         "varyings (GLSL 1.30; up to 16 lights a pass, a program for each count; batches of point lights of the "
-        "linear law or of one attenuation), or at every pixel, by the fragment shader; auto: vertex on a CPU "
-        "rasteriser, else fragment (the same image either way)");
+        "linear law or of one attenuation), or at every pixel, by the fragment shader; auto: vertex where the GL "
+        "has GLSL 1.30, else fragment (the same image either way)");
     add(switch_option("tile-depth", &ShaderOptions::tile_depth),
         "tiles: leave out each tile's lights whose sphere misses the depth span of its surfaces (needs float targets)");
     add(choice(

@@ -50,7 +50,7 @@ enum class TileShape { points, quads };
 // Where the tiles geometry reads a tile's lights out of the batch's uniform arrays
 // (Paths::tile_fetch_vertex): once a tile, in the vertex shader, handed on as flat varyings
 // (light_tiles_flat.vert, GLSL 1.30), or at every pixel, in the fragment shader (light_tiles.frag);
-// automatic: vertex on a CPU rasteriser where it can, else fragment.
+// automatic: vertex where the GL can (GLSL 1.30), else fragment.
 enum class TileFetch { automatic, vertex, fragment };
 
 // How the G-buffer's depth reaches P-buffer 0's depth buffer (depth_handoff.cpp): automatic picks

@@ -106,11 +106,13 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     // that read, its loop and the loop's masked last terms were a third of the light stage
     // (llvmpipe, 32-large at 800x600). Read once a tile by the vertex shader and handed on flat,
     // the lights cost the fragment shader a constant read, and each count of lights gets a program
-    // of its own with the lights' terms in a row (light_geometry_tiles.cpp).
+    // of its own with the lights' terms in a row (light_geometry_tiles.cpp). A GPU gained too (an
+    // H100 at 1920x1080: 1024-overlap's frame 5.2-5.6 against 6.2-6.4 ms, 32-large's 3.9-4.0
+    // against 4.3-4.7; docs/light_geometry.md).
     p.tile_vertex_lights = caps.glsl130 ? std::min(16, caps.max_varying_components / 8) : 0;
     const bool vertex_fetch = p.tile_vertex_lights > 0 && opts.tile_plan == TileGrouping::lists;
     p.tile_fetch_vertex = opts.tile_fetch == TileFetch::vertex ||
-                          (opts.tile_fetch == TileFetch::automatic && caps.software_rasterizer && vertex_fetch &&
+                          (opts.tile_fetch == TileFetch::automatic && vertex_fetch &&
                            (opts.tile_lights == 0 || opts.tile_lights <= p.tile_vertex_lights));
     p.tile_lights = opts.tile_lights                                  ? opts.tile_lights
                     : p.tile_fetch_vertex && p.tile_vertex_lights > 0 ? p.tile_vertex_lights
