@@ -268,7 +268,9 @@ TEST(LightGeometry, TilesOfOneLightPerPassMatchQuad) {
         const RenderResult eight = render_scene(s, kW, kH, o);
         expect_same("tiles_16x8_" + name, eight, quad);
         // One draw a layer; the vertex fetch draws a layer's tiles by their count of lights.
-        if (fetch == TileFetch::fragment) EXPECT_LT(eight.stats.light_passes, one.stats.light_passes);
+        if (fetch == TileFetch::fragment) {
+            EXPECT_LT(eight.stats.light_passes, one.stats.light_passes);
+        }
     }
 }
 
@@ -276,26 +278,32 @@ TEST(LightGeometry, TilesOfOneLightPerPassMatchQuad) {
 // hands them on flat, to a program for each count of lights. Quad's image with point lights of the
 // linear law (overlapping, at a size whose last row and column of tiles are partial, 3 lights a
 // pass so that tiles have several layers and counts; and with 16), and of one attenuation
-// (LearnOpenGL's 32); and where a batch does not qualify (one light's constants changed, a spot
-// light among point lights), which the fragment shader then draws, still with quad's image.
+// (LearnOpenGL's 32); where a batch does not qualify (one light's constants changed, a spot
+// light among point lights), which the fragment shader then draws, still with quad's image; and
+// in a frame of both (512 lights, four batches, one with the spot light).
 TEST(LightGeometry, TilesVertexFetchMatchesQuad) {
+    enum class Fetch { all_vertex, no_vertex, both };
     struct Case {
         std::string name;
         Scene scene;
         int w, h, per_pass;
-        bool vertex;  // every batch by the vertex fetch, else none
+        Fetch fetch;
     };
     Scene differs = large_lights_scene(32);
     differs.lights[5].kq *= 1.5f;
-    Scene spot = with_overlapping_lights(default_scene(), 64);
-    spot.lights[7].type = Light::Type::spot;
-    spot.lights[7].dir = glm::vec3(0, -1, 0);
+    auto with_spot = [](Scene s) {  // light 6: every 8th light, 7, 15, ..., is switched off
+        s.lights[6].type = Light::Type::spot;
+        s.lights[6].dir = glm::vec3(0, -1, 0);
+        s.lights[6].angle_deg = 80;
+        return s;
+    };
     const std::vector<Case> cases = {
-        {"linear_3", with_overlapping_lights(default_scene(), 64), 120, 100, 3, true},
-        {"linear_16", with_overlapping_lights(default_scene(), 64), 120, 100, 16, true},
-        {"shared_attenuation", large_lights_scene(32), kW, kH, 16, true},
-        {"attenuation_differs", differs, kW, kH, 16, false},
-        {"spot", spot, 120, 100, 16, false},
+        {"linear_3", with_overlapping_lights(default_scene(), 64), 120, 100, 3, Fetch::all_vertex},
+        {"linear_16", with_overlapping_lights(default_scene(), 64), 120, 100, 16, Fetch::all_vertex},
+        {"shared_attenuation", large_lights_scene(32), kW, kH, 16, Fetch::all_vertex},
+        {"attenuation_differs", differs, kW, kH, 16, Fetch::no_vertex},
+        {"spot", with_spot(with_overlapping_lights(default_scene(), 64)), 120, 100, 16, Fetch::no_vertex},
+        {"spot_of_512", with_spot(with_overlapping_lights(default_scene(), 512)), kW, kH, 16, Fetch::both},
     };
     for (const Case& k : cases) {
         const RenderResult quad = render_scene(k.scene, k.w, k.h, with_geometry(LightGeometry::quad));
@@ -306,10 +314,16 @@ TEST(LightGeometry, TilesVertexFetchMatchesQuad) {
         const RenderResult r = render_scene(k.scene, k.w, k.h, o);
         ASSERT_TRUE(r.paths.tile_fetch_vertex) << k.name;
         expect_same("tiles_vertex_" + k.name, r, quad);
-        if (k.vertex)
-            EXPECT_GE(r.stats.tile_vertex_batches, 1) << k.name;
-        else
+        if (k.fetch == Fetch::no_vertex)
             EXPECT_EQ(r.stats.tile_vertex_batches, 0) << k.name;
+        else
+            EXPECT_GE(r.stats.tile_vertex_batches, 1) << k.name;
+        if (k.fetch == Fetch::both) {
+            // The lights a batch holds (ShaderConfig::tile_batch), so the frame's batch count.
+            auto ctx = create_context(ContextDesc{"osmesa", 64, 64});
+            const int batch = shader_config(probe_caps(), o).tile_batch;
+            EXPECT_LT(r.stats.tile_vertex_batches, (r.stats.lights_drawn + batch - 1) / batch) << k.name;
+        }
     }
 }
 

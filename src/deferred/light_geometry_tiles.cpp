@@ -205,9 +205,23 @@ private:
             for (Program& p : form)
                 if (p.id()) begin_flat(p, f);
         glEnableClientState(GL_VERTEX_ARRAY);
+    }
+
+    // The uploaded batch's vertex arrays in its buffer: vertices of `stride` floats, the window
+    // position, then `vecs` vec4s in texture coordinates 2..; the arrays past those off, so that
+    // none left on by a batch of the other layout reads past this batch's buffer.
+    void vertex_arrays(int stride, int vecs) const {
+        const GLsizei bytes = GLsizei(stride * sizeof(float));
+        auto at = [](int fl) { return reinterpret_cast<const void*>(size_t(fl) * sizeof(float)); };  // buffer offsets
+        glVertexPointer(2, GL_FLOAT, bytes, at(0));
         for (int k = 0; k < std::max(id_vecs_, flat_vecs_); ++k) {
             glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
-            glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+            if (k < vecs) {
+                glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+                glTexCoordPointer(4, GL_FLOAT, bytes, at(kFixedFloats + 4 * k));
+            } else {
+                glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+            }
         }
     }
 
@@ -227,46 +241,62 @@ private:
     // merged from several tiles gives a point for each; a partial tile at the frame's edge stays a
     // quad, as a point with its centre outside the viewport would be clipped whole).
     void upload(const TileDraw* draws, size_t n_draws) {
-        const int ts = tile_size_;
-        auto whole = [&](const TileQuad& tq) {
-            return points_ && (tq.x1 - tq.x0) % ts == 0 && (tq.y1 - tq.y0) % ts == 0;
-        };
-        size_t verts = 0;
-        for (size_t di = 0; di < n_draws; ++di)
-            for (const TileQuad& tq : draws[di].quads)
-                verts += whole(tq) ? size_t((tq.x1 - tq.x0) / ts) * size_t((tq.y1 - tq.y0) / ts) : 4;
-        // A member, so its storage is reused: a fresh multi-megabyte vector each frame cost page
-        // faults (at 1920x1080 on llvmpipe, building these vertices took 1.5-2.9 ms a frame that way).
-        verts_.resize(verts * size_t(stride_));
+        begin_vertices(draws, n_draws, stride_);
         first_.assign(n_draws + 1, 0);
         points_at_.assign(n_draws, 0);
         float* out = verts_.data();
-        auto vertex_at = [&] { return size_t(out - verts_.data()) / size_t(stride_); };
         for (size_t di = 0; di < n_draws; ++di) {
             for (int pass = 0; pass < 2; ++pass) {  // the quads, then the points
-                if (pass == 1) points_at_[di] = vertex_at();
+                if (pass == 1) points_at_[di] = vertex_at(out, stride_);
                 for (const TileQuad& tq : draws[di].quads) {
                     if (whole(tq) != (pass == 1)) continue;
                     float ids[16];
                     auto slot = [&](size_t k) { return k < tq.slots.size() ? float(tq.slots[k]) : kNoLight; };
                     for (int j = 0; j < 4 * id_vecs_; ++j) ids[j] = slot(2 * size_t(j)) * 256.0f + slot(2 * size_t(j) + 1);
-                    auto emit = [&](float x, float y) {
-                        *out++ = x, *out++ = y;
-                        out = std::copy(ids, ids + 4 * id_vecs_, out);
-                    };
-                    if (pass == 1) {
-                        for (int y = tq.y0; y < tq.y1; y += ts)
-                            for (int x = tq.x0; x < tq.x1; x += ts) emit(float(x) + 0.5f * float(ts), float(y) + 0.5f * float(ts));
-                        continue;
-                    }
-                    const float xs[4] = {float(tq.x0), float(tq.x1), float(tq.x1), float(tq.x0)};
-                    const float ys[4] = {float(tq.y0), float(tq.y0), float(tq.y1), float(tq.y1)};
-                    for (int c = 0; c < 4; ++c) emit(xs[c], ys[c]);
+                    out = emit_tile(tq, ids, 4 * id_vecs_, out);
                 }
             }
-            first_[di + 1] = vertex_at();
+            first_[di + 1] = vertex_at(out, stride_);
         }
         buffers_.upload_next(verts_.data(), verts_.size() * sizeof(float));
+    }
+
+    // Whether a tile quad is drawn as points, one a tile: with points_, where it is whole tiles.
+    bool whole(const TileQuad& tq) const {
+        return points_ && (tq.x1 - tq.x0) % tile_size_ == 0 && (tq.y1 - tq.y0) % tile_size_ == 0;
+    }
+
+    // verts_ sized for the draws' vertices of `stride` floats. A member, so its storage is reused:
+    // a fresh multi-megabyte vector each frame cost page faults (at 1920x1080 on llvmpipe, building
+    // these vertices took 1.5-2.9 ms a frame that way).
+    void begin_vertices(const TileDraw* draws, size_t n_draws, int stride) {
+        const int ts = tile_size_;
+        size_t verts = 0;
+        for (size_t di = 0; di < n_draws; ++di)
+            for (const TileQuad& tq : draws[di].quads)
+                verts += whole(tq) ? size_t((tq.x1 - tq.x0) / ts) * size_t((tq.y1 - tq.y0) / ts) : 4;
+        verts_.resize(verts * size_t(stride));
+    }
+
+    size_t vertex_at(const float* out, int stride) const { return size_t(out - verts_.data()) / size_t(stride); }
+
+    // Tile quad tq's vertices at out, each its window position then the n floats `ids`: a point
+    // at the centre of each of its tiles (whole()), else its four corners. Returns the end.
+    float* emit_tile(const TileQuad& tq, const float* ids, int n, float* out) const {
+        auto emit = [&](float x, float y) {
+            *out++ = x, *out++ = y;
+            out = std::copy(ids, ids + n, out);
+        };
+        const int ts = tile_size_;
+        if (whole(tq)) {
+            for (int y = tq.y0; y < tq.y1; y += ts)
+                for (int x = tq.x0; x < tq.x1; x += ts) emit(float(x) + 0.5f * float(ts), float(y) + 0.5f * float(ts));
+            return out;
+        }
+        const float xs[4] = {float(tq.x0), float(tq.x1), float(tq.x1), float(tq.x0)};
+        const float ys[4] = {float(tq.y0), float(tq.y0), float(tq.y1), float(tq.y1)};
+        for (int c = 0; c < 4; ++c) emit(xs[c], ys[c]);
+        return out;
     }
 
     // The uploaded draws: the batch's lights into the uniform arrays (lighting.glsl's five vec4s
@@ -283,13 +313,7 @@ private:
         RenderState state = light_pass_state(prog.id(), false);
         if (points_) state.point_size = float(tile_size_);
         gl_state().apply(state);
-        const GLsizei bytes = GLsizei(stride_ * sizeof(float));
-        auto at = [](int fl) { return reinterpret_cast<const void*>(size_t(fl) * sizeof(float)); };  // buffer offsets
-        glVertexPointer(2, GL_FLOAT, bytes, at(0));
-        for (int k = 0; k < id_vecs_; ++k) {
-            glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
-            glTexCoordPointer(4, GL_FLOAT, bytes, at(kFixedFloats + 4 * k));
-        }
+        vertex_arrays(stride_, id_vecs_);
         arrays_.set(prog, LightArrays::kLight);
         if (shared) prog.set("att_shared", glm::vec3(f.lights[size_t(batch[0])].params.att));
         shadows_.set(prog);
@@ -323,41 +347,22 @@ private:
     // one a float (texture coordinates 2..); ranges_ in draw order, within a draw by count of
     // lights (a program each), quads then points (points_ as upload() makes them).
     void upload_flat(const TileDraw* draws, size_t n_draws) {
-        const int ts = tile_size_;
-        auto whole = [&](const TileQuad& tq) {
-            return points_ && (tq.x1 - tq.x0) % ts == 0 && (tq.y1 - tq.y0) % ts == 0;
-        };
-        size_t verts = 0;
-        for (size_t di = 0; di < n_draws; ++di)
-            for (const TileQuad& tq : draws[di].quads)
-                verts += whole(tq) ? size_t((tq.x1 - tq.x0) / ts) * size_t((tq.y1 - tq.y0) / ts) : 4;
-        verts_.resize(verts * size_t(flat_stride_));
+        begin_vertices(draws, n_draws, flat_stride_);
         ranges_.clear();
         float* out = verts_.data();
-        auto vertex_at = [&] { return size_t(out - verts_.data()) / size_t(flat_stride_); };
-        for (size_t di = 0; di < n_draws; ++di) {
-            for (int n = 1; n <= tile_lights_; ++n) {
+        for (size_t di = 0; di < n_draws; ++di)
+            for (int n = 1; n <= tile_lights_; ++n)
                 for (int pass = 0; pass < 2; ++pass) {  // the quads, then the points
-                    const size_t first = vertex_at();
+                    const size_t first = vertex_at(out, flat_stride_);
                     for (const TileQuad& tq : draws[di].quads) {
                         if (int(tq.slots.size()) != n || whole(tq) != (pass == 1)) continue;
-                        auto emit = [&](float x, float y) {
-                            *out++ = x, *out++ = y;
-                            for (int k = 0; k < 4 * flat_vecs_; ++k) *out++ = k < n ? float(tq.slots[size_t(k)]) : kNoLight;
-                        };
-                        if (pass == 1) {
-                            for (int y = tq.y0; y < tq.y1; y += ts)
-                                for (int x = tq.x0; x < tq.x1; x += ts) emit(float(x) + 0.5f * float(ts), float(y) + 0.5f * float(ts));
-                            continue;
-                        }
-                        const float xs[4] = {float(tq.x0), float(tq.x1), float(tq.x1), float(tq.x0)};
-                        const float ys[4] = {float(tq.y0), float(tq.y0), float(tq.y1), float(tq.y1)};
-                        for (int c = 0; c < 4; ++c) emit(xs[c], ys[c]);
+                        float ids[16];
+                        for (int k = 0; k < 4 * flat_vecs_; ++k) ids[k] = k < n ? float(tq.slots[size_t(k)]) : kNoLight;
+                        out = emit_tile(tq, ids, 4 * flat_vecs_, out);
                     }
-                    if (vertex_at() > first) ranges_.push_back({pass == 1 ? GLenum(GL_POINTS) : GLenum(GL_QUADS), first, vertex_at() - first, n});
+                    const size_t end = vertex_at(out, flat_stride_);
+                    if (end > first) ranges_.push_back({pass == 1 ? GLenum(GL_POINTS) : GLenum(GL_QUADS), first, end - first, n});
                 }
-            }
-        }
         buffers_.upload_next(verts_.data(), verts_.size() * sizeof(float));
     }
 
@@ -368,13 +373,7 @@ private:
         for (int i : batch) arrays_.add(f.lights[size_t(i)].params);
         if (form == 1) ++stats.tile_att_shared_batches;
         ++stats.tile_vertex_batches;
-        const GLsizei bytes = GLsizei(flat_stride_ * sizeof(float));
-        auto at = [](int fl) { return reinterpret_cast<const void*>(size_t(fl) * sizeof(float)); };  // buffer offsets
-        glVertexPointer(2, GL_FLOAT, bytes, at(0));
-        for (int k = 0; k < flat_vecs_; ++k) {
-            glClientActiveTexture(GLenum(GL_TEXTURE2 + k));
-            glTexCoordPointer(4, GL_FLOAT, bytes, at(kFixedFloats + 4 * k));
-        }
+        vertex_arrays(flat_stride_, flat_vecs_);
         int bound = 0;
         for (const FlatRange& r : ranges_) {
             if (r.lights != bound) {
