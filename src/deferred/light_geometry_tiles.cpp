@@ -39,9 +39,18 @@ namespace {
 constexpr float kNoLight = 255.0f;  // an empty slot; batch indices stay below it
 
 // A tile quad's vertex, as floats: window position (2), then id_vecs vec4s of packed light slots
-// (pairs: slot[2j] * 256 + slot[2j + 1]) in texture coordinates 2... The shader takes the G-buffer
+// (pairs: slot[2j] * 256 + slot[2j + 1]), or with the vertex fetch flat_vecs vec4s of slots one a
+// float, in texture coordinates 2... The shader takes the G-buffer
 // coordinates and the view ray from gl_FragCoord (the ray as light.frag does).
 constexpr int kFixedFloats = 2;
+
+// A run of a batch's uploaded vertices that one glDrawArrays takes (TilesGeometry::upload): lights,
+// with the vertex fetch, the count of lights its program takes (0: the batch's one program).
+struct TileRange {
+    GLenum mode;
+    size_t first, count;
+    int lights;
+};
 
 // Wall-clock milliseconds of f(): the tiles' two timings (FrameStats::tile_depth_ms, tile_plan_ms).
 template <class F>
@@ -149,7 +158,7 @@ public:
             TilePlan plan;
             plan_ms += wall_ms([&] { plan = plan_tile_groups(rects, f.width, f.height, tile_size_, tile_lights_, cull, cut, shadow_slots_); });
             for (const TileDraw& d : plan.draws) {
-                plan_ms += wall_ms([&] { upload(&d, 1); });
+                plan_ms += wall_ms([&] { upload(&d, 1, false); });
                 draw_batch(f, plan.batches[size_t(d.batch)], q, stats);
             }
             stats.tile_light_pairs = plan.tile_light_pairs;
@@ -168,10 +177,7 @@ public:
                 plan_ms += wall_ms([&] {
                     draws_.clear();
                     stats.tile_light_pairs += planner->plan_batch(b, draws_);
-                    if (flat >= 0)
-                        upload_flat(draws_.data(), draws_.size());
-                    else
-                        upload(draws_.data(), draws_.size());
+                    upload(draws_.data(), draws_.size(), flat >= 0);
                 });
                 if (flat >= 0)
                     draw_flat(f, batch, flat, q, stats);
@@ -235,29 +241,34 @@ private:
         StreamBuffer::unbind();
     }
 
-    // A batch's draws as vertices into a buffer object of its own (StreamBuffers), left bound. Draw
-    // d's vertices are first_[d] .. first_[d + 1]: quads (four vertices each) from first_[d], then,
-    // with points_, from points_at_[d] one vertex a whole tile, at its centre (a quad the plan
-    // merged from several tiles gives a point for each; a partial tile at the frame's edge stays a
-    // quad, as a point with its centre outside the viewport would be clipped whole).
-    void upload(const TileDraw* draws, size_t n_draws) {
-        begin_vertices(draws, n_draws, stride_);
-        first_.assign(n_draws + 1, 0);
-        points_at_.assign(n_draws, 0);
+    // A batch's draws as vertices into a buffer object of its own (StreamBuffers), left bound, and
+    // ranges_, the runs of vertices each glDrawArrays takes, in draw order: within a draw, quads
+    // (four vertices each), then, with points_, one vertex a whole tile at its centre (a quad the
+    // plan merged from several tiles gives a point for each; a partial tile at the frame's edge
+    // stays a quad, as a point with its centre outside the viewport would be clipped whole). With
+    // the vertex fetch (flat) the slots go one a float and a draw's tiles are split by their count
+    // of lights, a program each; else two a float (hi * 256 + lo), all in one range of each shape.
+    void upload(const TileDraw* draws, size_t n_draws, bool flat) {
+        const int stride = flat ? flat_stride_ : stride_;
+        const int n_ids = 4 * (flat ? flat_vecs_ : id_vecs_);
+        begin_vertices(draws, n_draws, stride);
+        ranges_.clear();
         float* out = verts_.data();
-        for (size_t di = 0; di < n_draws; ++di) {
-            for (int pass = 0; pass < 2; ++pass) {  // the quads, then the points
-                if (pass == 1) points_at_[di] = vertex_at(out, stride_);
-                for (const TileQuad& tq : draws[di].quads) {
-                    if (whole(tq) != (pass == 1)) continue;
-                    float ids[16];
-                    auto slot = [&](size_t k) { return k < tq.slots.size() ? float(tq.slots[k]) : kNoLight; };
-                    for (int j = 0; j < 4 * id_vecs_; ++j) ids[j] = slot(2 * size_t(j)) * 256.0f + slot(2 * size_t(j) + 1);
-                    out = emit_tile(tq, ids, 4 * id_vecs_, out);
+        for (size_t di = 0; di < n_draws; ++di)
+            for (int n = flat ? 1 : 0; n <= (flat ? tile_lights_ : 0); ++n)
+                for (int pass = 0; pass < 2; ++pass) {  // the quads, then the points
+                    const size_t first = vertex_at(out, stride);
+                    for (const TileQuad& tq : draws[di].quads) {
+                        if ((flat && int(tq.slots.size()) != n) || whole(tq) != (pass == 1)) continue;
+                        float ids[16];
+                        auto slot = [&](size_t k) { return k < tq.slots.size() ? float(tq.slots[k]) : kNoLight; };
+                        for (int j = 0; j < n_ids; ++j)
+                            ids[j] = flat ? slot(size_t(j)) : slot(2 * size_t(j)) * 256.0f + slot(2 * size_t(j) + 1);
+                        out = emit_tile(tq, ids, n_ids, out);
+                    }
+                    const size_t end = vertex_at(out, stride);
+                    if (end > first) ranges_.push_back({pass == 1 ? GLenum(GL_POINTS) : GLenum(GL_QUADS), first, end - first, n});
                 }
-            }
-            first_[di + 1] = vertex_at(out, stride_);
-        }
         buffers_.upload_next(verts_.data(), verts_.size() * sizeof(float));
     }
 
@@ -300,7 +311,7 @@ private:
     }
 
     // The uploaded draws: the batch's lights into the uniform arrays (lighting.glsl's five vec4s
-    // per light, one array each), then one draw per layer, each counted.
+    // per light, one array each), then each uploaded range, quads and points of each layer.
     void draw_batch(const FrameDef& f, const std::vector<int>& batch, LightQueries& q, FrameStats& stats) {
         // A batch with shadow maps: each light's slot among them in lightspot.z (-1: none).
         Program* form = &load_batch(f, batch, arrays_, shadows_, progs_, stats);
@@ -318,15 +329,7 @@ private:
         if (shared) prog.set("att_shared", glm::vec3(f.lights[size_t(batch[0])].params.att));
         shadows_.set(prog);
         if (groups_) prog.set("light_count", arrays_.size());
-        const size_t n_draws = first_.size() - 1;
-        for (size_t di = 0; di < n_draws; ++di) {
-            const size_t quads = points_at_[di] - first_[di], points = first_[di + 1] - points_at_[di];
-            q.begin();
-            if (quads > 0) glDrawArrays(GL_QUADS, GLint(first_[di]), GLsizei(quads));
-            if (points > 0) glDrawArrays(GL_POINTS, GLint(points_at_[di]), GLsizei(points));
-            q.end();
-            stats.light_passes += int(quads > 0) + int(points > 0);
-        }
+        for (const TileRange& r : ranges_) draw_range(r, q, stats);
         shadows_.unbind();
     }
 
@@ -343,29 +346,6 @@ private:
         return -1;
     }
 
-    // A batch's draws for the vertex fetch: each vertex the window position and its tile's slots,
-    // one a float (texture coordinates 2..); ranges_ in draw order, within a draw by count of
-    // lights (a program each), quads then points (points_ as upload() makes them).
-    void upload_flat(const TileDraw* draws, size_t n_draws) {
-        begin_vertices(draws, n_draws, flat_stride_);
-        ranges_.clear();
-        float* out = verts_.data();
-        for (size_t di = 0; di < n_draws; ++di)
-            for (int n = 1; n <= tile_lights_; ++n)
-                for (int pass = 0; pass < 2; ++pass) {  // the quads, then the points
-                    const size_t first = vertex_at(out, flat_stride_);
-                    for (const TileQuad& tq : draws[di].quads) {
-                        if (int(tq.slots.size()) != n || whole(tq) != (pass == 1)) continue;
-                        float ids[16];
-                        for (int k = 0; k < 4 * flat_vecs_; ++k) ids[k] = k < n ? float(tq.slots[size_t(k)]) : kNoLight;
-                        out = emit_tile(tq, ids, 4 * flat_vecs_, out);
-                    }
-                    const size_t end = vertex_at(out, flat_stride_);
-                    if (end > first) ranges_.push_back({pass == 1 ? GLenum(GL_POINTS) : GLenum(GL_QUADS), first, end - first, n});
-                }
-        buffers_.upload_next(verts_.data(), verts_.size() * sizeof(float));
-    }
-
     // The uploaded ranges, each by the form's program for its count of lights, the batch's lights
     // in its arrays (position and colour are all it reads; att_shared for the attenuation law).
     void draw_flat(const FrameDef& f, const std::vector<int>& batch, int form, LightQueries& q, FrameStats& stats) {
@@ -375,7 +355,7 @@ private:
         ++stats.tile_vertex_batches;
         vertex_arrays(flat_stride_, flat_vecs_);
         int bound = 0;
-        for (const FlatRange& r : ranges_) {
+        for (const TileRange& r : ranges_) {
             if (r.lights != bound) {
                 Program& prog = flat_program(f, form, r.lights);
                 RenderState state = light_pass_state(prog.id(), false);
@@ -385,11 +365,16 @@ private:
                 if (form == 1) prog.set("att_shared", glm::vec3(f.lights[size_t(batch[0])].params.att));
                 bound = r.lights;
             }
-            q.begin();
-            glDrawArrays(r.mode, GLint(r.first), GLsizei(r.count));
-            q.end();
-            ++stats.light_passes;
+            draw_range(r, q, stats);
         }
+    }
+
+    // One range of the uploaded vertices, counted.
+    static void draw_range(const TileRange& r, LightQueries& q, FrameStats& stats) {
+        q.begin();
+        glDrawArrays(r.mode, GLint(r.first), GLsizei(r.count));
+        q.end();
+        ++stats.light_passes;
     }
 
     // The form's program for `lights` lights: the table's for tile_lights, the others built on
@@ -449,19 +434,13 @@ private:
     // Kept between frames for their storage only.
     StreamBuffers buffers_;  // one per batch of a frame
     std::vector<float> verts_;
-    std::vector<size_t> first_, points_at_;  // upload(): each draw's first vertex, and its first point
     std::vector<TileDraw> draws_;
     LightArrays arrays_;
-    // The vertex fetch: its programs by form (linear, shared attenuation) and count of lights
-    // (index 0 unused), and a batch's ranges of vertices, each drawn by one of them.
-    struct FlatRange {
-        GLenum mode;
-        size_t first, count;
-        int lights;
-    };
+    std::vector<TileRange> ranges_;  // upload()'s
+    // The vertex fetch's programs by form (linear, shared attenuation) and count of lights (index
+    // 0 unused).
     std::unique_ptr<ProgramSources> flat_sources_;
     std::array<std::array<Program, SlotList::kCapacity + 1>, 2> flat_;
-    std::vector<FlatRange> ranges_;
 };
 
 }  // namespace
