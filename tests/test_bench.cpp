@@ -546,6 +546,33 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
         EXPECT_EQ(t, "tiles >= 3x faster than quad on 1024-overlap: 9.00 ms / 2.00 ms = 4.50x -> met; round by round "
                      "2.00-4.50, held in 2 of 3 rounds") << t;
     }
+    {
+        // With the scene's screen row and the light stages' ms, how far the goal could go follows:
+        // the screen's 52.2 ms less 2 passes' floor (2 x 0.1 ms at 0.5 ns a pixel over 200000) over
+        // 1024 x 200000 evaluations is 0.25 ns each (52.0 / 204.8 M); the tiles' frame outside its
+        // light stage 0.5 ms, plus one pass's floor 0.1, plus 4 M ideal pairs at that cost (1.015625
+        // ms) is 1.615625 ms, and quad's 9 ms is 5.57x that; the tiles' 1.5 ms is 1.34x 1.115625.
+        std::vector<bench::Row> est = rows;
+        bench::Row screen = geo(deferred_row("default-overlap", 1024, 60.0, 100, 100), LightGeometry::screen, 100, 0);
+        screen.lights_label = "1024-overlap";
+        screen.w = 500, screen.h = 400;
+        screen.lights_ms = 52.2;
+        screen.floor_light_ns = 0.5;
+        screen.light_passes = 2;
+        est.push_back(screen);
+        est[4].lights_ms = 1.5;
+        est[4].ideal_fragments = 4000000;
+        const std::vector<std::string> e = bench::geometry_goals(est, "default", 3);
+        ASSERT_EQ(e.size(), 13u) << e[4];
+        EXPECT_EQ(e[2], g[2]);
+        EXPECT_EQ(e[3], "  (information: the screen row's light stage 52.20 ms less 2 x its per-pixel floor (0.50 ns a "
+                        "pixel: 0.20 ms) over 1024 x 200000 evaluations is 0.25 ns each; the tiles row's frame outside "
+                        "its light stage 0.50 ms plus one pass's floor (0.10 ms) plus 4000000 ideal pairs at that cost "
+                        "(1.02 ms) is 1.62 ms, and quad 5.57x slower than that; the tiles row's light stage is 1.50 ms, "
+                        "1.34x that ideal's 1.12 ms)");
+        est[4].lights_ms.reset();  // without the tiles' light stage, no estimate
+        EXPECT_EQ(bench::geometry_goals(est, "default", 3).size(), 12u);
+    }
     EXPECT_EQ(g[3], "dsr's default >= 3x faster than screen (LearnOpenGL's lighting pass) on 32-large: not measured "
                     "in this run");
     EXPECT_NE(g[4].find("largest 2 LSB"), std::string::npos) << g[4];

@@ -2,6 +2,7 @@
 #include "analysis/bench_goals.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "analysis/number_format.h"
 #include "dsr_error.h"
@@ -159,6 +160,46 @@ Figure stencil(const Goal& g, const GoalInput& in) {
                   over(*s->light_invocations, *s->ideal_fragments));
 }
 
+// A row's frame with its light stage replaced by the ideal: one light pass's per-pixel floor over
+// the frame (the floor's (b): the G-buffer reads every light pass pays at a pixel before its first
+// light) and the ideal pixel-light pairs at the screen row's cost per evaluation, that floor taken
+// out of it (its light stage less (b) per pixel of each of its passes, over lights x pixels). An
+// estimate, not a bound: the light shader's own set-up at a pixel (position, normal, view vector)
+// costs more than (b), and a loop over fewer lights a pixel pays it over fewer evaluations
+// (32-large on llvmpipe: the screen shader with its light loop removed took 13 ns a pixel, (b) 5.7).
+struct IdealFrame {
+    std::string per_eval;  // how the cost per evaluation was found, for the line
+    double fixed_ms = 0, pass_floor_ms = 0, pairs_ms = 0;
+    double light_stage() const { return pass_floor_ms + pairs_ms; }
+    double frame() const { return fixed_ms + light_stage(); }
+};
+std::optional<IdealFrame> ideal_frame(const Row& s, int n, const Row& d) {
+    if (!s.lights_ms || !d.lights_ms || !d.ideal_fragments || n <= 0) return std::nullopt;
+    const double px = double(s.w) * s.h;
+    const double floor_ns = s.floor_light_ns.value_or(0.0);
+    IdealFrame f;
+    f.pass_floor_ms = floor_ns * px * 1e-6;
+    const int passes = std::max(1, s.light_passes.value_or(1));
+    const double per_eval_ns = std::max(0.0, *s.lights_ms - passes * f.pass_floor_ms) * 1e6 / (double(n) * px);
+    f.fixed_ms = d.ms_median - *d.lights_ms;
+    f.pairs_ms = double(*d.ideal_fragments) * per_eval_ns * 1e-6;
+    const std::string floor_text =
+        s.floor_light_ns ? " less " + std::to_string(passes) + " x its per-pixel floor (" + format_number("%.2f", floor_ns) +
+                               " ns a pixel: " + ms(passes * f.pass_floor_ms) + ")"
+                         : " (no floor measured)";
+    f.per_eval = "the screen row's light stage " + ms(*s.lights_ms) + floor_text + " over " + std::to_string(n) +
+                 " x " + std::to_string(s.w * s.h) + " evaluations is " + format_number("%.2f", per_eval_ns) + " ns each";
+    return f;
+}
+
+// "frame outside its light stage ... plus ... ideal pairs at that cost (...) is X ms": the sum
+// ideal_frame makes, in words, for the row `who`.
+std::string ideal_sum(const IdealFrame& f, const Row& d, const std::string& who) {
+    return who + "'s frame outside its light stage " + ms(f.fixed_ms) + " plus one pass's floor (" + ms(f.pass_floor_ms) +
+           ") plus " + std::to_string(*d.ideal_fragments) + " ideal pairs at that cost (" + ms(f.pairs_ms) + ") is " +
+           ms(f.frame());
+}
+
 // Tiles against quad on the scene the light generators name by the goal's --lights entry
 // (bench_scenes.h), whichever scene carries it.
 Figure tiles(const Goal& g, const GoalInput& in) {
@@ -174,6 +215,15 @@ Figure tiles(const Goal& g, const GoalInput& in) {
                       ms(tq->ms_median) + " / " + ms(tt->ms_median) + " = " +
                           format_number("%.2f", tq->ms_median / tt->ms_median) + "x");
     f.after = per_round(g, tq->frames_ms, tt->frames_ms);
+    // How far the goal could go on this GL: quad over the tiles row's ideal frame, at the cost per
+    // evaluation of the scene's screen row (every light at every pixel, the same arithmetic).
+    const Row* s = find_geometry_row(in.rows, tt->scene, tt->lights, LightGeometry::screen);
+    if (const std::optional<IdealFrame> e = s ? ideal_frame(*s, tt->lights, *tt) : std::nullopt)
+        f.info.push_back("(information: " + e->per_eval + "; " + ideal_sum(*e, *tt, "the tiles row") + ", and quad " +
+                         format_number("%.2f", tq->ms_median / e->frame()) +
+                         "x slower than that; the tiles row's light stage is " + ms(*tt->lights_ms) + ", " +
+                         format_number("%.2f", *tt->lights_ms / e->light_stage()) + "x that ideal's " +
+                         ms(e->light_stage()) + ")");
     return f;
 }
 
@@ -231,40 +281,21 @@ std::string forward_bound(const std::vector<Row>& rows, const std::string& label
     return s + ")";
 }
 
-// How far the demo goal could go on this GL: the default row's frame with its light stage replaced
-// by one light pass's per-pixel floor over the frame (the floor's (b): the G-buffer reads every
-// light pass pays at a pixel before its first light) and the ideal pixel-light pairs at the screen
-// row's cost per evaluation, that floor taken out of it (its light stage less (b) per pixel of each
-// of its passes, over lights x pixels), and the screen row over that. An estimate, not a bound: the
-// light shader's own set-up at a pixel (position, normal, view vector) costs more than (b), and a
-// loop over fewer lights a pixel pays it over fewer evaluations (32-large on llvmpipe: the screen
-// shader with its light loop removed took 13 ns a pixel, (b) 5.7).
+// How far the demo goal could go on this GL: the default row's ideal frame (ideal_frame), and the
+// screen row over it.
 std::string demo_estimate(const std::vector<Row>& rows, const std::string& on) {
     std::string scene;
     int n = 0;
     if (!variant_of(rows, on, scene, n)) return "";
     const Row* s = find_geometry_row(rows, scene, n, LightGeometry::screen);
     const Row* d = find_default_row(rows, scene, n);
-    if (!s || !d || !s->lights_ms || !d->lights_ms || !d->ideal_fragments || n <= 0) return "";
-    const double px = double(s->w) * s->h;
-    const double floor_ns = s->floor_light_ns.value_or(0.0);
-    const double pass_floor_ms = floor_ns * px * 1e-6;
-    const int passes = std::max(1, s->light_passes.value_or(1));
-    const double per_eval_ns = std::max(0.0, *s->lights_ms - passes * pass_floor_ms) * 1e6 / (double(n) * px);
-    const double fixed = d->ms_median - *d->lights_ms;
-    const double ideal_lights = double(*d->ideal_fragments) * per_eval_ns * 1e-6;
-    const double ideal = pass_floor_ms + ideal_lights;
-    const std::string floor_text =
-        s->floor_light_ns ? " less " + std::to_string(passes) + " x its per-pixel floor (" + format_number("%.2f", floor_ns) +
-                                " ns a pixel: " + ms(passes * pass_floor_ms) + ")"
-                          : " (no floor measured)";
-    return "(information: the screen row's light stage " + ms(*s->lights_ms) + floor_text + " over " + std::to_string(n) +
-           " x " + std::to_string(s->w * s->h) + " evaluations is " + format_number("%.2f", per_eval_ns) +
-           " ns each; the default row's frame outside its light stage " + ms(fixed) + " plus one pass's floor (" +
-           ms(pass_floor_ms) + ") plus " + std::to_string(*d->ideal_fragments) + " ideal pairs at that cost (" +
-           ms(ideal_lights) + ") is " + ms(fixed + ideal) + ", " + format_number("%.2f", s->ms_median / (fixed + ideal)) +
-           "x faster than screen; the default row's light stage is " + ms(*d->lights_ms) + ", " +
-           format_number("%.2f", *d->lights_ms / ideal) + "x that ideal's " + ms(ideal) + ")";
+    if (!s || !d) return "";
+    const std::optional<IdealFrame> f = ideal_frame(*s, n, *d);
+    if (!f) return "";
+    return "(information: " + f->per_eval + "; " + ideal_sum(*f, *d, "the default row") + ", " +
+           format_number("%.2f", s->ms_median / f->frame()) + "x faster than screen; the default row's light stage is " +
+           ms(*d->lights_ms) + ", " + format_number("%.2f", *d->lights_ms / f->light_stage()) + "x that ideal's " +
+           ms(f->light_stage()) + ")";
 }
 
 // dsr's default (find_default_row: auto, else quad) against the screen geometry, LearnOpenGL's
