@@ -49,7 +49,7 @@ private:
     GLint location(const char* name);
     GLuint id_ = 0;
     std::string name_;
-    std::map<std::string, GLint> locations_;
+    std::map<std::string, GLint, std::less<>> locations_;  // less<>: found by a const char* without a string made
 };
 
 }  // namespace dsr
