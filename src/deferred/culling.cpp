@@ -31,12 +31,11 @@ std::array<Plane, 6> frustum_planes(const glm::mat4& m) {
 }
 
 bool sphere_outside(const std::array<Plane, 6>& planes, glm::vec3 center, float radius) {
-    const glm::dvec3 c(center);
-    for (const Plane& p : planes) {
-        const double dist = glm::dot(glm::dvec3(p.n), c) + p.d;  // xyz only (docs/errata.md #6)
-        if (dist < -(double)radius) return true;
-    }
-    return false;
+    return FrustumTest(planes).sphere_outside(center, radius);
+}
+
+FrustumTest::FrustumTest(const std::array<Plane, 6>& planes) {
+    for (size_t i = 0; i < planes.size(); ++i) planes_[i] = glm::dvec4(glm::dvec3(planes[i].n), double(planes[i].d));
 }
 
 }  // namespace dsr

@@ -32,6 +32,7 @@ namespace {
 // lights whose rectangle is empty dropped.
 void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_empty, bool shadows) {
     const auto frustum = frustum_planes(f.proj * f.view);
+    const FrustumTest in_frustum(frustum);
     const int w = f.width, h = f.height;
     const EyeTransform eye_of(f.camera);
     f.lights.reserve(lights.size());
@@ -43,7 +44,8 @@ void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_emp
     for (size_t i = 0; i < lights.size(); ++i) {
         const Light& light = lights[i];
         const LightVolume volume = light_volume(light);
-        if (volume_outside(frustum, volume)) {
+        if (volume.kind == LightVolume::Kind::sphere ? in_frustum.sphere_outside(volume.pos, volume.radius)
+                                                     : volume_outside(frustum, volume)) {
             ++f.lights_culled;
             continue;
         }
