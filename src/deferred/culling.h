@@ -1,6 +1,7 @@
 // Light frustum culling (§3.4.3, Listing 17 lines 11-20) as pure math.
 #pragma once
 #include <array>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -34,6 +35,22 @@ public:
         const glm::dvec3 c(center);
         for (const glm::dvec4& p : planes_)  // xyz only (docs/errata.md #6)
             if (glm::dot(glm::dvec3(p), c) + p.w < -double(radius)) return true;
+        return false;
+    }
+
+    // Whether every point lies outside one and the same plane (distance < 0): a convex hull of
+    // them is then outside the frustum (light_volume.h volume_outside's mesh test). False for none.
+    bool all_outside_one_plane(const std::vector<glm::dvec3>& points) const {
+        if (points.empty()) return false;
+        for (const glm::dvec4& p : planes_) {
+            bool all_out = true;
+            for (const glm::dvec3& q : points)
+                if (glm::dot(glm::dvec3(p), q) + p.w >= 0) {
+                    all_out = false;
+                    break;
+                }
+            if (all_out) return true;
+        }
         return false;
     }
 

@@ -31,8 +31,7 @@ namespace {
 // survive culling, then their rectangles (the spheres' all at once, light_scissors), then the
 // lights whose rectangle is empty dropped.
 void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_empty, bool shadows) {
-    const auto frustum = frustum_planes(f.proj * f.view);
-    const FrustumTest in_frustum(frustum);
+    const FrustumTest in_frustum(frustum_planes(f.proj * f.view));
     const int w = f.width, h = f.height;
     const EyeTransform eye_of(f.camera);
     f.lights.reserve(lights.size());
@@ -44,8 +43,7 @@ void visible_lights(FrameDef& f, const std::vector<Light>& lights, bool skip_emp
     for (size_t i = 0; i < lights.size(); ++i) {
         const Light& light = lights[i];
         const LightVolume volume = light_volume(light);
-        if (volume.kind == LightVolume::Kind::sphere ? in_frustum.sphere_outside(volume.pos, volume.radius)
-                                                     : volume_outside(frustum, volume)) {
+        if (volume_outside(in_frustum, volume)) {
             ++f.lights_culled;
             continue;
         }

@@ -220,22 +220,16 @@ BoundingSphere bounding_sphere(const LightVolume& v) {
     return {glm::vec3(apex + along * w), float(radius * (1.0 + 1e-6))};
 }
 
-bool volume_outside(const std::array<Plane, 6>& planes, const LightVolume& v) {
+bool volume_outside(const FrustumTest& frustum, const LightVolume& v) {
     if (v.kind == LightVolume::Kind::full_screen) return false;
-    if (v.kind == LightVolume::Kind::sphere) return sphere_outside(planes, v.pos, v.radius);
+    if (v.kind == LightVolume::Kind::sphere) return frustum.sphere_outside(v.pos, v.radius);
     const BoundingSphere b = bounding_sphere(v);
-    if (sphere_outside(planes, b.centre, b.radius)) return true;
-    const DMesh m = make_mesh(v, kBoundSegments);
-    for (const Plane& p : planes) {
-        bool all_out = !m.v.empty();
-        for (const glm::dvec3& q : m.v)
-            if (glm::dot(glm::dvec3(p.n), q) + double(p.d) >= 0) {
-                all_out = false;
-                break;
-            }
-        if (all_out) return true;
-    }
-    return false;
+    if (frustum.sphere_outside(b.centre, b.radius)) return true;
+    return frustum.all_outside_one_plane(make_mesh(v, kBoundSegments).v);
+}
+
+bool volume_outside(const std::array<Plane, 6>& planes, const LightVolume& v) {
+    return volume_outside(FrustumTest(planes), v);
 }
 
 ScissorRect volume_scissor(const LightVolume& v, float p00, float p11, float near_plane, int width, int height) {

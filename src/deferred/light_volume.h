@@ -64,6 +64,8 @@ bool volume_reaches(const LightVolume& v, glm::vec3 centre, float radius);
 // wholly outside one plane; full_screen is never outside. Conservative: never true for a volume
 // that reaches inside the frustum.
 bool volume_outside(const std::array<Plane, 6>& planes, const LightVolume& v);
+// The same against planes widened once (culling.h FrustumTest), for a loop over many lights.
+bool volume_outside(const FrustumTest& frustum, const LightVolume& v);
 
 // The scissor rectangle of a volume given in EYE space (transformed(v, view)), same conventions as
 // light_scissor (scissor.h): the pixels that can hold a visible surface point of the volume,

@@ -238,7 +238,7 @@ ForwardStats ForwardRenderer::render(const Scene& scene) {
 
     // Lights in eye space (Listing 2 works in view space); lights whose volume is outside the
     // frustum dropped (Listing 17's test: conservative, so no visible pixel loses light).
-    const auto frustum = frustum_planes(proj * view_);
+    const FrustumTest frustum(frustum_planes(proj * view_));
     light_params_.assign(scene.lights.size(), LightParams{});
     light_visible_.assign(scene.lights.size(), 0);
     for (size_t i = 0; i < scene.lights.size(); ++i) {
