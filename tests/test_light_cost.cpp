@@ -2,6 +2,7 @@
 // assignment of paths to lights, the tiles' cover against a tile-by-tile check, the calibration.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -254,6 +255,8 @@ TEST(LightCost, CalibrationFollowsTheMeasuredRatio) {
     for (int i = 0; i < 20; ++i) c.add(LightPath::tiles, 3.0, 1.0);
     EXPECT_NEAR(c.scale()[2], 3.0, 1e-3);
     EXPECT_EQ(c.scale()[0], 1.0);  // paths not measured keep their scale
+    EXPECT_TRUE(c.measured(LightPath::tiles));
+    EXPECT_FALSE(c.measured(LightPath::quad));
     c.add(LightPath::quad, 100.0, 1.0);
     EXPECT_EQ(c.scale()[0], 10.0);  // clamped
     c.add(LightPath::volume, 1.0, 0.0);  // nothing predicted: no information
@@ -262,10 +265,75 @@ TEST(LightCost, CalibrationFollowsTheMeasuredRatio) {
     EXPECT_EQ(c.scale()[1], 4.0);
     // Starting scales given (DSR_LIGHT_COST_SCALE) are not a guess: averaged with from the first.
     LightCostCalibration given({1, 1000, 2});
+    EXPECT_TRUE(given.measured(LightPath::quad));
     given.add(LightPath::tiles, 4.0, 1.0);
     EXPECT_EQ(given.scale()[2], 3.0);
     given.add(LightPath::volume, 1.0, 1.0);
     EXPECT_EQ(given.scale()[1], 10.0);  // 500.5, clamped
+}
+
+// exploration_plan against its definition, over random frames: of the paths to explore that the
+// best plan does not draw, each light moved to the path where it can take it; the cheapest such
+// plan, where within explore_within of the best, else none.
+TEST(LightCost, ExplorationIsTheCheapestUnmeasuredPathWithinItsFactor) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(0, 1);
+    const LightCostModel m = test_model();
+    const double screen_px = 256.0 * 256.0;
+    int explored = 0, declined = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        const int n = 1 + trial % 9;
+        LightPrices raw(static_cast<size_t>(n));
+        for (auto& r : raw)
+            for (int k = 0; k < kLightPaths; ++k) r[size_t(k)] = u(rng) < 0.15 ? std::numeric_limits<double>::infinity() : 3 * u(rng);
+        const std::array<double, kLightPaths> scale{0.5 + u(rng), 0.5 + u(rng), 0.5 + u(rng)};
+        const std::array<bool, kLightPaths> explore{u(rng) < 0.6, u(rng) < 0.6, u(rng) < 0.6};
+        const LightPathPlan best = choose_light_paths(raw, screen_px, m, scale, {true, true, true}, trial % 2 == 0);
+        if (!(best.predicted_total_ms < std::numeric_limits<double>::infinity())) continue;
+        const std::optional<LightExploration> e = exploration_plan(raw, best, screen_px, m, scale, explore, trial % 2 == 0);
+        // The definition, path by path.
+        int want = -1;
+        double want_total = 0;
+        std::vector<LightPath> want_paths;
+        for (int k = 0; k < kLightPaths; ++k) {
+            if (!explore[size_t(k)] || best.count[size_t(k)] > 0) continue;
+            std::vector<LightPath> paths = best.path;
+            bool used[3] = {false, false, false}, any = false;
+            double t = 0;
+            for (size_t i = 0; i < raw.size(); ++i) {
+                if (std::isfinite(raw[i][size_t(k)])) paths[i] = LightPath(k), any = true;
+                t += raw[i][size_t(paths[i])] * scale[size_t(paths[i])];
+                used[int(paths[i])] = true;
+            }
+            if (!any) continue;
+            t += m.path_ms * (int(used[0]) + int(used[1]) + int(used[2]));
+            if (used[1]) t += m.handoff_mpx_ms * screen_px * 1e-6;
+            if (used[2] && trial % 2 != 0) t += m.spans_mpx_ms * screen_px * 1e-6;
+            if (t <= m.explore_within * best.predicted_total_ms * (1 + 1e-12) && (want < 0 || t < want_total))
+                want = k, want_total = t, want_paths = paths;
+        }
+        if (want < 0) {
+            EXPECT_FALSE(e.has_value()) << "trial " << trial;
+            ++declined;
+            continue;
+        }
+        ASSERT_TRUE(e.has_value()) << "trial " << trial;
+        ++explored;
+        EXPECT_EQ(int(e->path), want) << "trial " << trial;
+        EXPECT_NEAR(e->plan.predicted_total_ms, want_total, 1e-9 * want_total) << "trial " << trial;
+        EXPECT_EQ(e->plan.path, want_paths) << "trial " << trial;
+        for (int k = 0; k < kLightPaths; ++k)
+            EXPECT_EQ(e->plan.count[size_t(k)], std::count(want_paths.begin(), want_paths.end(), LightPath(k)));
+    }
+    EXPECT_GT(explored, 50);  // both answers exercised
+    EXPECT_GT(declined, 50);
+    // Nothing to explore, or a path the best plan draws already: none.
+    LightPrices raw{{1, 1, 1}};
+    const LightPathPlan best = choose_light_paths(raw, screen_px, m, {1, 1, 1}, {true, true, true}, true);
+    EXPECT_FALSE(exploration_plan(raw, best, screen_px, m, {1, 1, 1}, {false, false, false}, true).has_value());
+    std::array<bool, kLightPaths> only_best{};
+    only_best[int(best.path[0])] = true;
+    EXPECT_FALSE(exploration_plan(raw, best, screen_px, m, {1, 1, 1}, only_best, true).has_value());
 }
 
 // DSR_LIGHT_COST_SCALE: three positive numbers or one clear error.

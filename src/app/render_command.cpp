@@ -144,6 +144,7 @@ int cmd_render(const std::vector<std::string>& argv) {
                      {"depth_spans", last.auto_spans},
                      {"quads_against_depth", last.auto_quad_depth},
                      {"kept_frames", std::count_if(all.begin(), all.end(), [](const FrameStats& s) { return s.auto_kept; })},
+                     {"explored_frames", std::count_if(all.begin(), all.end(), [](const FrameStats& s) { return s.auto_explored >= 0; })},
                      {"predicted_lights_ms", med_stat(&FrameStats::auto_predicted_ms)},
                      {"measured_lights_ms", med(&StageTimes::lights)},
                      {"scale", {{"quad", last.auto_scale[0]}, {"volume", last.auto_scale[1]}, {"tiles", last.auto_scale[2]}}}};

@@ -64,6 +64,7 @@ struct FrameStats {
     bool auto_spans = false;
     bool auto_quad_depth = false;  // its batched quads drawn against the scene's depth (choose_quad_depth)
     bool auto_kept = false;        // the frame kept the last priced frame's choice unpriced (one path for every light)
+    int auto_explored = -1;        // the path (LightPath) this priced frame drew to measure it (light_cost.h exploration_plan), else -1
     double auto_scale[3] = {1, 1, 1};
     // The forward stage (docs/forward.md): markers drawn, transparent objects blended and their draws.
     int light_markers = 0;

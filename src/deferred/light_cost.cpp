@@ -77,6 +77,7 @@ std::string describe(const LightCostModel& m) {
       << " ms per Mpx of (tile pixel, light) pairs; depth spans " << m.spans_mpx_ms << " ms per Mpx of screen,\n"
       << "                 measured where the lights would cost over " << m.spans_worth << "x that\n"
       << "  each path used " << m.path_ms << " ms a frame\n"
+      << "  a path not yet measured is tried where predicted within " << m.explore_within << "x the best plan\n"
       << "  shadowed light " << m.shadow_mpx_ms << " ms per Mpx of its rectangle more, on every path\n";
     return o.str();
 }
@@ -147,6 +148,20 @@ LightPathPlan choose_light_paths(const std::vector<LightFeature>& lights, const 
     return choose_light_paths(price_lights(lights, grid, m), screen_px, m, scale, allowed, spans_paid);
 }
 
+namespace {
+
+// What a plan's paths add once a frame (choose_light_paths): each path used, the hand-off where a
+// volume is drawn, the spans where the tiles are; and the total.
+void add_frame_costs(LightPathPlan& p, const LightCostModel& m, double handoff, double spans) {
+    for (int k = 0; k < kLightPaths; ++k)
+        if (p.count[size_t(k)]) p.predicted_ms[size_t(k)] += m.path_ms;
+    if (p.count[1]) p.predicted_ms[1] += handoff;
+    if (p.count[2]) p.predicted_ms[2] += spans;
+    p.predicted_total_ms = p.predicted_ms[0] + p.predicted_ms[1] + p.predicted_ms[2];
+}
+
+}  // namespace
+
 LightPathPlan choose_light_paths(const LightPrices& raw, double screen_px, const LightCostModel& m,
                                  const std::array<double, kLightPaths>& scale,
                                  const std::array<bool, kLightPaths>& allowed, bool spans_paid) {
@@ -180,14 +195,36 @@ LightPathPlan choose_light_paths(const LightPrices& raw, double screen_px, const
             p.predicted_ms[size_t(c)] += prices[i][size_t(c)];
         }
         if (!possible) continue;
-        for (int k = 0; k < kLightPaths; ++k)
-            if (p.count[size_t(k)]) p.predicted_ms[size_t(k)] += m.path_ms;
-        if (p.count[1]) p.predicted_ms[1] += handoff;
-        if (p.count[2]) p.predicted_ms[2] += spans;
-        p.predicted_total_ms = p.predicted_ms[0] + p.predicted_ms[1] + p.predicted_ms[2];
+        add_frame_costs(p, m, handoff, spans);
         if (p.predicted_total_ms < best.predicted_total_ms) best = std::move(p);
     }
     return best;
+}
+
+std::optional<LightExploration> exploration_plan(const LightPrices& raw, const LightPathPlan& best, double screen_px,
+                                                 const LightCostModel& m, const std::array<double, kLightPaths>& scale,
+                                                 const std::array<bool, kLightPaths>& explore, bool spans_paid) {
+    if (raw.empty() || best.path.size() != raw.size() || !(best.predicted_total_ms < kInf)) return std::nullopt;
+    const double handoff = m.handoff_mpx_ms * screen_px * kMpx;
+    const double spans = spans_paid ? 0 : m.spans_mpx_ms * screen_px * kMpx;
+    std::optional<LightExploration> out;
+    for (int k = 0; k < kLightPaths; ++k) {
+        if (!explore[size_t(k)] || best.count[size_t(k)] > 0) continue;  // drawn by best: measured anyway
+        LightPathPlan p;
+        p.path = best.path;
+        for (size_t i = 0; i < raw.size(); ++i) {
+            if (raw[i][size_t(k)] < kInf) p.path[i] = LightPath(k);
+            const int c = int(p.path[i]);
+            ++p.count[size_t(c)];
+            p.predicted_ms[size_t(c)] += raw[i][size_t(c)] * scale[size_t(c)];
+        }
+        if (p.count[size_t(k)] == 0) continue;
+        add_frame_costs(p, m, handoff, spans);
+        if (p.predicted_total_ms <= m.explore_within * best.predicted_total_ms &&
+            (!out || p.predicted_total_ms < out->plan.predicted_total_ms))
+            out = LightExploration{LightPath(k), std::move(p)};
+    }
+    return out;
 }
 
 QuadDepthChoice choose_quad_depth(const LightPathPlan& plan, const std::vector<LightFeature>& lights,

@@ -13,6 +13,7 @@
 // (LightCostCalibration), so the model follows the running GL.
 #pragma once
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,12 @@ struct LightCostModel {
     // The spans are measured only where the lights would cost more than this many times the spans
     // without tiles: below it, tiles cannot win back what finding out costs.
     double spans_worth = 4;
+    // A path whose scale is still the starting guess is tried in a frame whose plan by it is
+    // predicted within this factor of the best (exploration_plan): else a path the constants
+    // overprice is never drawn, so never measured, and stays overpriced. 2: the measured scales of
+    // llvmpipe's tiles on the bench scenes lie at 0.3-0.7 (the default scene's three lights were
+    // priced 1.8x their volumes, and drawn 0.8x as fast).
+    double explore_within = 2;
 };
 
 // Measured with `dsr render --frames N --stats` per geometry (docs/light_geometry.md, "auto"):
@@ -101,6 +108,18 @@ LightPathPlan choose_light_paths(const LightPrices& raw, double screen_px, const
                                  const std::array<double, kLightPaths>& scale,
                                  const std::array<bool, kLightPaths>& allowed, bool spans_paid);
 
+// A frame that measures a path the calibration has not (explore[p]): each light that can take the
+// path takes it, the others keep their path in `best`. Of the paths to explore, the one whose plan
+// is predicted cheapest, where that is within m.explore_within of best's (scale: as choose_light_paths';
+// spans_paid: whether best already paid the spans). nullopt: none.
+struct LightExploration {
+    LightPath path = LightPath::quad;
+    LightPathPlan plan;
+};
+std::optional<LightExploration> exploration_plan(const LightPrices& raw, const LightPathPlan& best, double screen_px,
+                                                 const LightCostModel& m, const std::array<double, kLightPaths>& scale,
+                                                 const std::array<bool, kLightPaths>& explore, bool spans_paid);
+
 // Whether a plan's quads are drawn against the scene's depth: what that saves them (their pixels at
 // quad_depth_mpx_ms instead of quad_mpx_ms; shadowed quads are drawn one by one without it)
 // against the depth hand-off, which is paid already where the plan has volumes.
@@ -129,6 +148,8 @@ public:
     explicit LightCostCalibration(const std::array<double, kLightPaths>& start)
         : scale_(start), measured_{true, true, true} {}
     const std::array<double, kLightPaths>& scale() const { return scale_; }
+    // Whether path p's scale is a measurement (or was given), not the starting guess.
+    bool measured(LightPath p) const { return measured_[size_t(p)]; }
     // One frame's measurement of a path's passes against what the model predicted for them, both
     // without the scale (raw model ms).
     void add(LightPath p, double measured_ms, double predicted_raw_ms);

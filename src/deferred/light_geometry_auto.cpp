@@ -89,6 +89,24 @@ public:
             if (spans) plan_.predicted_ms[2] += model_.spans_mpx_ms * screen_px * 1e-6;
             if (spans && plan_.count[int(LightPath::tiles)] == 0) spans_rest_ = kSpansRest;
         }
+        // A path the constants may overprice is drawn once or twice to be measured (its first draw
+        // compiles, its second is timed), where its plan is predicted close to the best: the image
+        // is the same whichever path a light takes. The tiles only where they were priced.
+        std::array<bool, kLightPaths> explore{};
+        for (int p = 0; p < kLightPaths; ++p)
+            explore[size_t(p)] = explore_left_[p] > 0 && !calib_.measured(LightPath(p));
+        explore[int(LightPath::volume)] = explore[int(LightPath::volume)] && volume_ok_;
+        explore[int(LightPath::tiles)] = explore[int(LightPath::tiles)] && tiles_pay;
+        exploring_ = -1;
+        if (std::optional<LightExploration> e = exploration_plan(raw_, plan_, screen_px, model_, scale, explore, true)) {
+            exploring_ = int(e->path);
+            --explore_left_[exploring_];
+            plan_ = std::move(e->plan);
+            if (spans) {  // as above: the spans measured, paid by the tiles' prediction
+                plan_.predicted_ms[2] += model_.spans_mpx_ms * screen_px * 1e-6;
+                spans_rest_ = 0;
+            }
+        }
         // The quads against the scene's depth where what it saves them pays for the hand-off.
         quad_depth_choice_ = quad_depth_ ? choose_quad_depth(plan_, features_, screen_px, model_, scale[0]) : QuadDepthChoice{};
         quads_depth_now_ = quad_depth_choice_.on;
@@ -97,11 +115,13 @@ public:
         planned_ = true;
         priced_ = true;
         stats.auto_kept = false;
+        stats.auto_explored = exploring_;
         // Every light by the tiles, or every light by quads: the next frames keep that choice
         // unpriced (keep_choice).
+        // (Not an exploring frame's choice.)
         kept_path_ = -1;
         for (const LightPath p : {LightPath::quad, LightPath::tiles})
-            if (!f.lights.empty() && plan_.count[size_t(p)] == int(f.lights.size())) kept_path_ = int(p);
+            if (exploring_ < 0 && !f.lights.empty() && plan_.count[size_t(p)] == int(f.lights.size())) kept_path_ = int(p);
         keep_rest_ = kept_path_ >= 0 ? kKeepFrames : 0;
         priced_lights_ = f.lights.size();
         predicted_ms_ = plan_.predicted_ms[0] + plan_.predicted_ms[1] + plan_.predicted_ms[2];
@@ -144,6 +164,7 @@ public:
         planned_ = true;
         priced_ = false;
         stats.auto_kept = true;
+        stats.auto_explored = -1;
         predicted_ms_ = kept_raw_ * calib_.scale()[size_t(p)] + kept_once_ms_;
         report(stats, p == LightPath::tiles);
         return quads_depth_now_;
@@ -330,6 +351,10 @@ private:
     std::vector<GpuTime> pending_;
     bool drawn_before_[kLightPaths] = {false, false, false};
     static constexpr int kSpansRest = 8;
+    // Frames each path may be explored in, at most (two draws measure it; a third where a GPU's
+    // timestamps were not ready), and the path this frame explores (-1: none).
+    int explore_left_[kLightPaths] = {3, 3, 3};
+    int exploring_ = -1;
     static constexpr int kKeepFrames = 7;  // frames an all-tiles or all-quads choice is kept unpriced (one priced in 8)
     int kept_path_ = -1;      // the path every light of the last priced frame took (tiles or quad), else -1
     int keep_rest_ = 0;       // frames left to keep it
