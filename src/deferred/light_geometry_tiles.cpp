@@ -254,21 +254,32 @@ private:
         begin_vertices(draws, n_draws, stride);
         ranges_.clear();
         float* out = verts_.data();
-        for (size_t di = 0; di < n_draws; ++di)
-            for (int n = flat ? 1 : 0; n <= (flat ? tile_lights_ : 0); ++n)
-                for (int pass = 0; pass < 2; ++pass) {  // the quads, then the points
-                    const size_t first = vertex_at(out, stride);
-                    for (const TileQuad& tq : draws[di].quads) {
-                        if ((flat && int(tq.slots.size()) != n) || whole(tq) != (pass == 1)) continue;
-                        float ids[16];
-                        auto slot = [&](size_t k) { return k < tq.slots.size() ? float(tq.slots[k]) : kNoLight; };
-                        for (int j = 0; j < n_ids; ++j)
-                            ids[j] = flat ? slot(size_t(j)) : slot(2 * size_t(j)) * 256.0f + slot(2 * size_t(j) + 1);
-                        out = emit_tile(tq, ids, n_ids, out);
-                    }
-                    const size_t end = vertex_at(out, stride);
-                    if (end > first) ranges_.push_back({pass == 1 ? GLenum(GL_POINTS) : GLenum(GL_QUADS), first, end - first, n});
+        const int counts = flat ? tile_lights_ + 1 : 1;  // runs by count of lights (flat), else one
+        for (size_t di = 0; di < n_draws; ++di) {
+            // The draw's quads in run order, (count, quads before points), each run in plan order:
+            // one pass to bucket them, not one scan of the draw per run (up to 2 x 32).
+            run_first_.assign(size_t(2 * counts) + 1, 0);
+            auto run_of = [&](const TileQuad& tq) { return 2 * (flat ? int(tq.slots.size()) : 0) + int(whole(tq)); };
+            for (const TileQuad& tq : draws[di].quads) ++run_first_[size_t(run_of(tq)) + 1];
+            for (size_t r = 1; r < run_first_.size(); ++r) run_first_[r] += run_first_[r - 1];
+            order_.resize(draws[di].quads.size());
+            run_next_.assign(run_first_.begin(), run_first_.end() - 1);
+            for (size_t q = 0; q < draws[di].quads.size(); ++q) order_[size_t(run_next_[size_t(run_of(draws[di].quads[q]))]++)] = q;
+            for (int run = flat ? 2 : 0; run < 2 * counts; ++run) {  // (flat: a tile has a light at least)
+                const size_t first = vertex_at(out, stride);
+                for (int k = run_first_[size_t(run)]; k < run_first_[size_t(run) + 1]; ++k) {
+                    const TileQuad& tq = draws[di].quads[order_[size_t(k)]];
+                    float ids[16];
+                    auto slot = [&](size_t j) { return j < tq.slots.size() ? float(tq.slots[j]) : kNoLight; };
+                    for (int j = 0; j < n_ids; ++j)
+                        ids[j] = flat ? slot(size_t(j)) : slot(2 * size_t(j)) * 256.0f + slot(2 * size_t(j) + 1);
+                    out = emit_tile(tq, ids, n_ids, out);
                 }
+                const size_t end = vertex_at(out, stride);
+                if (end > first)
+                    ranges_.push_back({run % 2 == 1 ? GLenum(GL_POINTS) : GLenum(GL_QUADS), first, end - first, run / 2});
+            }
+        }
         buffers_.upload_next(verts_.data(), verts_.size() * sizeof(float));
     }
 
@@ -437,6 +448,8 @@ private:
     std::vector<TileDraw> draws_;
     LightArrays arrays_;
     std::vector<TileRange> ranges_;  // upload()'s
+    std::vector<int> run_first_, run_next_;  // upload()'s buckets: each run's first quad in order_
+    std::vector<size_t> order_;
     // The vertex fetch's programs by form (linear, shared attenuation) and count of lights (index
     // 0 unused).
     std::unique_ptr<ProgramSources> flat_sources_;
