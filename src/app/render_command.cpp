@@ -89,6 +89,13 @@ int cmd_render(const std::vector<std::string>& argv) {
         for (auto& s : all) v.push_back(s.*field);
         return median(v);
     };
+    // The same over the frames that measured it (>= 0), null where none did.
+    auto med_measured = [&](double FrameStats::*field) {
+        std::vector<double> v;
+        for (auto& s : all)
+            if (s.*field >= 0) v.push_back(s.*field);
+        return v.empty() ? nlohmann::json(nullptr) : nlohmann::json(median(v));
+    };
     nlohmann::ordered_json j;
     j["scene"] = scene_path;
     j["size"] = {w, h};
@@ -136,7 +143,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     if (!paths.light_geometry_note.empty()) j["light_geometry_note"] = paths.light_geometry_note;
     if (paths.light_geometry == LightGeometry::stencil) j["stencil_faces"] = stencil_faces_name(paths.stencil_faces);
     if (draws_tiles(paths.light_geometry))
-        j["tiles"] = {{"size", paths.tile_size}, {"lights_per_pass", paths.tile_lights}, {"shape", paths.tile_points ? "points" : "quads"}, {"fetch", paths.tile_fetch_vertex ? "vertex" : "fragment"}, {"vertex_fetch_batches", last.tile_vertex_batches}, {"tile_light_pairs", last.tile_light_pairs}, {"shared_attenuation_batches", last.tile_att_shared_batches}, {"depth_culling", last.tile_depth}, {"depth_ms", med_stat(&FrameStats::tile_depth_ms)}, {"plan_ms", med_stat(&FrameStats::tile_plan_ms)}};
+        j["tiles"] = {{"size", paths.tile_size}, {"lights_per_pass", paths.tile_lights}, {"shape", paths.tile_points ? "points" : "quads"}, {"fetch", paths.tile_fetch_vertex ? "vertex" : "fragment"}, {"vertex_fetch_batches", last.tile_vertex_batches}, {"tile_light_pairs", last.tile_light_pairs}, {"shared_attenuation_batches", last.tile_att_shared_batches}, {"depth_culling", last.tile_depth}, {"depth_ms", med_stat(&FrameStats::tile_depth_ms)}, {"plan_ms", med_stat(&FrameStats::tile_plan_ms)}, {"gpu_spans_ms", med_measured(&FrameStats::tile_gpu_spans_ms)}, {"gpu_wait_ms", med_measured(&FrameStats::tile_gpu_wait_ms)}, {"gpu_shade_ms", med_measured(&FrameStats::tile_gpu_shade_ms)}};
     // What the cost model chose (light_cost.h), against the light stage as measured: both medians
     // of the timed frames.
     if (last.auto_geometry)

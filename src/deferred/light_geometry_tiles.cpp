@@ -30,6 +30,7 @@
 #include "deferred/main_buffer_map.h"
 #include "deferred/tile_depth.h"
 #include "dsr_clock.h"
+#include "gl/entry_points.h"
 #include "gl/stream_buffer.h"
 
 namespace dsr {
@@ -78,7 +79,8 @@ public:
           flat_vecs_(vertex_fetch_ ? (c.opts.tile_lights + 3) / 4 : 0),
           flat_stride_(kFixedFloats + 4 * flat_vecs_),
           xy_slack_(c.opts.depth == DepthPath::position16 ? 1.0f / 1024.0f : 0.0f),
-          round_(c.tile_round) {
+          round_(c.tile_round),
+          timeline_(c.caps.timer_query && gl_entry.QueryCounter && !c.caps.software_rasterizer) {
         if (tile_depth_culling(c)) depth_ = std::make_unique<TileDepthPass>(c, programs, width, height);
         if (vertex_fetch_) {
             flat_sources_ = std::make_unique<ProgramSources>(programs.sources("light_tiles_flat"));
@@ -112,7 +114,8 @@ public:
         if (depth_)
             stats.tile_depth_ms += wall_ms([&] {
                 targets.fb_unbind_render(P_ACCUM);
-                spans = depth_->spans(f, targets.gbuffer());
+                timeline_.mark(TileTimeline::spans_begin);
+                spans = depth_->spans(f, targets.gbuffer(), &timeline_);
                 targets.fb_bind_render(P_ACCUM);
             });
         return spans;
@@ -159,6 +162,7 @@ public:
             plan_ms += wall_ms([&] { plan = plan_tile_groups(rects, f.width, f.height, tile_size_, tile_lights_, cull, cut, shadow_slots_); });
             for (const TileDraw& d : plan.draws) {
                 plan_ms += wall_ms([&] { upload(&d, 1, false); });
+                if (&d == &plan.draws.front()) timeline_.mark(TileTimeline::draws_begin);
                 draw_batch(f, plan.batches[size_t(d.batch)], q, stats);
             }
             stats.tile_light_pairs = plan.tile_light_pairs;
@@ -179,6 +183,7 @@ public:
                     stats.tile_light_pairs += planner->plan_batch(b, draws_);
                     upload(draws_.data(), draws_.size(), flat >= 0);
                 });
+                if (b == 0) timeline_.mark(TileTimeline::draws_begin);
                 if (flat >= 0)
                     draw_flat(f, batch, flat, q, stats);
                 else
@@ -187,6 +192,8 @@ public:
             }
         }
         end_draws();
+        timeline_.mark(TileTimeline::draws_end);
+        timeline_.end_frame(stats);
         stats.tile_plan_ms += plan_ms;
     }
 
@@ -441,6 +448,7 @@ private:
     int flat_vecs_, flat_stride_;  // its vertices: slots one a float, in flat_vecs_ vec4s
     float xy_slack_;  // position16 stores x and y as half floats, up to 2^-11 off the ray, relative: two such steps
     float round_;     // light_tiles.frag's quantize_round (gl/rounding_probe.h)
+    TileTimeline timeline_;  // the GPU's stamps of the light stage (on a GPU with timer queries)
     std::unique_ptr<TileDepthPass> depth_;  // null without depth culling
     // Kept between frames for their storage only.
     StreamBuffers buffers_;  // one per batch of a frame

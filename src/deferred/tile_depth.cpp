@@ -36,7 +36,7 @@ void TileDepthPass::resize(int w, int h) {
     tiles_ = std::make_unique<PBuffer>("tile depth", d);
 }
 
-std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f, const PBuffer& gbuffer) {
+std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f, const PBuffer& gbuffer, TileTimeline* timeline) {
     if (readback_) return spans_by_readback(f, gbuffer);
     const int tx = tiles_->width(), ty = tiles_->height(), rows = rows_->height();
     RenderState s = fixed_function_2d();  // spans written, not blended
@@ -66,6 +66,7 @@ std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f, const PBuffer& gb
     // Read from the bound framebuffer: one texel per tile, two floats used of four.
     std::vector<float> px(size_t(tx) * ty * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    if (timeline) timeline->mark(TileTimeline::spans_end);
     glReadPixels(0, 0, tx, ty, GL_RGBA, GL_FLOAT, px.data());
     rows_->unbind_texture(0, 4);
     tiles_->unbind_render();

@@ -14,6 +14,7 @@
 #include "deferred/frame.h"
 #include "deferred/shader_table.h"
 #include "deferred/tile_plan.h"
+#include "deferred/tile_timeline.h"
 #include "gl/pbuffer.h"
 #include "gl/program.h"
 
@@ -30,7 +31,8 @@ public:
     // Each tile's span, row by row: its two passes into its own buffers and the read-back, which
     // read the G-buffer's normal and depth targets on units 0 and 3 (P-buffer 0 must not be bound);
     // or, where readback_, the two targets read back and the spans made on the CPU.
-    std::vector<DepthSpan> spans(const FrameDef& f, const PBuffer& gbuffer);
+    // timeline: its spans_end stamped before the read-back (tile_timeline.h), where given.
+    std::vector<DepthSpan> spans(const FrameDef& f, const PBuffer& gbuffer, TileTimeline* timeline = nullptr);
 
 private:
     std::vector<DepthSpan> spans_by_readback(const FrameDef& f, const PBuffer& gbuffer);

@@ -1,0 +1,54 @@
+// The tiles' GPU timeline (tile_timeline.h).
+#include "deferred/tile_timeline.h"
+
+namespace dsr {
+
+TileTimeline::~TileTimeline() {
+    for (Set& s : sets_)
+        for (GLuint q : s.q)
+            if (q) glDeleteQueries(1, &q);
+}
+
+void TileTimeline::mark(Mark m) {
+    if (!on_) return;
+    Set& s = sets_[size_t(current_)];
+    if (m == spans_begin || !open_) {  // a new set, or an unfinished one started again
+        open_ = true;
+        s.issued = 0;
+        s.pending = false;
+    }
+    if (!s.q[size_t(m)]) glGenQueries(1, &s.q[size_t(m)]);
+    glQueryCounter(s.q[size_t(m)], GL_TIMESTAMP);
+    s.issued |= 1u << m;
+}
+
+void TileTimeline::end_frame(FrameStats& stats) {
+    if (!on_ || !open_) return;
+    sets_[size_t(current_)].pending = true;
+    open_ = false;
+    current_ = (current_ + 1) % kSets;
+    sets_[size_t(current_)].pending = false;  // about to be reused: its results, if unread, dropped
+    // The newest finished set whose last stamp the GPU has reached.
+    for (int age = 1; age < kSets; ++age) {
+        Set& s = sets_[size_t((current_ - age + kSets) % kSets)];
+        if (!s.pending) continue;
+        GLuint ready = 0;
+        glGetQueryObjectuiv(s.q[draws_end], GL_QUERY_RESULT_AVAILABLE, &ready);
+        if (!ready) continue;
+        std::array<double, kMarks> ms{};
+        for (int m = 0; m < kMarks; ++m)
+            if (s.issued >> m & 1) {
+                GLuint64 ns = 0;
+                glGetQueryObjectui64v(s.q[size_t(m)], GL_QUERY_RESULT, &ns);
+                ms[size_t(m)] = double(ns) * 1e-6;
+            }
+        const bool spans = (s.issued >> spans_begin & 1) && (s.issued >> spans_end & 1);
+        stats.tile_gpu_spans_ms = spans ? ms[spans_end] - ms[spans_begin] : -1;
+        stats.tile_gpu_wait_ms = spans ? ms[draws_begin] - ms[spans_end] : -1;
+        stats.tile_gpu_shade_ms = ms[draws_end] - ms[draws_begin];
+        for (int older = age; older < kSets; ++older) sets_[size_t((current_ - older + kSets) % kSets)].pending = false;
+        return;
+    }
+}
+
+}  // namespace dsr
