@@ -56,8 +56,9 @@ struct FrameStats {
     // waits for the G-buffer: on a GPU, a pipeline drain), and the plan with its vertices' upload.
     double tile_depth_ms = 0, tile_plan_ms = 0;
     // tiles on a GPU (tile_timeline.h), ms of an earlier frame's light stage as the GPU ran it: the
-    // spans' passes, the spans' end to the first light draw (read-back and plan: the GPU waiting),
-    // the light draws. -1: not measured (a CPU rasteriser, no timer queries, none ready yet).
+    // spans' passes, the spans' end to the first light draw (read-back, plan and the ambient pass
+    // drawn meanwhile), the light draws. -1: not measured (a CPU rasteriser, no timer queries, none
+    // ready yet).
     double tile_gpu_spans_ms = -1, tile_gpu_wait_ms = -1, tile_gpu_shade_ms = -1;
     // --light-geometry auto (light_cost.h): the lights each path took (quad, volume, tiles), what
     // the model predicted for the light stage (ms, the spans included), whether it measured the

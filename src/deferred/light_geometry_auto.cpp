@@ -48,6 +48,8 @@ public:
 
     void resize(int width, int height) override { tiles_->resize(width, height); }
 
+    bool prepare_reads_back() const override { return tiles_->depth_culling(); }
+
     bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) override {
         collect_gpu_times();
         quads_depth_now_ = false;

@@ -95,8 +95,19 @@ public:
 
     bool own_pass(size_t) const override { return false; }  // one more light in the tiles' batches
 
+    // The depth spans, read back here (before the ambient pass: prepare_reads_back) for draw().
+    bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) override {
+        spans_ = depth_spans(f, targets, stats);
+        prepared_ = true;
+        return LightGeometryPass::prepare(f, targets, stats);
+    }
+
+    bool prepare_reads_back() const override { return depth_culling(); }
+
     void draw(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats) override {
-        const std::vector<DepthSpan> spans = depth_spans(f, targets, stats);
+        // The spans depend on the G-buffer alone, not on f's lights: prepare()'s, or measured now.
+        const std::vector<DepthSpan> spans = prepared_ ? std::move(spans_) : depth_spans(f, targets, stats);
+        prepared_ = false;
         TileDepth depth;
         const TileDepth* cull = nullptr;
         stats.tile_plan_ms += wall_ms([&] { cull = tile_boxes(f, spans, depth); });
@@ -450,6 +461,8 @@ private:
     float round_;     // light_tiles.frag's quantize_round (gl/rounding_probe.h)
     TileTimeline timeline_;  // the GPU's stamps of the light stage (on a GPU with timer queries)
     std::unique_ptr<TileDepthPass> depth_;  // null without depth culling
+    std::vector<DepthSpan> spans_;  // prepare()'s, for this frame's draw()
+    bool prepared_ = false;
     // Kept between frames for their storage only.
     StreamBuffers buffers_;  // one per batch of a frame
     std::vector<float> verts_;

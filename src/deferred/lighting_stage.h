@@ -56,6 +56,8 @@ public:
     bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) {
         return geometry_->prepare(f, targets, stats);
     }
+    // Whether prepare() may read back from the GL (LightGeometryPass::prepare_reads_back).
+    bool prepare_reads_back() const { return geometry_->prepare_reads_back(); }
     // After prepare(f): whether this frame's ambient pass folds into a light's pass: the skip on,
     // SSAO off (it scales the ambient pass alone), a light drawn full screen, its fold program
     // built, and the light geometry would draw that light by a pass of its own

@@ -2,9 +2,10 @@
 // tiles.gpu_*): four GL timestamps a frame (ARB_timer_query's glQueryCounter), at the start of the
 // depth spans' passes, at their end (before the read-back), before the first light draw and after
 // the last. The GPU stamps each when it reaches it, so the second interval is what the GPU spent
-// between the spans and the light draws: the read-back and the CPU's plan of the first batch, with
-// nothing else queued. Read back a frame or more later, where the GPU has finished, never waited
-// for. Off on a CPU rasteriser, whose timer queries do not time its rasterisation.
+// between the spans and the light draws: the read-back and the CPU's plan of the first batch, and
+// the ambient pass, which is drawn there (DeferredShader::draw_lights); the rest of it the GPU
+// waited. Read back a frame or more later, where the GPU has finished, never waited for. Off on a
+// CPU rasteriser, whose timer queries do not time its rasterisation.
 #pragma once
 #include <array>
 
