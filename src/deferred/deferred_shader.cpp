@@ -210,6 +210,7 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
         unbind_gbuffer();
         ambient_pass();
         bind_gbuffer();
+        if (ambient_after_plan) glFlush();  // handed to the GPU now, not with the first light batch
     }
     // The lights the light geometry draws (the frame's, less the one the fold draws).
     std::optional<FrameDef> rest;
