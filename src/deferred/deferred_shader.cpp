@@ -192,7 +192,7 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
     // waits for the G-buffer alone, and the GPU draws the ambient pass while the CPU plans the
     // light draws (H100, 1024-overlap at 1920x1080: the GPU had waited 0.37 ms between the spans
     // and the first light draw, behind a 0.29 ms ambient pass).
-    const bool ambient_after_plan = !may_fold && !written && !handoff_may_write && lighting_->prepare_reads_back();
+    const bool ambient_after_plan = !may_fold && !written && !handoff_may_write && lighting_->prepare_reads_back(f);
     if (!may_fold && !written && !handoff_may_write && !ambient_after_plan) ambient_pass();
     // The light geometry's plan for the frame (the auto geometry's depth spans, timed with the
     // light passes): whether its lights need the scene's depth decides the hand-off, and whether it

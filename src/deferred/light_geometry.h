@@ -36,11 +36,11 @@ public:
     // P-buffer 0 for rendering: whether this frame's lights need the scene's depth in P-buffer 0
     // (where Paths::accum_depth gives it one). The auto geometry makes its plan for f here.
     virtual bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) { return true; }
-    // Whether prepare() may read back from the GL (the tiles' depth spans): a read-back waits for
+    // Whether prepare(f) may read back from the GL (the tiles' depth spans): a read-back waits for
     // every command before it, so the frame's ambient pass is then drawn after prepare(), where
     // the GPU draws it while the CPU plans the light draws, instead of before it, where the
     // read-back would wait for it too (DeferredShader::draw_lights).
-    virtual bool prepare_reads_back() const { return false; }
+    virtual bool prepare_reads_back(const FrameDef& f) const { return false; }
     // After prepare(f): whether f.lights[i], a light over the whole screen, costs this geometry a
     // pass of its own, so that folding the ambient pass into that pass saves the ambient pass
     // (quad, volume, stencil). Where the light would be one more in a batch (tiles, screen), the

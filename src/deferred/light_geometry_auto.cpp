@@ -48,7 +48,15 @@ public:
 
     void resize(int width, int height) override { tiles_->resize(width, height); }
 
-    bool prepare_reads_back() const override { return tiles_->depth_culling(); }
+    // A kept frame measures the spans where it keeps the tiles, not where it keeps the quads; a
+    // priced one may, unless the spans rest (spans_rest_). Where it cannot, the ambient pass keeps
+    // its place before the plan.
+    bool prepare_reads_back(const FrameDef& f) const override {
+        if (!tiles_->depth_culling()) return false;
+        if (kept_path_ >= 0 && keep_rest_ > 0 && f.lights.size() == priced_lights_)
+            return kept_path_ == int(LightPath::tiles);
+        return spans_rest_ == 0;
+    }
 
     bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) override {
         collect_gpu_times();

@@ -102,7 +102,7 @@ public:
         return LightGeometryPass::prepare(f, targets, stats);
     }
 
-    bool prepare_reads_back() const override { return depth_culling(); }
+    bool prepare_reads_back(const FrameDef&) const override { return depth_culling(); }
 
     void draw(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats) override {
         // The spans depend on the G-buffer alone, not on f's lights: prepare()'s, or measured now.

@@ -57,7 +57,7 @@ public:
         return geometry_->prepare(f, targets, stats);
     }
     // Whether prepare() may read back from the GL (LightGeometryPass::prepare_reads_back).
-    bool prepare_reads_back() const { return geometry_->prepare_reads_back(); }
+    bool prepare_reads_back(const FrameDef& f) const { return geometry_->prepare_reads_back(f); }
     // After prepare(f): whether this frame's ambient pass folds into a light's pass: the skip on,
     // SSAO off (it scales the ambient pass alone), a light drawn full screen, its fold program
     // built, and the light geometry would draw that light by a pass of its own
