@@ -127,8 +127,7 @@ public:
         stats.auto_kept = false;
         stats.auto_explored = exploring_;
         // Every light by the tiles, or every light by quads: the next frames keep that choice
-        // unpriced (keep_choice).
-        // (Not an exploring frame's choice.)
+        // unpriced (keep_choice); not an exploring frame's choice.
         kept_path_ = -1;
         for (const LightPath p : {LightPath::quad, LightPath::tiles})
             if (exploring_ < 0 && !f.lights.empty() && plan_.count[size_t(p)] == int(f.lights.size())) kept_path_ = int(p);
