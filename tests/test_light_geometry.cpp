@@ -629,11 +629,12 @@ TEST(LightGeometry, AutoKeptChoicesFollowAMovingCamera) {
 
 // A path the model has never measured is tried where its plan is predicted close to the best
 // (light_cost.h exploration_plan): the default scene's three lights, which the constants price
-// cheapest as volumes, go through the tiles in a frame or two, whose scale is then a measurement,
-// and each frame is quad's image to the byte. Before, the tiles kept the starting guess for ever
+// cheapest as volumes, go through the tiles in two frames or three (a compile, then a timed draw
+// or two: a second only where the first left the tiles within reach), whose scale is then a
+// measurement, and each frame is quad's image to the byte. Before, the tiles kept the starting guess for ever
 // (llvmpipe at 512x512: auto 5.2-6.5 ms of light stage by volumes, the tiles 4.3-4.5).
 TEST(LightGeometry, AutoExploresAPathItHasNotMeasured) {
-    const std::vector<Scene> frames(6, default_scene());
+    const std::vector<Scene> frames(8, default_scene());
     int explored[3] = {0, 0, 0};
     FrameStats last;
     auto_frames_against_quad(frames, "", "auto_explore_frame", [&](int frame, const FrameStats& st) {
@@ -645,8 +646,8 @@ TEST(LightGeometry, AutoExploresAPathItHasNotMeasured) {
     });
     std::printf("[ explore  ] frames exploring quad %d, volume %d, tiles %d; scales %.3f %.3f %.3f\n", explored[0],
                 explored[1], explored[2], last.auto_scale[0], last.auto_scale[1], last.auto_scale[2]);
-    EXPECT_GT(explored[2], 0) << "the tiles were never tried";
-    for (int p = 0; p < 3; ++p) EXPECT_LE(explored[p], 3) << "path " << p << " explored past its frames";
+    EXPECT_GE(explored[2], 2) << "the tiles were not tried in two frames at least (a compile, a timed draw)";
+    for (int p = 0; p < 3; ++p) EXPECT_LE(explored[p], 4) << "path " << p << " explored past its frames";
     EXPECT_NE(last.auto_scale[2], 1.0) << "the tiles were tried but never measured";
 }
 

@@ -253,6 +253,7 @@ void LightCostCalibration::add(LightPath p, double measured_ms, double predicted
     const double ratio = measured_ms / predicted_raw_ms;
     s = std::clamp(measured_[int(p)] ? 0.5 * s + 0.5 * ratio : ratio, 0.1, 10.0);
     measured_[int(p)] = true;
+    ++samples_[int(p)];
 }
 
 std::array<double, kLightPaths> parse_cost_scale(const std::string& text) {

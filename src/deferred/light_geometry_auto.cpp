@@ -99,12 +99,13 @@ public:
             if (spans) plan_.predicted_ms[2] += model_.spans_mpx_ms * screen_px * 1e-6;
             if (spans && plan_.count[int(LightPath::tiles)] == 0) spans_rest_ = kSpansRest;
         }
-        // A path the constants may overprice is drawn once or twice to be measured (its first draw
-        // compiles, its second is timed), where its plan is predicted close to the best: the image
-        // is the same whichever path a light takes. The tiles only where they were priced.
+        // A path the constants may overprice is drawn to be measured (its first draw compiles,
+        // the next two are timed), where its plan is predicted close to the best: the image is
+        // the same whichever path a light takes. The tiles only where they were priced.
         std::array<bool, kLightPaths> explore{};
         for (int p = 0; p < kLightPaths; ++p)
-            explore[size_t(p)] = explore_left_[p] > 0 && !calib_.measured(LightPath(p));
+            explore[size_t(p)] =
+                explore_left_[p] > 0 && calib_.samples(LightPath(p)) < LightCostCalibration::kExploreSamples;
         explore[int(LightPath::volume)] = explore[int(LightPath::volume)] && volume_ok_;
         explore[int(LightPath::tiles)] = explore[int(LightPath::tiles)] && tiles_pay;
         exploring_ = -1;
@@ -173,7 +174,7 @@ public:
         planned_ = true;
         priced_ = false;
         stats.auto_kept = true;
-        stats.auto_explored = -1;
+        stats.auto_explored = exploring_ = -1;
         predicted_ms_ = kept_raw_ * calib_.scale()[size_t(p)] + kept_once_ms_;
         report(stats, p == LightPath::tiles);
         return quads_depth_now_;
@@ -280,7 +281,9 @@ private:
         // scale stayed 1 over 48 frames, its prediction 2.8x what it took). The path's second
         // priced draw is the first timed (its first compiles), so the scale is measured by the
         // third frame instead of the sixth.
-        const bool wall_now = calibrate_ && raw[int(p)] > 0 && timed_draws_[int(p)]++ % kTimedEvery == 1;
+        // An exploring path's every draw after its first.
+        const bool wall_now = calibrate_ && raw[int(p)] > 0 &&
+                              (timed_draws_[int(p)]++ % kTimedEvery == 1 || (exploring_ == int(p) && drawn_before_[int(p)]));
         if (!drawn_before_[int(p)] || (!wall_now && !gpu_calibrate_)) {
             drawn_before_[int(p)] = true;
             draw();
@@ -360,9 +363,9 @@ private:
     std::vector<GpuTime> pending_;
     bool drawn_before_[kLightPaths] = {false, false, false};
     static constexpr int kSpansRest = 8;
-    // Frames each path may be explored in, at most (two draws measure it; a third where a GPU's
-    // timestamps were not ready), and the path this frame explores (-1: none).
-    int explore_left_[kLightPaths] = {3, 3, 3};
+    // Frames each path may be explored in, at most (three draws measure it twice; a fourth where a
+    // GPU's timestamps were not ready), and the path this frame explores (-1: none).
+    int explore_left_[kLightPaths] = {4, 4, 4};
     int exploring_ = -1;
     static constexpr int kKeepFrames = 7;  // frames an all-tiles or all-quads choice is kept unpriced (one priced in 8)
     int kept_path_ = -1;      // the path every light of the last priced frame took (tiles or quad), else -1
