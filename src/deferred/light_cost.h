@@ -45,9 +45,9 @@ struct LightCostModel {
     // The spans are measured only where the lights would cost more than this many times the spans
     // without tiles: below it, tiles cannot win back what finding out costs.
     double spans_worth = 4;
-    // A path whose scale is still the starting guess is tried in a frame whose plan by it is
-    // predicted within this factor of the best (exploration_plan): else a path the constants
-    // overprice is never drawn, so never measured, and stays overpriced. 2: the measured scales of
+    // A path not yet measured (LightCostCalibration::samples below kExploreSamples) is tried in a
+    // frame whose plan by it is predicted within this factor of the best (exploration_plan): else
+    // a path the constants overprice is never drawn, so never measured, and stays overpriced. 2: the measured scales of
     // llvmpipe's tiles on the bench scenes lie at 0.3-0.7 (the default scene's three lights were
     // priced 1.8x their volumes, and drawn 0.8x as fast).
     double explore_within = 2;
@@ -108,8 +108,8 @@ LightPathPlan choose_light_paths(const LightPrices& raw, double screen_px, const
                                  const std::array<double, kLightPaths>& scale,
                                  const std::array<bool, kLightPaths>& allowed, bool spans_paid);
 
-// A frame that measures a path the calibration has not (explore[p]): each light that can take the
-// path takes it, the others keep their path in `best`. Of the paths to explore, the one whose plan
+// A frame that measures a path the calibration has not measured enough (explore[p]): each light
+// that can take the path takes it, the others keep their path in `best`. Of the paths to explore, the one whose plan
 // is predicted cheapest, where that is within m.explore_within of best's (scale: as choose_light_paths';
 // spans_paid: whether best already paid the spans). nullopt: none.
 struct LightExploration {
