@@ -631,8 +631,8 @@ TEST(LightGeometry, AutoKeptChoicesFollowAMovingCamera) {
 // (light_cost.h exploration_plan): the default scene's three lights, which the constants price
 // cheapest as volumes, go through the tiles in two frames or three (a compile, then a timed draw
 // or two: a second only where the first left the tiles within reach), whose scale is then a
-// measurement, and each frame is quad's image to the byte. Before, the tiles kept the starting guess for ever
-// (llvmpipe at 512x512: auto 5.2-6.5 ms of light stage by volumes, the tiles 4.3-4.5).
+// measurement, and each frame is quad's image to the byte. Before, the tiles kept the starting
+// guess for ever (llvmpipe at 512x512: auto 5.2-6.5 ms of light stage by volumes, the tiles 4.3-4.5).
 TEST(LightGeometry, AutoExploresAPathItHasNotMeasured) {
     const std::vector<Scene> frames(8, default_scene());
     int explored[3] = {0, 0, 0};
