@@ -192,8 +192,9 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
     // waits for the G-buffer alone, and the GPU draws the ambient pass while the CPU plans the
     // light draws (H100, auto on 1024-overlap at 1920x1080: frame 5.41-5.51 ms against 5.62-5.70,
     // docs/gpu.md).
-    const bool ambient_after_plan = !may_fold && !written && !handoff_may_write && lighting_->prepare_reads_back(f);
-    if (!may_fold && !written && !handoff_may_write && !ambient_after_plan) ambient_pass();
+    const bool ambient_ours = !may_fold && !written && !handoff_may_write;  // nothing else writes it
+    const bool ambient_after_plan = ambient_ours && lighting_->prepare_reads_back(f);
+    if (ambient_ours && !ambient_after_plan) ambient_pass();
     // The light geometry's plan for the frame (the auto geometry's depth spans, timed with the
     // light passes): whether its lights need the scene's depth decides the hand-off, and whether it
     // would draw a light over the whole screen by a pass of its own decides the fold.

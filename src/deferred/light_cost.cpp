@@ -251,8 +251,8 @@ void LightCostCalibration::add(LightPath p, double measured_ms, double predicted
     if (!(predicted_raw_ms > 0) || !(measured_ms >= 0)) return;
     double& s = scale_[int(p)];
     const double ratio = measured_ms / predicted_raw_ms;
-    s = std::clamp(measured_[int(p)] ? 0.5 * s + 0.5 * ratio : ratio, 0.1, 10.0);
-    measured_[int(p)] = true;
+    // The first measurement replaces the guess; given scales, and later measurements, are averaged with.
+    s = std::clamp(given_ || samples_[int(p)] > 0 ? 0.5 * s + 0.5 * ratio : ratio, 0.1, 10.0);
     ++samples_[int(p)];
 }
 

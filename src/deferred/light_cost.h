@@ -146,10 +146,8 @@ public:
     // Starting scales, e.g. from DSR_LIGHT_COST_SCALE="quad,volume,tiles" (parse_cost_scale): given,
     // not guessed, so the measurements are averaged with them from the first.
     explicit LightCostCalibration(const std::array<double, kLightPaths>& start)
-        : scale_(start), measured_{true, true, true}, given_(true) {}
+        : scale_(start), given_(true) {}
     const std::array<double, kLightPaths>& scale() const { return scale_; }
-    // Whether path p's scale is a measurement (or was given), not the starting guess.
-    bool measured(LightPath p) const { return measured_[size_t(p)]; }
     // Measurements of path p so far (given scales: as many as exploring wants, kExploreSamples).
     int samples(LightPath p) const { return given_ ? kExploreSamples : samples_[size_t(p)]; }
     // What an exploring path is drawn for (light_geometry_auto.cpp): one timed draw on a noisy
@@ -162,9 +160,8 @@ public:
 
 private:
     std::array<double, kLightPaths> scale_{1, 1, 1};
-    std::array<bool, kLightPaths> measured_{false, false, false};  // scale_ more than the start's guess
     std::array<int, kLightPaths> samples_{0, 0, 0};
-    bool given_ = false;
+    bool given_ = false;  // scale_ started from given scales, not the guess
 };
 
 // "Q,V,T": three positive numbers, each path's starting scale (DSR_LIGHT_COST_SCALE: a large one keeps a

@@ -20,7 +20,7 @@
 #include "deferred/light_mesh.h"
 #include "deferred/light_pass.h"
 #include "dsr_clock.h"
-#include "gl/entry_points.h"
+#include "gl/frame_timer.h"
 #include "gl/gl.h"
 
 namespace dsr {
@@ -40,7 +40,7 @@ public:
           volume_ok_(c.paths.accum_depth),
           quad_depth_(c.paths.accum_depth && c.opts.skip.light_depth_test),
           calibrate_(c.caps.software_rasterizer),
-          gpu_calibrate_(!c.caps.software_rasterizer && c.caps.timer_query && gl_entry.QueryCounter) {}
+          gpu_calibrate_(gpu_timestamps(c.caps)) {}
 
     ~AutoGeometry() override {
         if (!queries_.empty()) glDeleteQueries(GLsizei(queries_.size()), queries_.data());
@@ -53,8 +53,7 @@ public:
     // its place before the plan.
     bool prepare_reads_back(const FrameDef& f) const override {
         if (!tiles_->depth_culling()) return false;
-        if (kept_path_ >= 0 && keep_rest_ > 0 && f.lights.size() == priced_lights_)
-            return kept_path_ == int(LightPath::tiles);
+        if (keeps(f)) return kept_path_ == int(LightPath::tiles);
         return spans_rest_ == 0;
     }
 
@@ -157,11 +156,16 @@ public:
     // image is the same whatever the choice; a kept frame is predicted and calibrated against the
     // last priced frame's prices (the choice assumes its lights are much as they were). Volumes are
     // not kept: a light the camera has since put past the far plane cannot take one.
+    // Whether frame f keeps the last priced frame's choice (keep_choice).
+    bool keeps(const FrameDef& f) const {
+        return kept_path_ >= 0 && keep_rest_ > 0 && f.lights.size() == priced_lights_ &&
+               (kept_path_ != int(LightPath::tiles) || tiles_->depth_culling());
+    }
+
     // The hand-off's answer for a kept frame; nullopt where the frame is to be priced.
     std::optional<bool> keep_choice(const FrameDef& f, RenderTargets& targets, FrameStats& stats) {
-        if (kept_path_ < 0 || keep_rest_ <= 0 || f.lights.size() != priced_lights_) return std::nullopt;
+        if (!keeps(f)) return std::nullopt;
         const LightPath p = LightPath(kept_path_);
-        if (p == LightPath::tiles && !tiles_->depth_culling()) return std::nullopt;
         --keep_rest_;
         features_.assign(f.lights.size(), LightFeature{});
         depth_ = TileDepth{};

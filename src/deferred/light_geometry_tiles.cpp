@@ -30,7 +30,7 @@
 #include "deferred/main_buffer_map.h"
 #include "deferred/tile_depth.h"
 #include "dsr_clock.h"
-#include "gl/entry_points.h"
+#include "gl/frame_timer.h"
 #include "gl/stream_buffer.h"
 
 namespace dsr {
@@ -80,7 +80,7 @@ public:
           flat_stride_(kFixedFloats + 4 * flat_vecs_),
           xy_slack_(c.opts.depth == DepthPath::position16 ? 1.0f / 1024.0f : 0.0f),
           round_(c.tile_round),
-          timeline_(c.caps.timer_query && gl_entry.QueryCounter && !c.caps.software_rasterizer) {
+          timeline_(gpu_timestamps(c.caps)) {
         if (tile_depth_culling(c)) depth_ = std::make_unique<TileDepthPass>(c, programs, width, height);
         if (vertex_fetch_) {
             flat_sources_ = std::make_unique<ProgramSources>(programs.sources("light_tiles_flat"));

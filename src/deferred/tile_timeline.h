@@ -22,7 +22,6 @@ public:
     TileTimeline(const TileTimeline&) = delete;
     TileTimeline& operator=(const TileTimeline&) = delete;
     ~TileTimeline();
-    bool on() const { return on_; }
     // A timestamp of this frame's set. spans_begin starts a set (a frame whose spans were measured
     // but whose lights did not go through the tiles left its set unfinished: it is started again);
     // draws_begin without spans starts one too (no depth culling).
