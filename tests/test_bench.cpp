@@ -834,7 +834,7 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     const nlohmann::ordered_json f = bench::row_json(forward_row("default", 3, bench::Renderer::forward_single, 2.0));
     const std::vector<std::string> keys = {
         "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "gbuffer_bytes_per_pixel", "light_geometry", "tile_size", "tile_lights", "scissor", "skips_off", "linear_law",
-        "lights", "lights_label", "size", "frames", "ms_median", "ms_min", "ms_max", "frames_ms", "cpu_ms_median", "cpu_frames_ms",
+        "lights", "lights_label", "size", "frames", "warmup_frames", "ms_median", "ms_min", "ms_max", "frames_ms", "cpu_ms_median", "cpu_frames_ms",
         "cpu_make_frame_ms", "cpu_lights_ms", "light_fragments",
         "ideal_fragments", "fragments_ratio", "scissor_pixels", "lights_drawn", "passes", "max_lsb", "mean_lsb",
         "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic", "light_invocations",
@@ -897,6 +897,24 @@ TEST(Bench, TablesHaveOneCellPerColumn) {
     EXPECT_EQ(md.rfind("| scene | lights | configuration | frames |", 0), 0u) << md;
     EXPECT_NE(md.find("\n| --- | ---: | --- |"), std::string::npos);
     EXPECT_NE(md.find("| default | 3 | deferred texture sc | 3 | 12.35 |"), std::string::npos) << md;
+}
+
+// The warm-up ends after `warmup` frames in a row that built no program: auto's third frame may
+// build the programs of a path it takes then.
+TEST(Bench, WarmUpLastsUntilFramesStopBuildingPrograms) {
+    auto run = [](std::vector<bench::WarmupFrame> seq, int warmup = 2, int extra = 4) {
+        size_t i = 0;
+        const int n = bench::warm_up(warmup, extra, [&] { return i < seq.size() ? seq[i++] : bench::WarmupFrame{}; });
+        EXPECT_EQ(size_t(n), i);  // it ran as many as it says
+        return n;
+    };
+    const bench::WarmupFrame b{true, false}, q{false, false}, slow{true, true};
+    EXPECT_EQ(run({b, q, q}), 3);           // a fixed geometry: its programs in the first frame
+    EXPECT_EQ(run({q, q}), 2);              // none to build: the minimum
+    EXPECT_EQ(run({b, q, b, q, q}), 5);     // auto at 256 lights: two more in the third frame
+    EXPECT_EQ(run({b, b, b, b, b, b, b}), 6);  // at most warmup + compile_warmup
+    EXPECT_EQ(run({b, slow, q, q}), 2);     // a slow frame ends it
+    EXPECT_EQ(run({b, q}, 1, 4), 2);        // --quick: one quiet frame
 }
 
 TEST(Bench, SlowFramesGetFewerTimedFrames) {

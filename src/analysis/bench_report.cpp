@@ -40,6 +40,7 @@ json row_json(const Row& r) {
     j["lights_label"] = r.lights_label;
     j["size"] = {r.w, r.h};
     j["frames"] = r.frames;
+    j["warmup_frames"] = r.warmup_frames;
     j["ms_median"] = r.ms_median;
     j["ms_min"] = r.ms_min;
     j["ms_max"] = r.ms_max;
@@ -184,7 +185,7 @@ json to_json(const Summary& s) {
     j["machine"] = s.machine;
     j["gl_renderer"] = s.gl_renderer;
     j["gl_version"] = s.gl_version;
-    j["config"] = {{"quick", cfg.quick}, {"size", {cfg.w, cfg.h}}, {"frames", cfg.frames}, {"warmup", cfg.warmup},
+    j["config"] = {{"quick", cfg.quick}, {"size", {cfg.w, cfg.h}}, {"frames", cfg.frames}, {"warmup", cfg.warmup}, {"compile_warmup", cfg.compile_warmup},
                    {"lights", cfg.lights_text}, {"scenes", s.scenes}};
     std::vector<std::string> geometries;
     for (LightGeometry g : cfg.geometries) geometries.push_back(light_geometry_name(g));
@@ -285,7 +286,9 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
           "do not edit by hand. Raw numbers: `benchmarks.json`.\n\n"
        << "- Machine: " << s.machine << "\n"
        << "- GL renderer: " << s.gl_renderer << ", OpenGL " << s.gl_version << " (" << s.gl_vendor << ")\n"
-       << "- Size " << cfg.w << "x" << cfg.h << large_size(s.rows, cfg) << "; each row: " << cfg.warmup << " warm-up frames, then the median "
+       << "- Size " << cfg.w << "x" << cfg.h << large_size(s.rows, cfg) << "; each row: warm-up frames until " << cfg.warmup
+       << " in a row build no shader program (at most " << cfg.warmup + cfg.compile_warmup
+       << ": the JSON's `warmup_frames`), then the median "
        << "and min-max of " << cfg.frames << " timed frames (fewer where one frame takes over 2 s: the `frames` "
        << "column), all rows in one process; whole run " << format_number("%.0f", s.seconds) << " s.\n"
        << "- Post-processing off in every row.\n\n"

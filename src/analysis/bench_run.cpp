@@ -23,6 +23,7 @@
 #include "deferred/deferred_shader.h"
 #include "deferred/option_table.h"
 #include "forward/forward_renderer.h"
+#include "gl/program.h"
 #include "gl/readback.h"
 
 namespace dsr::bench {
@@ -328,13 +329,15 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
     // without them to the first timed frame (32-large's tiles row: 1131-1198 ms, the rest 19-25).
     for (auto& run : runs)
         if (run->ds) run->ds->set_counting(false);
+    // Each row's warm-up (warm_up): until its frames stop building programs.
     for (auto& run : runs) {
         double first = 0;
-        for (int i = 0; i < cfg.warmup; ++i) {
-            double ms = run->frame(*run->scene, v.w, v.h);
-            if (i == 0) first = ms;
-            if (ms > kSlowFrameMs) break;  // a slow frame is its own warm-up
-        }
+        run->row.warmup_frames = warm_up(cfg.warmup, cfg.compile_warmup, [&] {
+            const long long built = Program::built();
+            const double ms = run->frame(*run->scene, v.w, v.h);
+            if (first == 0) first = ms;
+            return WarmupFrame{Program::built() != built, ms > kSlowFrameMs};  // a slow frame is its own warm-up
+        });
         run->row.frames = frames_for(first, cfg.frames);
         // The medians are the timed frames': the warm-up's (the first with the shaders' compiles)
         // used to sit among them in the light stage's, the hand-off's and the CPU's.
@@ -512,6 +515,17 @@ std::pair<int, int> context_size(const Config& cfg) {
         w = std::max(w, vw), h = std::max(h, vh);
     }
     return {w, h};
+}
+
+int warm_up(int warmup, int compile_warmup, const std::function<WarmupFrame()>& frame) {
+    int frames = 0, quiet = 0;
+    while (quiet < warmup && frames < warmup + compile_warmup) {
+        const WarmupFrame f = frame();
+        ++frames;
+        if (f.slow) break;
+        quiet = f.built ? 0 : quiet + 1;
+    }
+    return frames;
 }
 
 int frames_for(double first_ms, int frames) {

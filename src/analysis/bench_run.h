@@ -28,6 +28,8 @@ struct Config {
     int w = 512, h = 512;
     bool size_given = false;  // --size given: every variant at w x h (else N-large at the demo's, variant_size)
     int frames = 10, warmup = 2;
+    // Warm-up: until `warmup` frames in a row build no program, at most warmup + compile_warmup (time_frames).
+    int compile_warmup = 4;
     std::vector<int> lights;  // light counts of the sweep; -1: the scene's own lights
     std::vector<LightSet> light_sets;  // parallel to lights (bench_scenes.h); missing: spread
     std::string lights_text;  // --lights as given (or its default), e.g. "own,32,256"
@@ -74,6 +76,7 @@ struct Row {
     bool scissor = false;
     SkipOptions skip;                       // every skip on unless the row turned one off
     int lights = 0, w = 0, h = 0, frames = 0;
+    int warmup_frames = 0;                  // untimed frames before them (time_frames: more while a frame builds a program)
     std::string lights_label;               // the --lights entry it came from: "own", "32", "1024-overlap", ...
     int sweep_index = 0;                    // place of its light count in --lights (plot marker size)
     double ms_median = 0, ms_min = 0, ms_max = 0;
@@ -133,6 +136,18 @@ std::vector<size_t> round_order(size_t rows, int round);
 
 // Frames to time after warm-up: the configured count, unless one frame takes over 2 s (forward
 // passes at 1024 lights on a software rasteriser), then as many as fit in 20 s, at least 3.
+// A row's warm-up: frames until `warmup` in a row have built no shader program, at most warmup +
+// compile_warmup, or until a slow frame (its own warm-up); returns the frames run. auto builds a
+// path's programs when it first takes it (the tiles' per-count ones: 3 ms each to link on
+// llvmpipe, more to compile at their first draw), which may be the third frame after a quiet
+// second: 256 lights at 512x512 built 13 in the first frame and 2 in the third, 39-56 ms against
+// 13, the first timed frame when the warm-up was two frames. The same rule for every row.
+struct WarmupFrame {
+    bool built = false;  // the frame built a program
+    bool slow = false;   // it took over kSlowFrameMs
+};
+int warm_up(int warmup, int compile_warmup, const std::function<WarmupFrame()>& frame);
+
 int frames_for(double first_ms, int frames);
 
 // "MODEL NAME, N logical CPUs" from /proc/cpuinfo.
