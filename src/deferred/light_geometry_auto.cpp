@@ -22,6 +22,7 @@
 #include "dsr_clock.h"
 #include "gl/frame_timer.h"
 #include "gl/gl.h"
+#include "gl/gpu_stamps.h"
 
 namespace dsr {
 
@@ -41,10 +42,6 @@ public:
           quad_depth_(c.paths.accum_depth && c.opts.skip.light_depth_test),
           calibrate_(c.caps.software_rasterizer),
           gpu_calibrate_(gpu_timestamps(c.caps)) {}
-
-    ~AutoGeometry() override {
-        if (!queries_.empty()) glDeleteQueries(GLsizei(queries_.size()), queries_.data());
-    }
 
     void resize(int width, int height) override { tiles_->resize(width, height); }
 
@@ -294,11 +291,9 @@ private:
             return;
         }
         if (gpu_calibrate_) {
-            GpuTime t{p, query(), query(), raw[int(p)]};
-            glQueryCounter(t.begin, GL_TIMESTAMP);
+            const GLuint begin = stamps_.stamp();
             draw();
-            glQueryCounter(t.end, GL_TIMESTAMP);
-            pending_.push_back(t);
+            pending_.push_back(GpuTime{p, begin, stamps_.stamp(), raw[int(p)]});
             return;
         }
         glFinish();
@@ -308,40 +303,29 @@ private:
         calib_.add(p, now_ms() - t0, raw[int(p)]);
     }
 
-    // A query of the pool: those of finished measurements are used again.
-    GLuint query() {
-        if (free_.empty()) {
-            queries_.push_back(0);
-            glGenQueries(1, &queries_.back());
-            return queries_.back();
-        }
-        const GLuint q = free_.back();
-        free_.pop_back();
-        return q;
-    }
-
-    // The last frame's GPU measurements that are ready into the calibration; those not ready are
-    // dropped (their queries stay busy until a later frame finds them done).
+    // The last frames' GPU measurements that are ready into the calibration; those not ready wait
+    // for a later frame.
     void collect_gpu_times() {
         std::vector<GpuTime> busy;
         for (const GpuTime& t : pending_) {
-            GLuint ready = 0;
-            glGetQueryObjectuiv(t.end, GL_QUERY_RESULT_AVAILABLE, &ready);
-            if (!ready) {
+            if (!GpuStamps::ready(t.end)) {
                 busy.push_back(t);
                 continue;
             }
-            GLuint64 t0 = 0, t1 = 0;
-            glGetQueryObjectui64v(t.begin, GL_QUERY_RESULT, &t0);
-            glGetQueryObjectui64v(t.end, GL_QUERY_RESULT, &t1);
-            if (t.raw_ms > 0) calib_.add(t.path, double(t1 - t0) * 1e-6, t.raw_ms);
-            free_.push_back(t.begin), free_.push_back(t.end);
+            if (t.raw_ms > 0) calib_.add(t.path, GpuStamps::ms(t.end) - GpuStamps::ms(t.begin), t.raw_ms);
+            stamps_.release(t.begin);
+            stamps_.release(t.end);
         }
         pending_.clear();
-        // Keep waiting on at most a few frames' worth; the rest are given up (their queries leak
-        // into the pool's size, bounded by what a frame asks for).
-        for (const GpuTime& t : busy)
-            if (pending_.size() < 3 * kLightPaths) pending_.push_back(t);
+        // At most a few frames' worth wait; the rest are given up, their stamps back to the pool.
+        for (const GpuTime& t : busy) {
+            if (pending_.size() < 3 * kLightPaths) {
+                pending_.push_back(t);
+                continue;
+            }
+            stamps_.release(t.begin);
+            stamps_.release(t.end);
+        }
     }
 
     LightQuadBatch quads_;
@@ -363,7 +347,7 @@ private:
         GLuint begin, end;
         double raw_ms;
     };
-    std::vector<GLuint> queries_, free_;
+    GpuStamps stamps_;
     std::vector<GpuTime> pending_;
     bool drawn_before_[kLightPaths] = {false, false, false};
     static constexpr int kSpansRest = 8;

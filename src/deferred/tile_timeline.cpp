@@ -3,23 +3,19 @@
 
 namespace dsr {
 
-TileTimeline::~TileTimeline() {
-    for (Set& s : sets_)
-        for (GLuint q : s.q)
-            if (q) glDeleteQueries(1, &q);
-}
-
 void TileTimeline::mark(Mark m) {
     if (!on_) return;
     Set& s = sets_[size_t(current_)];
     if (m == spans_begin || !open_) {  // a new set, or an unfinished one started again
         open_ = true;
-        s.issued = 0;
+        for (GLuint& q : s.q) {
+            if (q) stamps_.release(q);
+            q = 0;
+        }
         s.pending = false;
     }
-    if (!s.q[size_t(m)]) glGenQueries(1, &s.q[size_t(m)]);
-    glQueryCounter(s.q[size_t(m)], GL_TIMESTAMP);
-    s.issued |= 1u << m;
+    if (s.q[size_t(m)]) stamps_.release(s.q[size_t(m)]);
+    s.q[size_t(m)] = stamps_.stamp();
 }
 
 void TileTimeline::end_frame(FrameStats& stats) {
@@ -31,18 +27,11 @@ void TileTimeline::end_frame(FrameStats& stats) {
     // The newest finished set whose last stamp the GPU has reached.
     for (int age = 1; age < kSets; ++age) {
         Set& s = sets_[size_t((current_ - age + kSets) % kSets)];
-        if (!s.pending) continue;
-        GLuint ready = 0;
-        glGetQueryObjectuiv(s.q[draws_end], GL_QUERY_RESULT_AVAILABLE, &ready);
-        if (!ready) continue;
+        if (!s.pending || !s.q[draws_end] || !GpuStamps::ready(s.q[draws_end])) continue;
         std::array<double, kMarks> ms{};
         for (int m = 0; m < kMarks; ++m)
-            if (s.issued >> m & 1) {
-                GLuint64 ns = 0;
-                glGetQueryObjectui64v(s.q[size_t(m)], GL_QUERY_RESULT, &ns);
-                ms[size_t(m)] = double(ns) * 1e-6;
-            }
-        const bool spans = (s.issued >> spans_begin & 1) && (s.issued >> spans_end & 1);
+            if (s.q[size_t(m)]) ms[size_t(m)] = GpuStamps::ms(s.q[size_t(m)]);
+        const bool spans = s.q[spans_begin] && s.q[spans_end];
         stats.tile_gpu_spans_ms = spans ? ms[spans_end] - ms[spans_begin] : -1;
         stats.tile_gpu_wait_ms = spans ? ms[draws_begin] - ms[spans_end] : -1;
         stats.tile_gpu_shade_ms = ms[draws_end] - ms[draws_begin];

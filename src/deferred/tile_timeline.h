@@ -10,7 +10,7 @@
 #include <array>
 
 #include "deferred/frame_stats.h"
-#include "gl/gl.h"
+#include "gl/gpu_stamps.h"
 
 namespace dsr {
 
@@ -21,7 +21,6 @@ public:
     explicit TileTimeline(bool on) : on_(on) {}
     TileTimeline(const TileTimeline&) = delete;
     TileTimeline& operator=(const TileTimeline&) = delete;
-    ~TileTimeline();
     // A timestamp of this frame's set. spans_begin starts a set (a frame whose spans were measured
     // but whose lights did not go through the tiles left its set unfinished: it is started again);
     // draws_begin without spans starts one too (no depth culling).
@@ -33,11 +32,11 @@ public:
 private:
     static constexpr int kSets = 4;  // frames in flight at most; an older set not read is dropped
     struct Set {
-        std::array<GLuint, kMarks> q{};
-        unsigned issued = 0;  // bit per Mark
-        bool pending = false; // finished, not yet read
+        std::array<GLuint, kMarks> q{};  // the stamps of this set (0: not issued)
+        bool pending = false;            // finished, not yet read
     };
     bool on_;
+    GpuStamps stamps_;
     std::array<Set, kSets> sets_;
     int current_ = 0;
     bool open_ = false;  // sets_[current_] has marks of this frame
