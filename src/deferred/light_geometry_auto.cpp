@@ -93,7 +93,10 @@ public:
             raw_ = price_lights(features_, grid_, model_);
             plan_ = choose_light_paths(raw_, screen_px, model_, scale, {true, volume_ok_, true}, true);
             if (spans) plan_.predicted_ms[2] += model_.spans_mpx_ms * screen_px * 1e-6;
-            if (spans && plan_.count[int(LightPath::tiles)] == 0) spans_rest_ = kSpansRest;
+            // Not while a path the plan took is still being measured: its scale may yet show the
+            // tiles cheaper (the default scene's three lights went by volumes at a starting scale
+            // of 1, measured 1.8-1.9 the next frame, and the tiles went unpriced for 8 frames).
+            if (spans && plan_.count[int(LightPath::tiles)] == 0 && plan_settled()) spans_rest_ = kSpansRest;
         }
         // A path the constants may overprice is drawn to be measured (its first draw compiles,
         // the next two are timed), where its plan is predicted close to the best: the image is
@@ -157,6 +160,14 @@ public:
     bool keeps(const FrameDef& f) const {
         return kept_path_ >= 0 && keep_rest_ > 0 && f.lights.size() == priced_lights_ &&
                (kept_path_ != int(LightPath::tiles) || tiles_->depth_culling());
+    }
+
+    // Whether every path the plan sends a light by has been measured (LightCostCalibration::samples).
+    bool plan_settled() const {
+        for (int p = 0; p < kLightPaths; ++p)
+            if (plan_.count[size_t(p)] > 0 && calib_.samples(LightPath(p)) < LightCostCalibration::kExploreSamples)
+                return false;
+        return true;
     }
 
     // The hand-off's answer for a kept frame; nullopt where the frame is to be priced.
