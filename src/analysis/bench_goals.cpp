@@ -134,11 +134,16 @@ Figure speed(const Goal& g, const GoalInput& in) {
 }
 
 // The CPU time of a frame (FrameStats ms.cpu: the submitting thread's) of dsr's default at the
-// goal's light count, where the run has rows of it.
+// goal's light count, where the run has rows of it: its frames back to back (Row::cpu_alone_ms),
+// else (rows made without them) those of the rounds.
 Figure cpu(const Goal& g, const GoalInput& in) {
     const Row* d = find_default_row(in.rows, in.scene, std::stoi(g.on));
     if (!d) return not_judged();
-    return judged(d->cpu_ms, 1, ms(d->cpu_ms) + " CPU a frame (" + config_text(*d) + ", " + ms(d->ms_median) + " a frame)");
+    if (!d->cpu_alone_ms)
+        return judged(d->cpu_ms, 1, ms(d->cpu_ms) + " CPU a frame (" + config_text(*d) + ", " + ms(d->ms_median) + " a frame)");
+    return judged(*d->cpu_alone_ms, 1,
+                  ms(*d->cpu_alone_ms) + " CPU a frame, frames back to back (" + ms(d->cpu_ms) +
+                      " in the rounds among the other rows; " + config_text(*d) + ", " + ms(d->ms_median) + " a frame)");
 }
 
 // The stencil geometry's invocations against the ideal, where the GL's counter can tell.

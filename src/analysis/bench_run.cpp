@@ -18,6 +18,7 @@
 #include "dsr_clock.h"
 #include "analysis/analytic_reference.h"
 #include "analysis/bench_floor.h"
+#include "analysis/bench_goals.h"
 #include "analysis/bench_scenes.h"
 #include "analysis/ideal_fragments.h"
 #include "deferred/deferred_shader.h"
@@ -329,14 +330,16 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
     // without them to the first timed frame (32-large's tiles row: 1131-1198 ms, the rest 19-25).
     for (auto& run : runs)
         if (run->ds) run->ds->set_counting(false);
-    // Each row's warm-up (warm_up): until its frames stop building programs.
+    // Each row's warm-up (warm_up): until its frames stop building programs and exploring.
     for (auto& run : runs) {
         double first = 0;
         run->row.warmup_frames = warm_up(cfg.warmup, cfg.compile_warmup, [&] {
             const long long built = Program::built();
             const double ms = run->frame(*run->scene, v.w, v.h);
             if (first == 0) first = ms;
-            return WarmupFrame{Program::built() != built, ms > kSlowFrameMs};  // a slow frame is its own warm-up
+            run->row.warmup_frames_ms.push_back(ms);
+            // A slow frame is its own warm-up.
+            return WarmupFrame{Program::built() != built, run->ds && run->last.auto_explored >= 0, ms > kSlowFrameMs};
         });
         run->row.frames = frames_for(first, cfg.frames);
         // The medians are the timed frames': the warm-up's (the first with the shaders' compiles)
@@ -355,6 +358,17 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
         }
         if (f < cfg.frames)  // (a) in the same rounds, as many frames as the fast rows
             for (auto& [l, fb] : floors.bench) floors.fill_ms[l].push_back(fb->fill_frame(v.scene));
+    }
+    // The CPU goal's frames: dsr's default row's frames again, back to back. In the rounds a frame
+    // runs after the other rows' (24 of them at 4096 lights on an H100 host: 0.76 ms of CPU a
+    // frame there against 0.34-0.41 in renders of the same frame).
+    std::vector<Row> rows;
+    for (auto& run : runs) rows.push_back(run->row);
+    if (const Row* d = rows.empty() ? nullptr : find_default_row(rows, v.name, rows.front().lights)) {
+        RowRun& run = *runs[size_t(d - rows.data())];
+        for (int f = 0; f < run.row.frames; ++f)
+            run.row.cpu_alone_frames_ms.push_back(run.ds->render(*run.scene, v.w, v.h).ms.cpu);
+        run.row.cpu_alone_ms = median(run.row.cpu_alone_frames_ms);
     }
     for (auto& run : runs)
         if (run->ds) {
@@ -523,7 +537,7 @@ int warm_up(int warmup, int compile_warmup, const std::function<WarmupFrame()>& 
         const WarmupFrame f = frame();
         ++frames;
         if (f.slow) break;
-        quiet = f.built ? 0 : quiet + 1;
+        quiet = f.built || f.exploring ? 0 : quiet + 1;
     }
     return frames;
 }

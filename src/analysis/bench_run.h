@@ -28,8 +28,9 @@ struct Config {
     int w = 512, h = 512;
     bool size_given = false;  // --size given: every variant at w x h (else N-large at the demo's, variant_size)
     int frames = 10, warmup = 2;
-    // Warm-up: until `warmup` frames in a row build no program, at most warmup + compile_warmup (time_frames).
-    int compile_warmup = 4;
+    // Warm-up: until `warmup` frames in a row build no program and explore no path, at most
+    // warmup + compile_warmup frames (warm_up).
+    int compile_warmup = 12;
     std::vector<int> lights;  // light counts of the sweep; -1: the scene's own lights
     std::vector<LightSet> light_sets;  // parallel to lights (bench_scenes.h); missing: spread
     std::string lights_text;  // --lights as given (or its default), e.g. "own,32,256"
@@ -76,7 +77,8 @@ struct Row {
     bool scissor = false;
     SkipOptions skip;                       // every skip on unless the row turned one off
     int lights = 0, w = 0, h = 0, frames = 0;
-    int warmup_frames = 0;                  // untimed frames before them (time_frames: more while a frame builds a program)
+    int warmup_frames = 0;                  // untimed frames before them (warm_up), and their wall times
+    std::vector<double> warmup_frames_ms;
     std::string lights_label;               // the --lights entry it came from: "own", "32", "1024-overlap", ...
     int sweep_index = 0;                    // place of its light count in --lights (plot marker size)
     double ms_median = 0, ms_min = 0, ms_max = 0;
@@ -89,6 +91,12 @@ struct Row {
     // set-up and culling, the light stage's submission), medians, and the CPU time of each timed frame.
     std::optional<double> cpu_make_frame_ms, cpu_lights_ms;
     std::vector<double> cpu_frames_ms;
+    // dsr's default row of each variant (find_default_row), goal `cpu`: the submitting thread's CPU
+    // in as many frames again, run back to back after the rounds as an application draws them, and
+    // their median (null on the other rows). In the rounds each frame follows the other rows'
+    // frames and finds the caches holding their data.
+    std::optional<double> cpu_alone_ms;
+    std::vector<double> cpu_alone_frames_ms;
     // light_fragments: samples that passed the light passes (occlusion queries); light_invocations:
     // fragments that entered the light shader (ARB_pipeline_statistics_query); null where the GL
     // lacks the query. ideal_fragments: from exact surface points (ideal_source says which).
@@ -136,15 +144,20 @@ std::vector<size_t> round_order(size_t rows, int round);
 
 // Frames to time after warm-up: the configured count, unless one frame takes over 2 s (forward
 // passes at 1024 lights on a software rasteriser), then as many as fit in 20 s, at least 3.
-// A row's warm-up: frames until `warmup` in a row have built no shader program, at most warmup +
-// compile_warmup, or until a slow frame (its own warm-up); returns the frames run. auto builds a
-// path's programs when it first takes it (the tiles' per-count ones: 3 ms each to link on
-// llvmpipe, more to compile at their first draw), which may be the third frame after a quiet
-// second: 256 lights at 512x512 built 13 in the first frame and 2 in the third, 39-56 ms against
-// 13, the first timed frame when the warm-up was two frames. The same rule for every row.
+// A row's warm-up: frames until `warmup` in a row have built no shader program and drawn no light
+// by a path auto was exploring (FrameStats::auto_explored), at most warmup + compile_warmup, or
+// until a slow frame (its own warm-up); returns the frames run. The timed frames are then the
+// renderer's steady state, whatever it learns first: auto measures a path it has not drawn by
+// drawing it (exploration_plan) and builds a path's programs when it first takes it (the tiles'
+// per-count ones: 3 ms each to link on llvmpipe, more to compile at their first draw). With two
+// frames of warm-up, 256 lights at 512x512 built 13 programs in the first frame and 2 in the
+// third, 39-56 ms against 13; on 32-large auto explored volumes in its first frames, then built
+// the tiles' programs in its first timed frame (122 ms against 20-30). The same rule for every
+// row: a fixed geometry explores nothing. The JSON's warmup_frames and warmup_frames_ms show it.
 struct WarmupFrame {
-    bool built = false;  // the frame built a program
-    bool slow = false;   // it took over kSlowFrameMs
+    bool built = false;      // the frame built a program
+    bool exploring = false;  // auto drew lights by a path to measure it
+    bool slow = false;       // it took over kSlowFrameMs
 };
 int warm_up(int warmup, int compile_warmup, const std::function<WarmupFrame()>& frame);
 
