@@ -111,8 +111,11 @@ int cmd_bench(const std::vector<std::string>& argv) {
     sum.machine = bench::machine_name();
     sum.gl_renderer = caps.renderer, sum.gl_version = caps.version, sum.gl_vendor = caps.vendor;
     sum.config = cfg;
-    std::fprintf(stderr, "bench: %s; GL %s (%s); %dx%d, %d warm-up + %d timed frames per row\n", sum.machine.c_str(),
-                 caps.renderer.c_str(), caps.version.c_str(), cfg.w, cfg.h, cfg.warmup, cfg.frames);
+    std::fprintf(stderr,
+                 "bench: %s; GL %s (%s); %dx%d, per row warm-up frames until %d in a row build no program and explore no "
+                 "path (at most %d), then %d timed frames\n",
+                 sum.machine.c_str(), caps.renderer.c_str(), caps.version.c_str(), cfg.w, cfg.h, cfg.warmup,
+                 cfg.warmup + cfg.compile_warmup, cfg.frames);
 
     // Whether the invocation counter can judge the stencil goal (gl/invocation_probe.h).
     sum.invocation_probe = probe_invocation_counter(resource_dir("glsl120"));

@@ -198,7 +198,7 @@ Command bench_command(BenchSettings& s) {
                 }};
     c.flags = {
         switch_flag("--quick", s.quick,
-                    qsize + ", " + std::to_string(BenchSettings::kQuickWarmup) + " warm-up + " +
+                    qsize + ", warm-up frames until one builds no shader program and explores no light path, " +
                         std::to_string(BenchSettings::kQuickFrames) + " timed frames, lights " + BenchSettings::kQuickLights),
         file_flag({"--json"}, "FILE.json", s.json, {".json"}, "every row, the goals and the machine (docs/benchmarks.json)"),
         file_flag({"--report"}, "FILE.md", s.report, {".md"},

@@ -66,6 +66,7 @@ struct BenchSettings {
     static constexpr const char* kBenchLights = "own,32,256,1024,1024-overlap,32-large";
     static constexpr const char* kQuickLights = "own,32,256";
     static constexpr int kQuickSize = 128, kQuickFrames = 3, kQuickWarmup = 1;
+    static_assert(kQuickWarmup == 1, "--quick's help says one quiet warm-up frame");
 };
 
 struct StressSettings {
