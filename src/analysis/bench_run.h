@@ -142,8 +142,6 @@ std::pair<int, int> context_size(const Config& cfg);
 // most of it CPU time after the long wait, every round (an H100 at 1920x1080).
 std::vector<size_t> round_order(size_t rows, int round);
 
-// Frames to time after warm-up: the configured count, unless one frame takes over 2 s (forward
-// passes at 1024 lights on a software rasteriser), then as many as fit in 20 s, at least 3.
 // A row's warm-up: frames until `warmup` in a row have built no shader program and drawn no light
 // by a path auto was exploring (FrameStats::auto_explored), at most warmup + compile_warmup, or
 // until a slow frame (its own warm-up); returns the frames run. The timed frames are then the
@@ -161,6 +159,8 @@ struct WarmupFrame {
 };
 int warm_up(int warmup, int compile_warmup, const std::function<WarmupFrame()>& frame);
 
+// Frames to time after warm-up: the configured count, unless one frame takes over 2 s (forward
+// passes at 1024 lights on a software rasteriser), then as many as fit in 20 s, at least 3.
 int frames_for(double first_ms, int frames);
 
 // "MODEL NAME, N logical CPUs" from /proc/cpuinfo.

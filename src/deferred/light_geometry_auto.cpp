@@ -95,7 +95,7 @@ public:
             if (spans) plan_.predicted_ms[2] += model_.spans_mpx_ms * screen_px * 1e-6;
             // Not while a path the plan took is still being measured: its scale may yet show the
             // tiles cheaper (the default scene's three lights went by volumes at a starting scale
-            // of 1, measured 1.8-1.9 the next frame, and the tiles went unpriced for 8 frames).
+            // of 1, measured 1.7-2.1 the next frame, and the tiles went unpriced for 8 frames).
             if (spans && plan_.count[int(LightPath::tiles)] == 0 && plan_settled()) spans_rest_ = kSpansRest;
         }
         // A path the constants may overprice is drawn to be measured (its first draw compiles,
