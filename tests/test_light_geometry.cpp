@@ -699,11 +699,15 @@ namespace dsr::test {
 
 // The tiles' spans rest for a few frames after a priced frame gave the tiles no light, but not
 // while a path that frame took is still unmeasured: the default scene's three lights went by
-// volumes at their starting scale of 1, which measured 1.7-1.9 the frame after, and the tiles (about
-// 0.5-0.6) were not priced again for 8 frames. On llvmpipe (wall-clock calibration): once volumes
-// are measured dearer, the frames after send the lights through the tiles.
+// volumes at their starting scale of 1 (frame 3), which measured 1.7-2.1 the frame after, and the
+// tiles (about 0.5-0.6) were not priced again for 8 frames (frames 4-11 without the spans, 4 and
+// 8-11 by volumes). On llvmpipe (wall-clock calibration): the two frames after the first that
+// chooses volumes unmeasured are priced with the spans, and where volumes end up measured
+// clearly dearer (3x the tiles' scale; at 512x512 the tiles' unscaled price is about twice the
+// volumes', so they win from about 2.3x), the last frame goes by the tiles. (A loaded machine once
+// measured 1.65 against 0.84, and volumes were then rightly chosen to the end.)
 TEST(LightGeometry, AutoPricesTheTilesAgainOnceADearerPathIsMeasured) {
-    constexpr int kSize = 512;
+    constexpr int kSize = 512, kFrames = 12;
     auto ctx = create_context(ContextDesc{"osmesa", kSize, kSize});
     const Caps caps = probe_caps();
     if (!caps.software_rasterizer) GTEST_SKIP() << "wall-clock calibration is a CPU rasteriser's";
@@ -712,16 +716,22 @@ TEST(LightGeometry, AutoPricesTheTilesAgainOnceADearerPathIsMeasured) {
     DeferredShader ds(caps, kSize, kSize, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
     ds.set_scene(s);
     std::vector<FrameStats> st;
-    for (int frame = 0; frame < 10; ++frame) st.push_back(ds.render(s, kSize, kSize));
+    for (int frame = 0; frame < kFrames; ++frame) st.push_back(ds.render(s, kSize, kSize));
     std::string paths;
-    for (const FrameStats& f : st)
-        paths += std::to_string(f.auto_lights[0]) + "/" + std::to_string(f.auto_lights[1]) + "/" +
-                 std::to_string(f.auto_lights[2]) + (f.auto_explored >= 0 ? "e " : " ");
-    std::printf("[ tiles    ] quad/volume/tiles by frame: %s; scales %.2f %.2f %.2f\n", paths.c_str(),
-                st.back().auto_scale[0], st.back().auto_scale[1], st.back().auto_scale[2]);
-    ASSERT_GT(st.back().auto_scale[1], st.back().auto_scale[2] * 1.5) << "the case needs volumes measured dearer";
-    for (int frame = 8; frame < 10; ++frame)
-        EXPECT_EQ(st[size_t(frame)].auto_lights[2], st[size_t(frame)].lights_drawn) << "frame " << frame << ": " << paths;
+    int first_volumes = -1;  // the first frame that chose volumes without exploring them
+    for (int f = 0; f < kFrames; ++f) {
+        const FrameStats& x = st[size_t(f)];
+        paths += std::to_string(x.auto_lights[0]) + "/" + std::to_string(x.auto_lights[1]) + "/" +
+                 std::to_string(x.auto_lights[2]) + (x.auto_explored >= 0 ? "e" : "") + (x.auto_spans ? "s " : " ");
+        if (first_volumes < 0 && x.auto_explored < 0 && x.auto_lights[1] > 0) first_volumes = f;
+    }
+    std::printf("[ tiles    ] quad/volume/tiles by frame (e explored, s spans): %s; scales %.2f %.2f %.2f\n",
+                paths.c_str(), st.back().auto_scale[0], st.back().auto_scale[1], st.back().auto_scale[2]);
+    for (int f = first_volumes + 1; first_volumes >= 0 && f <= first_volumes + 2 && f < kFrames; ++f)
+        if (!st[size_t(f)].auto_kept)
+            EXPECT_TRUE(st[size_t(f)].auto_spans) << "frame " << f << " did not price the tiles: " << paths;
+    if (st.back().auto_scale[1] >= 3 * st.back().auto_scale[2])
+        EXPECT_EQ(st.back().auto_lights[2], st.back().lights_drawn) << paths;
 }
 
 }  // namespace dsr::test
