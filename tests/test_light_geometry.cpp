@@ -727,11 +727,14 @@ TEST(LightGeometry, AutoPricesTheTilesAgainOnceADearerPathIsMeasured) {
     }
     std::printf("[ tiles    ] quad/volume/tiles by frame (e explored, s spans): %s; scales %.2f %.2f %.2f\n",
                 paths.c_str(), st.back().auto_scale[0], st.back().auto_scale[1], st.back().auto_scale[2]);
-    for (int f = first_volumes + 1; first_volumes >= 0 && f <= first_volumes + 2 && f < kFrames; ++f)
-        if (!st[size_t(f)].auto_kept)
+    for (int f = first_volumes + 1; first_volumes >= 0 && f <= first_volumes + 2 && f < kFrames; ++f) {
+        if (!st[size_t(f)].auto_kept) {
             EXPECT_TRUE(st[size_t(f)].auto_spans) << "frame " << f << " did not price the tiles: " << paths;
-    if (st.back().auto_scale[1] >= 3 * st.back().auto_scale[2])
+        }
+    }
+    if (st.back().auto_scale[1] >= 3 * st.back().auto_scale[2]) {
         EXPECT_EQ(st.back().auto_lights[2], st.back().lights_drawn) << paths;
+    }
 }
 
 }  // namespace dsr::test
