@@ -332,16 +332,14 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
         if (run->ds) run->ds->set_counting(false);
     // Each row's warm-up (warm_up): until its frames stop building programs and exploring.
     for (auto& run : runs) {
-        double first = 0;
         run->row.warmup_frames = warm_up(cfg.warmup, cfg.compile_warmup, [&] {
             const long long built = Program::built();
             const double ms = run->frame(*run->scene, v.w, v.h);
-            if (first == 0) first = ms;
             run->row.warmup_frames_ms.push_back(ms);
             // A slow frame is its own warm-up.
             return WarmupFrame{Program::built() != built, run->ds && run->last.auto_explored >= 0, ms > kSlowFrameMs};
         });
-        run->row.frames = frames_for(first, cfg.frames);
+        run->row.frames = frames_for(run->row.warmup_frames_ms.front(), cfg.frames);
         // The medians are the timed frames': the warm-up's (the first with the shaders' compiles)
         // used to sit among them in the light stage's, the hand-off's and the CPU's.
         run->samples = {};

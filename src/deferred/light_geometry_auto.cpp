@@ -20,7 +20,6 @@
 #include "deferred/light_mesh.h"
 #include "deferred/light_pass.h"
 #include "dsr_clock.h"
-#include "gl/frame_timer.h"
 #include "gl/gl.h"
 #include "gl/gpu_stamps.h"
 
@@ -324,18 +323,15 @@ private:
                 continue;
             }
             if (t.raw_ms > 0) calib_.add(t.path, GpuStamps::ms(t.end) - GpuStamps::ms(t.begin), t.raw_ms);
-            stamps_.release(t.begin);
-            stamps_.release(t.end);
+            release(t);
         }
         pending_.clear();
         // At most a few frames' worth wait; the rest are given up, their stamps back to the pool.
         for (const GpuTime& t : busy) {
-            if (pending_.size() < 3 * kLightPaths) {
+            if (pending_.size() < 3 * kLightPaths)
                 pending_.push_back(t);
-                continue;
-            }
-            stamps_.release(t.begin);
-            stamps_.release(t.end);
+            else
+                release(t);
         }
     }
 
@@ -360,6 +356,11 @@ private:
     };
     GpuStamps stamps_;
     std::vector<GpuTime> pending_;
+    // A measurement's two stamps back to the pool (collect_gpu_times).
+    void release(const GpuTime& t) {
+        stamps_.release(t.begin);
+        stamps_.release(t.end);
+    }
     bool drawn_before_[kLightPaths] = {false, false, false};
     static constexpr int kSpansRest = 8;
     // Frames each path may be explored in, at most (three draws measure it twice; a fourth where a

@@ -30,7 +30,6 @@
 #include "deferred/main_buffer_map.h"
 #include "deferred/tile_depth.h"
 #include "dsr_clock.h"
-#include "gl/frame_timer.h"
 #include "gl/stream_buffer.h"
 
 namespace dsr {

@@ -98,10 +98,6 @@ void draw_passes(int w, int h, int passes) {
 
 }  // namespace
 
-bool gpu_timestamps(const Caps& caps) {
-    return caps.timer_query && gl_entry.QueryCounter && gl_entry.GetQueryObjectui64v && !caps.software_rasterizer;
-}
-
 const TimingCheck& choose_timing(const Caps& caps, int w, int h) {
     static TimingCheck check;
     static bool done = false;

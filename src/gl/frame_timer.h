@@ -31,11 +31,6 @@ struct TimingCheck {
 // kept). DSR_TIMING=wall|gpu-timer forces the choice.
 const TimingCheck& choose_timing(const Caps& caps, int width, int height);
 
-// Whether GL timestamps (ARB_timer_query's glQueryCounter) time the GPU's work on this GL: there
-// is the counter, and the GL is not a CPU rasteriser, whose queries do not time its rasterisation
-// (the auto geometry's calibration, the tiles' timeline).
-bool gpu_timestamps(const Caps& caps);
-
 class FrameTimer {
 public:
     explicit FrameTimer(TimingSource source = TimingSource::wall) : source_(source) {}

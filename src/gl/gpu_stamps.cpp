@@ -1,7 +1,13 @@
 // GL timestamps from a pool (gpu_stamps.h).
 #include "gl/gpu_stamps.h"
 
+#include "gl/entry_points.h"
+
 namespace dsr {
+
+bool gpu_timestamps(const Caps& caps) {
+    return caps.timer_query && gl_entry.QueryCounter && gl_entry.GetQueryObjectui64v && !caps.software_rasterizer;
+}
 
 GpuStamps::~GpuStamps() {
     if (!all_.empty()) glDeleteQueries(GLsizei(all_.size()), all_.data());

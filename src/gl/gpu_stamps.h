@@ -1,12 +1,18 @@
 // GL timestamps (ARB_timer_query's glQueryCounter) from one pool of queries, each read back once
 // the GPU has reached it, never waited for: what the auto geometry's calibration and the tiles'
-// timeline time the GPU with (gpu_timestamps() in gl/frame_timer.h says where they time it).
+// timeline time the GPU with (gpu_timestamps() says where they time it).
 #pragma once
 #include <vector>
 
+#include "gl/caps.h"
 #include "gl/gl.h"
 
 namespace dsr {
+
+// Whether GL timestamps (ARB_timer_query's glQueryCounter) time the GPU's work on this GL: there
+// is the counter, and the GL is not a CPU rasteriser, whose queries do not time its rasterisation
+// (the auto geometry's calibration, the tiles' timeline).
+bool gpu_timestamps(const Caps& caps);
 
 class GpuStamps {
 public:
