@@ -7,6 +7,8 @@
 // demo's pass starts from its ambient term; so does the first batch here (with_ambient, blending
 // off: what the clear and Listing 15's ambient pass would have left, as light.frag's AMBIENT_FOLD).
 // SHADOW (with SHADOW_SLOTS K): up to K shadowed lights a batch, as light_tiles.frag holds them.
+// ATT_SHARED (with LIGHT_POINT_INVERSE): every light has the constants att_shared, read once
+// instead of at each light's index in lightatt (the same values, so the same image).
 #include "depth_codec.glsl"
 #include "lighting.glsl"
 #include "shadow.glsl"
@@ -23,6 +25,12 @@ uniform vec4 lightcolor[BATCH];
 uniform vec4 lightdir[BATCH];
 uniform vec4 lightspot[BATCH];
 uniform vec4 lightatt[BATCH];
+#ifdef ATT_SHARED
+uniform vec3 att_shared;  // every light's attenuation constants (light_tiles.frag's ATT_SHARED)
+#define LIGHT_ATT(k) vec4(att_shared, 1.0)
+#else
+#define LIGHT_ATT(k) lightatt[k]
+#endif
 uniform vec2 planes;
 uniform vec3 zrange;
 uniform vec2 uv_scale;           // texture coordinates and (light.frag's) view ray from gl_FragCoord
@@ -45,7 +53,7 @@ void main()
     vec3 v = view_vector(pos);  // once, not per light
     vec3 c = vec3(0.0);
     for (int k = 0; k < LIGHTS; ++k) {  // the demo's loop, to its constant NR_LIGHTS
-        vec3 t = light_contribution(lightpos[k], lightcolor[k], lightdir[k], lightspot[k], lightatt[k], pos, v, normal,
+        vec3 t = light_contribution(lightpos[k], lightcolor[k], lightdir[k], lightspot[k], LIGHT_ATT(k), pos, v, normal,
                                     diffuse, specular.rgb, shininess);
 #ifdef SHADOW
         float slot = lightspot[k].z;

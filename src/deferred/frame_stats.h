@@ -46,9 +46,9 @@ struct FrameStats {
     int light_passes = 0;
     int lights_as_quads = 0;
     long long tile_light_pairs = 0;  // tiles: (tile, light) pairs its plan shaded (tile_plan.h)
-    // tiles: batches drawn by the form that reads the lights' shared attenuation constants once
-    // (light_tiles.frag ATT_SHARED).
-    int tile_att_shared_batches = 0;
+    // tiles, screen: batches drawn by the form that reads the lights' shared attenuation constants
+    // once (ATT_SHARED: light_tiles.frag, light_tiles_flat.frag, light_screen.frag).
+    int att_shared_batches = 0;
     // tiles: batches whose lights the vertex shader read (Paths::tile_fetch_vertex; light_tiles_flat.vert).
     int tile_vertex_batches = 0;
     bool tile_depth = false;         // tiles: the plan culled by the tiles' depth spans (tile_depth.h)

@@ -70,12 +70,20 @@ private:
             // The form the batch's lights allow, as the demo's shader is written for its one kind
             // of light (its lights take the attenuation law's point-light form); with shadow maps
             // the shadow form.
-            Program& prog = load_batch(f, batch, arrays_, shadows_, programs_for(f, int(batch.size())), stats);
+            LightPrograms& progs = programs_for(f, int(batch.size()));
+            Program* form = &load_batch(f, batch, arrays_, shadows_, progs, stats);
+            const bool shared = form == &progs[LightShader::point_inverse] && shares_attenuation(f, batch);
+            if (shared) {
+                form = &att_shared_program(f, int(batch.size()));
+                ++stats.att_shared_batches;
+            }
+            Program& prog = *form;
             RenderState s = light_pass_state(prog.id(), false);  // additive, the whole screen
             s.blend = !base;
             gl_state().apply(s);
             arrays_.set(prog, LightArrays::kLight);
             shadows_.set(prog);
+            if (shared) prog.set("att_shared", glm::vec3(f.lights[size_t(batch[0])].params.att));
             prog.set("with_ambient", base ? 1.0f : 0.0f);
             if (base) {
                 prog.set("background", base->background);
@@ -98,13 +106,29 @@ private:
                                                                 Defines{"LIGHTS " + std::to_string(n)});
         if (c.frame != frame_) {
             c.progs->begin(f);
+            if (c.att_shared.id()) set_light_uniforms(c.att_shared, f);
             c.frame = frame_;
         }
         return *c.progs;
     }
 
+    // The point-inverse form for n lights with ATT_SHARED (light_screen.frag), compiled on first
+    // use: the demo's lights share one set of constants, and reading them from the array at each
+    // light's index cost this row 20% of its light stage on llvmpipe (32-large at 800x600: 99 against
+    // 77 ms with the constants in one uniform), a handicap the demo's shader does not have on a
+    // GPU. programs_for(f, n) came first this frame.
+    Program& att_shared_program(const FrameDef& f, int n) {
+        Compiled& c = by_count_[n];
+        if (!c.att_shared.id()) {
+            c.att_shared = sources_.build("light_screen_point_inverse", Defines{"LIGHTS " + std::to_string(n), "ATT_SHARED"});
+            set_light_uniforms(c.att_shared, f);
+        }
+        return c.att_shared;
+    }
+
     struct Compiled {
         std::unique_ptr<LightPrograms> progs;
+        Program att_shared;  // the point-inverse form with ATT_SHARED, once a batch needs it
         unsigned frame = 0;  // the frame its uniforms were set for
     };
     ProgramSources sources_;

@@ -346,7 +346,7 @@ private:
         const bool shared = form == &progs_[LightShader::point_inverse] && shares_attenuation(f, batch);
         if (shared) {
             form = &att_shared_program(f);
-            ++stats.tile_att_shared_batches;
+            ++stats.att_shared_batches;
         }
         Program& prog = *form;
         RenderState state = light_pass_state(prog.id(), false);
@@ -379,7 +379,7 @@ private:
     void draw_flat(const FrameDef& f, const std::vector<int>& batch, int form, LightQueries& q, FrameStats& stats) {
         arrays_.clear();
         for (int i : batch) arrays_.add(f.lights[size_t(i)].params);
-        if (form == 1) ++stats.tile_att_shared_batches;
+        if (form == 1) ++stats.att_shared_batches;
         ++stats.tile_vertex_batches;
         vertex_arrays(flat_stride_, flat_vecs_);
         int bound = 0;
@@ -420,14 +420,6 @@ private:
     void begin_flat(Program& p, const FrameDef& f) {
         set_light_uniforms(p, f);  // makes it current
         p.set("quantize_round", round_);
-    }
-
-    // Whether every light of the batch (point lights with the attenuation law: the batch's form
-    // says so) has the first one's constants, to the bit.
-    static bool shares_attenuation(const FrameDef& f, const std::vector<int>& batch) {
-        const glm::vec3 a(f.lights[size_t(batch[0])].params.att);
-        return std::all_of(batch.begin(), batch.end(),
-                           [&](int i) { return glm::vec3(f.lights[size_t(i)].params.att) == a; });
     }
 
     // The point-inverse form with ATT_SHARED, compiled on first use; begin_draws sets its frame

@@ -135,6 +135,11 @@ private:
 // the batch's lights. The tiles' and screen's batches.
 Program& load_batch(const FrameDef& f, const std::vector<int>& batch, LightArrays& arrays, ShadowSlots& shadows,
                     LightPrograms& progs, FrameStats& stats);
+// Whether every light of the batch has the first one's attenuation constants, to the bit: where
+// they are point lights of the attenuation law, the batched shaders' ATT_SHARED form draws them
+// with the constants in one uniform (a CPU rasteriser reads an array at a light's index lane by
+// lane: light_tiles.frag, light_screen.frag).
+bool shares_attenuation(const FrameDef& f, const std::vector<int>& batch);
 
 // The light's quad over its scissor rectangle, through the light's form of "light".
 class LightQuads {
