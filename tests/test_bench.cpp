@@ -946,6 +946,22 @@ TEST(Bench, SlowFramesGetFewerTimedFrames) {
     EXPECT_EQ(bench::frames_for(4000.0, 4), 4);
 }
 
+// N-large's rows are timed with 3x the frames, unless --frames says how many; the other sets keep the sweep's.
+TEST(Bench, LargeVariantsGetMoreFramesUnlessFramesIsGiven) {
+    bench::Config cfg;
+    cfg.lights = {-1, 32};
+    cfg.light_sets = {LightSet::spread, LightSet::large};
+    EXPECT_EQ(bench::variant_frames(cfg, LightSet::spread), 10);
+    EXPECT_EQ(bench::variant_frames(cfg, LightSet::overlap), 10);
+    EXPECT_EQ(bench::variant_frames(cfg, LightSet::large), 30);
+    EXPECT_EQ(bench::large_frames_note(cfg), " (N-large 30)");
+    cfg.frames = 7, cfg.frames_given = true;
+    EXPECT_EQ(bench::variant_frames(cfg, LightSet::large), 7);
+    EXPECT_EQ(bench::large_frames_note(cfg), "");
+    cfg.frames_given = false, cfg.light_sets = {LightSet::spread, LightSet::spread};
+    EXPECT_EQ(bench::large_frames_note(cfg), "") << "no N-large in the sweep";
+}
+
 // The independent ideal count, worked by hand. A 4x4 frame with p00 = p11 = 1 puts the pixel
 // centres at x_ndc, y_ndc = +-0.25, +-0.75; a wall at eye depth 2 puts their points at x, y =
 // +-0.5, +-1.5, z = -2. A light at (0, 0, -2): radius 1 holds the 4 points at |p|^2 = 0.5; radius

@@ -292,7 +292,7 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
        << "- Size " << cfg.w << "x" << cfg.h << large_size(s.rows, cfg) << "; each row: warm-up frames until " << cfg.warmup
        << " in a row build no shader program and, in auto's rows, explore no light path (at most "
        << cfg.warmup + cfg.compile_warmup << ": the JSON's `warmup_frames` and `warmup_frames_ms`), then the median "
-       << "and min-max of " << cfg.frames << " timed frames (fewer where one frame takes over 2 s: the `frames` "
+       << "and min-max of " << cfg.frames << " timed frames" << large_frames_note(cfg) << " (fewer where one frame takes over 2 s: the `frames` "
        << "column), all rows in one process; whole run " << format_number("%.0f", s.seconds) << " s.\n"
        << "- Post-processing off in every row.\n\n"
        << "## Goals\n\nJudged on the default deferred configuration (depth texture, scissor on, every skip on); "

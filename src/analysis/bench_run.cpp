@@ -45,6 +45,7 @@ struct Setup {
 struct Variant {
     std::string name;
     int w = 0, h = 0;  // variant_size: the sweep's, or the demo's for N-large
+    int frames = 0;    // variant_frames: the sweep's, or more for N-large
     Scene scene;
     int sweep_index = 0;
     std::string lights_label;
@@ -182,6 +183,7 @@ Variant make_variant(const Setup& st, const std::string& path, const std::string
     Variant v;
     v.name = name;
     std::tie(v.w, v.h) = variant_size(st.cfg, spec.set);
+    v.frames = variant_frames(st.cfg, spec.set);
     v.scene = bench_scene(load_scene(path), spec);
     if (spec.set == LightSet::large) v.linear_twin = linear_law_twin(v.scene);
     v.sweep_index = sweep_index;
@@ -339,7 +341,7 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
             // A slow frame is its own warm-up.
             return WarmupFrame{Program::built() != built, run->ds && run->last.auto_explored >= 0, ms > kSlowFrameMs};
         });
-        run->row.frames = frames_for(run->row.warmup_frames_ms.front(), cfg.frames);
+        run->row.frames = frames_for(run->row.warmup_frames_ms.front(), v.frames);
         // The medians are the timed frames': the warm-up's (the first with the shaders' compiles)
         // used to sit among them in the light stage's, the hand-off's and the CPU's.
         run->samples = {};
@@ -354,7 +356,7 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
             if (f + 1 == run->row.frames)
                 run->image = opaque(run->ds ? run->ds->read_output(v.w, v.h) : read_pixels(v.w, v.h));
         }
-        if (f < cfg.frames)  // (a) in the same rounds, as many frames as the fast rows
+        if (f < v.frames)  // (a) in the same rounds, as many frames as the fast rows
             for (auto& [l, fb] : floors.bench) floors.fill_ms[l].push_back(fb->fill_frame(v.scene));
     }
     // The CPU goal's frames: dsr's default row's frames again, back to back. In the rounds a frame
@@ -518,6 +520,16 @@ bool analytic_capable(const Scene& s) {
 std::pair<int, int> variant_size(const Config& cfg, LightSet set) {
     if (set == LightSet::large && !cfg.size_given) return {kDemoWidth, kDemoHeight};
     return {cfg.w, cfg.h};
+}
+
+int variant_frames(const Config& cfg, LightSet set) {
+    return set == LightSet::large && !cfg.frames_given ? kLargeFrameFactor * cfg.frames : cfg.frames;
+}
+
+std::string large_frames_note(const Config& cfg) {
+    const int n = variant_frames(cfg, LightSet::large);
+    const bool large = std::find(cfg.light_sets.begin(), cfg.light_sets.end(), LightSet::large) != cfg.light_sets.end();
+    return large && n != cfg.frames ? " (N-large " + std::to_string(n) + ")" : "";
 }
 
 std::pair<int, int> context_size(const Config& cfg) {

@@ -28,6 +28,7 @@ struct Config {
     int w = 512, h = 512;
     bool size_given = false;  // --size given: every variant at w x h (else N-large at the demo's, variant_size)
     int frames = 10, warmup = 2;
+    bool frames_given = false;  // --frames given: every variant that many (else N-large kLargeFrameFactor x, variant_frames)
     // Warm-up: until `warmup` frames in a row build no program and explore no path, at most
     // warmup + compile_warmup frames (warm_up).
     int compile_warmup = 12;
@@ -133,6 +134,14 @@ bool analytic_capable(const Scene& s);
 // The size a scene variant of `set` runs at: N-large (LearnOpenGL's demo) at the demo's
 // kDemoWidth x kDemoHeight unless --size was given; every other variant at the sweep's w x h.
 std::pair<int, int> variant_size(const Config& cfg, LightSet set);
+// The timed frames of a variant: the sweep's, or kLargeFrameFactor times as many on N-large where
+// --frames was not given. Its frames are short (20-30 ms on llvmpipe, but for quad's and the
+// screen's rows), and its goals (demo, law, auto) compare rows within 5-10% of each other, where
+// ten frames of a noisy machine decide the verdict more than the renderers do.
+constexpr int kLargeFrameFactor = 3;
+int variant_frames(const Config& cfg, LightSet set);
+// " (N-large M)" where the sweep has an N-large variant timed with M frames other than cfg.frames, else "".
+std::string large_frames_note(const Config& cfg);
 // The context the sweep needs: as large as every variant of cfg.lights in each dimension.
 std::pair<int, int> context_size(const Config& cfg);
 

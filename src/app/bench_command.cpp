@@ -48,7 +48,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
         cfg.w = cfg.h = BenchSettings::kQuickSize, cfg.frames = BenchSettings::kQuickFrames,
         cfg.warmup = BenchSettings::kQuickWarmup;
     if (flags.width) cfg.w = flags.width, cfg.h = flags.height, cfg.size_given = true;
-    if (flags.frames) cfg.frames = flags.frames;
+    if (flags.frames) cfg.frames = flags.frames, cfg.frames_given = true;
     const ShaderOptions& tiles = flags.tiles.shader;  // --tile-*: the option table's entries, its defaults
     cfg.tile_size = tiles.tile_size, cfg.tile_lights = tiles.tile_lights;
     cfg.tile_plan = tiles.tile_plan, cfg.tile_depth = tiles.tile_depth;
@@ -113,9 +113,9 @@ int cmd_bench(const std::vector<std::string>& argv) {
     sum.config = cfg;
     std::fprintf(stderr,
                  "bench: %s; GL %s (%s); %dx%d, per row warm-up frames until %d in a row build no program and explore no "
-                 "path (at most %d), then %d timed frames\n",
+                 "path (at most %d), then %d timed frames%s\n",
                  sum.machine.c_str(), caps.renderer.c_str(), caps.version.c_str(), cfg.w, cfg.h, cfg.warmup,
-                 cfg.warmup + cfg.compile_warmup, cfg.frames);
+                 cfg.warmup + cfg.compile_warmup, cfg.frames, bench::large_frames_note(cfg).c_str());
 
     // Whether the invocation counter can judge the stencil goal (gl/invocation_probe.h).
     sum.invocation_probe = probe_invocation_counter(resource_dir("glsl120"));

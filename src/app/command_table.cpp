@@ -208,7 +208,8 @@ Command bench_command(BenchSettings& s) {
                   std::to_string(full.w) + "x" + std::to_string(full.h) + "; --quick " + qsize + "; N-large " +
                       std::to_string(kDemoWidth) + "x" + std::to_string(kDemoHeight)),
         int_flag("--frames", "N", 1, 1000, s.frames, "timed frames per row",
-                 std::to_string(full.frames) + "; --quick " + std::to_string(BenchSettings::kQuickFrames)),
+                 std::to_string(full.frames) + "; --quick " + std::to_string(BenchSettings::kQuickFrames) + "; N-large " +
+                     std::to_string(bench::kLargeFrameFactor) + "x as many"),
         lights,
         list_flag("--light-geometry", "LIST", geometries, s.geometries, "light geometries with rows of their own"),
         option_flag("tile-size", s.tiles),
