@@ -87,7 +87,9 @@ TEST(Context, OSMesaIsCurrentAtTheAskedSizeWithEveryEntryPoint) {
     int required = 0;
     for (const auto& e : gl_entry_point_status()) {
         required += e.required;
-        if (e.required) EXPECT_TRUE(e.loaded) << e.name;
+        if (e.required) {
+            EXPECT_TRUE(e.loaded) << e.name;
+        }
     }
     EXPECT_GE(required, 40);
     // A call through the table reaches GL: an FBO name can be made and bound.

@@ -215,7 +215,9 @@ TEST(ShadowMath, CullingKeepsEveryCaster) {
                     reaches = cl.w > 0 && std::fabs(cl.x) <= cl.w && std::fabs(cl.y) <= cl.w && std::fabs(cl.z) <= cl.w;
                 }
                 const bool cull = dsr::shadow_view_culls(v, b);
-                if (reaches) EXPECT_FALSE(cull);
+                if (reaches) {
+                    EXPECT_FALSE(cull);
+                }
                 (cull ? culled : kept)++;
             }
     EXPECT_GT(culled, 1000);
