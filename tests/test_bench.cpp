@@ -244,6 +244,11 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
             ++alone[row["scene"].get<std::string>() + " " + row["lights_label"].get<std::string>()];
             EXPECT_EQ(row["light_geometry"], "auto") << row.dump();
             EXPECT_TRUE(row["skips_off"].empty()) << row.dump();
+            // What auto chose: every drawn light by one of its three paths.
+            const auto& c = row["auto_lights"];
+            ASSERT_TRUE(c.is_object()) << row.dump();
+            EXPECT_EQ(c["quad"].get<int>() + c["volume"].get<int>() + c["tiles"].get<int>(), row["lights_drawn"].get<int>())
+                << row.dump();
             EXPECT_EQ(row["cpu_alone_frames_ms"].size(), size_t(row["frames"].get<int>()));
             EXPECT_GT(row["cpu_alone_ms_median"].get<double>(), 0.0);
         } else {
@@ -700,6 +705,7 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     bench::Row own_auto = geo(deferred_row("default", 3, 1.05, 100, 100), LightGeometry::automatic, 100, 0);
     bench::Row overlap_auto = geo(deferred_row("default-overlap", 1024, 2.5, 100, 100), LightGeometry::automatic, 100, 0);
     overlap_auto.lights_label = "1024-overlap";
+    overlap_auto.auto_lights = std::array<int, 3>{0, 0, 536};  // what it chose, said after the figure
     rows.insert(rows.end(), {own_auto, overlap_auto});
     const std::vector<std::string> a = bench::geometry_goals(rows, "default", 3);
     ASSERT_EQ(a.size(), 13u);
@@ -710,7 +716,8 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     EXPECT_NE(a[9].find("--lights 256: not measured in this run (no auto row)"), std::string::npos) << a[9];
     EXPECT_NE(a[10].find("--lights 1024: not measured in this run (no auto row)"), std::string::npos) << a[10];
     EXPECT_EQ(a[11], "auto <= 1.1 x the fastest fixed geometry (quad, volume, stencil, tiles), default at --lights "
-                     "1024-overlap: auto 2.50 ms / tiles 2.00 ms = 1.25 -> NOT met");
+                     "1024-overlap: auto 2.50 ms / tiles 2.00 ms = 1.25 (auto's lights: 0 by quads, 0 by volumes, "
+                     "536 by the tiles) -> NOT met");
     EXPECT_EQ(a[12], "auto <= 1.1 x the fastest fixed geometry (quad, volume, stencil, tiles), default at --lights "
                      "32-large: auto 12.00 ms / tiles 5.00 ms = 2.40 -> NOT met");
 }
@@ -859,7 +866,7 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
         "ideal_fragments", "fragments_ratio", "scissor_pixels", "lights_drawn", "passes", "max_lsb", "mean_lsb",
         "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic", "light_invocations",
         "invocations_ratio", "ideal_source", "floor_fill_ms", "floor_light_ns", "floor_post_ms", "floor_output_ms", "floor_ms",
-        "floor_ratio", "light_passes", "depth_copy_ms", "lights_ms", "lights_frames_ms", "max_lsb_vs_quad"};
+        "floor_ratio", "light_passes", "auto_lights", "depth_copy_ms", "lights_ms", "lights_frames_ms", "max_lsb_vs_quad"};
     std::vector<std::string> got;
     for (auto it = f.begin(); it != f.end(); ++it) got.push_back(it.key());
     EXPECT_EQ(got, keys);
@@ -881,6 +888,9 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     EXPECT_DOUBLE_EQ(d["max_lsb"].get<double>(), 3.0);
     EXPECT_DOUBLE_EQ(d["psnr_db_analytic"].get<double>(), 55.26);
     EXPECT_TRUE(d["passes"].is_null());
+    EXPECT_TRUE(d["auto_lights"].is_null());  // not an auto row
+    r.auto_lights = std::array<int, 3>{3, 0, 536};
+    EXPECT_EQ(bench::row_json(r)["auto_lights"], nlohmann::ordered_json({{"quad", 3}, {"volume", 0}, {"tiles", 536}}));
 
     bench::Summary s;
     s.machine = "m";

@@ -383,9 +383,17 @@ Figure automatic(const Goal& g, const GoalInput& in) {
         if (r && (!best || r->ms_median < best->ms_median)) best = r;
     }
     if (!best) return not_judged(std::string(kNotMeasured) + " (no row of a fixed geometry)", kNotMeasured);
+    // What auto chose (its counted frame): a ratio between two rows that drew every light the same
+    // way is the rounds' noise, not the cost model's choice.
+    std::string chose;
+    if (a->auto_lights) {
+        const std::array<int, 3>& c = *a->auto_lights;
+        chose = " (auto's lights: " + std::to_string(c[0]) + " by quads, " + std::to_string(c[1]) + " by volumes, " +
+                std::to_string(c[2]) + " by the tiles)";
+    }
     Figure f = judged(a->ms_median, best->ms_median,
                       "auto " + ms(a->ms_median) + " / " + light_geometry_name(best->light_geometry) + " " +
-                          ms(best->ms_median) + " = " + format_number("%.2f", a->ms_median / best->ms_median));
+                          ms(best->ms_median) + " = " + format_number("%.2f", a->ms_median / best->ms_median) + chose);
     f.after = per_round(g, a->frames_ms, best->frames_ms);
     return f;
 }

@@ -79,6 +79,9 @@ json row_json(const Row& r) {
     j["floor_ms"] = opt(r.floor_ms);
     j["floor_ratio"] = opt(r.floor_ratio);
     j["light_passes"] = opt(r.light_passes);
+    j["auto_lights"] = r.auto_lights ? json{{"quad", (*r.auto_lights)[0]}, {"volume", (*r.auto_lights)[1]},
+                                            {"tiles", (*r.auto_lights)[2]}}
+                                     : json(nullptr);
     j["depth_copy_ms"] = opt(r.depth_copy_ms);
     j["lights_ms"] = opt(r.lights_ms);
     j["lights_frames_ms"] = r.renderer == Renderer::deferred ? json(r.lights_frames_ms) : json(nullptr);

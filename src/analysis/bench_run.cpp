@@ -442,6 +442,8 @@ void finish_row(const Config& cfg, const Variant& v, RowRun& run, const IdealCou
         r.scissor_pixels = run.last.scissor_pixels;
         r.lights_drawn = run.last.lights_drawn;
         r.light_passes = run.last.light_passes;
+        if (run.last.auto_geometry)
+            r.auto_lights = std::array<int, 3>{run.last.auto_lights[0], run.last.auto_lights[1], run.last.auto_lights[2]};
         r.depth_copy_ms = median(run.samples.depth_copy_ms);
         r.lights_ms = median(run.samples.lights_ms);
         r.lights_frames_ms = run.samples.lights_ms;

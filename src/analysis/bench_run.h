@@ -9,6 +9,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -110,6 +111,9 @@ struct Row {
     std::optional<ImageDiff> err_analytic;  // vs the analytic reference, interior pixels
     std::optional<ImageDiff> err_quad;      // deferred rows: vs the default quad row's image
     std::optional<int> light_passes;        // deferred rows: light-shader draws per frame
+    // auto's rows: how many lights it sent by quads, volumes and the tiles (FrameStats::auto_lights) in
+    // the counted frame after the timed ones. JSON `auto_lights` {quad, volume, tiles}, null elsewhere.
+    std::optional<std::array<int, 3>> auto_lights;
     std::optional<double> depth_copy_ms;    // deferred rows: the depth hand-off's median ms (0: not run)
     std::optional<double> lights_ms;        // deferred rows: the light stage's median ms (FrameStats ms.lights)
     int gbuffer_bytes_per_pixel = 0;        // deferred rows: the G-buffer's colour targets + depth, from the
