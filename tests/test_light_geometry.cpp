@@ -434,9 +434,10 @@ TEST(LightGeometry, ScreenIsQuadWithinAFewLsb) {
         double max_lsb, mean_lsb;
     };
     // Measured on llvmpipe: 1 LSB (mean 0.162), 2 (0.127), and 8 (0.757) where about 20 lights
-    // meet at a pixel, each of quad's passes rounded by up to half a step; 3 (0.043) on the demo's lights. The screen's first batch
-    // writes the ambient term too (as LearnOpenGL's pass does), rounded once with the lights': on the
-    // default scene's 3 lights the mean was 0.009 LSB with an ambient pass of its own.
+    // meet at a pixel, each of quad's passes rounded by up to half a step; 3 (0.043) on the demo's
+    // lights. The screen's first batch writes the ambient term too (as LearnOpenGL's pass does),
+    // rounded once with the lights': on the default scene's 3 lights the mean was 0.009 LSB with an
+    // ambient pass of its own.
     const std::vector<Case> cases = {
         {"screen_default", default_scene(), 2, 0.25},
         {"screen_lights", load_scene(resource_dir("data") + "/lights.scene"), 2, 0.2},  // spot and directional

@@ -7,9 +7,9 @@
 // into tables, JSON, a plot and a report; src/app/bench_command.cpp only parses flags, runs this,
 // and prints or writes what comes back.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <functional>
-#include <array>
 #include <optional>
 #include <string>
 #include <utility>
