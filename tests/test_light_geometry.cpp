@@ -102,6 +102,34 @@ TEST(LightGeometry, TilesReadSharedAttenuationOnce) {
     }
 }
 
+// light_evaluations (light_queries.h) weighs each draw's invocations by the lights its fragments
+// evaluate: one for a light's own quad; the batch's every light for screen's full-screen pass; a
+// tile's list for the tiles, whose plan counts the same pairs (tile_light_pairs, each of a whole
+// tile's pixels: 128 is a multiple of the tile size) in both the vertex and the fragment fetch
+// (the latter's draws mix lists of every length, weighted by their pixels).
+TEST(LightGeometry, EvaluationsCountTheLightsEachFragmentShades) {
+    const Scene s = with_generated_lights(default_scene(), 256);
+    const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
+    ASSERT_TRUE(quad.stats.light_invocations && quad.stats.light_evaluations) << "needs ARB_pipeline_statistics_query";
+    EXPECT_EQ(*quad.stats.light_evaluations, *quad.stats.light_invocations);
+    for (TileFetch fetch : {TileFetch::vertex, TileFetch::fragment}) {
+        ShaderOptions o = with_geometry(LightGeometry::tiles);
+        o.tile_fetch = fetch;
+        const RenderResult tiles = render_scene(s, kW, kH, o);
+        ASSERT_EQ(kW % tiles.paths.tile_size, 0);
+        const long long ts = tiles.paths.tile_size;
+        std::printf("[ counts   ] tiles (%s fetch): %lld invocations, %lld evaluations, %lld tile-light pairs x %lld px\n",
+                    fetch == TileFetch::vertex ? "vertex" : "fragment", *tiles.stats.light_invocations,
+                    *tiles.stats.light_evaluations, tiles.stats.tile_light_pairs, ts * ts);
+        EXPECT_GT(tiles.stats.tile_light_pairs, tiles.stats.light_passes);  // lists longer than one light
+        EXPECT_EQ(*tiles.stats.light_evaluations, tiles.stats.tile_light_pairs * ts * ts);
+    }
+    const Scene demo = large_lights_scene(32);
+    const RenderResult screen = render_scene(demo, kW, kH, with_geometry(LightGeometry::screen));
+    ASSERT_EQ(screen.stats.light_passes, 1);  // 32 lights: one batch
+    EXPECT_EQ(*screen.stats.light_evaluations, *screen.stats.light_invocations * screen.stats.lights_drawn);
+}
+
 // The batch's buffers (copies of the sphere's mesh, about 310 KB at a batch of 128) are built on
 // its first draw, not with the renderer: an auto renderer whose frames draw no volume holds none.
 TEST(LightGeometry, VolumeBatchBuildsItsBuffersOnFirstDraw) {

@@ -71,6 +71,8 @@ json row_json(const Row& r) {
     j["invocations_ratio"] = deferred && r.light_invocations && r.ideal_fragments && *r.ideal_fragments > 0
                                  ? json(double(*r.light_invocations) / double(*r.ideal_fragments))
                                  : json(nullptr);
+    j["light_evaluations"] = deferred ? opt(r.light_evaluations) : json(nullptr);
+    j["evaluations_ratio"] = deferred ? opt(evaluations_ratio(r)) : json(nullptr);
     j["ideal_source"] = deferred ? opt(r.ideal_source) : json(nullptr);
     j["floor_fill_ms"] = opt(r.floor_fill_ms);
     j["floor_light_ns"] = opt(r.floor_light_ns);
@@ -117,9 +119,9 @@ std::vector<std::string> table_cells(const Row& r) {
         c.insert(c.end(), {"-", "-", "-"});
     }
     c.push_back(deferred ? ll(r.light_invocations) : "-");
-    c.push_back(deferred && r.light_invocations && r.ideal_fragments && *r.ideal_fragments > 0
-                    ? format_number("%.2f", double(*r.light_invocations) / double(*r.ideal_fragments))
-                    : "-");
+    c.push_back(deferred ? ll(r.light_evaluations) : "-");
+    const std::optional<double> er = deferred ? evaluations_ratio(r) : std::nullopt;
+    c.push_back(er ? format_number("%.2f", *er) : "-");
     c.push_back(r.floor_ms ? format_number("%.2f", *r.floor_ms) : "-");
     c.push_back(r.floor_ratio ? format_number("%.2f", *r.floor_ratio) : "-");
     c.push_back(format_number("%.2f", r.cpu_ms));
@@ -130,7 +132,7 @@ std::vector<std::string> table_cells(const Row& r) {
 const std::vector<std::string>& table_header() {
     static const std::vector<std::string> h = {"scene", "lights", "configuration", "frames", "ms med", "ms min-max",
                                                "light frags", "ideal", "ratio", "max LSB", "mean LSB", "PSNR dB",
-                                               "an. max", "an. mean", "an. PSNR", "invocations", "inv/ideal",
+                                               "an. max", "an. mean", "an. PSNR", "invocations", "evaluations", "eval/ideal",
                                                "floor ms", "floor ratio", "cpu ms", "G-buf B/px"};
     return h;
 }
@@ -242,9 +244,11 @@ std::string light_geometry_markdown(const std::vector<Row>& rows) {
           "How each light reaches its pixels (`--light-geometry`, docs/light_geometry.md), each on the default "
           "configuration (depth texture, scissor, every skip). *invocations*: fragments that entered the light "
           "shader (ARB_pipeline_statistics_query; llvmpipe counts 16 per 4x4 block each triangle touches, before "
-          "its depth and stencil tests, so its counts favour the two-triangle quads); *ideal*: pixel-light pairs "
-          "whose surface point is inside the light's volume; *frags*: samples that passed (tiles: per pixel and "
-          "group of lights, not per light); *copy ms*: the depth hand-off.\n\n"
+          "its depth and stencil tests, so its counts favour the two-triangle quads); *evaluations*: each draw's "
+          "invocations times the lights each of its fragments evaluates (one for a light's own pass; screen: the "
+          "batch's lights; tiles: the tile's list), the pixel-light pairs paid for; *ideal*: pixel-light pairs "
+          "whose surface point is inside the light's volume; *frags*: samples that passed (tiles and screen: per "
+          "pixel and pass, not per light); *copy ms*: the depth hand-off.\n\n"
           "- `quad`: the tutorial's scissored quad per light (§3.4.2): every pixel of the rectangle runs the shader.\n"
           "- `volume`: the back faces of the light's volume mesh, depth test GL_GREATER against the scene depth "
           "handed to P-buffer 0; front faces culled, so the camera may be inside.\n"
@@ -252,18 +256,17 @@ std::string light_geometry_markdown(const std::vector<Row>& rows) {
           "pass only where the stencil is non-zero: the surface points inside the volume.\n"
           "- `tiles`: screen tiles; each tile's lights from their scissor rectangles, up to N per pass in one "
           "shader, so the G-buffer is read and P-buffer 0 blended once per N lights.\n\n"
-          "| scene | lights | geometry | ms med | invocations | ideal | inv/ideal | frags | passes | copy ms | "
-          "max LSB vs quad |\n| --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+          "| scene | lights | geometry | ms med | invocations | evaluations | ideal | eval/ideal | frags | passes | "
+          "copy ms | max LSB vs quad |\n| --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | "
+          "---: |\n";
     auto ll = [](const std::optional<long long>& v) { return v ? std::to_string(*v) : std::string("-"); };
     for (const Row& r : rows) {
         if (!default_configuration(r)) continue;
         md << "| " << r.scene << " | " << r.lights_label << " (" << r.lights << ") | "
            << light_geometry_name(r.light_geometry) << " | "
-           << format_number("%.2f", r.ms_median) << " | " << ll(r.light_invocations) << " | " << ll(r.ideal_fragments)
-           << " | "
-           << (r.light_invocations && r.ideal_fragments && *r.ideal_fragments > 0
-                   ? format_number("%.2f", double(*r.light_invocations) / double(*r.ideal_fragments))
-                   : std::string("-"))
+           << format_number("%.2f", r.ms_median) << " | " << ll(r.light_invocations) << " | "
+           << ll(r.light_evaluations) << " | " << ll(r.ideal_fragments) << " | "
+           << (evaluations_ratio(r) ? format_number("%.2f", *evaluations_ratio(r)) : std::string("-"))
            << " | " << ll(r.light_fragments) << " | " << (r.light_passes ? std::to_string(*r.light_passes) : "-")
            << " | " << (r.depth_copy_ms ? format_number("%.2f", *r.depth_copy_ms) : "-") << " | "
            << (r.err_quad ? format_number("%.0f", r.err_quad->max_lsb()) : "-") << " |\n";
@@ -367,12 +370,15 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
        << "- *light frags*: samples that passed the light passes (occlusion queries): what survived the "
           "in-shader light tests. *invocations*: fragments that entered the light shader, summed over the light "
           "passes (ARB_pipeline_statistics_query, `GL_FRAGMENT_SHADER_INVOCATIONS_ARB`): what the passes pay; "
-          "`-` (JSON null) where the GL lacks the query. *ideal*: pixels whose exact surface point lies strictly "
+          "`-` (JSON null) where the GL lacks the query. *evaluations*: each light draw's invocations times the "
+          "lights each of its fragments evaluates, summed (one for a light's own pass, the batch's lights for "
+          "screen's full-screen passes, the tile's list for the tiles): the pixel-light pairs paid for, which is "
+          "what compares with the ideal where a pass shades several lights. *ideal*: pixels whose exact surface point lies strictly "
           "inside a light's sphere, summed over the lights with non-zero colour, in double precision and "
           "independent of the light shader's arithmetic: from the analytic trace's exact eye depth for the "
           "scenes with constant materials, otherwise from the G-buffer's 24-bit depth read back as integers and "
           "inverted through the projection in double (JSON `ideal_source`: `analytic` | `depth24`). *ratio* = "
-          "light frags / ideal (the sphere test makes it about 1 by construction); *inv/ideal* = invocations / "
+          "light frags / ideal (the sphere test makes it about 1 by construction); *eval/ideal* = evaluations / "
           "ideal (the goal).\n"
        << "- *max LSB*, *mean LSB*, *PSNR*: the final image against the forward single-pass reference "
           "(float accumulation) of the same scene and size. *an.*: against the analytic reference (double-"

@@ -439,6 +439,7 @@ void finish_row(const Config& cfg, const Variant& v, RowRun& run, const IdealCou
     if (run.ds) {
         r.light_fragments = run.last.counted_light_fragments();
         r.light_invocations = run.last.light_invocations;
+        r.light_evaluations = run.last.light_evaluations;
         r.scissor_pixels = run.last.scissor_pixels;
         r.lights_drawn = run.last.lights_drawn;
         r.light_passes = run.last.light_passes;
@@ -497,6 +498,11 @@ bool default_settings(const Row& r) {
 bool default_configuration(const Row& r) { return !r.linear_law && default_settings(r); }
 
 bool default_configuration_twin(const Row& r) { return r.linear_law && default_settings(r); }
+
+std::optional<double> evaluations_ratio(const Row& r) {
+    if (!r.light_evaluations || !r.ideal_fragments || *r.ideal_fragments <= 0) return std::nullopt;
+    return double(*r.light_evaluations) / double(*r.ideal_fragments);
+}
 
 std::string config_text(const Row& r) {
     const std::string name = renderer_name(r.renderer);

@@ -100,9 +100,10 @@ struct Row {
     std::optional<double> cpu_alone_ms;
     std::vector<double> cpu_alone_frames_ms;
     // light_fragments: samples that passed the light passes (occlusion queries); light_invocations:
-    // fragments that entered the light shader (ARB_pipeline_statistics_query); null where the GL
-    // lacks the query. ideal_fragments: from exact surface points (ideal_source says which).
-    std::optional<long long> light_fragments, light_invocations, ideal_fragments, scissor_pixels;
+    // fragments that entered the light shader (ARB_pipeline_statistics_query), light_evaluations:
+    // those times the lights each evaluated (FrameStats); null where the GL lacks the query.
+    // ideal_fragments: from exact surface points (ideal_source says which).
+    std::optional<long long> light_fragments, light_invocations, light_evaluations, ideal_fragments, scissor_pixels;
     std::optional<std::string> ideal_source;  // "analytic" (exact eye depth) | "depth24" (G-buffer depth in double)
     std::optional<int> lights_drawn, passes;
     // The frame's floor (bench_floor.h), deferred rows: its parts, floor_ms and ms_median / floor_ms.
@@ -127,6 +128,9 @@ bool default_configuration(const Row& r);
 // A linear-law row (Row::linear_law) in the default configuration otherwise: the twin of a
 // default_configuration row, which the law goal and the twin's image check read.
 bool default_configuration_twin(const Row& r);
+
+// light_evaluations / ideal_fragments, where both are known and the ideal is above 0.
+std::optional<double> evaluations_ratio(const Row& r);
 
 // The row's configuration as the tables print it: "forward-multi", "deferred texture sc",
 // "deferred packed/log sc half no-empty_lights", ...

@@ -137,6 +137,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     const std::optional<long long> frags = last.counted_light_fragments();
     j["light_fragments"] = frags ? nlohmann::json(*frags) : nlohmann::json(nullptr);
     j["light_invocations"] = last.light_invocations ? nlohmann::json(*last.light_invocations) : nlohmann::json(nullptr);
+    j["light_evaluations"] = last.light_evaluations ? nlohmann::json(*last.light_evaluations) : nlohmann::json(nullptr);
     j["scissor_pixels"] = last.scissor_pixels;
     j["light_geometry"] = light_geometry_name(paths.light_geometry);  // as run: stencil may fall back to volume
     j["light_geometry_asked"] = light_geometry_name(opts.light_geometry);

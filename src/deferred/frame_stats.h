@@ -35,6 +35,10 @@ struct FrameStats {
     // statistics_query, GL_FRAGMENT_SHADER_INVOCATIONS_ARB): what the passes pay, discards
     // included. Null where the GL lacks the extension, never 0 for "not counted".
     std::optional<long long> light_invocations;
+    // Each light draw's invocations times the lights each of its fragments evaluates, summed: the
+    // pixel-light pairs the light passes paid for (light_queries.h), the count to hold against the
+    // ideal where a pass shades several lights (screen, tiles). Null where light_invocations is.
+    std::optional<long long> light_evaluations;
     // light_fragments as an optional: null where it was not counted.
     std::optional<long long> counted_light_fragments() const {
         return fragments_counted ? std::optional<long long>(light_fragments) : std::nullopt;

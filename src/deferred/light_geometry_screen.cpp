@@ -90,7 +90,7 @@ private:
                 prog.set("ambient", base->ambient);
             }
             base = nullptr;  // the next batches add
-            q.begin();
+            q.begin(double(batch.size()));  // every pixel evaluates the batch's every light
             draw_rect(f, 0, 0, float(f.width), float(f.height), false);
             q.end();
             shadows_.unbind();

@@ -45,11 +45,14 @@ constexpr float kNoLight = 255.0f;  // an empty slot; batch indices stay below i
 constexpr int kFixedFloats = 2;
 
 // A run of a batch's uploaded vertices that one glDrawArrays takes (TilesGeometry::upload): lights,
-// with the vertex fetch, the count of lights its program takes (0: the batch's one program).
+// with the vertex fetch, the count of lights its program takes (0: the batch's one program);
+// mean_lights, the lights its fragments evaluate, their lists' lengths weighted by pixels
+// (LightQueries::begin; the groups' draws evaluate the group instead).
 struct TileRange {
     GLenum mode;
     size_t first, count;
     int lights;
+    double mean_lights;
 };
 
 // Wall-clock milliseconds of f(): the tiles' two timings (FrameStats::tile_depth_ms, tile_plan_ms).
@@ -284,8 +287,12 @@ private:
             for (size_t q = 0; q < draws[di].quads.size(); ++q) order_[size_t(run_next_[size_t(run_of(draws[di].quads[q]))]++)] = q;
             for (int run = flat ? 2 : 0; run < 2 * counts; ++run) {  // (flat: a tile has a light at least)
                 const size_t first = vertex_at(out, stride);
+                double pixels = 0, pairs = 0;
                 for (int k = run_first_[size_t(run)]; k < run_first_[size_t(run) + 1]; ++k) {
                     const TileQuad& tq = draws[di].quads[order_[size_t(k)]];
+                    const double area = double(tq.x1 - tq.x0) * double(tq.y1 - tq.y0);
+                    pixels += area;
+                    pairs += area * double(tq.slots.size());
                     float ids[16];
                     auto slot = [&](size_t j) { return j < tq.slots.size() ? float(tq.slots[j]) : kNoLight; };
                     for (int j = 0; j < n_ids; ++j)
@@ -294,7 +301,8 @@ private:
                 }
                 const size_t end = vertex_at(out, stride);
                 if (end > first)
-                    ranges_.push_back({run % 2 == 1 ? GLenum(GL_POINTS) : GLenum(GL_QUADS), first, end - first, run / 2});
+                    ranges_.push_back({run % 2 == 1 ? GLenum(GL_POINTS) : GLenum(GL_QUADS), first, end - first, run / 2,
+                                       pixels > 0 ? pairs / pixels : 0.0});
             }
         }
         buffers_.upload_next(verts_.data(), verts_.size() * sizeof(float));
@@ -357,7 +365,7 @@ private:
         if (shared) prog.set("att_shared", glm::vec3(f.lights[size_t(batch[0])].params.att));
         shadows_.set(prog);
         if (groups_) prog.set("light_count", arrays_.size());
-        for (const TileRange& r : ranges_) draw_range(r, q, stats);
+        for (const TileRange& r : ranges_) draw_range(r, groups_ ? double(arrays_.size()) : r.mean_lights, q, stats);
         shadows_.unbind();
     }
 
@@ -393,13 +401,13 @@ private:
                 if (form == 1) prog.set("att_shared", glm::vec3(f.lights[size_t(batch[0])].params.att));
                 bound = r.lights;
             }
-            draw_range(r, q, stats);
+            draw_range(r, double(r.lights), q, stats);
         }
     }
 
-    // One range of the uploaded vertices, counted.
-    static void draw_range(const TileRange& r, LightQueries& q, FrameStats& stats) {
-        q.begin();
+    // One range of the uploaded vertices, counted, each of its fragments evaluating `lights` lights.
+    static void draw_range(const TileRange& r, double lights, LightQueries& q, FrameStats& stats) {
+        q.begin(lights);
         glDrawArrays(r.mode, GLint(r.first), GLsizei(r.count));
         q.end();
         ++stats.light_passes;

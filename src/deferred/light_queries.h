@@ -1,9 +1,12 @@
 // The counters around the light-shader draws (docs/benchmarks.md reads them): an occlusion query
 // (light_fragments: samples that passed) and a pipeline-statistics query (light_invocations:
 // fragments that entered the light shader) per draw, read after the last draw so no light waits
-// on the one before it. Only the light shader's draws are counted, never a stencil pass. Whether
+// on the one before it. Each draw's invocations times the lights each of its fragments evaluates
+// give light_evaluations, the pixel-light pairs the passes paid for: one light a fragment for a
+// light's own pass, a batch's every light for a full-screen batch, a tile's list for the tiles. Only the light shader's draws are counted, never a stencil pass. Whether
 // a frame counts at all is decided once, by the lighting stage (LightingStage::draw_lighting).
 #pragma once
+#include <cmath>
 #include <vector>
 
 #include "deferred/frame_stats.h"
@@ -20,8 +23,9 @@ public:
         if (!q_.empty()) glDeleteQueries(GLsizei(q_.size()), q_.data());
         if (!inv_.empty()) glDeleteQueries(GLsizei(inv_.size()), inv_.data());
     }
-    // Around one draw of the light shader.
-    void begin() {
+    // Around one draw of the light shader whose every fragment evaluates `lights` lights (a tile
+    // draw of lists of different lengths: their mean over the draw's pixels).
+    void begin(double lights = 1.0) {
         if (samples_) {
             q_.push_back(0);
             glGenQueries(1, &q_.back());
@@ -29,6 +33,7 @@ public:
         }
         if (invocations_) {
             inv_.push_back(0);
+            lights_.push_back(lights);
             glGenQueries(1, &inv_.back());
             glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, inv_.back());
         }
@@ -37,7 +42,10 @@ public:
         if (invocations_) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
         if (samples_) glEndQuery(GL_SAMPLES_PASSED);
     }
-    // Sums the results into stats (light_fragments; light_invocations where counted).
+    // Whether begin()'s `lights` is read: draws may then be cut so that each has one count.
+    bool counts_invocations() const { return invocations_; }
+    // Sums the results into stats (light_fragments; light_invocations and light_evaluations where
+    // counted).
     void collect(FrameStats& stats) {
         stats.fragments_counted = samples_;
         for (GLuint q : q_) {
@@ -47,18 +55,22 @@ public:
         }
         if (invocations_) {
             long long total = 0;
-            for (GLuint q : inv_) {
+            double evaluations = 0;
+            for (size_t i = 0; i < inv_.size(); ++i) {
                 GLuint n = 0;  // one draw: at most w x h fragments, fits 32 bits
-                glGetQueryObjectuiv(q, GL_QUERY_RESULT, &n);
+                glGetQueryObjectuiv(inv_[i], GL_QUERY_RESULT, &n);
                 total += n;
+                evaluations += double(n) * lights_[i];
             }
             stats.light_invocations = total;
+            stats.light_evaluations = (long long)std::llround(evaluations);
         }
     }
 
 private:
     bool samples_, invocations_;
     std::vector<GLuint> q_, inv_;
+    std::vector<double> lights_;  // begin()'s `lights`, one per inv_
 };
 
 }  // namespace dsr

@@ -19,7 +19,7 @@ const std::vector<CapName>& cap_names() {
         {"no-glsl", "GLSL 1.20", "dsr refuses to render, in one line"},
         {"no-glsl130", "GLSL 1.30", "the tiles read their lights at every pixel (--tile-fetch fragment)"},
         {"no-occlusion-query", "ARB_occlusion_query", "light_fragments is not counted (null in --stats)"},
-        {"no-pipeline-stats", "ARB_pipeline_statistics_query", "light_invocations is not counted (null in --stats)"},
+        {"no-pipeline-stats", "ARB_pipeline_statistics_query", "light_invocations and light_evaluations are not counted (null in --stats)"},
         {"no-stencil", "the main frame buffer's 8-bit stencil", "--light-geometry stencil falls back to volume"},
         {"no-packed-depth-stencil", "EXT_packed_depth_stencil", "with framebuffer objects, --light-geometry stencil falls back to volume"},
         {"no-stencil-separate", "glStencilOpSeparate (OpenGL 2.0)", "--light-geometry stencil sets its two faces with EXT_stencil_two_side, else in two passes"},
