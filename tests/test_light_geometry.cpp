@@ -93,12 +93,19 @@ TEST(LightGeometry, TilesReadSharedAttenuationOnce) {
         Scene s = large_lights_scene(32);
         if (differ) s.lights[5].kq *= 1.5f;
         const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
-        const RenderResult tiles = render_scene(s, kW, kH, with_geometry(LightGeometry::tiles));
-        expect_same(differ ? "tiles_attenuation_differs" : "tiles_attenuation_shared", tiles, quad);
-        if (differ)
-            EXPECT_EQ(tiles.stats.att_shared_batches, 0);
-        else
-            EXPECT_GE(tiles.stats.att_shared_batches, 1);
+        // Both fetches: the vertex fetch's flat programs and light_tiles.frag each have the form.
+        for (TileFetch fetch : {TileFetch::vertex, TileFetch::fragment}) {
+            ShaderOptions o = with_geometry(LightGeometry::tiles);
+            o.tile_fetch = fetch;
+            const RenderResult tiles = render_scene(s, kW, kH, o);
+            const std::string name = std::string(differ ? "tiles_attenuation_differs" : "tiles_attenuation_shared") +
+                                     (fetch == TileFetch::vertex ? "_vertex" : "_fragment");
+            expect_same(name, tiles, quad);
+            if (differ)
+                EXPECT_EQ(tiles.stats.att_shared_batches, 0) << name;
+            else
+                EXPECT_GE(tiles.stats.att_shared_batches, 1) << name;
+        }
     }
 }
 

@@ -71,19 +71,16 @@ private:
             // of light (its lights take the attenuation law's point-light form); with shadow maps
             // the shadow form.
             LightPrograms& progs = programs_for(f, int(batch.size()));
-            Program* form = &load_batch(f, batch, arrays_, shadows_, progs, stats);
-            const bool shared = form == &progs[LightShader::point_inverse] && shares_attenuation(f, batch);
-            if (shared) {
-                form = &att_shared_program(f, int(batch.size()));
-                ++stats.att_shared_batches;
-            }
-            Program& prog = *form;
+            const BatchForm form = load_batch_form(f, batch, arrays_, shadows_, progs, stats, [&]() -> Program& {
+                return att_shared_program(f, int(batch.size()));
+            });
+            Program& prog = form.prog;
             RenderState s = light_pass_state(prog.id(), false);  // additive, the whole screen
             s.blend = !base;
             gl_state().apply(s);
             arrays_.set(prog, LightArrays::kLight);
             shadows_.set(prog);
-            if (shared) prog.set("att_shared", glm::vec3(f.lights[size_t(batch[0])].params.att));
+            form.set_shared();
             prog.set("with_ambient", base ? 1.0f : 0.0f);
             if (base) {
                 prog.set("background", base->background);

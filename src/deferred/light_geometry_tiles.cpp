@@ -350,19 +350,15 @@ private:
     // per light, one array each), then each uploaded range, quads and points of each layer.
     void draw_batch(const FrameDef& f, const std::vector<int>& batch, LightQueries& q, FrameStats& stats) {
         // A batch with shadow maps: each light's slot among them in lightspot.z (-1: none).
-        Program* form = &load_batch(f, batch, arrays_, shadows_, progs_, stats);
-        const bool shared = form == &progs_[LightShader::point_inverse] && shares_attenuation(f, batch);
-        if (shared) {
-            form = &att_shared_program(f);
-            ++stats.att_shared_batches;
-        }
-        Program& prog = *form;
+        const BatchForm form = load_batch_form(f, batch, arrays_, shadows_, progs_, stats,
+                                               [&]() -> Program& { return att_shared_program(f); });
+        Program& prog = form.prog;
         RenderState state = light_pass_state(prog.id(), false);
         if (points_) state.point_size = float(tile_size_);
         gl_state().apply(state);
         vertex_arrays(stride_, id_vecs_);
         arrays_.set(prog, LightArrays::kLight);
-        if (shared) prog.set("att_shared", glm::vec3(f.lights[size_t(batch[0])].params.att));
+        form.set_shared();
         shadows_.set(prog);
         if (groups_) prog.set("light_count", arrays_.size());
         for (const TileRange& r : ranges_) draw_range(r, groups_ ? double(arrays_.size()) : r.mean_lights, q, stats);

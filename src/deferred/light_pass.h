@@ -5,6 +5,7 @@
 #pragma once
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -140,6 +141,29 @@ Program& load_batch(const FrameDef& f, const std::vector<int>& batch, LightArray
 // with the constants in one uniform (a CPU rasteriser reads an array at a light's index lane by
 // lane: light_tiles.frag, light_screen.frag).
 bool shares_attenuation(const FrameDef& f, const std::vector<int>& batch);
+
+// A batch's program (load_batch_form) and, where it is the ATT_SHARED form, the constants its
+// att_shared uniform takes.
+struct BatchForm {
+    Program& prog;
+    std::optional<glm::vec3> att_shared;
+    // The constants into prog, in use; nothing for another form.
+    void set_shared() const {
+        if (att_shared) prog.set("att_shared", *att_shared);
+    }
+};
+
+// load_batch, and where its program is progs' attenuation-law point form and the batch's lights
+// share their constants, shared_form(): that form built with ATT_SHARED (counted in
+// stats.att_shared_batches). The one choice of the tiles' and screen's batches.
+template <class SharedForm>
+BatchForm load_batch_form(const FrameDef& f, const std::vector<int>& batch, LightArrays& arrays, ShadowSlots& shadows,
+                          LightPrograms& progs, FrameStats& stats, SharedForm&& shared_form) {
+    Program& p = load_batch(f, batch, arrays, shadows, progs, stats);
+    if (&p != &progs[LightShader::point_inverse] || !shares_attenuation(f, batch)) return BatchForm{p, std::nullopt};
+    ++stats.att_shared_batches;
+    return BatchForm{shared_form(), glm::vec3(f.lights[size_t(batch[0])].params.att)};
+}
 
 // The light's quad over its scissor rectangle, through the light's form of "light".
 class LightQuads {
