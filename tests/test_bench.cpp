@@ -376,8 +376,8 @@ TEST(Bench, SummarySaysEachGoalPlainly) {
     s.goal_results = bench::judge_goals({}, "default", 3);
     const std::string t = bench::text_summary(s, "out/bench.md", "");
     EXPECT_NE(t.find("0 met, 0 not met, " + std::to_string(s.goal_results.size()) + " not judged"), std::string::npos) << t;
-    EXPECT_NE(t.find("  not judged  dsr's default evaluates at most 1.25 times as many pixel-light pairs as its lights really reach "
-                     "(default, 3 lights): not measured in this run\n"),
+    EXPECT_NE(t.find("  not judged  dsr's default evaluates at most 1.25 times as many pixel-light pairs as its "
+                     "lights really reach (default, 3 lights): not measured in this run\n"),
               std::string::npos)
         << t;
     EXPECT_NE(t.find("and the note: out/bench.md\n"), std::string::npos) << t;
@@ -396,8 +396,8 @@ TEST(Bench, SummarySaysEachGoalPlainly) {
     s.goal_results = bench::judge_goals(s.rows, "default", 3);
     const std::string u = bench::text_summary(s, "r.md", "r.json");
     EXPECT_NE(u.find("1 met, 1 not met, "), std::string::npos) << u;
-    EXPECT_NE(u.find("  met         dsr's default evaluates at most 1.25 times as many pixel-light pairs as its lights really reach "
-                     "(default, 3 lights): 120 / 100 = 1.200 (quad)\n"),
+    EXPECT_NE(u.find("  met         dsr's default evaluates at most 1.25 times as many pixel-light pairs as its "
+                     "lights really reach (default, 3 lights): 120 / 100 = 1.200 (quad)\n"),
               std::string::npos)
         << u;
     EXPECT_NE(u.find("  NOT met     at 1920x1080 with 1024 lights, a frame takes at most 1.5 times the least its "
@@ -460,17 +460,19 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
     const std::vector<std::string> g = bench::goals(rows, "default", 3);
     ASSERT_EQ(g.size(), 8u + 11u);  // + the light geometries' eleven, none measured here
     for (size_t i = 8; i < g.size(); ++i) EXPECT_NE(g[i].find("not measured in this run"), std::string::npos) << g[i];
-    EXPECT_EQ(g[0], "dsr's default light_evaluations <= 1.25 x ideal, default with 3 lights: 120 / 100 = 1.200 (quad) -> met");
+    EXPECT_EQ(g[0], "dsr's default light_evaluations <= 1.25 x ideal, default with 3 lights: 120 / 100 = 1.200 (quad) "
+                    "-> met");
     EXPECT_EQ(g[1], "  (information, not a goal: quad's light_fragments / ideal = 100 / 100 = 1.000; it holds by "
                     "construction, since the light sphere test discards every fragment whose surface point lies "
                     "outside the sphere and the ideal counts the points inside)");
     EXPECT_EQ(g[1].find("met"), std::string::npos);  // never judged
-    EXPECT_EQ(g[2], "  (information, quad with the depth-span test only, --no-skip light-sphere-test: light_fragments / "
-                    "ideal = 150 / 100 = 1.500; light_invocations / ideal = 300 / 100 = 3.000)");
+    EXPECT_EQ(g[2], "  (information, quad with the depth-span test only, --no-skip light-sphere-test: "
+                    "light_fragments / ideal = 150 / 100 = 1.500; light_invocations / ideal = 300 / 100 = 3.000)");
     // The floor is judged at 1920x1080 with 1024 lights only; elsewhere its figure is information.
     EXPECT_EQ(g[3], "floor_ratio <= 1.5 at 1920x1080 with 1024 lights, default with 3 lights: 1.00 ms / 0.80 ms = "
                     "1.25 (information: judged at 1920x1080 with 1024 lights only; this row is 64x64 with 3 lights)");
-    EXPECT_EQ(g[4], "dsr's default light_evaluations <= 1.25 x ideal, default with 1024 lights: not measured in this run");
+    EXPECT_EQ(g[4],
+              "dsr's default light_evaluations <= 1.25 x ideal, default with 1024 lights: not measured in this run");
     EXPECT_EQ(g[5], "floor_ratio <= 1.5 at 1920x1080 with 1024 lights, default with 1024 lights: not measured in this run");
     // Judged against the faster forward multi-pass row (RGBA8 here), not the float one.
     EXPECT_EQ(g[6], "deferred >= 10x faster than the faster forward multi-pass at 256 lights, default: "
@@ -484,8 +486,8 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
     rows.erase(rows.begin() + 6);  // the 3.0 ms row: the 3.75 ms one is judged
     const std::vector<std::string> h = bench::goals(rows, "default", 3);
     ASSERT_EQ(h.size(), 9u + 11u);
-    EXPECT_EQ(h[4], "dsr's default light_evaluations <= 1.25 x ideal, default with 1024 lights: 126 / 100 = 1.260 (quad) -> NOT "
-                    "met");
+    EXPECT_EQ(h[4], "dsr's default light_evaluations <= 1.25 x ideal, default with 1024 lights: 126 / 100 = 1.260 "
+                    "(quad) -> NOT met");
     // Where the run has an auto row, dsr's default: its evaluations judged (tiles: a tile's every
     // light at each of its pixels, so more than its invocations), quad's invocations information.
     bench::Row a3 = with(deferred_row("default", 3, 0.8, 90, 100), 40, 0.8);
@@ -816,8 +818,8 @@ TEST(Bench, MissingCountsAreNullNotZero) {
     EXPECT_EQ(c[16], "-");
     EXPECT_EQ(c[17], "-");
     const std::vector<std::string> g = bench::goals({r}, "default", 3);
-    EXPECT_EQ(g[0], "dsr's default light_evaluations <= 1.25 x ideal, default with 3 lights: not measured in this run (the GL "
-                    "lacks ARB_pipeline_statistics_query)");
+    EXPECT_EQ(g[0], "dsr's default light_evaluations <= 1.25 x ideal, default with 3 lights: not measured in this run "
+                    "(the GL lacks ARB_pipeline_statistics_query)");
     EXPECT_EQ(g[1], "floor_ratio <= 1.5 at 1920x1080 with 1024 lights, default with 3 lights: not measured in this "
                     "run");  // no fragment line
 
@@ -887,7 +889,8 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
         "cpu_alone_ms_median", "cpu_alone_frames_ms", "cpu_make_frame_ms", "cpu_lights_ms", "light_fragments",
         "ideal_fragments", "fragments_ratio", "scissor_pixels", "lights_drawn", "passes", "max_lsb", "mean_lsb",
         "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic", "light_invocations",
-        "invocations_ratio", "light_evaluations", "evaluations_ratio", "ideal_source", "floor_fill_ms", "floor_light_ns", "floor_post_ms", "floor_output_ms", "floor_ms",
+        "invocations_ratio", "light_evaluations", "evaluations_ratio", "ideal_source", "floor_fill_ms", "floor_light_ns",
+        "floor_post_ms", "floor_output_ms", "floor_ms",
         "floor_ratio", "light_passes", "auto_lights", "depth_copy_ms", "lights_ms", "lights_frames_ms", "max_lsb_vs_quad"};
     std::vector<std::string> got;
     for (auto it = f.begin(); it != f.end(); ++it) got.push_back(it.key());

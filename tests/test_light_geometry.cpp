@@ -125,7 +125,8 @@ TEST(LightGeometry, EvaluationsCountTheLightsEachFragmentShades) {
         const RenderResult tiles = render_scene(s, kW, kH, o);
         ASSERT_EQ(kW % tiles.paths.tile_size, 0);
         const long long ts = tiles.paths.tile_size;
-        std::printf("[ counts   ] tiles (%s fetch): %lld invocations, %lld evaluations, %lld tile-light pairs x %lld px\n",
+        std::printf("[ counts   ] tiles (%s fetch): %lld invocations, %lld evaluations, %lld tile-light pairs x "
+                    "%lld px\n",
                     fetch == TileFetch::vertex ? "vertex" : "fragment", *tiles.stats.light_invocations,
                     *tiles.stats.light_evaluations, tiles.stats.tile_light_pairs, ts * ts);
         EXPECT_GT(tiles.stats.tile_light_pairs, tiles.stats.light_passes);  // lists longer than one light

@@ -132,7 +132,8 @@ std::vector<std::string> table_cells(const Row& r) {
 const std::vector<std::string>& table_header() {
     static const std::vector<std::string> h = {"scene", "lights", "configuration", "frames", "ms med", "ms min-max",
                                                "light frags", "ideal", "ratio", "max LSB", "mean LSB", "PSNR dB",
-                                               "an. max", "an. mean", "an. PSNR", "invocations", "evaluations", "eval/ideal",
+                                               "an. max", "an. mean", "an. PSNR", "invocations", "evaluations",
+                                               "eval/ideal",
                                                "floor ms", "floor ratio", "cpu ms", "G-buf B/px"};
     return h;
 }
@@ -373,7 +374,8 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
           "`-` (JSON null) where the GL lacks the query. *evaluations*: each light draw's invocations times the "
           "lights each of its fragments evaluates, summed (one for a light's own pass, the batch's lights for "
           "screen's full-screen passes, the tile's list for the tiles): the pixel-light pairs paid for, which is "
-          "what compares with the ideal where a pass shades several lights. *ideal*: pixels whose exact surface point lies strictly "
+          "what compares with the ideal where a pass shades several lights. *ideal*: pixels whose exact surface "
+          "point lies strictly "
           "inside a light's sphere, summed over the lights with non-zero colour, in double precision and "
           "independent of the light shader's arithmetic: from the analytic trace's exact eye depth for the "
           "scenes with constant materials, otherwise from the G-buffer's 24-bit depth read back as integers and "

@@ -3,8 +3,9 @@
 // fragments that entered the light shader) per draw, read after the last draw so no light waits
 // on the one before it. Each draw's invocations times the lights each of its fragments evaluates
 // give light_evaluations, the pixel-light pairs the passes paid for: one light a fragment for a
-// light's own pass, a batch's every light for a full-screen batch, a tile's list for the tiles. Only the light shader's draws are counted, never a stencil pass. Whether
-// a frame counts at all is decided once, by the lighting stage (LightingStage::draw_lighting).
+// light's own pass, a batch's every light for a full-screen batch, a tile's list for the tiles.
+// Only the light shader's draws are counted, never a stencil pass. Whether a frame counts at all
+// is decided once, by the lighting stage (LightingStage::draw_lighting).
 #pragma once
 #include <cmath>
 #include <vector>
