@@ -175,6 +175,19 @@ TEST(PassSkips, AmbientFoldedSameImage) {
             EXPECT_EQ(d.max_abs, 0.0) << name;
         }
     }
+    // LearnOpenGL's lights, of the attenuation law, each over the whole screen without the scissors:
+    // the first folded through that law's form (light_fold_point_inverse), the same bytes.
+    {
+        ShaderOptions o = no_target();
+        o.scissor = false;
+        o.light_geometry = LightGeometry::quad;
+        const Scene demo = large_lights_scene(8);
+        const Frames fold = render_frames(demo, o, 1);
+        const Frames full = render_frames(demo, no_skip(&SkipOptions::ambient_pass, o), 1);
+        EXPECT_TRUE(fold.stats[0].ambient_folded);
+        EXPECT_EQ(compare_logged("ambient folded vs not, attenuation law", fold.image, full.image, 1.0 / 255.0).max_abs,
+                  0.0);
+    }
     // Without a full-screen light there is nothing to fold into.
     EXPECT_FALSE(render_frames(default_scene(), no_target(), 1).stats[0].ambient_folded);
     ShaderOptions ssao;

@@ -36,8 +36,7 @@ LightingStage::LightingStage(const ShaderConfig& c, ProgramSet& programs, int wi
       geometry_(make_light_geometry(c, programs, width, height)) {
     set_handoff(c, programs);
     fold_round_ = c.tile_round;
-    if (programs.has("light_fold")) fold_any_ = programs.take("light_fold");
-    if (programs.has("light_point_fold")) fold_point_ = programs.take("light_point_fold");
+    if (programs.has("light_fold")) fold_ = std::make_unique<LightPrograms>(programs, "light_fold");
     if (programs.has("position")) position_prog_ = programs.take("position");
 }
 
@@ -67,7 +66,7 @@ void LightingStage::draw_ambient(const FrameDef& f, const Scene& scene, RenderTa
 }
 
 bool LightingStage::may_fold(const FrameDef& f, bool ssao) const {
-    if (ssao || !fold_any_.id() || !fold_point_.id()) return false;
+    if (ssao || !fold_) return false;
     return (draws_own_ambient_ && !f.lights.empty()) || full_screen_light(f).has_value();
 }
 
@@ -113,7 +112,7 @@ void LightingStage::draw_lighting(const FrameDef& f, const FrameDef& lights, Ren
 // it writes every pixel (no blending, no scissor) and rejects none (light.frag's AMBIENT_FOLD).
 void LightingStage::draw_fold(const FrameDef& f, const AmbientFold& fold, LightQueries& q) {
     const LightDraw& l = f.lights[fold.light];
-    Program& prog = l.tutorial() ? fold_point_ : fold_any_;
+    Program& prog = (*fold_)[l.shader()];  // full_screen_light: never a shadowed light
     gl_state().set_camera(f.pixels());
     RenderState s = fixed_function_2d();
     s.program = prog.id();

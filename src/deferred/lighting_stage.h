@@ -24,6 +24,7 @@
 
 namespace dsr {
 
+class LightPrograms;
 class SsaoStage;
 
 // The ambient pass folded into the pass of f.lights[light], a full-screen light: the colours the
@@ -93,7 +94,7 @@ private:
     std::unique_ptr<LightGeometryPass> geometry_;
     std::unique_ptr<DepthHandoffPass> handoff_;  // where Paths::accum_depth
     void draw_fold(const FrameDef& f, const AmbientFold& fold, LightQueries& q);
-    Program fold_any_, fold_point_;              // with the ambient skip (and SSAO off)
+    std::unique_ptr<LightPrograms> fold_;        // light_fold's three forms: the ambient skip on, SSAO off
     float fold_round_ = 0.5f;                    // ShaderConfig::tile_round: quantize.glsl's fallback
     Program position_prog_;                      // where the table built it
     std::unique_ptr<PBuffer> position_buf_;      // on first use

@@ -108,9 +108,8 @@ Defines quantize_defines(const ShaderConfig& c) {
 
 // The ambient fold's light pass (light.frag AMBIENT_FOLD), each term rounded as its pass would be
 // (into RGBA8: a float P-buffer 0 rounds neither).
-Defines fold_defines(const ShaderConfig& c, bool point_only) {
+Defines fold_defines(const ShaderConfig& c) {
     Defines d = light_defines(c);
-    if (point_only) d.push_back("LIGHT_POINT_ONLY");
     d.push_back("AMBIENT_FOLD");
     if (c.opts.hdr.float_accum()) return d;
     const Defines q = quantize_defines(c);
@@ -287,10 +286,14 @@ const std::vector<ShaderRow>& shader_rows() {
         // The ambient pass folded into a full-screen light's pass (lighting_stage.cpp): the light
         // pass that also writes the background and Listing 15's ambient term, blending off. Not
         // with SSAO, which scales the ambient pass alone.
+        // In the three forms of the light passes (LightPrograms), so a light of the attenuation law
+        // is not folded through the general form's selection.
         {"light_fold", "light.vert", "light.frag", "full-screen light pass with the ambient pass folded in",
-         ambient_fold, [](C c) { return fold_defines(c, false); }},
-        {"light_point_fold", "light.vert", "light.frag", "the same, the tutorial's point lights", ambient_fold,
-         [](C c) { return fold_defines(c, true); }},
+         ambient_fold, [](C c) { return fold_defines(c); }},
+        {"light_fold_point", "light.vert", "light.frag", "the same, the tutorial's point lights", ambient_fold,
+         [](C c) { return point_linear(fold_defines(c)); }},
+        {"light_fold_point_inverse", "light.vert", "light.frag", "the same, point lights, attenuation law",
+         ambient_fold, [](C c) { return point_inverse(fold_defines(c)); }},
         {"light_volume", "light.vert", "light.frag", "light pass over a volume mesh", uses_volume,
          [](C c) { return with(light_defines(c), {"VOLUME"}); }},
         {"light_volume_point", "light.vert", "light.frag", "volume mesh, the tutorial's point lights", uses_volume,
