@@ -71,12 +71,12 @@ vec3 light_contribution(vec4 Lpos, vec4 Lcolor, vec4 Ldir, vec4 Lspot, vec4 Latt
 #elif defined(LIGHT_POINT_INVERSE)
     // Every light is a point light with the attenuation law: the general form's arithmetic for
     // that case alone (the same float operations, so the same image), without the selection.
-    // With LIGHT_SPHERE_TEST the caller has left out every point with dot(l, l) >= radius^2 (light.frag,
-    // tile_light.glsl), which is the law's cut-off at the radius up to the last bit of the square
-    // root, so the cut-off's select goes too. Its comparison and select, and the polynomial in
-    // Horner's form (two multiply-adds), took 32-large's quad light stage on llvmpipe from 180 to
-    // 166 ms (medians of six alternations; the same image), where the law had cost about 10% over
-    // the linear law's one division, subtraction and max.
+    // With LIGHT_SPHERE_TEST the caller has left out every point with dot(l, l) >= radius^2
+    // (light.frag, tile_light.glsl): the law's cut-off at the radius but for the square root's
+    // last bit, so the cut-off's comparison and select go too. Without them, and with the
+    // polynomial in Horner's form (two multiply-adds, in the general form too), 32-large's quad
+    // light stage on llvmpipe went from 180 to 166 ms (medians of six alternations; the same
+    // image), where the law had cost about 10% over the linear law's division, subtraction and max.
     vec3 l = Lpos.xyz - p;
     float dist = length(l);
 #ifdef LIGHT_SPHERE_TEST

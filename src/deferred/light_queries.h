@@ -43,8 +43,6 @@ public:
         if (invocations_) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
         if (samples_) glEndQuery(GL_SAMPLES_PASSED);
     }
-    // Whether begin()'s `lights` is read: draws may then be cut so that each has one count.
-    bool counts_invocations() const { return invocations_; }
     // Sums the results into stats (light_fragments; light_invocations and light_evaluations where
     // counted).
     void collect(FrameStats& stats) {
