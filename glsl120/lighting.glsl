@@ -62,6 +62,13 @@ vec3 lighting(vec3 Scolor, vec3 Spos, float Sradius, vec3 p, vec3 v, vec3 n, vec
 // (Lcolor.w = 0, Latt.w = 0) and gets lighting() without the selection; with LIGHT_POINT_INVERSE,
 // only point lights with the attenuation law (Lcolor.w = 0, Latt.w = 1), at the same cost.
 // POINT_LIGHTS: either promise (the callers' depth and sphere tests need no type test).
+// The attenuation law's factor at distance dist inside the radius: 1 / (KC + KL d + KQ d^2), in
+// Horner's form (two multiply-adds). The cut-off at the radius is the caller's.
+float inverse_law(vec4 Latt, float dist)
+{
+    return 1.0 / (Latt.x + dist * (Latt.y + Latt.z * dist));
+}
+
 vec3 light_contribution(vec4 Lpos, vec4 Lcolor, vec4 Ldir, vec4 Lspot, vec4 Latt,
                         vec3 p, vec3 v, vec3 n, vec3 Mdiff, vec3 Mspec, float Mshi)
 {
@@ -74,15 +81,14 @@ vec3 light_contribution(vec4 Lpos, vec4 Lcolor, vec4 Ldir, vec4 Lspot, vec4 Latt
     // With LIGHT_SPHERE_TEST the caller has left out every point with dot(l, l) >= radius^2
     // (light.frag, tile_light.glsl): the law's cut-off at the radius but for the square root's
     // last bit, so the cut-off's comparison and select go too. Without them, and with the
-    // polynomial in Horner's form (two multiply-adds, in the general form too), 32-large's quad
+    // polynomial in Horner's form (inverse_law, the general form's too), 32-large's quad
     // light stage on llvmpipe went from 180 to 166 ms (medians of six alternations; the same
     // image), where the law had cost about 10% over the linear law's division, subtraction and max.
     vec3 l = Lpos.xyz - p;
     float dist = length(l);
-#ifdef LIGHT_SPHERE_TEST
-    float f = 1.0 / (Latt.x + dist * (Latt.y + Latt.z * dist));
-#else
-    float f = dist < Lpos.w ? 1.0 / (Latt.x + dist * (Latt.y + Latt.z * dist)) : 0.0;
+    float f = inverse_law(Latt, dist);
+#ifndef LIGHT_SPHERE_TEST
+    f = dist < Lpos.w ? f : 0.0;  // the cut-off at the radius
 #endif
     return f * brdf(Lcolor.rgb, l, dist, p, v, n, Mdiff, Mspec, Mshi);
 #else
@@ -93,7 +99,7 @@ vec3 light_contribution(vec4 Lpos, vec4 Lcolor, vec4 Ldir, vec4 Lspot, vec4 Latt
     vec3 l = directional ? -Ldir.xyz : Lpos.xyz - p;   // from p towards the light
     float dist = length(l);                            // 1 for a directional light
     float linear = max(0.0, 1.0 - dist / Lpos.w);      // Equation 2
-    float inverse = dist < Lpos.w ? 1.0 / (Latt.x + dist * (Latt.y + Latt.z * dist)) : 0.0;
+    float inverse = dist < Lpos.w ? inverse_law(Latt, dist) : 0.0;
     float f = Latt.w > 0.5 ? inverse : linear;
     // Spot: cos theta from the axis; GL_SPOT_CUTOFF, the soft edge, GL_SPOT_EXPONENT.
     float c = dot(-l, Ldir.xyz) / max(dist, 1e-30);

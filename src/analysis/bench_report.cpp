@@ -263,11 +263,12 @@ std::string light_geometry_markdown(const std::vector<Row>& rows) {
     auto ll = [](const std::optional<long long>& v) { return v ? std::to_string(*v) : std::string("-"); };
     for (const Row& r : rows) {
         if (!default_configuration(r)) continue;
+        const std::optional<double> er = evaluations_ratio(r);
         md << "| " << r.scene << " | " << r.lights_label << " (" << r.lights << ") | "
            << light_geometry_name(r.light_geometry) << " | "
            << format_number("%.2f", r.ms_median) << " | " << ll(r.light_invocations) << " | "
            << ll(r.light_evaluations) << " | " << ll(r.ideal_fragments) << " | "
-           << (evaluations_ratio(r) ? format_number("%.2f", *evaluations_ratio(r)) : std::string("-"))
+           << (er ? format_number("%.2f", *er) : std::string("-"))
            << " | " << ll(r.light_fragments) << " | " << (r.light_passes ? std::to_string(*r.light_passes) : "-")
            << " | " << (r.depth_copy_ms ? format_number("%.2f", *r.depth_copy_ms) : "-") << " | "
            << (r.err_quad ? format_number("%.0f", r.err_quad->max_lsb()) : "-") << " |\n";
