@@ -314,14 +314,31 @@ std::vector<size_t> round_order(size_t rows, int round) {
     return order;
 }
 
+std::vector<size_t> auto_rounds_rows(const std::vector<Row>& rows, const std::string& scene, int lights) {
+    const Row* a = find_geometry_row(rows, scene, lights, LightGeometry::automatic);
+    std::vector<const Row*> fixed;
+    double fastest = 0;
+    for (LightGeometry g : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles})
+        if (const Row* r = find_geometry_row(rows, scene, lights, g)) {
+            fixed.push_back(r);
+            fastest = fixed.size() == 1 ? r->ms_median : std::min(fastest, r->ms_median);
+        }
+    if (!a || fixed.empty()) return {};
+    std::vector<size_t> pick = {size_t(a - rows.data())};
+    for (const Row* r : fixed)
+        if (r->ms_median <= kAutoRoundsWithin * fastest) pick.push_back(size_t(r - rows.data()));
+    return pick;
+}
+
 namespace {
 
 // Warm-up, then the timed frames interleaved across rows (one frame of each row per round), so a
 // burst of load from elsewhere on the machine spreads over all rows instead of biasing one; the
 // floor's fill frames in the same rounds. Each round takes the rows in an order of its own
 // (round_order): in one fixed order a row paid for the row before it, the same one every round.
-// Each row keeps its last frame's image. Then one counted frame per deferred row, whose counts go
-// in the row.
+// Each row keeps its last frame's image. Then the CPU goal's frames back to back and goal auto's
+// own rounds (Row::cpu_alone_ms, Row::auto_rounds_ms), and one counted frame per deferred row,
+// whose counts go in the row.
 void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors) {
     for (auto& [l, fb] : floors.bench)
         for (int i = 0; i < cfg.warmup; ++i) fb->fill_frame(v.scene);
@@ -370,6 +387,17 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
             run.row.cpu_alone_frames_ms.push_back(run.ds->render(*run.scene, v.w, v.h).ms.cpu);
         run.row.cpu_alone_ms = median(run.row.cpu_alone_frames_ms);
     }
+    // Goal `auto`'s rows again, those alone (auto_rounds_rows), in rounds of their own order.
+    for (size_t i = 0; i < rows.size(); ++i)
+        if (!runs[i]->ms.empty()) rows[i].ms_median = median(runs[i]->ms);
+    const std::vector<size_t> pick = rows.empty() ? std::vector<size_t>{} : auto_rounds_rows(rows, v.name, rows.front().lights);
+    const int paired = pick.empty() ? 0 : kAutoRoundsFactor * runs[pick.front()]->row.frames;
+    for (int f = 0; f < paired; ++f)
+        for (size_t k : round_order(pick.size(), f)) {
+            RowRun& run = *runs[pick[k]];
+            run.row.auto_rounds_frames_ms.push_back(run.ds->render(*run.scene, v.w, v.h).ms.frame);
+        }
+    for (size_t i : pick) runs[i]->row.auto_rounds_ms = median(runs[i]->row.auto_rounds_frames_ms);
     for (auto& run : runs)
         if (run->ds) {
             run->ds->set_counting(true);
