@@ -24,6 +24,7 @@
 // draws are split by count: the terms are written out in a row, none masked off).
 #include <algorithm>
 #include <array>
+#include <optional>
 
 #include "deferred/light_geometry_tiles.h"
 #include "deferred/light_pass.h"
@@ -190,14 +191,14 @@ public:
             });
             for (int b = 0; b < int(planner->batches().size()); ++b) {
                 const std::vector<int>& batch = planner->batches()[size_t(b)];
-                const int flat = flat_form(f, batch);
+                const FlatForm flat = flat_form(f, batch);
                 plan_ms += wall_ms([&] {
                     draws_.clear();
                     stats.tile_light_pairs += planner->plan_batch(b, draws_);
-                    upload(draws_.data(), draws_.size(), flat >= 0);
+                    upload(draws_.data(), draws_.size(), flat.form >= 0);
                 });
                 if (b == 0) timeline_.mark(TileTimeline::draws_begin);
-                if (flat >= 0)
+                if (flat.form >= 0)
                     draw_flat(f, batch, flat, q, stats);
                 else
                     draw_batch(f, batch, q, stats);
@@ -366,35 +367,42 @@ private:
     }
 
     // The vertex fetch's form for a batch: 0 for point lights of the linear law, 1 for point lights
-    // of the attenuation law that share its constants; -1 (light_tiles.frag draws it): no vertex
-    // fetch, another kind of light or law, differing constants, or a shadowed light.
-    int flat_form(const FrameDef& f, const std::vector<int>& batch) const {
-        if (!vertex_fetch_ || batch.empty()) return -1;
+    // of the attenuation law that share its constants (att, shared_attenuation); -1
+    // (light_tiles.frag draws it): no vertex fetch, another kind of light or law, differing
+    // constants, or a shadowed light.
+    struct FlatForm {
+        int form = -1;
+        std::optional<glm::vec3> att;
+    };
+    FlatForm flat_form(const FrameDef& f, const std::vector<int>& batch) const {
+        if (!vertex_fetch_ || batch.empty()) return {};
         for (int i : batch)
-            if (f.lights[size_t(i)].shadow >= 0) return -1;
+            if (f.lights[size_t(i)].shadow >= 0) return {};
         const LightShader s = LightPrograms::common(f, batch);
-        if (s == LightShader::point_linear) return 0;
-        if (s == LightShader::point_inverse && shares_attenuation(f, batch)) return 1;
-        return -1;
+        if (s == LightShader::point_linear) return {0, std::nullopt};
+        if (s != LightShader::point_inverse) return {};
+        const std::optional<glm::vec3> att = shared_attenuation(f, batch);
+        return att ? FlatForm{1, att} : FlatForm{};
     }
 
     // The uploaded ranges, each by the form's program for its count of lights, the batch's lights
     // in its arrays (position and colour are all it reads; att_shared for the attenuation law).
-    void draw_flat(const FrameDef& f, const std::vector<int>& batch, int form, LightQueries& q, FrameStats& stats) {
+    void draw_flat(const FrameDef& f, const std::vector<int>& batch, const FlatForm& form, LightQueries& q,
+                   FrameStats& stats) {
         arrays_.clear();
         for (int i : batch) arrays_.add(f.lights[size_t(i)].params);
-        if (form == 1) ++stats.att_shared_batches;
+        if (form.att) ++stats.att_shared_batches;
         ++stats.tile_vertex_batches;
         vertex_arrays(flat_stride_, flat_vecs_);
         int bound = 0;
         for (const TileRange& r : ranges_) {
             if (r.lights != bound) {
-                Program& prog = flat_program(f, form, r.lights);
+                Program& prog = flat_program(f, form.form, r.lights);
                 RenderState state = light_pass_state(prog.id(), false);
                 if (points_) state.point_size = float(tile_size_);
                 gl_state().apply(state);
                 arrays_.set(prog, LightArrays::kLight);
-                if (form == 1) prog.set("att_shared", glm::vec3(f.lights[size_t(batch[0])].params.att));
+                if (form.att) prog.set("att_shared", *form.att);
                 bound = r.lights;
             }
             draw_range(r, double(r.lights), q, stats);

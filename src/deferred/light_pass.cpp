@@ -179,10 +179,12 @@ Program& load_batch(const FrameDef& f, const std::vector<int>& batch, LightArray
     return shadows.size() > 0 ? shadows.prepare(progs, stats) : progs[LightPrograms::common(f, batch)];
 }
 
-bool shares_attenuation(const FrameDef& f, const std::vector<int>& batch) {
-    if (batch.empty()) return false;
+std::optional<glm::vec3> shared_attenuation(const FrameDef& f, const std::vector<int>& batch) {
+    if (batch.empty()) return std::nullopt;
     const glm::vec3 a(f.lights[size_t(batch[0])].params.att);
-    return std::all_of(batch.begin(), batch.end(), [&](int i) { return glm::vec3(f.lights[size_t(i)].params.att) == a; });
+    if (!std::all_of(batch.begin(), batch.end(), [&](int i) { return glm::vec3(f.lights[size_t(i)].params.att) == a; }))
+        return std::nullopt;
+    return a;
 }
 
 // The family's programs by the table's names: FAMILY_point, FAMILY_point_inverse, FAMILY, and

@@ -136,11 +136,11 @@ private:
 // the batch's lights. The tiles' and screen's batches.
 Program& load_batch(const FrameDef& f, const std::vector<int>& batch, LightArrays& arrays, ShadowSlots& shadows,
                     LightPrograms& progs, FrameStats& stats);
-// Whether every light of the batch has the first one's attenuation constants, to the bit: where
-// they are point lights of the attenuation law, the batched shaders' ATT_SHARED form draws them
-// with the constants in one uniform (a CPU rasteriser reads an array at a light's index lane by
-// lane: light_tiles.frag, light_screen.frag).
-bool shares_attenuation(const FrameDef& f, const std::vector<int>& batch);
+// The attenuation constants every light of the batch has, to the bit, or nullopt where they
+// differ (or the batch is empty): where they are point lights of the attenuation law, the batched
+// shaders' ATT_SHARED form draws them with the constants in one uniform, `att_shared` (a CPU
+// rasteriser reads an array at a light's index lane by lane: light_tiles.frag, light_screen.frag).
+std::optional<glm::vec3> shared_attenuation(const FrameDef& f, const std::vector<int>& batch);
 
 // A batch's program (load_batch_form) and, where it is the ATT_SHARED form, the constants its
 // att_shared uniform takes.
@@ -160,9 +160,11 @@ template <class SharedForm>
 BatchForm load_batch_form(const FrameDef& f, const std::vector<int>& batch, LightArrays& arrays, ShadowSlots& shadows,
                           LightPrograms& progs, FrameStats& stats, SharedForm&& shared_form) {
     Program& p = load_batch(f, batch, arrays, shadows, progs, stats);
-    if (&p != &progs[LightShader::point_inverse] || !shares_attenuation(f, batch)) return BatchForm{p, std::nullopt};
+    if (&p != &progs[LightShader::point_inverse]) return BatchForm{p, std::nullopt};
+    const std::optional<glm::vec3> att = shared_attenuation(f, batch);
+    if (!att) return BatchForm{p, std::nullopt};
     ++stats.att_shared_batches;
-    return BatchForm{shared_form(), glm::vec3(f.lights[size_t(batch[0])].params.att)};
+    return BatchForm{shared_form(), att};
 }
 
 // The light's quad over its scissor rectangle, through the light's form of "light".
