@@ -521,6 +521,18 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
                     "(auto's lights: 0 by quads, 0 by volumes, 3 by the tiles) -> met");
     EXPECT_EQ(a[1], "  (information: the tutorial's quad per light, --light-geometry quad: light_invocations / ideal = "
                     "120 / 100 = 1.200)");
+    // With rows of other geometries: each one's ratio, fewest first, whether or not it is auto's.
+    std::vector<bench::Row> more = rows;
+    bench::Row volume3 = with(deferred_row("default", 3, 0.9, 90, 100), 300, 0.8);
+    volume3.light_geometry = LightGeometry::volume;
+    bench::Row tiles3 = with(deferred_row("default", 3, 0.9, 90, 100), 40, 0.8);
+    tiles3.light_geometry = LightGeometry::tiles;
+    tiles3.light_evaluations = 105;
+    more.insert(more.end(), {volume3, tiles3});
+    const std::vector<std::string> m = bench::goals(more, "default", 3);
+    EXPECT_EQ(m[1], "  (information: each fixed geometry's light_evaluations / ideal, fewest first: tiles 1.050, quad "
+                    "1.200, volume 3.000)");
+    EXPECT_EQ(m[2], a[1]);
     rows.pop_back();
     EXPECT_EQ(h[6], "floor_ratio <= 1.5 at 1920x1080 with 1024 lights, default with 1024 lights: 1.40 ms / 1.00 ms = "
                     "1.40 (information: judged at 1920x1080 with 1024 lights only; this row is 64x64 with 1024 lights)");

@@ -87,6 +87,20 @@ Figure invocations(const Goal& g, const GoalInput& in) {
                                        : judged(double(*d->light_evaluations), double(*d->ideal_fragments),
                                                 over(*d->light_evaluations, *d->ideal_fragments) + " (" +
                                                     light_geometry_name(d->light_geometry) + ")" + auto_choice(*d));
+    // Every fixed geometry's ratio, fewest first: whether any way of drawing the lights meets the
+    // goal on this GL (auto chooses each light's path by its time, not by its pairs).
+    std::vector<std::pair<double, std::string>> each;
+    for (LightGeometry g2 : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles,
+                             LightGeometry::screen})
+        if (const Row* r = find_geometry_row(in.rows, in.scene, in.lights, g2))
+            if (r->light_evaluations && r->ideal_fragments && *r->ideal_fragments > 0)
+                each.emplace_back(double(*r->light_evaluations) / double(*r->ideal_fragments), light_geometry_name(g2));
+    std::stable_sort(each.begin(), each.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (each.size() >= 2) {
+        std::string list;
+        for (const auto& [ratio, name] : each) list += (list.empty() ? "" : ", ") + name + " " + format_number("%.3f", ratio);
+        f.info.push_back("(information: each fixed geometry's light_evaluations / ideal, fewest first: " + list + ")");
+    }
     const Row* q = find_geometry_row(in.rows, in.scene, in.lights, LightGeometry::quad);
     if (!q || !q->ideal_fragments || *q->ideal_fragments <= 0) return f;
     if (q != d && q->light_invocations)
