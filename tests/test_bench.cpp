@@ -238,7 +238,7 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
     int deferred = 0, forward = 0, analytic = 0;
     std::map<std::string, double> output_ms;
     std::map<std::string, int> alone;  // rows with their frames again back to back, by variant
-    std::map<std::string, std::array<int, 2>> auto_rounds;  // goal auto's own rounds: auto rows, fixed rows
+    std::map<std::string, std::array<int, 2>> goal_rounds;  // goal auto's own rounds: auto rows, fixed rows
     for (auto& row : j["rows"]) {
         // dsr's default row of each variant, alone: auto with every skip on (the CPU goal's).
         if (!row["cpu_alone_ms_median"].is_null()) {
@@ -258,17 +258,18 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
         // Goal `auto`'s own rounds: auto's row and fixed geometries' rows on the default
         // configuration, 3x the frames each; no other row.
         const std::string variant_name = row["scene"].get<std::string>() + " " + row["lights_label"].get<std::string>();
-        if (!row["auto_rounds_ms_median"].is_null()) {
+        if (!row["goal_rounds_ms_median"].is_null()) {
             const std::string geometry = row["light_geometry"];
             EXPECT_TRUE(geometry == "auto" || geometry == "quad" || geometry == "volume" || geometry == "stencil" ||
                         geometry == "tiles")
                 << row.dump();
             EXPECT_TRUE(row["skips_off"].empty()) << row.dump();
             EXPECT_FALSE(row["linear_law"].get<bool>()) << row.dump();
-            EXPECT_EQ(row["auto_rounds_frames_ms"].size(), size_t(3 * row["frames"].get<int>())) << row.dump();
-            ++auto_rounds[variant_name][geometry == "auto" ? 0 : 1];
+            EXPECT_EQ(row["goal_rounds_frames_ms"].size(), size_t(3 * row["frames"].get<int>())) << row.dump();
+            EXPECT_EQ(row["goal_rounds_lights_frames_ms"].size(), row["goal_rounds_frames_ms"].size()) << row.dump();
+            ++goal_rounds[variant_name][geometry == "auto" ? 0 : 1];
         } else {
-            EXPECT_TRUE(row["auto_rounds_frames_ms"].empty()) << row.dump();
+            EXPECT_TRUE(row["goal_rounds_frames_ms"].empty()) << row.dump();
         }
         for (const char* k : {"renderer", "depth", "scissor", "lights", "size", "ms_median", "ms_min", "ms_max",
                               "light_fragments", "ideal_fragments", "max_lsb", "mean_lsb", "psnr_db"})
@@ -350,8 +351,8 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
     EXPECT_GE(deferred, 2 * 2 * 10);
     EXPECT_EQ(alone.size(), 2u * 2u);  // one row of each scene and light count
     for (const auto& [variant, n] : alone) EXPECT_EQ(n, 1) << variant;
-    EXPECT_EQ(auto_rounds.size(), 2u * 2u);  // every variant: its auto row and at least the fastest fixed one
-    for (const auto& [variant, n] : auto_rounds) {
+    EXPECT_EQ(goal_rounds.size(), 2u * 2u);  // every variant: its auto row and at least the fastest fixed one
+    for (const auto& [variant, n] : goal_rounds) {
         EXPECT_EQ(n[0], 1) << variant;
         EXPECT_GE(n[1], 1) << variant;
     }
@@ -770,15 +771,15 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     EXPECT_EQ(a[12], "auto <= 1.1 x the fastest fixed geometry (quad, volume, stencil, tiles), default at --lights "
                      "32-large: auto 12.00 ms / tiles 5.00 ms = 2.40 -> NOT met");
 
-    // With the rows' own rounds (Row::auto_rounds_ms) the goal is judged there, against the fastest
+    // With the rows' own rounds (Row::goal_rounds_ms) the goal is judged there, against the fastest
     // fixed row there (quad 1.90 here, though the tiles were faster in the rounds of every row), and
     // the rounds of every row's figure follows as information.
     std::vector<bench::Row> own = rows;
     bench::Row& oa = own[own.size() - 1];  // 1024-overlap's auto
     ASSERT_EQ(oa.light_geometry, LightGeometry::automatic);
-    oa.auto_rounds_ms = 2.0, oa.auto_rounds_frames_ms = {2.0, 2.2, 1.9};
-    own[3].auto_rounds_ms = 1.9, own[3].auto_rounds_frames_ms = {1.8, 2.0, 2.0};  // its quad
-    own[4].auto_rounds_ms = 1.95, own[4].auto_rounds_frames_ms = {2.0, 1.9, 1.9};  // its tiles
+    oa.goal_rounds_ms = 2.0, oa.goal_rounds_frames_ms = {2.0, 2.2, 1.9};
+    own[3].goal_rounds_ms = 1.9, own[3].goal_rounds_frames_ms = {1.8, 2.0, 2.0};  // its quad
+    own[4].goal_rounds_ms = 1.95, own[4].goal_rounds_frames_ms = {2.0, 1.9, 1.9};  // its tiles
     oa.frames_ms = {2.5, 2.4}, own[4].frames_ms = {2.0, 2.0};
     const std::vector<std::string> o = bench::geometry_goals(own, "default", 3);
     ASSERT_EQ(o.size(), 14u);
@@ -789,16 +790,17 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     EXPECT_EQ(o[12], "  (information: in the rounds of every row, auto 2.50 ms / tiles 2.00 ms = 1.25; round by round "
                      "1.20-1.25, held in 0 of 2 rounds)");
     // Slower there than in the rounds of every row: NOT met, as the figure of its own rounds says.
-    own[3].auto_rounds_ms = 1.5;
+    own[3].goal_rounds_ms = 1.5;
     EXPECT_NE(bench::geometry_goals(own, "default", 3)[11].find("auto 2.00 ms / quad 1.50 ms = 1.33 (auto's"),
               std::string::npos);
     EXPECT_NE(bench::geometry_goals(own, "default", 3)[11].find("-> NOT met"), std::string::npos);
 }
 
-// The rows of goal auto's own rounds: auto's, then each fixed geometry's within 1.3x of the
-// fastest fixed one's median; none without an auto row or a fixed one; another scene's, another
-// light count's, a linear-law row and a row with a skip off never.
-TEST(Bench, AutoRoundsTakeAutoAndTheFixedRowsNearTheFastest) {
+// The rows of the close goals' own rounds: auto's, then each fixed geometry's within 1.3x of the
+// fastest fixed one's median, then dsr's default and its linear-law twin; none of goal auto's
+// without an auto row or a fixed one; another scene's, another light count's and a row with a
+// skip off never.
+TEST(Bench, GoalRoundsTakeTheRowsTheCloseGoalsCompare) {
     auto row = [](LightGeometry g, double ms) {
         bench::Row r = deferred_row("default", 1024, ms, 100, 100);
         r.light_geometry = g;
@@ -812,11 +814,19 @@ TEST(Bench, AutoRoundsTakeAutoAndTheFixedRowsNearTheFastest) {
     rows.back().linear_law = true;
     rows.push_back(row(LightGeometry::quad, 5.0));
     rows.back().lights = 256;
-    EXPECT_EQ(bench::auto_rounds_rows(rows, "default", 1024), (std::vector<size_t>{3, 1, 2}));  // 12.9 <= 13.0 < 13.1
-    EXPECT_TRUE(bench::auto_rounds_rows(rows, "default", 256).empty());  // no auto row
-    EXPECT_TRUE(bench::auto_rounds_rows(rows, "analytic", 1024).empty());
+    EXPECT_EQ(bench::goal_rounds_rows(rows, "default", 1024), (std::vector<size_t>{3, 1, 2}));  // 12.9 <= 13.0 < 13.1
+    EXPECT_TRUE(bench::goal_rounds_rows(rows, "default", 256).empty());  // no auto row
+    EXPECT_TRUE(bench::goal_rounds_rows(rows, "analytic", 1024).empty());
     const std::vector<bench::Row> only_auto = {row(LightGeometry::automatic, 1.0), row(LightGeometry::screen, 1.0)};
-    EXPECT_TRUE(bench::auto_rounds_rows(only_auto, "default", 1024).empty());
+    EXPECT_TRUE(bench::goal_rounds_rows(only_auto, "default", 1024).empty());
+    // Goal law's: dsr's default row and its linear-law twin join them, each row once.
+    rows[6].light_geometry = LightGeometry::automatic;  // the linear-law row, now auto's twin
+    EXPECT_EQ(bench::goal_rounds_rows(rows, "default", 1024), (std::vector<size_t>{3, 1, 2, 6}));
+    // Without an auto row, quad is dsr's default: quad and its twin, though no goal auto runs.
+    std::vector<bench::Row> quads = {row(LightGeometry::tiles, 1.0), row(LightGeometry::quad, 9.0),
+                                     row(LightGeometry::quad, 8.0)};
+    quads[2].linear_law = true;
+    EXPECT_EQ(bench::goal_rounds_rows(quads, "default", 1024), (std::vector<size_t>{1, 2}));
 }
 
 // The law goal: dsr's default row on 32-large against its linear-law twin (the same lights with
@@ -856,6 +866,26 @@ TEST(Bench, LawGoalPricesTheAttenuationLawOnTheSamePairs) {
                    "met");
     ASSERT_NE(at + 1, g.end());
     EXPECT_EQ(*(at + 1), "  (information: the same for the other geometries: quad 42.00 ms / 40.00 ms = 1.05)");
+    {
+        // With the two rows' own rounds (Row::goal_rounds_lights_ms) the goal is judged there
+        // (9.8 / 9.5 = 1.03: met) and the rounds of every row's figure is information.
+        std::vector<bench::Row> own = rows;
+        own[2].goal_rounds_lights_ms = 9.8, own[2].goal_rounds_lights_frames_ms = {9.8, 9.7, 10.5};
+        own[3].goal_rounds_lights_ms = 9.5, own[3].goal_rounds_lights_frames_ms = {9.5, 9.5, 9.5};
+        own[2].lights_frames_ms = {10.2, 10.0}, own[3].lights_frames_ms = {9.5, 9.5};
+        const std::vector<std::string> o = bench::geometry_goals(own, "default", 3);
+        const auto line = std::find(o.begin(), o.end(), law_line(own));
+        ASSERT_NE(line, o.end());
+        EXPECT_EQ(*line, "attenuation law's light stage <= 1.05 x the linear law's on the same pairs, 32-large: light "
+                         "stage, attenuation law / linear law, auto: 9.80 ms / 9.50 ms = 1.03 (500 ideal pairs each), in "
+                         "3 rounds of their own -> met; round by round 1.02-1.11, held in 2 of 3 rounds");
+        ASSERT_NE(line + 1, o.end());
+        EXPECT_EQ(*(line + 1), "  (information: in the rounds of every row, 10.20 ms / 9.50 ms = 1.07; round by round "
+                               "1.05-1.07, held in 0 of 2 rounds)");
+        // Only one of the two rows in them: the rounds of every row, as before.
+        own[3].goal_rounds_lights_ms.reset();
+        EXPECT_NE(law_line(own).find("10.20 ms / 9.50 ms = 1.07 (500 ideal pairs each) -> NOT met"), std::string::npos);
+    }
     // The withdrawn goal's best deferred row is the scene's, not its faster linear-law twin (11.50 ms).
     bench::Row fwd = forward_row("large", 32, bench::Renderer::forward_single, 6.0);
     fwd.lights_label = "32-large";
@@ -967,7 +997,8 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     const std::vector<std::string> keys = {
         "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "gbuffer_bytes_per_pixel", "light_geometry", "tile_size", "tile_lights", "scissor", "skips_off", "linear_law",
         "lights", "lights_label", "size", "frames", "warmup_frames", "warmup_frames_ms", "ms_median", "ms_min", "ms_max", "frames_ms", "cpu_ms_median", "cpu_frames_ms",
-        "cpu_alone_ms_median", "cpu_alone_frames_ms", "auto_rounds_ms_median", "auto_rounds_frames_ms", "cpu_make_frame_ms", "cpu_lights_ms", "light_fragments",
+        "cpu_alone_ms_median", "cpu_alone_frames_ms", "goal_rounds_ms_median", "goal_rounds_frames_ms", "goal_rounds_lights_ms_median",
+        "goal_rounds_lights_frames_ms", "cpu_make_frame_ms", "cpu_lights_ms", "light_fragments",
         "ideal_fragments", "fragments_ratio", "scissor_pixels", "lights_drawn", "passes", "max_lsb", "mean_lsb",
         "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic", "light_invocations",
         "invocations_ratio", "light_evaluations", "evaluations_ratio", "ideal_source", "floor_fill_ms", "floor_light_ns",
@@ -981,7 +1012,8 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     EXPECT_TRUE(f["ideal_fragments"].is_null());
     EXPECT_TRUE(f["psnr_db"].is_null());  // infinite: JSON has no inf
     EXPECT_TRUE(f["max_lsb_analytic"].is_null());
-    EXPECT_TRUE(f["auto_rounds_ms_median"].is_null());
+    EXPECT_TRUE(f["goal_rounds_ms_median"].is_null());
+    EXPECT_TRUE(f["goal_rounds_lights_ms_median"].is_null());
     EXPECT_EQ(f["passes"], 1);
     EXPECT_EQ(f["size"], nlohmann::ordered_json::array({64, 64}));
 

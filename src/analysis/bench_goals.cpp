@@ -378,11 +378,23 @@ Figure law(const Goal& g, const GoalInput& in) {
     const auto working = [](const Row& x, const Row& y) {
         return ms(*x.lights_ms) + " / " + ms(*y.lights_ms) + " = " + format_number("%.2f", *x.lights_ms / *y.lights_ms);
     };
-    Figure f = judged(*a->lights_ms, *l->lights_ms,
-                      "light stage, attenuation law / linear law, " + std::string(light_geometry_name(a->light_geometry)) +
-                          ": " + working(*a, *l) +
-                          (a->ideal_fragments ? " (" + std::to_string(*a->ideal_fragments) + " ideal pairs each)" : ""));
-    f.after = per_round(g, a->lights_frames_ms, l->lights_frames_ms);
+    const std::string pairs = a->ideal_fragments ? " (" + std::to_string(*a->ideal_fragments) + " ideal pairs each)" : "";
+    const std::string geometry = light_geometry_name(a->light_geometry);
+    Figure f;
+    if (a->goal_rounds_lights_ms && l->goal_rounds_lights_ms) {  // the two rows' own rounds (Row::goal_rounds_ms)
+        const double x = *a->goal_rounds_lights_ms, y = *l->goal_rounds_lights_ms;
+        f = judged(x, y,
+                   "light stage, attenuation law / linear law, " + geometry + ": " + ms(x) + " / " + ms(y) + " = " +
+                       format_number("%.2f", x / y) + pairs + ", in " +
+                       std::to_string(a->goal_rounds_lights_frames_ms.size()) + " rounds of their own");
+        f.after = per_round(g, a->goal_rounds_lights_frames_ms, l->goal_rounds_lights_frames_ms);
+        f.info.push_back("(information: in the rounds of every row, " + working(*a, *l) +
+                         per_round(g, a->lights_frames_ms, l->lights_frames_ms) + ")");
+    } else {
+        f = judged(*a->lights_ms, *l->lights_ms,
+                   "light stage, attenuation law / linear law, " + geometry + ": " + working(*a, *l) + pairs);
+        f.after = per_round(g, a->lights_frames_ms, l->lights_frames_ms);
+    }
     std::string others;
     for (LightGeometry geo : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles,
                               LightGeometry::screen}) {
@@ -419,24 +431,24 @@ Figure automatic(const Goal& g, const GoalInput& in) {
         return "auto " + ms(num) + " / " + light_geometry_name(den.light_geometry) + " " + ms(den_ms) + " = " +
                format_number("%.2f", num / den_ms);
     };
-    // The rows' own rounds where the run has them (Row::auto_rounds_ms): the fastest fixed row there.
+    // The rows' own rounds where the run has them (Row::goal_rounds_ms): the fastest fixed row there.
     const Row* alone = nullptr;
-    if (a->auto_rounds_ms)
+    if (a->goal_rounds_ms)
         for (LightGeometry fixed : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles}) {
             const Row* r = find_geometry_row(in.rows, scene, n, fixed);
-            if (r && r->auto_rounds_ms && (!alone || *r->auto_rounds_ms < *alone->auto_rounds_ms)) alone = r;
+            if (r && r->goal_rounds_ms && (!alone || *r->goal_rounds_ms < *alone->goal_rounds_ms)) alone = r;
         }
     if (!alone) {
         Figure f = judged(a->ms_median, best->ms_median, working(a->ms_median, *best, best->ms_median) + chose);
         f.after = per_round(g, a->frames_ms, best->frames_ms);
         return f;
     }
-    Figure f = judged(*a->auto_rounds_ms, *alone->auto_rounds_ms,
-                      working(*a->auto_rounds_ms, *alone, *alone->auto_rounds_ms) + chose + ", in " +
-                          std::to_string(a->auto_rounds_frames_ms.size()) +
-                          " rounds of auto and the fixed geometries within " + format_number("%.1f", kAutoRoundsWithin) +
+    Figure f = judged(*a->goal_rounds_ms, *alone->goal_rounds_ms,
+                      working(*a->goal_rounds_ms, *alone, *alone->goal_rounds_ms) + chose + ", in " +
+                          std::to_string(a->goal_rounds_frames_ms.size()) +
+                          " rounds of auto and the fixed geometries within " + format_number("%.1f", kGoalRoundsWithin) +
                           "x of the fastest alone");
-    f.after = per_round(g, a->auto_rounds_frames_ms, alone->auto_rounds_frames_ms);
+    f.after = per_round(g, a->goal_rounds_frames_ms, alone->goal_rounds_frames_ms);
     f.info.push_back("(information: in the rounds of every row, " + working(a->ms_median, *best, best->ms_median) +
                      per_round(g, a->frames_ms, best->frames_ms) + ")");
     return f;

@@ -314,7 +314,7 @@ std::vector<size_t> round_order(size_t rows, int round) {
     return order;
 }
 
-std::vector<size_t> auto_rounds_rows(const std::vector<Row>& rows, const std::string& scene, int lights) {
+std::vector<size_t> goal_rounds_rows(const std::vector<Row>& rows, const std::string& scene, int lights) {
     const Row* a = find_geometry_row(rows, scene, lights, LightGeometry::automatic);
     std::vector<const Row*> fixed;
     double fastest = 0;
@@ -323,10 +323,21 @@ std::vector<size_t> auto_rounds_rows(const std::vector<Row>& rows, const std::st
             fixed.push_back(r);
             fastest = fixed.size() == 1 ? r->ms_median : std::min(fastest, r->ms_median);
         }
-    if (!a || fixed.empty()) return {};
-    std::vector<size_t> pick = {size_t(a - rows.data())};
-    for (const Row* r : fixed)
-        if (r->ms_median <= kAutoRoundsWithin * fastest) pick.push_back(size_t(r - rows.data()));
+    std::vector<size_t> pick;
+    const auto add = [&](const Row* r) {
+        const size_t i = size_t(r - rows.data());
+        if (std::find(pick.begin(), pick.end(), i) == pick.end()) pick.push_back(i);
+    };
+    if (a && !fixed.empty()) {
+        add(a);
+        for (const Row* r : fixed)
+            if (r->ms_median <= kGoalRoundsWithin * fastest) add(r);
+    }
+    if (const Row* d = find_default_row(rows, scene, lights))
+        if (const Row* twin = find_linear_law_row(rows, scene, lights, d->light_geometry)) {
+            add(d);
+            add(twin);
+        }
     return pick;
 }
 
@@ -337,7 +348,7 @@ namespace {
 // floor's fill frames in the same rounds. Each round takes the rows in an order of its own
 // (round_order): in one fixed order a row paid for the row before it, the same one every round.
 // Each row keeps its last frame's image. Then the CPU goal's frames back to back and goal auto's
-// own rounds (Row::cpu_alone_ms, Row::auto_rounds_ms), and one counted frame per deferred row,
+// goals' own rounds (Row::cpu_alone_ms, Row::goal_rounds_ms), and one counted frame per deferred row,
 // whose counts go in the row.
 void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors) {
     for (auto& [l, fb] : floors.bench)
@@ -387,17 +398,22 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
             run.row.cpu_alone_frames_ms.push_back(run.ds->render(*run.scene, v.w, v.h).ms.cpu);
         run.row.cpu_alone_ms = median(run.row.cpu_alone_frames_ms);
     }
-    // Goal `auto`'s rows again, those alone (auto_rounds_rows), in rounds of their own order.
+    // The close goals' rows again, those alone (goal_rounds_rows), in rounds of their own order.
     for (size_t i = 0; i < rows.size(); ++i)
         if (!runs[i]->ms.empty()) rows[i].ms_median = median(runs[i]->ms);
-    const std::vector<size_t> pick = rows.empty() ? std::vector<size_t>{} : auto_rounds_rows(rows, v.name, rows.front().lights);
-    const int paired = pick.empty() ? 0 : kAutoRoundsFactor * runs[pick.front()]->row.frames;
+    const std::vector<size_t> pick = rows.empty() ? std::vector<size_t>{} : goal_rounds_rows(rows, v.name, rows.front().lights);
+    const int paired = pick.empty() ? 0 : kGoalRoundsFactor * runs[pick.front()]->row.frames;
     for (int f = 0; f < paired; ++f)
         for (size_t k : round_order(pick.size(), f)) {
             RowRun& run = *runs[pick[k]];
-            run.row.auto_rounds_frames_ms.push_back(run.ds->render(*run.scene, v.w, v.h).ms.frame);
+            const FrameStats s = run.ds->render(*run.scene, v.w, v.h);
+            run.row.goal_rounds_frames_ms.push_back(s.ms.frame);
+            run.row.goal_rounds_lights_frames_ms.push_back(s.ms.lights);
         }
-    for (size_t i : pick) runs[i]->row.auto_rounds_ms = median(runs[i]->row.auto_rounds_frames_ms);
+    for (size_t i : pick) {
+        runs[i]->row.goal_rounds_ms = median(runs[i]->row.goal_rounds_frames_ms);
+        runs[i]->row.goal_rounds_lights_ms = median(runs[i]->row.goal_rounds_lights_frames_ms);
+    }
     for (auto& run : runs)
         if (run->ds) {
             run->ds->set_counting(true);

@@ -99,13 +99,14 @@ struct Row {
     // frames and finds the caches holding their data.
     std::optional<double> cpu_alone_ms;
     std::vector<double> cpu_alone_frames_ms;
-    // Goal `auto`: the auto row and the fixed geometries' rows within kAutoRoundsWithin of the
-    // fastest fixed one run again after the rounds, those rows alone, kAutoRoundsFactor x as many
-    // rounds (pair_auto_rows): their frames round by round and their median (null on the other
-    // rows). In the rounds of every row a 10% goal between two rows drawing the same passes
-    // flipped with the rounds' noise (1024-overlap: 0.88 in one run, 1.12 in the next).
-    std::optional<double> auto_rounds_ms;
-    std::vector<double> auto_rounds_frames_ms;
+    // The goals that compare rows within 5-10% of each other (auto, law): the rows they compare run
+    // again after the rounds, those rows alone, kGoalRoundsFactor x as many rounds (goal_rounds_rows):
+    // their frames and light stages round by round and the medians (null and empty on the other
+    // rows). In the rounds of every row such a verdict between two rows drawing the same passes
+    // flipped with the rounds' noise (auto against the tiles on 1024-overlap: 0.88 in one run,
+    // 1.12 and 1.24 in others).
+    std::optional<double> goal_rounds_ms, goal_rounds_lights_ms;
+    std::vector<double> goal_rounds_frames_ms, goal_rounds_lights_frames_ms;
     // light_fragments: samples that passed the light passes (occlusion queries); light_invocations:
     // fragments that entered the light shader (ARB_pipeline_statistics_query), light_evaluations:
     // those times the lights each evaluated (FrameStats); null where the GL lacks the query.
@@ -166,14 +167,16 @@ std::pair<int, int> context_size(const Config& cfg);
 // most of it CPU time after the long wait, every round (an H100 at 1920x1080).
 std::vector<size_t> round_order(size_t rows, int round);
 
-// Goal `auto`'s own rounds (Row::auto_rounds_ms): the indices of the rows of `scene` with `lights`
-// lights that run them, the auto row first, then each fixed geometry's row (quad, volume, stencil,
-// tiles; default configuration) whose median in the rounds of every row (ms_median) is within
-// kAutoRoundsWithin of the fastest of them: a row further off cannot be the fastest whatever the
-// noise. Empty without an auto row or a fixed one. They run kAutoRoundsFactor x the auto row's frames.
-constexpr double kAutoRoundsWithin = 1.3;
-constexpr int kAutoRoundsFactor = 3;
-std::vector<size_t> auto_rounds_rows(const std::vector<Row>& rows, const std::string& scene, int lights);
+// The goals' own rounds (Row::goal_rounds_ms): the indices of the rows of `scene` with `lights`
+// lights that run them. Goal auto's: the auto row, then each fixed geometry's row (quad, volume,
+// stencil, tiles; default configuration) whose median in the rounds of every row (ms_median) is
+// within kGoalRoundsWithin of the fastest of them (a row further off cannot be the fastest whatever
+// the noise), where there are both. Goal law's: dsr's default row (find_default_row) and its
+// linear-law twin, where the variant has one. Each row once; they run kGoalRoundsFactor x the first
+// row's frames.
+constexpr double kGoalRoundsWithin = 1.3;
+constexpr int kGoalRoundsFactor = 3;
+std::vector<size_t> goal_rounds_rows(const std::vector<Row>& rows, const std::string& scene, int lights);
 
 // A row's warm-up: frames until `warmup` in a row have built no shader program and drawn no light
 // by a path auto was exploring (FrameStats::auto_explored), at most warmup + compile_warmup, or
