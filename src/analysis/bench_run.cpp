@@ -347,9 +347,9 @@ namespace {
 // burst of load from elsewhere on the machine spreads over all rows instead of biasing one; the
 // floor's fill frames in the same rounds. Each round takes the rows in an order of its own
 // (round_order): in one fixed order a row paid for the row before it, the same one every round.
-// Each row keeps its last frame's image. Then the CPU goal's frames back to back and goal auto's
-// goals' own rounds (Row::cpu_alone_ms, Row::goal_rounds_ms), and one counted frame per deferred row,
-// whose counts go in the row.
+// Each row keeps its last frame's image. Then the CPU goal's frames back to back and the close
+// goals' own rounds (Row::cpu_alone_ms, Row::goal_rounds_ms), and one counted frame per deferred
+// row, whose counts go in the row.
 void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors) {
     for (auto& [l, fb] : floors.bench)
         for (int i = 0; i < cfg.warmup; ++i) fb->fill_frame(v.scene);
