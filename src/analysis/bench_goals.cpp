@@ -375,24 +375,21 @@ Figure law(const Goal& g, const GoalInput& in) {
     const Row* l = a ? find_linear_law_row(in.rows, scene, n, a->light_geometry) : nullptr;
     if (!a || !l || !a->lights_ms || !l->lights_ms)
         return not_judged(std::string(kNotMeasured) + " (no linear-law row)", kNotMeasured);
-    const auto working = [](const Row& x, const Row& y) {
-        return ms(*x.lights_ms) + " / " + ms(*y.lights_ms) + " = " + format_number("%.2f", *x.lights_ms / *y.lights_ms);
-    };
+    const auto ratio = [](double x, double y) { return ms(x) + " / " + ms(y) + " = " + format_number("%.2f", x / y); };
+    const auto working = [&](const Row& x, const Row& y) { return ratio(*x.lights_ms, *y.lights_ms); };
+    const std::string head = "light stage, attenuation law / linear law, " +
+                             std::string(light_geometry_name(a->light_geometry)) + ": ";
     const std::string pairs = a->ideal_fragments ? " (" + std::to_string(*a->ideal_fragments) + " ideal pairs each)" : "";
-    const std::string geometry = light_geometry_name(a->light_geometry);
     Figure f;
     if (a->goal_rounds_lights_ms && l->goal_rounds_lights_ms) {  // the two rows' own rounds (Row::goal_rounds_ms)
         const double x = *a->goal_rounds_lights_ms, y = *l->goal_rounds_lights_ms;
-        f = judged(x, y,
-                   "light stage, attenuation law / linear law, " + geometry + ": " + ms(x) + " / " + ms(y) + " = " +
-                       format_number("%.2f", x / y) + pairs + ", in " +
-                       std::to_string(a->goal_rounds_lights_frames_ms.size()) + " rounds of their own");
+        f = judged(x, y, head + ratio(x, y) + pairs + ", in " + std::to_string(a->goal_rounds_lights_frames_ms.size()) +
+                             " rounds of their own");
         f.after = per_round(g, a->goal_rounds_lights_frames_ms, l->goal_rounds_lights_frames_ms);
         f.info.push_back("(information: in the rounds of every row, " + working(*a, *l) +
                          per_round(g, a->lights_frames_ms, l->lights_frames_ms) + ")");
     } else {
-        f = judged(*a->lights_ms, *l->lights_ms,
-                   "light stage, attenuation law / linear law, " + geometry + ": " + working(*a, *l) + pairs);
+        f = judged(*a->lights_ms, *l->lights_ms, head + working(*a, *l) + pairs);
         f.after = per_round(g, a->lights_frames_ms, l->lights_frames_ms);
     }
     std::string others;
@@ -418,11 +415,15 @@ Figure automatic(const Goal& g, const GoalInput& in) {
     const int n = spec->count < 0 ? in.lights : spec->count;
     const Row* a = find_geometry_row(in.rows, scene, n, LightGeometry::automatic);
     if (!a) return not_judged(std::string(kNotMeasured) + " (no auto row)", kNotMeasured);
-    const Row* best = nullptr;
-    for (LightGeometry fixed : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles}) {
-        const Row* r = find_geometry_row(in.rows, scene, n, fixed);
-        if (r && (!best || r->ms_median < best->ms_median)) best = r;
-    }
+    // The fastest fixed row by a median it has: in the rounds of every row, or in their own rounds.
+    const std::vector<const Row*> fixed = fixed_geometry_rows(in.rows, scene, n);
+    const auto fastest = [&](std::optional<double> (*median_of)(const Row&)) {
+        const Row* best = nullptr;
+        for (const Row* r : fixed)
+            if (median_of(*r) && (!best || *median_of(*r) < *median_of(*best))) best = r;
+        return best;
+    };
+    const Row* best = fastest([](const Row& r) { return std::optional<double>(r.ms_median); });
     if (!best) return not_judged(std::string(kNotMeasured) + " (no row of a fixed geometry)", kNotMeasured);
     // What auto chose (its counted frame): a ratio between two rows that drew every light the same
     // way is the rounds' noise, not the cost model's choice.
@@ -432,12 +433,7 @@ Figure automatic(const Goal& g, const GoalInput& in) {
                format_number("%.2f", num / den_ms);
     };
     // The rows' own rounds where the run has them (Row::goal_rounds_ms): the fastest fixed row there.
-    const Row* alone = nullptr;
-    if (a->goal_rounds_ms)
-        for (LightGeometry fixed : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles}) {
-            const Row* r = find_geometry_row(in.rows, scene, n, fixed);
-            if (r && r->goal_rounds_ms && (!alone || *r->goal_rounds_ms < *alone->goal_rounds_ms)) alone = r;
-        }
+    const Row* alone = a->goal_rounds_ms ? fastest([](const Row& r) { return r.goal_rounds_ms; }) : nullptr;
     if (!alone) {
         Figure f = judged(a->ms_median, best->ms_median, working(a->ms_median, *best, best->ms_median) + chose);
         f.after = per_round(g, a->frames_ms, best->frames_ms);
@@ -661,6 +657,13 @@ const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& sc
 const Row* find_linear_law_row(const std::vector<Row>& rows, const std::string& scene, int lights,
                                LightGeometry geometry) {
     return find_configured_row(rows, scene, lights, geometry, default_configuration_twin);
+}
+
+std::vector<const Row*> fixed_geometry_rows(const std::vector<Row>& rows, const std::string& scene, int lights) {
+    std::vector<const Row*> fixed;
+    for (LightGeometry g : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles})
+        if (const Row* r = find_geometry_row(rows, scene, lights, g)) fixed.push_back(r);
+    return fixed;
 }
 
 const Row* find_default_row(const std::vector<Row>& rows, const std::string& scene, int lights) {

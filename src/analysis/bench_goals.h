@@ -94,6 +94,10 @@ const Row* find_geometry_row(const std::vector<Row>& rows, const std::string& sc
 const Row* find_linear_law_row(const std::vector<Row>& rows, const std::string& scene, int lights,
                                LightGeometry geometry);
 
+// The default configuration's rows of the fixed geometries auto chooses among (quad, volume,
+// stencil, tiles), in that order, those the run has: goal auto's rivals.
+std::vector<const Row*> fixed_geometry_rows(const std::vector<Row>& rows, const std::string& scene, int lights);
+
 // dsr's default: the default configuration with the default light geometry, auto; quad's row
 // where the run has no auto row. Null when it has neither.
 const Row* find_default_row(const std::vector<Row>& rows, const std::string& scene, int lights);

@@ -316,13 +316,9 @@ std::vector<size_t> round_order(size_t rows, int round) {
 
 std::vector<size_t> goal_rounds_rows(const std::vector<Row>& rows, const std::string& scene, int lights) {
     const Row* a = find_geometry_row(rows, scene, lights, LightGeometry::automatic);
-    std::vector<const Row*> fixed;
+    const std::vector<const Row*> fixed = fixed_geometry_rows(rows, scene, lights);
     double fastest = 0;
-    for (LightGeometry g : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles})
-        if (const Row* r = find_geometry_row(rows, scene, lights, g)) {
-            fixed.push_back(r);
-            fastest = fixed.size() == 1 ? r->ms_median : std::min(fastest, r->ms_median);
-        }
+    for (const Row* r : fixed) fastest = r == fixed.front() ? r->ms_median : std::min(fastest, r->ms_median);
     std::vector<size_t> pick;
     const auto add = [&](const Row* r) {
         const size_t i = size_t(r - rows.data());
