@@ -12,7 +12,7 @@
 #                                    (GPU_BENCH_SMOKE=1: build, info and one small render only;
 #                                    GPU_BENCH_SIZES, _FRAMES, _LIGHTS: the bench's sweep;
 #                                    GPU_BENCH_PARTS: some of renders geometry targets ssao
-#                                    forward tiles auto groups shadows hdr bench, default all)
+#                                    forward tiles auto groups fold shadows hdr bench, default all)
 #
 # The build links the system's libEGL/libOpenGL (glvnd, the NVIDIA driver behind them), never
 # libOSMesa; it is the same renderer objects as the headless build.
@@ -121,6 +121,22 @@ run)
         echo "depth-bounds on vs off: $($dsr compare "$out/default_1920x1080.png" "$out/depth_bounds.png" 2>&1 | tail -1)" \
             | tee -a "$out/geometry_compare.txt"
     fi
+    fi
+    # The ambient pass folded into a full-screen light's pass (docs/guide.md), in each of its
+    # three forms, against the ambient pass drawn (same bytes on llvmpipe; the brief allows 1 LSB):
+    # a directional light; point lights of the linear law with the scissors off; LearnOpenGL's
+    # lights (the attenuation law) with the scissors off. The material pass's ambient target is off
+    # in both renders, else nothing folds. ambient_folded in each stats file says which did.
+    if part fold; then
+    for v in "directional:$src/data/lights.scene" "linear:$src/data/default.scene --scissor off" \
+             "attenuation:$src/data/default.scene --lights 32-large --scissor off"; do
+        for s in "fold:ambient-target" "pass:ambient-target,ambient"; do
+            $dsr render ${v#*:} --context egl --size 1920x1080 --no-bloom --no-aa --light-geometry quad \
+                --no-skip ${s#*:} --frames 30 --stats "$out/fold_${v%%:*}_${s%%:*}.json" -o "$out/fold_${v%%:*}_${s%%:*}.png"
+        done
+        echo "fold ${v%%:*}, folded vs ambient pass: $($dsr compare "$out/fold_${v%%:*}_pass.png" \
+            "$out/fold_${v%%:*}_fold.png" 2>&1 | tail -1)" | tee -a "$out/fold_compare.txt"
+    done
     fi
     # SSAO's cost on the GPU (docs/ssao.md), full and half resolution.
     if part ssao; then
