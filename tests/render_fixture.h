@@ -35,6 +35,16 @@ inline ShaderOptions with_depth(DepthPath p) {
 
 inline Scene default_scene() { return load_scene(resource_dir("data") + "/default.scene"); }
 // tests/data/analytic.scene: planes and spheres with constant materials, for the analytic reference.
+// A scene with a directional light added: a light drawn over the whole screen.
+inline Scene with_directional(Scene s) {
+    Light moon;
+    moon.type = Light::Type::directional;
+    moon.dir = glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f));
+    moon.color = {0.12f, 0.14f, 0.22f};
+    s.lights.push_back(moon);
+    return s;
+}
+
 inline Scene analytic_scene() { return load_scene(resource_dir("tests") + "/data/analytic.scene"); }
 
 // For the analytic reference's hand checks: a plane seen from straight above, one light above its

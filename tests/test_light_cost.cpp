@@ -17,7 +17,24 @@ namespace {
 LightCostModel test_model() {
     LightCostModel m = default_light_costs(true);
     m.handoff_mpx_ms = 3;  // large enough that leaving volumes out is sometimes right
+    m.handoff_ambient_mpx_ms = 4, m.ambient_mpx_ms = 1.5;  // where the hand-off writes the ambient term: 2.5
     m.spans_mpx_ms = 8;
+    return m;
+}
+
+// The hand-off's price by its definition (light_cost.h): the blit or pass, or where it writes the
+// ambient term, that pass less the ambient pass, never below 0.
+double handoff_of(const LightCostModel& m, double screen_px) {
+    const double net = m.handoff_ambient_mpx_ms - m.ambient_mpx_ms;
+    return (m.handoff_writes_ambient ? (net > 0 ? net : 0) : m.handoff_mpx_ms) * screen_px * 1e-6;
+}
+
+// test_model with trial's hand-off: a blit or pass (two trials in three), one that writes the
+// ambient term, or one whose pass costs less than the ambient pass it spares.
+LightCostModel trial_model(int trial) {
+    LightCostModel m = test_model();
+    m.handoff_writes_ambient = trial % 3 != 0;
+    if (trial % 3 == 2) m.ambient_mpx_ms = 5;
     return m;
 }
 
@@ -32,7 +49,7 @@ double total_of(const std::vector<LightFeature>& ls, const TileGrid& grid, doubl
     }
     const bool volume = used[1], tiles = used[2];
     t += m.path_ms * (int(used[0]) + int(used[1]) + int(used[2]));
-    if (volume) t += m.handoff_mpx_ms * screen_px * 1e-6;
+    if (volume) t += handoff_of(m, screen_px);
     if (tiles && !spans_paid) t += m.spans_mpx_ms * screen_px * 1e-6;
     return t;
 }
@@ -44,8 +61,8 @@ double total_of(const std::vector<LightFeature>& ls, const TileGrid& grid, doubl
 TEST(LightCost, ChoiceIsTheCheapestAssignment) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(0, 1);
-    const LightCostModel m = test_model();
     for (int trial = 0; trial < 300; ++trial) {
+        const LightCostModel m = trial_model(trial / 2);
         const int n = 1 + trial % 7;
         TileGrid grid;
         grid.tile_px = 256;
@@ -98,6 +115,30 @@ TEST(LightCost, PathsNotAllowedAreNotChosen) {
     LightFeature no_volume = big;
     no_volume.volume_ok = no_volume.tiles_ok = false;
     EXPECT_EQ(choose_light_paths({no_volume}, grid, 1e6, m, {1, 1, 1}, {true, true, true}, true).path[0], LightPath::quad);
+}
+
+// Where the hand-off's pass writes the ambient term, the volumes pay only what it costs beyond the
+// ambient pass it spares the frame. On the GPU's constants the default scene's three lights (about
+// 1 Mpx of rectangle each at 1920x1080) go by quads at the hand-off's own price and by volumes at
+// that price (an H100: the volumes' frame 1.71 ms, the quads' 1.77; docs/gpu.md).
+TEST(LightCost, HandoffWritingTheAmbientCostsItsPassLessTheAmbientPass) {
+    LightCostModel m = default_light_costs(false);
+    const double screen = 1920.0 * 1080.0;
+    std::vector<LightFeature> ls(3);
+    for (LightFeature& l : ls) {
+        l.rect_px = 1.05e6;
+        l.tiles_ok = false;
+    }
+    const auto paths = [&] {
+        return choose_light_paths(ls, TileGrid{}, screen, m, {1, 1, 1}, {true, true, false}, true).count;
+    };
+    EXPECT_NEAR(handoff_ms(m, screen), m.handoff_mpx_ms * screen * 1e-6, 1e-12);
+    EXPECT_EQ(paths()[int(LightPath::quad)], 3);
+    m.handoff_writes_ambient = true;
+    EXPECT_EQ(handoff_ms(m, screen), 0.0);  // its pass cost less than the ambient pass it spares
+    EXPECT_EQ(paths()[int(LightPath::volume)], 3);
+    m.handoff_ambient_mpx_ms = m.ambient_mpx_ms + 0.05;
+    EXPECT_NEAR(handoff_ms(m, screen), 0.05 * screen * 1e-6, 1e-12);
 }
 
 // The tiles each light keeps, against a tile-by-tile check of its rectangle and its sphere
@@ -205,6 +246,8 @@ TEST(LightCost, QuadDepthWhereItPaysForTheHandoff) {
     int on = 0, off = 0, free_handoff = 0;
     for (int trial = 0; trial < 2000; ++trial) {
         LightCostModel m = default_light_costs(trial % 2 == 0);
+        m.handoff_writes_ambient = trial % 3 == 0;
+        if (trial % 6 == 3) m.handoff_ambient_mpx_ms = m.ambient_mpx_ms + m.handoff_mpx_ms / 2;
         const double scale = 0.2 + 2 * u(rng);
         const int n = 1 + int(u(rng) * 40);
         std::vector<LightFeature> ls(static_cast<size_t>(n));
@@ -224,7 +267,7 @@ TEST(LightCost, QuadDepthWhereItPaysForTheHandoff) {
             plain += scale * m.quad_mpx_ms * mpx;
             tested += scale * (ls[size_t(i)].shadowed ? m.quad_mpx_ms : m.quad_depth_mpx_ms) * mpx;
         }
-        const double handoff = plan.count[1] > 0 ? 0 : m.handoff_mpx_ms * screen * 1e-6;
+        const double handoff = plan.count[1] > 0 ? 0 : handoff_of(m, screen);
         const QuadDepthChoice c = choose_quad_depth(plan, ls, screen, m, scale);
         const bool pays = tested + handoff < plain - 1e-12;
         const bool tie = std::abs((tested + handoff) - plain) < 1e-9;
@@ -278,10 +321,10 @@ TEST(LightCost, CalibrationFollowsTheMeasuredRatio) {
 TEST(LightCost, ExplorationIsTheCheapestUnmeasuredPathWithinItsFactor) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(0, 1);
-    const LightCostModel m = test_model();
     const double screen_px = 256.0 * 256.0;
     int explored = 0, declined = 0;
     for (int trial = 0; trial < 400; ++trial) {
+        const LightCostModel m = trial_model(trial / 2);
         const int n = 1 + trial % 9;
         LightPrices raw(static_cast<size_t>(n));
         for (auto& r : raw)
@@ -307,7 +350,7 @@ TEST(LightCost, ExplorationIsTheCheapestUnmeasuredPathWithinItsFactor) {
             }
             if (!any) continue;
             t += m.path_ms * (int(used[0]) + int(used[1]) + int(used[2]));
-            if (used[1]) t += m.handoff_mpx_ms * screen_px * 1e-6;
+            if (used[1]) t += handoff_of(m, screen_px);
             if (used[2] && trial % 2 != 0) t += m.spans_mpx_ms * screen_px * 1e-6;
             if (t <= m.explore_within * best.predicted_total_ms * (1 + 1e-12) && (want < 0 || t < want_total))
                 want = k, want_total = t, want_paths = paths;
@@ -328,6 +371,7 @@ TEST(LightCost, ExplorationIsTheCheapestUnmeasuredPathWithinItsFactor) {
     EXPECT_GT(explored, 50);  // both answers exercised
     EXPECT_GT(declined, 50);
     // Nothing to explore, or a path the best plan draws already: none.
+    const LightCostModel m = test_model();
     LightPrices raw{{1, 1, 1}};
     const LightPathPlan best = choose_light_paths(raw, screen_px, m, {1, 1, 1}, {true, true, true}, true);
     EXPECT_FALSE(exploration_plan(raw, best, screen_px, m, {1, 1, 1}, {false, false, false}, true).has_value());

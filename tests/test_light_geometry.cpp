@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "analysis/bench_scenes.h"
+#include "deferred/light_cost.h"
 #include "deferred/light_mesh.h"
 #include "deferred/light_queries.h"
 #include "deferred/paths.h"
@@ -532,6 +533,29 @@ TEST(LightGeometry, AutoIsQuadToTheByteWhateverItChooses) {
     }
     unsetenv("DSR_LIGHT_COST_SCALE");
     for (int p = 0; p < 3; ++p) EXPECT_GT(used[p], 0) << "path " << p << " never taken";
+}
+
+// auto prices the depth hand-off as the frame draws it (light_cost.h handoff_ms): its blit where
+// the material pass writes the ambient term; where the hand-off's pass writes it instead (the
+// material pass's target off, the hand-off a pass), that pass less the ambient pass it spares; and
+// the blit or pass again where a light over the whole screen takes the term (the fold). The image
+// stays quad's.
+TEST(LightGeometry, AutoPricesTheHandoffAsTheFrameDrawsIt) {
+    const double px = double(kW) * double(kH);
+    LightCostModel m = default_light_costs(true);  // the tests' GL is a CPU rasteriser
+    const double own = handoff_ms(m, px);
+    m.handoff_writes_ambient = true;
+    const double net = handoff_ms(m, px);
+    ASSERT_GT(std::abs(own - net), 1e-3);
+    ShaderOptions a = with_geometry(LightGeometry::automatic), q = with_geometry(LightGeometry::quad);
+    const Scene s = default_scene();
+    EXPECT_DOUBLE_EQ(render_scene(s, kW, kH, a).stats.auto_handoff_ms, own);
+    a.skip.ambient_target = q.skip.ambient_target = false;
+    a.depth_handoff = q.depth_handoff = DepthHandoff::pass;
+    const RenderResult r = render_scene(s, kW, kH, a);
+    EXPECT_DOUBLE_EQ(r.stats.auto_handoff_ms, net);
+    expect_same("auto_handoff_writes_ambient", r, render_scene(s, kW, kH, q));
+    EXPECT_DOUBLE_EQ(render_scene(with_directional(s), kW, kH, a).stats.auto_handoff_ms, own);
 }
 
 // auto's quads drawn against the handed-off depth (LightQuadBatch scene_depth) light the pixels

@@ -58,16 +58,6 @@ Scene stacked_scene() {
     return s;
 }
 
-// The default scene with a directional light added: a light drawn over the whole screen.
-Scene with_directional(Scene s) {
-    Light moon;
-    moon.type = Light::Type::directional;
-    moon.dir = glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f));
-    moon.color = {0.12f, 0.14f, 0.22f};
-    s.lights.push_back(moon);
-    return s;
-}
-
 }  // namespace
 
 // The choice: the first frame runs the pre-pass (nothing measured yet); below the threshold the

@@ -151,6 +151,7 @@ int cmd_render(const std::vector<std::string>& argv) {
         j["auto"] = {{"lights", {{"quad", last.auto_lights[0]}, {"volume", last.auto_lights[1]}, {"tiles", last.auto_lights[2]}}},
                      {"depth_spans", last.auto_spans},
                      {"quads_against_depth", last.auto_quad_depth},
+                     {"handoff_ms", last.auto_handoff_ms},
                      {"kept_frames", std::count_if(all.begin(), all.end(), [](const FrameStats& s) { return s.auto_kept; })},
                      {"explored_frames", std::count_if(all.begin(), all.end(), [](const FrameStats& s) { return s.auto_explored >= 0; })},
                      {"predicted_lights_ms", med_stat(&FrameStats::auto_predicted_ms)},

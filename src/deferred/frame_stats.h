@@ -70,6 +70,7 @@ struct FrameStats {
     bool auto_geometry = false;
     int auto_lights[3] = {0, 0, 0};
     double auto_predicted_ms = 0;
+    double auto_handoff_ms = 0;    // what the model priced the depth hand-off at (light_cost.h handoff_ms)
     bool auto_spans = false;
     bool auto_quad_depth = false;  // its batched quads drawn against the scene's depth (choose_quad_depth)
     bool auto_kept = false;        // the frame kept the last priced frame's choice unpriced (one path for every light)

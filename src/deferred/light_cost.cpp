@@ -38,6 +38,10 @@ LightCostModel default_light_costs(bool software_rasterizer) {
         // a light, before the batches, was 0.09 and 12).
         m.volume_draw_ms = 0.049, m.volume_mpx_ms = 6.1;
         m.handoff_mpx_ms = 0.5;
+        // Where the hand-off is a pass (--depth-handoff pass, or no blit) it may write the ambient
+        // term: at 512x512 2.15-2.47 ms, where the ambient pass it replaces took 1.09-1.43 (the pass
+        // without it 1.15-1.24).
+        m.handoff_ambient_mpx_ms = 9, m.ambient_mpx_ms = 5;
         // The spans read back and reduced on the CPU (tile_spans.h): 0.52-0.54 ms at 512x512,
         // 0.83-0.99 at 800x600 (the two passes before them: 0.95-1.26 and 1.44-1.64).
         m.spans_mpx_ms = 2;
@@ -59,6 +63,10 @@ LightCostModel default_light_costs(bool software_rasterizer) {
         // 0.613 ms, 1915 over 8.5 Mpx 0.795 (a draw a light, before the batches: 0.0009 and 0.07).
         m.volume_draw_ms = 0.00014, m.volume_mpx_ms = 0.062;
         m.handoff_mpx_ms = 0.072;
+        // The hand-off's pass writing the ambient term, an H100 at 1920x1080: 0.269 ms (4096 lights
+        // and the own lights by volumes, docs/gpu/bench_58e6b44/), where the ambient pass it replaces
+        // took 0.284-0.292 (the fold part's renders): it costs the frame nothing more.
+        m.handoff_ambient_mpx_ms = 0.13, m.ambient_mpx_ms = 0.139;
         m.spans_mpx_ms = 0.35;
         m.tile_pass_mpx_ms = 0.3, m.tile_light_mpx_ms = 0.12;
         m.path_ms = 0.02;
@@ -73,6 +81,8 @@ std::string describe(const LightCostModel& m) {
       << m.quad_depth_mpx_ms << " against the scene's depth)\n"
       << "  volume         " << m.volume_draw_ms << " ms a light + " << m.volume_mpx_ms
       << " ms per Mpx of its rectangle; hand-off " << m.handoff_mpx_ms << " ms per Mpx of screen\n"
+      << "                 (where it writes the ambient term: " << m.handoff_ambient_mpx_ms
+      << " less the ambient pass's " << m.ambient_mpx_ms << ")\n"
       << "  tiles          " << m.tile_pass_mpx_ms << " ms per Mpx of tile pixels per pass + " << m.tile_light_mpx_ms
       << " ms per Mpx of (tile pixel, light) pairs; depth spans " << m.spans_mpx_ms << " ms per Mpx of screen,\n"
       << "                 measured where the lights would cost over " << m.spans_worth << "x that\n"
@@ -148,6 +158,12 @@ LightPathPlan choose_light_paths(const std::vector<LightFeature>& lights, const 
     return choose_light_paths(price_lights(lights, grid, m), screen_px, m, scale, allowed, spans_paid);
 }
 
+double handoff_ms(const LightCostModel& m, double screen_px) {
+    const double mpx_ms =
+        m.handoff_writes_ambient ? std::max(0.0, m.handoff_ambient_mpx_ms - m.ambient_mpx_ms) : m.handoff_mpx_ms;
+    return mpx_ms * screen_px * kMpx;
+}
+
 namespace {
 
 // What a plan's paths add once a frame (choose_light_paths): each path used, the hand-off where a
@@ -169,7 +185,7 @@ LightPathPlan choose_light_paths(const LightPrices& raw, double screen_px, const
     for (auto& p : prices)
         for (int k = 0; k < kLightPaths; ++k) p[size_t(k)] *= scale[size_t(k)];
     const size_t n = raw.size();
-    const double handoff = m.handoff_mpx_ms * screen_px * kMpx;
+    const double handoff = handoff_ms(m, screen_px);
     const double spans = spans_paid ? 0 : m.spans_mpx_ms * screen_px * kMpx;
     LightPathPlan best;
     best.predicted_total_ms = kInf;
@@ -205,7 +221,7 @@ std::optional<LightExploration> exploration_plan(const LightPrices& raw, const L
                                                  const LightCostModel& m, const std::array<double, kLightPaths>& scale,
                                                  const std::array<bool, kLightPaths>& explore, bool spans_paid) {
     if (raw.empty() || best.path.size() != raw.size() || !(best.predicted_total_ms < kInf)) return std::nullopt;
-    const double handoff = m.handoff_mpx_ms * screen_px * kMpx;
+    const double handoff = handoff_ms(m, screen_px);
     const double spans = spans_paid ? 0 : m.spans_mpx_ms * screen_px * kMpx;
     std::optional<LightExploration> out;
     for (int k = 0; k < kLightPaths; ++k) {
@@ -235,7 +251,7 @@ QuadDepthChoice choose_quad_depth(const LightPathPlan& plan, const std::vector<L
         if (plan.path[i] == LightPath::quad && !lights[i].shadowed) px += lights[i].rect_px;
     if (px <= 0) return c;
     const double saving = (m.quad_mpx_ms - m.quad_depth_mpx_ms) * px * kMpx;
-    const double handoff = plan.count[int(LightPath::volume)] > 0 ? 0 : m.handoff_mpx_ms * screen_px * kMpx;
+    const double handoff = plan.count[int(LightPath::volume)] > 0 ? 0 : handoff_ms(m, screen_px);
     if (quad_scale * saving <= handoff) return c;
     c.on = true;
     c.raw_saving_ms = saving;

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <optional>
 
+#include "deferred/ambient_fold.h"
 #include "deferred/light_cost.h"
 #include "deferred/light_geometry.h"
 #include "deferred/light_geometry_tiles.h"
@@ -38,6 +39,7 @@ public:
           model_(default_light_costs(c.caps.software_rasterizer)),
           calib_(start_calibration()),
           volume_ok_(c.paths.accum_depth),
+          handoff_takes_ambient_(c.paths.ambient_in_handoff && !c.paths.ambient_target),
           quad_depth_(c.paths.accum_depth && c.opts.skip.light_depth_test),
           calibrate_(c.caps.software_rasterizer),
           gpu_calibrate_(gpu_timestamps(c.caps)) {}
@@ -56,6 +58,8 @@ public:
     bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) override {
         collect_gpu_times();
         quads_depth_now_ = false;
+        // The hand-off writes the ambient term unless a full-screen light's pass takes it (the fold).
+        model_.handoff_writes_ambient = handoff_takes_ambient_ && !full_screen_light(f);
         if (const std::optional<bool> kept = keep_choice(f, targets, stats)) return *kept;
         const double screen_px = double(f.width) * double(f.height);
         features_.assign(f.lights.size(), LightFeature{});
@@ -141,7 +145,7 @@ public:
             for (const auto& r : raw_) kept_raw_ += r[size_t(kept_path_)];
             kept_once_ms_ = plan_.predicted_ms[size_t(kept_path_)] - kept_raw_ * scale[size_t(kept_path_)];
         }
-        report(stats, spans);
+        report(stats, spans, screen_px);
         return plan_.count[int(LightPath::volume)] > 0 || quads_depth_now_;
     }
 
@@ -187,14 +191,15 @@ public:
         stats.auto_kept = true;
         stats.auto_explored = exploring_ = -1;
         predicted_ms_ = kept_raw_ * calib_.scale()[size_t(p)] + kept_once_ms_;
-        report(stats, p == LightPath::tiles);
+        report(stats, p == LightPath::tiles, double(f.width) * double(f.height));
         return quads_depth_now_;
     }
 
     // The plan's figures for --stats; the lights on each path are counted in draw(), after any drop().
-    void report(FrameStats& stats, bool spans) const {
+    void report(FrameStats& stats, bool spans, double screen_px) const {
         stats.auto_geometry = true;
         stats.auto_spans = spans;
+        stats.auto_handoff_ms = handoff_ms(model_, screen_px);
         for (int p = 0; p < kLightPaths; ++p) stats.auto_scale[p] = calib_.scale()[size_t(p)];
         stats.auto_predicted_ms = predicted_ms_;
     }
@@ -344,6 +349,7 @@ private:
     LightCostModel model_;
     LightCostCalibration calib_;
     bool volume_ok_;   // the paths give P-buffer 0 the scene's depth (the hand-off)
+    bool handoff_takes_ambient_;  // the hand-off's pass writes the ambient term (Paths::ambient_in_handoff)
     bool quad_depth_;  // and the light shaders reject surfaces outside a light's depth span: so may GL
     QuadDepthChoice quad_depth_choice_;  // the frame's (choose_quad_depth)
     bool quads_depth_now_ = false;       // this frame's quads are drawn against the handed-off depth
