@@ -17,6 +17,7 @@ namespace {
 LightCostModel test_model() {
     LightCostModel m = default_light_costs(true);
     m.handoff_mpx_ms = 3;  // large enough that leaving volumes out is sometimes right
+    m.handoff_pass_mpx_ms = 3.5;
     m.handoff_ambient_mpx_ms = 4, m.ambient_mpx_ms = 1.5;  // where the hand-off writes the ambient term: 2.5
     m.spans_mpx_ms = 8;
     return m;
@@ -26,15 +27,17 @@ LightCostModel test_model() {
 // ambient term, that pass less the ambient pass, never below 0.
 double handoff_of(const LightCostModel& m, double screen_px) {
     const double net = m.handoff_ambient_mpx_ms - m.ambient_mpx_ms;
-    return (m.handoff_writes_ambient ? (net > 0 ? net : 0) : m.handoff_mpx_ms) * screen_px * 1e-6;
+    const double own = m.handoff_pass ? m.handoff_pass_mpx_ms : m.handoff_mpx_ms;
+    return (m.handoff_writes_ambient ? (net > 0 ? net : 0) : own) * screen_px * 1e-6;
 }
 
-// test_model with trial's hand-off: a blit or pass (two trials in three), one that writes the
-// ambient term, or one whose pass costs less than the ambient pass it spares.
+// test_model with trial's hand-off: a blit, a pass, one that writes the ambient term, or one whose
+// pass costs less than the ambient pass it spares.
 LightCostModel trial_model(int trial) {
     LightCostModel m = test_model();
-    m.handoff_writes_ambient = trial % 3 != 0;
-    if (trial % 3 == 2) m.ambient_mpx_ms = 5;
+    m.handoff_pass = trial % 4 == 1;
+    m.handoff_writes_ambient = trial % 4 >= 2;
+    if (trial % 4 == 3) m.ambient_mpx_ms = 5;
     return m;
 }
 
@@ -134,6 +137,8 @@ TEST(LightCost, HandoffWritingTheAmbientCostsItsPassLessTheAmbientPass) {
     };
     EXPECT_NEAR(handoff_ms(m, screen), m.handoff_mpx_ms * screen * 1e-6, 1e-12);
     EXPECT_EQ(paths()[int(LightPath::quad)], 3);
+    m.handoff_pass = true;
+    EXPECT_NEAR(handoff_ms(m, screen), m.handoff_pass_mpx_ms * screen * 1e-6, 1e-12);
     m.handoff_writes_ambient = true;
     EXPECT_EQ(handoff_ms(m, screen), 0.0);  // its pass cost less than the ambient pass it spares
     EXPECT_EQ(paths()[int(LightPath::volume)], 3);
@@ -247,6 +252,7 @@ TEST(LightCost, QuadDepthWhereItPaysForTheHandoff) {
     for (int trial = 0; trial < 2000; ++trial) {
         LightCostModel m = default_light_costs(trial % 2 == 0);
         m.handoff_writes_ambient = trial % 3 == 0;
+        m.handoff_pass = trial % 5 == 0;
         if (trial % 6 == 3) m.handoff_ambient_mpx_ms = m.ambient_mpx_ms + m.handoff_mpx_ms / 2;
         const double scale = 0.2 + 2 * u(rng);
         const int n = 1 + int(u(rng) * 40);

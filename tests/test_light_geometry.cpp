@@ -535,27 +535,32 @@ TEST(LightGeometry, AutoIsQuadToTheByteWhateverItChooses) {
     for (int p = 0; p < 3; ++p) EXPECT_GT(used[p], 0) << "path " << p << " never taken";
 }
 
-// auto prices the depth hand-off as the frame draws it (light_cost.h handoff_ms): its blit where
-// the material pass writes the ambient term; where the hand-off's pass writes it instead (the
-// material pass's target off, the hand-off a pass), that pass less the ambient pass it spares; and
-// the blit or pass again where a light over the whole screen takes the term (the fold). The image
-// stays quad's.
+// auto prices the depth hand-off as the frame draws it (light_cost.h handoff_ms): a blit or a pass
+// where the material pass writes the ambient term (the pass: --depth-handoff pass, or a GL without
+// the blit); where the hand-off's pass writes it instead (the material pass's target off), that
+// pass less the ambient pass it spares; and the pass again where a light over the whole screen
+// takes the term (the fold). The image stays quad's.
 TEST(LightGeometry, AutoPricesTheHandoffAsTheFrameDrawsIt) {
     const double px = double(kW) * double(kH);
     LightCostModel m = default_light_costs(true);  // the tests' GL is a CPU rasteriser
-    const double own = handoff_ms(m, px);
+    const double blit = handoff_ms(m, px);
+    m.handoff_pass = true;
+    const double pass = handoff_ms(m, px);
     m.handoff_writes_ambient = true;
     const double net = handoff_ms(m, px);
-    ASSERT_GT(std::abs(own - net), 1e-3);
+    ASSERT_GT(std::abs(blit - pass), 1e-3);
+    ASSERT_GT(std::abs(pass - net), 1e-3);
     ShaderOptions a = with_geometry(LightGeometry::automatic), q = with_geometry(LightGeometry::quad);
     const Scene s = default_scene();
-    EXPECT_DOUBLE_EQ(render_scene(s, kW, kH, a).stats.auto_handoff_ms, own);
-    a.skip.ambient_target = q.skip.ambient_target = false;
+    EXPECT_DOUBLE_EQ(render_scene(s, kW, kH, a).stats.auto_handoff_ms, blit);
+    EXPECT_DOUBLE_EQ(render_scene(s, kW, kH, a, {"no-framebuffer-blit"}).stats.auto_handoff_ms, pass);
     a.depth_handoff = q.depth_handoff = DepthHandoff::pass;
+    EXPECT_DOUBLE_EQ(render_scene(s, kW, kH, a).stats.auto_handoff_ms, pass);
+    a.skip.ambient_target = q.skip.ambient_target = false;
     const RenderResult r = render_scene(s, kW, kH, a);
     EXPECT_DOUBLE_EQ(r.stats.auto_handoff_ms, net);
     expect_same("auto_handoff_writes_ambient", r, render_scene(s, kW, kH, q));
-    EXPECT_DOUBLE_EQ(render_scene(with_directional(s), kW, kH, a).stats.auto_handoff_ms, own);
+    EXPECT_DOUBLE_EQ(render_scene(with_directional(s), kW, kH, a).stats.auto_handoff_ms, pass);
 }
 
 // auto's quads drawn against the handed-off depth (LightQuadBatch scene_depth) light the pixels

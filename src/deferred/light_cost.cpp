@@ -37,10 +37,10 @@ LightCostModel default_light_costs(bool software_rasterizer) {
         // 256, 1024, 1024-overlap at 512x512 and 32-large at 800x600 (within 30% on each; a draw
         // a light, before the batches, was 0.09 and 12).
         m.volume_draw_ms = 0.049, m.volume_mpx_ms = 6.1;
-        m.handoff_mpx_ms = 0.5;
-        // Where the hand-off is a pass (--depth-handoff pass, or no blit) it may write the ambient
-        // term: at 512x512 2.15-2.47 ms, where the ambient pass it replaces took 1.09-1.43 (the pass
-        // without it 1.15-1.24).
+        // The hand-off by a pass (--depth-handoff pass, or no blit), volumes at 512x512: 1.15-1.24
+        // ms; writing the ambient term too 2.15-2.47, where the ambient pass it replaces took
+        // 1.09-1.43.
+        m.handoff_mpx_ms = 0.5, m.handoff_pass_mpx_ms = 4.6;
         m.handoff_ambient_mpx_ms = 9, m.ambient_mpx_ms = 5;
         // The spans read back and reduced on the CPU (tile_spans.h): 0.52-0.54 ms at 512x512,
         // 0.83-0.99 at 800x600 (the two passes before them: 0.95-1.26 and 1.44-1.64).
@@ -62,10 +62,12 @@ LightCostModel default_light_costs(bool software_rasterizer) {
         // Volumes in batches (LightVolumeBatch), an H100: 502 lights over 8.8 Mpx of rectangles
         // 0.613 ms, 1915 over 8.5 Mpx 0.795 (a draw a light, before the batches: 0.0009 and 0.07).
         m.volume_draw_ms = 0.00014, m.volume_mpx_ms = 0.062;
-        m.handoff_mpx_ms = 0.072;
         // The hand-off's pass writing the ambient term, an H100 at 1920x1080: 0.269 ms (4096 lights
         // and the own lights by volumes, docs/gpu/bench_58e6b44/), where the ambient pass it replaces
-        // took 0.284-0.292 (the fold part's renders): it costs the frame nothing more.
+        // took 0.284-0.292 (the fold part's renders): it costs the frame nothing more. The pass
+        // without the term (a GPU takes it only with SSAO and no blit) is not measured: priced as
+        // the pass with it.
+        m.handoff_mpx_ms = 0.072, m.handoff_pass_mpx_ms = 0.13;
         m.handoff_ambient_mpx_ms = 0.13, m.ambient_mpx_ms = 0.139;
         m.spans_mpx_ms = 0.35;
         m.tile_pass_mpx_ms = 0.3, m.tile_light_mpx_ms = 0.12;
@@ -81,8 +83,8 @@ std::string describe(const LightCostModel& m) {
       << m.quad_depth_mpx_ms << " against the scene's depth)\n"
       << "  volume         " << m.volume_draw_ms << " ms a light + " << m.volume_mpx_ms
       << " ms per Mpx of its rectangle; hand-off " << m.handoff_mpx_ms << " ms per Mpx of screen\n"
-      << "                 (where it writes the ambient term: " << m.handoff_ambient_mpx_ms
-      << " less the ambient pass's " << m.ambient_mpx_ms << ")\n"
+      << "                 (a pass " << m.handoff_pass_mpx_ms << "; one that writes the ambient term "
+      << m.handoff_ambient_mpx_ms << " less the ambient pass's " << m.ambient_mpx_ms << ")\n"
       << "  tiles          " << m.tile_pass_mpx_ms << " ms per Mpx of tile pixels per pass + " << m.tile_light_mpx_ms
       << " ms per Mpx of (tile pixel, light) pairs; depth spans " << m.spans_mpx_ms << " ms per Mpx of screen,\n"
       << "                 measured where the lights would cost over " << m.spans_worth << "x that\n"
@@ -160,7 +162,9 @@ LightPathPlan choose_light_paths(const std::vector<LightFeature>& lights, const 
 
 double handoff_ms(const LightCostModel& m, double screen_px) {
     const double mpx_ms =
-        m.handoff_writes_ambient ? std::max(0.0, m.handoff_ambient_mpx_ms - m.ambient_mpx_ms) : m.handoff_mpx_ms;
+        m.handoff_writes_ambient ? std::max(0.0, m.handoff_ambient_mpx_ms - m.ambient_mpx_ms)
+        : m.handoff_pass         ? m.handoff_pass_mpx_ms
+                                 : m.handoff_mpx_ms;
     return mpx_ms * screen_px * kMpx;
 }
 

@@ -33,14 +33,15 @@ struct LightCostModel {
     // scene_depth: surfaces behind the light rejected before its shader).
     double quad_depth_mpx_ms = 0;
     double volume_draw_ms = 0, volume_mpx_ms = 0;  // per light; per Mpx of its scissor rectangle
-    double handoff_mpx_ms = 0;                     // the depth hand-off, per Mpx of the screen (once)
+    // The depth hand-off, per Mpx of the screen (once): a blit, or a gl_FragDepth pass (Paths::depth_handoff).
+    double handoff_mpx_ms = 0, handoff_pass_mpx_ms = 0;
     // Where the hand-off's pass writes the ambient term (Paths::ambient_in_handoff), the frame draws
     // no ambient pass: the hand-off then costs its pass (handoff_ambient_mpx_ms) less the ambient
     // pass it replaces (ambient_mpx_ms), per Mpx of the screen; handoff_ms below.
     double handoff_ambient_mpx_ms = 0, ambient_mpx_ms = 0;
-    // Not a constant but the frame's: whether its hand-off writes the ambient term (the auto
-    // geometry sets it each frame).
-    bool handoff_writes_ambient = false;
+    // Not constants but the frame's (the auto geometry sets them): whether its hand-off is a pass,
+    // and whether that pass writes the ambient term.
+    bool handoff_pass = false, handoff_writes_ambient = false;
     double spans_mpx_ms = 0;                       // the tiles' depth spans, per Mpx of the screen (once)
     double tile_pass_mpx_ms = 0;                   // tiles: per Mpx of tile pixels per pass (read, blend)
     double tile_light_mpx_ms = 0;                  // tiles: per Mpx of (tile pixel, light) pairs
@@ -67,7 +68,7 @@ LightCostModel default_light_costs(bool software_rasterizer);
 std::string describe(const LightCostModel& m);
 
 // What the depth hand-off adds to a frame of screen_px pixels: its blit or pass, or where it writes
-// the ambient term, its pass less the ambient pass it spares the frame (never below 0).
+// the ambient term, that pass less the ambient pass it spares the frame (never below 0).
 double handoff_ms(const LightCostModel& m, double screen_px);
 
 // What the model knows of one light.

@@ -42,7 +42,9 @@ public:
           handoff_takes_ambient_(c.paths.ambient_in_handoff && !c.paths.ambient_target),
           quad_depth_(c.paths.accum_depth && c.opts.skip.light_depth_test),
           calibrate_(c.caps.software_rasterizer),
-          gpu_calibrate_(gpu_timestamps(c.caps)) {}
+          gpu_calibrate_(gpu_timestamps(c.caps)) {
+        model_.handoff_pass = c.paths.depth_handoff == DepthHandoff::pass;  // else a blit
+    }
 
     void resize(int width, int height) override { tiles_->resize(width, height); }
 
