@@ -34,7 +34,6 @@ inline ShaderOptions with_depth(DepthPath p) {
 }
 
 inline Scene default_scene() { return load_scene(resource_dir("data") + "/default.scene"); }
-// tests/data/analytic.scene: planes and spheres with constant materials, for the analytic reference.
 // A scene with a directional light added: a light drawn over the whole screen.
 inline Scene with_directional(Scene s) {
     Light moon;
@@ -44,7 +43,7 @@ inline Scene with_directional(Scene s) {
     s.lights.push_back(moon);
     return s;
 }
-
+// tests/data/analytic.scene: planes and spheres with constant materials, for the analytic reference.
 inline Scene analytic_scene() { return load_scene(resource_dir("tests") + "/data/analytic.scene"); }
 
 // For the analytic reference's hand checks: a plane seen from straight above, one light above its

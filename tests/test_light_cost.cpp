@@ -122,8 +122,9 @@ TEST(LightCost, PathsNotAllowedAreNotChosen) {
 
 // Where the hand-off's pass writes the ambient term, the volumes pay only what it costs beyond the
 // ambient pass it spares the frame. On the GPU's constants the default scene's three lights (about
-// 1 Mpx of rectangle each at 1920x1080) go by quads at the hand-off's own price and by volumes at
-// that price (an H100: the volumes' frame 1.71 ms, the quads' 1.77; docs/gpu.md).
+// 1 Mpx of rectangle each at 1920x1080) go by quads where the hand-off is charged as a blit, and by
+// volumes where it is charged its pass less the ambient pass (an H100, where the hand-off wrote the
+// ambient term: the volumes' frame 1.71 ms, the quads' 1.77; docs/gpu.md).
 TEST(LightCost, HandoffWritingTheAmbientCostsItsPassLessTheAmbientPass) {
     LightCostModel m = default_light_costs(false);
     const double screen = 1920.0 * 1080.0;
