@@ -41,18 +41,22 @@ LightCostModel trial_model(int trial) {
     return m;
 }
 
-// The total the model gives an assignment, computed from its definition.
+// The total the model gives an assignment, computed from its definition; depth: the quads drawn
+// against the scene's depth, each its quad price less its saving (`saving`, unscaled), the
+// hand-off paid for them.
 double total_of(const std::vector<LightFeature>& ls, const TileGrid& grid, double screen_px, const LightCostModel& m,
-                const std::array<double, kLightPaths>& scale, const std::vector<int>& a, bool spans_paid) {
+                const std::array<double, kLightPaths>& scale, const std::vector<int>& a, bool spans_paid,
+                bool depth = false, const std::vector<double>& saving = {}) {
     double t = 0;
     bool used[3] = {false, false, false};
     for (size_t i = 0; i < ls.size(); ++i) {
         t += light_prices(ls[i], grid, m, scale)[size_t(a[i])];
+        if (depth && a[i] == 0) t -= saving[i] * scale[0];
         used[a[i]] = true;
     }
     const bool volume = used[1], tiles = used[2];
     t += m.path_ms * (int(used[0]) + int(used[1]) + int(used[2]));
-    if (volume) t += handoff_of(m, screen_px);
+    if (volume || (depth && used[0])) t += handoff_of(m, screen_px);
     if (tiles && !spans_paid) t += m.spans_mpx_ms * screen_px * 1e-6;
     return t;
 }
@@ -60,12 +64,15 @@ double total_of(const std::vector<LightFeature>& ls, const TileGrid& grid, doubl
 }  // namespace
 
 // Over random frames of up to 7 lights, choose_light_paths' total is the least over all 3^n
-// assignments (each light on any path it may take), per-frame costs included.
+// assignments (each light on any path it may take), per-frame costs included; where the quads may
+// test the scene's depth (every other trial), the least over the assignments with the quads drawn
+// either way.
 TEST(LightCost, ChoiceIsTheCheapestAssignment) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(0, 1);
+    int depth_plans = 0;
     for (int trial = 0; trial < 300; ++trial) {
-        const LightCostModel m = trial_model(trial / 2);
+        const LightCostModel m = trial_model(trial / 4);
         const int n = 1 + trial % 7;
         TileGrid grid;
         grid.tile_px = 256;
@@ -85,23 +92,35 @@ TEST(LightCost, ChoiceIsTheCheapestAssignment) {
         const std::array<double, kLightPaths> scale = {0.5 + u(rng), 0.5 + u(rng), 0.5 + u(rng)};
         const bool spans_paid = trial % 2 == 0;
         const double screen = 65536 * (1 + 4 * u(rng));
-        const LightPathPlan p = choose_light_paths(ls, grid, screen, m, scale, {true, true, true}, spans_paid);
+        const bool may_test_depth = trial % 4 >= 2;
+        std::vector<double> saving(size_t(n), 0.0);
+        for (size_t i = 0; i < size_t(n); ++i)
+            if (u(rng) > 0.2) saving[i] = 0.5 * u(rng) * m.quad_mpx_ms * ls[i].rect_px * 1e-6;
+        const LightPathPlan p = choose_light_paths(price_lights(ls, grid, m), screen, m, scale, {true, true, true},
+                                                   spans_paid, may_test_depth ? &saving : nullptr);
         double best = std::numeric_limits<double>::infinity();
         std::vector<int> a(size_t(n), 0);
         for (int code = 0; code < int(std::pow(3, n)); ++code) {
             int c = code;
             for (int i = 0; i < n; ++i, c /= 3) a[size_t(i)] = c % 3;
-            best = std::min(best, total_of(ls, grid, screen, m, scale, a, spans_paid));
+            for (const bool depth : {false, true})
+                if (!depth || may_test_depth)
+                    best = std::min(best, total_of(ls, grid, screen, m, scale, a, spans_paid, depth, saving));
         }
         std::vector<int> chosen;
         for (LightPath x : p.path) chosen.push_back(int(x));
-        const double got = total_of(ls, grid, screen, m, scale, chosen, spans_paid);
+        EXPECT_TRUE(may_test_depth || !p.quads_depth) << "trial " << trial;
+        EXPECT_TRUE(!p.quads_depth || p.count[0] > 0) << "trial " << trial;
+        const double got = total_of(ls, grid, screen, m, scale, chosen, spans_paid, p.quads_depth, saving);
+        depth_plans += p.quads_depth;
         ASSERT_NEAR(got, best, 1e-9 * best) << "trial " << trial;
         EXPECT_NEAR(p.predicted_total_ms, got, 1e-9 * got) << "trial " << trial;
         int counted = 0;
         for (int k = 0; k < kLightPaths; ++k) counted += p.count[size_t(k)];
         EXPECT_EQ(counted, n);
     }
+    EXPECT_GT(depth_plans, 10);  // the quads drawn against the depth were chosen, and not always
+    EXPECT_LT(depth_plans, 140);
 }
 
 TEST(LightCost, PathsNotAllowedAreNotChosen) {
@@ -120,11 +139,12 @@ TEST(LightCost, PathsNotAllowedAreNotChosen) {
     EXPECT_EQ(choose_light_paths({no_volume}, grid, 1e6, m, {1, 1, 1}, {true, true, true}, true).path[0], LightPath::quad);
 }
 
-// Where the hand-off's pass writes the ambient term, the volumes pay only what it costs beyond the
-// ambient pass it spares the frame. On the GPU's constants the default scene's three lights (about
-// 1 Mpx of rectangle each at 1920x1080) go by quads where the hand-off is charged as a blit, and by
-// volumes where it is charged its pass less the ambient pass (an H100, where the hand-off wrote the
-// ambient term: the volumes' frame 1.71 ms, the quads' 1.77; docs/gpu.md).
+// Where the hand-off's pass writes the ambient term, the volumes and the quads drawn against the
+// depth pay only what it costs beyond the ambient pass it spares the frame. On the GPU's constants
+// the default scene's three lights (about 1 Mpx of rectangle each at 1920x1080) go by quads where
+// the hand-off is charged as a blit; where it is charged its pass less the ambient pass, by volumes,
+// or where the quads may test the depth, by quads drawn so (an H100, where the hand-off wrote the
+// ambient term: the volumes' frame 1.71 ms, the plain quads' 1.77; docs/gpu.md).
 TEST(LightCost, HandoffWritingTheAmbientCostsItsPassLessTheAmbientPass) {
     LightCostModel m = default_light_costs(false);
     const double screen = 1920.0 * 1080.0;
@@ -136,6 +156,11 @@ TEST(LightCost, HandoffWritingTheAmbientCostsItsPassLessTheAmbientPass) {
     const auto paths = [&] {
         return choose_light_paths(ls, TileGrid{}, screen, m, {1, 1, 1}, {true, true, false}, true).count;
     };
+    const auto with_depth = [&] {
+        const std::vector<double> saving = quad_depth_savings(ls, m);
+        return choose_light_paths(price_lights(ls, TileGrid{}, m), screen, m, {1, 1, 1}, {true, true, false}, true,
+                                  &saving);
+    };
     EXPECT_NEAR(handoff_ms(m, screen), m.handoff_mpx_ms * screen * 1e-6, 1e-12);
     EXPECT_EQ(paths()[int(LightPath::quad)], 3);
     m.handoff_pass = true;
@@ -143,6 +168,12 @@ TEST(LightCost, HandoffWritingTheAmbientCostsItsPassLessTheAmbientPass) {
     m.handoff_writes_ambient = true;
     EXPECT_EQ(handoff_ms(m, screen), 0.0);  // its pass cost less than the ambient pass it spares
     EXPECT_EQ(paths()[int(LightPath::volume)], 3);
+    const LightPathPlan d = with_depth();
+    EXPECT_EQ(d.count[int(LightPath::quad)], 3);
+    EXPECT_TRUE(d.quads_depth);
+    m.handoff_writes_ambient = false;
+    EXPECT_FALSE(with_depth().quads_depth);  // a pass hand-off, 0.27 ms, to save 3 Mpx of quads 0.063
+    m.handoff_writes_ambient = true;
     m.handoff_ambient_mpx_ms = m.ambient_mpx_ms + 0.05;
     EXPECT_NEAR(handoff_ms(m, screen), 0.05 * screen * 1e-6, 1e-12);
 }

@@ -175,7 +175,10 @@ namespace {
 void add_frame_costs(LightPathPlan& p, const LightCostModel& m, double handoff, double spans) {
     for (int k = 0; k < kLightPaths; ++k)
         if (p.count[size_t(k)]) p.predicted_ms[size_t(k)] += m.path_ms;
-    if (p.count[1]) p.predicted_ms[1] += handoff;
+    if (p.count[1])
+        p.predicted_ms[1] += handoff;
+    else if (p.quads_depth)
+        p.predicted_ms[0] += handoff;
     if (p.count[2]) p.predicted_ms[2] += spans;
     p.predicted_total_ms = p.predicted_ms[0] + p.predicted_ms[1] + p.predicted_ms[2];
 }
@@ -184,41 +187,56 @@ void add_frame_costs(LightPathPlan& p, const LightCostModel& m, double handoff, 
 
 LightPathPlan choose_light_paths(const LightPrices& raw, double screen_px, const LightCostModel& m,
                                  const std::array<double, kLightPaths>& scale,
-                                 const std::array<bool, kLightPaths>& allowed, bool spans_paid) {
-    LightPrices prices = raw;
-    for (auto& p : prices)
-        for (int k = 0; k < kLightPaths; ++k) p[size_t(k)] *= scale[size_t(k)];
+                                 const std::array<bool, kLightPaths>& allowed, bool spans_paid,
+                                 const std::vector<double>* quad_depth_saving) {
     const size_t n = raw.size();
     const double handoff = handoff_ms(m, screen_px);
     const double spans = spans_paid ? 0 : m.spans_mpx_ms * screen_px * kMpx;
     LightPathPlan best;
     best.predicted_total_ms = kInf;
     // The per-frame costs make the choice of one light depend on the others only through which
-    // paths are used at all: for each set of paths in use, each light takes its cheapest in the set.
-    for (int mask = 1; mask < (1 << kLightPaths); ++mask) {
-        bool possible = true;
-        for (int k = 0; k < kLightPaths; ++k) possible &= !(mask >> k & 1) || allowed[size_t(k)];
-        if (!possible) continue;
-        LightPathPlan p;
-        p.path.resize(n);
-        for (size_t i = 0; i < n && possible; ++i) {
-            int c = -1;
-            for (int k = 0; k < kLightPaths; ++k)
-                if ((mask >> k & 1) && prices[i][size_t(k)] < kInf && (c < 0 || prices[i][size_t(k)] < prices[i][size_t(c)]))
-                    c = k;
-            if (c < 0) {
-                possible = false;  // a light no path of the set can take
-                break;
-            }
-            p.path[i] = LightPath(c);
-            ++p.count[size_t(c)];
-            p.predicted_ms[size_t(c)] += prices[i][size_t(c)];
+    // paths are used at all (and whether the quads test the depth): for each set of paths in use,
+    // each light takes its cheapest in the set.
+    for (const bool depth : {false, true}) {
+        if (depth && !quad_depth_saving) break;
+        LightPrices prices = raw;
+        for (size_t i = 0; i < n; ++i) {
+            if (depth) prices[i][0] -= (*quad_depth_saving)[i];
+            for (int k = 0; k < kLightPaths; ++k) prices[i][size_t(k)] *= scale[size_t(k)];
         }
-        if (!possible) continue;
-        add_frame_costs(p, m, handoff, spans);
-        if (p.predicted_total_ms < best.predicted_total_ms) best = std::move(p);
+        for (int mask = 1; mask < (1 << kLightPaths); ++mask) {
+            bool possible = true;
+            for (int k = 0; k < kLightPaths; ++k) possible &= !(mask >> k & 1) || allowed[size_t(k)];
+            if (!possible) continue;
+            LightPathPlan p;
+            p.path.resize(n);
+            for (size_t i = 0; i < n && possible; ++i) {
+                int c = -1;
+                for (int k = 0; k < kLightPaths; ++k)
+                    if ((mask >> k & 1) && prices[i][size_t(k)] < kInf && (c < 0 || prices[i][size_t(k)] < prices[i][size_t(c)]))
+                        c = k;
+                if (c < 0) {
+                    possible = false;  // a light no path of the set can take
+                    break;
+                }
+                p.path[i] = LightPath(c);
+                ++p.count[size_t(c)];
+                p.predicted_ms[size_t(c)] += prices[i][size_t(c)];
+            }
+            if (!possible) continue;
+            p.quads_depth = depth && p.count[0] > 0;
+            add_frame_costs(p, m, handoff, spans);
+            if (p.predicted_total_ms < best.predicted_total_ms) best = std::move(p);
+        }
     }
     return best;
+}
+
+std::vector<double> quad_depth_savings(const std::vector<LightFeature>& lights, const LightCostModel& m) {
+    std::vector<double> s(lights.size(), 0.0);
+    for (size_t i = 0; i < lights.size(); ++i)
+        if (!lights[i].shadowed) s[i] = (m.quad_mpx_ms - m.quad_depth_mpx_ms) * lights[i].rect_px * kMpx;
+    return s;
 }
 
 std::optional<LightExploration> exploration_plan(const LightPrices& raw, const LightPathPlan& best, double screen_px,
@@ -256,7 +274,7 @@ QuadDepthChoice choose_quad_depth(const LightPathPlan& plan, const std::vector<L
     if (px <= 0) return c;
     const double saving = (m.quad_mpx_ms - m.quad_depth_mpx_ms) * px * kMpx;
     const double handoff = plan.count[int(LightPath::volume)] > 0 ? 0 : handoff_ms(m, screen_px);
-    if (quad_scale * saving <= handoff) return c;
+    if (quad_scale * saving <= handoff && !plan.quads_depth) return c;
     c.on = true;
     c.raw_saving_ms = saving;
     c.handoff_ms = handoff;

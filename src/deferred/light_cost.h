@@ -103,7 +103,14 @@ struct LightPathPlan {
     std::array<int, kLightPaths> count{};           // lights per path
     std::array<double, kLightPaths> predicted_ms{}; // per path, its per-frame cost included
     double predicted_total_ms = 0;
+    // Its quads are drawn against the scene's depth, and priced so (choose_light_paths given the
+    // savings): the hand-off is in predicted_ms, with the volumes' where there are any, else the quads'.
+    bool quads_depth = false;
 };
+
+// Each light's saving where its quad is drawn against the scene's depth: its rectangle at
+// quad_depth_mpx_ms instead of quad_mpx_ms, unscaled; 0 for a shadowed light (drawn alone, without it).
+std::vector<double> quad_depth_savings(const std::vector<LightFeature>& lights, const LightCostModel& m);
 
 // Each light's prices, unscaled (light_prices with scales 1), for choose_light_paths below.
 using LightPrices = std::vector<std::array<double, kLightPaths>>;
@@ -116,9 +123,13 @@ LightPathPlan choose_light_paths(const std::vector<LightFeature>& lights, const 
                                  const LightCostModel& m, const std::array<double, kLightPaths>& scale,
                                  const std::array<bool, kLightPaths>& allowed, bool spans_paid);
 // The same from prices price_lights gave (each scaled here): the auto geometry prices once a frame.
+// quad_depth_saving, when given (quad_depth_savings): the quads may also be drawn against the scene's
+// depth, each for its quad price less its saving, the frame paying the hand-off for them (once: the
+// volumes' hand-off serves them too); the plan says which (quads_depth).
 LightPathPlan choose_light_paths(const LightPrices& raw, double screen_px, const LightCostModel& m,
                                  const std::array<double, kLightPaths>& scale,
-                                 const std::array<bool, kLightPaths>& allowed, bool spans_paid);
+                                 const std::array<bool, kLightPaths>& allowed, bool spans_paid,
+                                 const std::vector<double>* quad_depth_saving = nullptr);
 
 // A frame that measures a path the calibration has not measured enough (explore[p]): each light
 // that can take the path takes it, the others keep their path in `best`. Of the paths to explore, the one whose plan
@@ -134,7 +145,8 @@ std::optional<LightExploration> exploration_plan(const LightPrices& raw, const L
 
 // Whether a plan's quads are drawn against the scene's depth: what that saves them (their pixels at
 // quad_depth_mpx_ms instead of quad_mpx_ms; shadowed quads are drawn one by one without it)
-// against the depth hand-off, which is paid already where the plan has volumes.
+// against the depth hand-off, which is paid already where the plan has volumes; always where the
+// plan was priced so (quads_depth).
 struct QuadDepthChoice {
     bool on = false;
     double raw_saving_ms = 0;  // the quads' saving, unscaled (what their raw prices drop by)

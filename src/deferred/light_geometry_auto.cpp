@@ -76,8 +76,11 @@ public:
         const std::array<double, kLightPaths>& scale = calib_.scale();
         grid_ = TileGrid{};
         grid_.lights_per_pass = tiles_->lights_per_pass();
+        // The quads may test the handed-off depth: the plans weigh that against the volumes.
+        const std::vector<double> savings = quad_depth_ ? quad_depth_savings(features_, model_) : std::vector<double>{};
+        const std::vector<double>* depth_saving = quad_depth_ ? &savings : nullptr;
         raw_ = price_lights(features_, grid_, model_);
-        plan_ = choose_light_paths(raw_, screen_px, model_, scale, {true, volume_ok_, false}, true);
+        plan_ = choose_light_paths(raw_, screen_px, model_, scale, {true, volume_ok_, false}, true, depth_saving);
         depth_ = TileDepth{};
         cull_ = nullptr;
         bool spans = false;
@@ -96,7 +99,7 @@ public:
             }
             tile_cover(rects, f.width, f.height, tiles_->tile_size(), cull_, features_, grid_);
             raw_ = price_lights(features_, grid_, model_);
-            plan_ = choose_light_paths(raw_, screen_px, model_, scale, {true, volume_ok_, true}, true);
+            plan_ = choose_light_paths(raw_, screen_px, model_, scale, {true, volume_ok_, true}, true, depth_saving);
             if (spans) plan_.predicted_ms[2] += model_.spans_mpx_ms * screen_px * 1e-6;
             // Not while a path the plan took is still being measured: its scale may yet show the
             // tiles cheaper (the default scene's three lights went by volumes at a starting scale
@@ -122,10 +125,11 @@ public:
                 spans_rest_ = 0;
             }
         }
-        // The quads against the scene's depth where what it saves them pays for the hand-off.
+        // The quads against the scene's depth where the plan priced them so, or (an exploring
+        // plan's) where what it saves them pays for the hand-off.
         quad_depth_choice_ = quad_depth_ ? choose_quad_depth(plan_, features_, screen_px, model_, scale[0]) : QuadDepthChoice{};
         quads_depth_now_ = quad_depth_choice_.on;
-        if (quads_depth_now_)
+        if (quads_depth_now_ && !plan_.quads_depth)
             plan_.predicted_ms[0] += quad_depth_choice_.handoff_ms - quad_depth_choice_.raw_saving_ms * scale[0];
         planned_ = true;
         priced_ = true;
