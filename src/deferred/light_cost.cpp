@@ -170,6 +170,11 @@ double handoff_ms(const LightCostModel& m, double screen_px) {
 
 namespace {
 
+// What drawing a light's quad against the scene's depth saves it, unscaled (quad_depth_savings).
+double quad_depth_saving(const LightFeature& l, const LightCostModel& m) {
+    return l.shadowed ? 0 : (m.quad_mpx_ms - m.quad_depth_mpx_ms) * l.rect_px * kMpx;
+}
+
 // What a plan's paths add once a frame (choose_light_paths): each path used, the hand-off where a
 // volume is drawn, the spans where the tiles are; and the total.
 void add_frame_costs(LightPathPlan& p, const LightCostModel& m, double handoff, double spans) {
@@ -233,9 +238,8 @@ LightPathPlan choose_light_paths(const LightPrices& raw, double screen_px, const
 }
 
 std::vector<double> quad_depth_savings(const std::vector<LightFeature>& lights, const LightCostModel& m) {
-    std::vector<double> s(lights.size(), 0.0);
-    for (size_t i = 0; i < lights.size(); ++i)
-        if (!lights[i].shadowed) s[i] = (m.quad_mpx_ms - m.quad_depth_mpx_ms) * lights[i].rect_px * kMpx;
+    std::vector<double> s(lights.size());
+    for (size_t i = 0; i < lights.size(); ++i) s[i] = quad_depth_saving(lights[i], m);
     return s;
 }
 
@@ -268,11 +272,10 @@ std::optional<LightExploration> exploration_plan(const LightPrices& raw, const L
 QuadDepthChoice choose_quad_depth(const LightPathPlan& plan, const std::vector<LightFeature>& lights,
                                   double screen_px, const LightCostModel& m, double quad_scale) {
     QuadDepthChoice c;
-    double px = 0;
+    double saving = 0;
     for (size_t i = 0; i < lights.size() && i < plan.path.size(); ++i)
-        if (plan.path[i] == LightPath::quad && !lights[i].shadowed) px += lights[i].rect_px;
-    if (px <= 0) return c;
-    const double saving = (m.quad_mpx_ms - m.quad_depth_mpx_ms) * px * kMpx;
+        if (plan.path[i] == LightPath::quad) saving += quad_depth_saving(lights[i], m);
+    if (saving <= 0) return c;
     const double handoff = plan.count[int(LightPath::volume)] > 0 ? 0 : handoff_ms(m, screen_px);
     if (quad_scale * saving <= handoff && !plan.quads_depth) return c;
     c.on = true;
