@@ -13,6 +13,10 @@ namespace {
 
 const char* const kNotMeasured = "not measured in this run";
 
+// Every light geometry but auto, in the order the goals' information lines list them.
+constexpr LightGeometry kFixedGeometries[] = {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil,
+                                              LightGeometry::tiles, LightGeometry::screen};
+
 std::string ms(double v) { return format_number("%.2f", v) + " ms"; }
 
 // "a / b = a/b" with three decimals: the working of a count against the ideal.
@@ -90,8 +94,7 @@ Figure invocations(const Goal& g, const GoalInput& in) {
     // Every fixed geometry's ratio, fewest first: whether any way of drawing the lights meets the
     // goal on this GL (auto chooses each light's path by its time, not by its pairs).
     std::vector<std::pair<double, std::string>> each;
-    for (LightGeometry g2 : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles,
-                             LightGeometry::screen})
+    for (LightGeometry g2 : kFixedGeometries)
         if (const Row* r = find_geometry_row(in.rows, in.scene, in.lights, g2))
             if (r->light_evaluations && r->ideal_fragments && *r->ideal_fragments > 0)
                 each.emplace_back(double(*r->light_evaluations) / double(*r->ideal_fragments), light_geometry_name(g2));
@@ -393,8 +396,7 @@ Figure law(const Goal& g, const GoalInput& in) {
         f.after = per_round(g, a->lights_frames_ms, l->lights_frames_ms);
     }
     std::string others;
-    for (LightGeometry geo : {LightGeometry::quad, LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles,
-                              LightGeometry::screen}) {
+    for (LightGeometry geo : kFixedGeometries) {
         if (geo == a->light_geometry) continue;
         const Row* x = find_geometry_row(in.rows, scene, n, geo);
         const Row* y = find_linear_law_row(in.rows, scene, n, geo);
