@@ -11,6 +11,7 @@
 #include "gl/rounding_probe.h"
 #include "gl/surfaces.h"
 #include "gl/frame_timer.h"
+#include "gl/gpu_stamps.h"
 #include "platform/context.h"
 #include "platform/resources.h"
 
@@ -60,7 +61,9 @@ int cmd_info(const std::vector<std::string>& argv) {
     std::printf("  --light-geometry auto: each light by the cheapest path; the cost model's constants (%s),\n"
                 "  each path's scaled by what its passes took in the frames before%s:\n%s",
                 caps.software_rasterizer ? "a CPU rasteriser's" : "a GPU's",
-                caps.software_rasterizer ? "" : " (on a CPU rasteriser only; here the constants as they are)",
+                caps.software_rasterizer ? " (timed by glFinish and the wall clock)"
+                : gpu_timestamps(caps)   ? " (timed by timestamp queries read a frame later)"
+                                         : " (not here: no timestamp queries, the constants as they are)",
                 describe(default_light_costs(caps.software_rasterizer)).c_str());
     std::printf("  --depth-bounds on: %s\n", caps.depth_bounds ? "EXT_depth_bounds_test" : "refused (no EXT_depth_bounds_test)");
     std::printf("  --render-target pbuffer: %s\n",
