@@ -38,6 +38,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                         if (!(c.pos[i] == c.pos[i]) || !(c.target[i] == c.target[i]) || !(c.up[i] == c.up[i])) __builtin_trap();
                     break;
                 case dsr::ScriptCommand::quit: break;
+                case dsr::ScriptCommand::wait:  // documented as the last command only
+                    if (&c != &s.commands.back()) __builtin_trap();
+                    break;
             }
         }
     } catch (const dsr::Error& e) {
