@@ -210,6 +210,8 @@ LightPathPlan choose_light_paths(const LightPrices& raw, double screen_px, const
             for (int k = 0; k < kLightPaths; ++k) prices[i][size_t(k)] *= scale[size_t(k)];
         }
         for (int mask = 1; mask < (1 << kLightPaths); ++mask) {
+            // A set without quads prices the same either way: the first pass has it.
+            if (depth && !(mask & 1 << int(LightPath::quad))) continue;
             bool possible = true;
             for (int k = 0; k < kLightPaths; ++k) possible &= !(mask >> k & 1) || allowed[size_t(k)];
             if (!possible) continue;
