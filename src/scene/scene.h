@@ -75,6 +75,26 @@ struct Material {
     // by the forward pass after the lights, blended (docs/forward.md; docs/guide.md, "Transparent surfaces").
     float opacity = 1.0f;
     bool transparent() const { return opacity < 1.0f; }
+    // Cut-out (alpha testing): above 0, a fragment whose coverage (the diffuse map's alpha times
+    // the vertex colour's alpha) is below alpha_cutoff is discarded by the material pass and the
+    // shadow casters, as if the surface were not there (an MTL map_d, a glTF alphaMode MASK).
+    float alpha_cutoff = 0.0f;
+    bool cut_out() const { return alpha_cutoff > 0.0f; }
+};
+
+// How a texture is sampled (glTF samplers; every other texture keeps the defaults, which are
+// what dsr always used: repeat, trilinear mipmaps, stored values as they are).
+struct TextureSampling {
+    enum class Wrap { repeat, clamp, mirror };
+    Wrap wrap_s = Wrap::repeat, wrap_t = Wrap::repeat;
+    bool nearest_mag = false;  // magnification: nearest texel instead of linear
+    bool nearest_min = false;  // minification: nearest (mipmapped where `mipmaps`) instead of linear
+    bool mipmaps = true;       // minification reads mipmaps
+    bool srgb = false;         // stored sRGB-encoded: decoded to linear when sampled (glTF colour maps)
+    bool operator==(const TextureSampling& o) const {
+        return wrap_s == o.wrap_s && wrap_t == o.wrap_t && nearest_mag == o.nearest_mag &&
+               nearest_min == o.nearest_min && mipmaps == o.mipmaps && srgb == o.srgb;
+    }
 };
 
 // Tangent frame per vertex (Listing 10's a2v): tangent follows +u, binormal +v.
@@ -98,10 +118,15 @@ struct ShapeDesc {
 
 // Object-space triangles with one material (a group of Listing 9): uploaded once however many
 // objects draw it.
+// colors: per-vertex colours (OBJ `v x y z r g b`, glTF COLOR_0), parallel to vertices, multiplying
+// the diffuse colour (rgb) and the coverage (a); empty when the file gives none (white).
+// two_sided: the loader's wish (OBJ faces; a glTF material's doubleSided); the Object decides.
 struct Mesh {
     std::vector<Vertex> vertices;
     std::vector<uint32_t> indices;
     int material = 0;
+    std::vector<glm::vec4> colors;
+    bool two_sided = false;
 };
 
 // One thing drawn: a mesh and its object-to-world transform, kept in double. Renderers never
@@ -117,6 +142,9 @@ struct Object {
     glm::dmat4 model{1.0};
     int material = 0;  // what it is drawn with: the mesh's, or a `mesh ... material` override
     std::optional<ShapeDesc> shape;
+    // Drawn without back-face culling, a back face's normal flipped to face the camera
+    // (gl_FrontFacing), as Blender and MeshLab show OBJ faces; shapes are one-sided.
+    bool two_sided = false;
 };
 
 // An OBJ model as parsed: its material groups are Scene::meshes[first_mesh, first_mesh +
@@ -148,6 +176,8 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Image> textures;
     std::vector<std::string> texture_paths;  // parallel to textures, as resolved
+    // Parallel to textures where a loader set it; a texture past its end samples with the defaults.
+    std::vector<TextureSampling> texture_sampling;
     std::vector<Mesh> meshes;     // geometry, object space, each uploaded once
     std::vector<Object> objects;  // what is drawn: a mesh with its transform
     std::vector<Light> lights;
@@ -160,7 +190,9 @@ struct Scene {
     float marker_size = 0;  // the box's half-size in world units; unused for spheres
     std::vector<MeshModel> models;         // `mesh` lines' OBJ models, object space
     std::vector<MeshInstance> instances;   // one per `mesh` line
-    std::vector<std::string> warnings;     // statements the loaders read and ignored
+    // What the loaders read and ignored or substituted, one line each ("FILE:LINE: ..."), printed
+    // to stderr, counted in --stats (`warnings`); --strict makes the first one an error.
+    std::vector<std::string> warnings;
     // Every file the scene was read from: the scene file, its OBJ and MTL files and images, as
     // opened (no output of a run may be one of them).
     std::vector<std::string> inputs;
