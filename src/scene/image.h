@@ -47,6 +47,12 @@ struct ImageTooLarge : Error {
 // Over max_texels (or kMaxImageSide a side): ImageTooLarge.
 Image load_image(const std::string& path, size_t max_texels = kMaxImageTexels);
 
+// The same from an image file's bytes in memory (a glTF image: a data URI or a buffer view), with
+// the same checks and errors; `name` names it in messages ("cannot read image NAME: WHY"). PNG
+// and JPEG (glTF's formats), told by their first bytes; the size is checked on the header
+// before any pixel is allocated (ImageTooLarge over max_texels).
+Image decode_image(const std::string& bytes, const std::string& name, size_t max_texels = kMaxImageTexels);
+
 // Encodes img into the file `file` (created or replaced), in the format `name`'s extension
 // picks (.png 8-bit, .exr half float, anything else the backend knows). Errors name `name`, the
 // user's path, and never `file`: "cannot write NAME: WHY". OutputSet (scene/output_set.h) writes

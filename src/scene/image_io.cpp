@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "dsr_error.h"
@@ -110,6 +111,78 @@ Image load_image(const std::string& path, size_t max_texels) {
     img.rgba.resize(size_t(w) * h * 4);
     for (int y = 0; y < h; ++y) {
         // File row y (top first) lands in Image row h-1-y (bottom first).
+        const float* src = &raw[size_t(y) * w * colour];
+        for (int x = 0; x < w; ++x, src += colour) {
+            float* d = img.at(x, h - 1 - y);
+            d[0] = src[0];
+            d[1] = grey ? src[0] : src[1];
+            d[2] = grey ? src[0] : src[2];
+            d[3] = alpha < 0 ? 1.0f : alpha < colour ? src[alpha] : alpha_raw[size_t(y) * w + x];
+        }
+    }
+    return img;
+}
+
+Image decode_image(const std::string& bytes, const std::string& name, size_t max_texels) {
+    StderrCapture chatter;
+    auto fail = [&](std::string why) {
+        const std::string said = chatter.text();
+        if (why.empty()) why = said.empty() ? "read failed" : said;
+        else if (!said.empty() && why.find(said) == std::string::npos) why += " (" + said + ")";
+        for (size_t at; (at = why.find('\n')) != std::string::npos;) why.replace(at, 1, "; ");
+        throw Error("cannot read image " + name + ": " + one_line(why));
+    };
+    // glTF's formats, told by their signatures; the plugin is picked by a name with that extension.
+    const bool png = bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
+    const bool jpeg = bytes.compare(0, 3, "\xFF\xD8\xFF") == 0;
+    if (!png && !jpeg) fail("expected PNG or JPEG data, got neither signature");
+    if (bytes.size() > kMaxImageFileBytes) fail("expected at most " + std::to_string(kMaxImageFileBytes) + " bytes");
+    OIIO::Filesystem::IOMemReader proxy(bytes.data(), bytes.size());
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    (void)OIIO::geterror();
+    // The plugin is created by its format name and reads through the proxy (open by file name
+    // with a proxy fails for these plugins).
+    auto in = OIIO::ImageInput::create(png ? "png" : "jpeg");
+    if (!in) fail(oiio_message("no reader for this format"));
+    if (!in->set_ioproxy(&proxy)) fail(oiio_message("the reader cannot read from memory"));
+    OIIO::ImageSpec spec;
+    if (!in->open(name, spec, config)) fail(in->geterror());
+    const int w = spec.width, h = spec.height, nc = spec.nchannels;
+    if (w <= 0 || h <= 0 || nc <= 0 || spec.depth > 1) fail("unsupported size or channel layout");
+    if (nc > 64) fail(std::to_string(nc) + " channels, expected at most 64 (an absurd size)");
+    if (w > kMaxImageSide || h > kMaxImageSide || size_t(w) * size_t(h) > kMaxImageTexels)
+        fail(std::to_string(w) + " x " + std::to_string(h) + " pixels, expected at most " +
+             std::to_string(kMaxImageSide) + " a side and " + std::to_string(kMaxImageTexels) + " in all (an absurd size)");
+    if (size_t(w) * size_t(h) > max_texels)
+        throw ImageTooLarge("cannot read image " + name + ": " + std::to_string(w) + " x " + std::to_string(h) +
+                                " pixels, expected at most " + std::to_string(max_texels) + " (the caller's budget)",
+                            w, h);
+    int alpha = spec.alpha_channel;
+    if (alpha < 0 && (nc == 2 || nc >= 4)) alpha = nc == 2 ? 1 : 3;
+    const int colour = std::min(nc, 4);
+    const bool grey = nc <= 2;
+    std::vector<float> raw(size_t(w) * h * size_t(colour)), alpha_raw;
+    bool ok = in->read_image(0, 0, 0, colour, OIIO::TypeDesc::FLOAT, raw.data());
+    if (ok && alpha >= colour) {
+        alpha_raw.resize(size_t(w) * h);
+        ok = in->read_image(0, 0, alpha, alpha + 1, OIIO::TypeDesc::FLOAT, alpha_raw.data());
+    }
+    if (!ok || in->has_error()) fail(in->geterror());
+    if (!in->close() || in->has_error()) fail(in->geterror());
+    const std::string stray = OIIO::geterror();
+    if (!stray.empty()) fail(stray);
+    const std::string said = chatter.text();
+    if (is_damage(said)) fail(said);
+    static const char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', '\xAE', '\x42', '\x60', '\x82'};
+    if (png && (bytes.size() < 12 || bytes.compare(bytes.size() - 12, 12, iend, 12) != 0))
+        fail("cut short: no IEND chunk at its end");
+
+    Image img;
+    img.width = w;
+    img.height = h;
+    img.rgba.resize(size_t(w) * h * 4);
+    for (int y = 0; y < h; ++y) {
         const float* src = &raw[size_t(y) * w * colour];
         for (int x = 0; x < w; ++x, src += colour) {
             float* d = img.at(x, h - 1 - y);

@@ -107,6 +107,75 @@ Image load_image(const std::string& path, size_t max_texels) {
     return img;
 }
 
+namespace {
+
+// libpng reads decode_image's bytes through this.
+struct MemRead {
+    const std::string* bytes;
+    size_t pos = 0;
+};
+void mem_read(png_structp png, png_bytep out, png_size_t n) {
+    auto* m = static_cast<MemRead*>(png_get_io_ptr(png));
+    if (n > m->bytes->size() - m->pos) png_error(png, "cut short: read past the end of the data");
+    std::memcpy(out, m->bytes->data() + m->pos, n);
+    m->pos += n;
+}
+
+}  // namespace
+
+Image decode_image(const std::string& bytes, const std::string& name, size_t max_texels) {
+    if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0)
+        throw Error("cannot read image " + name + ": " +
+                    (bytes.compare(0, 3, "\xFF\xD8\xFF") == 0 ? std::string("this build reads PNG only (libpng backend), got JPEG")
+                                                              : std::string("expected PNG data, got no PNG signature")));
+    std::string warnings;
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &warnings, png_fail, png_warn);
+    png_infop info = png_create_info_struct(png);
+    MemRead src{&bytes, 0};
+    Image img;
+    try {
+        png_set_read_fn(png, &src, mem_read);
+        png_read_info(png, info);
+        const png_uint_32 w = png_get_image_width(png, info), h = png_get_image_height(png, info);
+        const size_t limit = std::min(max_texels, kMaxImageTexels);
+        if (w == 0 || h == 0) throw Error(std::to_string(w) + " x " + std::to_string(h) + " pixels (no pixels)");
+        if (w > png_uint_32(kMaxImageSide) || h > png_uint_32(kMaxImageSide) || size_t(w) * h > kMaxImageTexels)
+            throw Error(std::to_string(w) + " x " + std::to_string(h) + " pixels, expected at most " +
+                        std::to_string(kMaxImageSide) + " a side and " + std::to_string(kMaxImageTexels) +
+                        " in all (an absurd size)");
+        if (size_t(w) * h > limit)
+            throw ImageTooLarge("cannot read image " + name + ": " + std::to_string(w) + " x " + std::to_string(h) +
+                                    " pixels, expected at most " + std::to_string(limit) + " (the caller's budget)",
+                                int(w), int(h));
+        png_set_expand(png);
+        png_set_strip_16(png);
+        png_set_gray_to_rgb(png);
+        png_set_add_alpha(png, 0xff, PNG_FILLER_AFTER);
+        png_read_update_info(png, info);
+        std::vector<uint8_t> pixels(size_t(w) * h * 4);
+        std::vector<png_bytep> rows(h);
+        for (png_uint_32 y = 0; y < h; ++y) rows[y] = &pixels[size_t(y) * w * 4];
+        png_read_image(png, rows.data());
+        png_read_end(png, nullptr);
+        img.width = int(w);
+        img.height = int(h);
+        img.rgba.resize(pixels.size());
+        for (png_uint_32 y = 0; y < h; ++y)
+            for (size_t i = 0; i < size_t(w) * 4; ++i)
+                img.rgba[size_t(h - 1 - y) * w * 4 + i] = pixels[size_t(y) * w * 4 + i] / 255.0f;
+    } catch (const ImageTooLarge&) {
+        png_destroy_read_struct(&png, &info, nullptr);
+        throw;
+    } catch (const Error& e) {
+        png_destroy_read_struct(&png, &info, nullptr);
+        std::string why = e.what();
+        if (!warnings.empty()) why += " (" + warnings + ")";
+        throw Error("cannot read image " + name + ": " + one_line(why));
+    }
+    png_destroy_read_struct(&png, &info, nullptr);
+    return img;
+}
+
 void encode_image(const std::string& file, const std::string& name, const Image& img) {
     auto fail = [&](const std::string& why) { throw Error("cannot write " + name + ": " + one_line(why)); };
     if (img.width <= 0 || img.height <= 0 || img.rgba.size() != size_t(img.width) * img.height * 4)
