@@ -125,7 +125,7 @@ OBJ_LOADER_SRC := src/scene/obj_loader.cpp src/scene/obj_text.cpp src/scene/obj_
 USER_FILE_SRC := src/scene/user_file.cpp src/scene/output_set.cpp src/scene/stderr_capture.cpp
 ASAN_SRC := src/scene/light_law.cpp $(OBJ_LOADER_SRC) src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/framing.cpp src/scene/shapes.cpp \
             src/scene/camera.cpp src/scene/image_io.cpp src/scene/image_extension.cpp $(USER_FILE_SRC) \
-            tests/fuzz/tinyobj_impl.cpp tests/test_obj.cpp
+            tests/fuzz/tinyobj_impl.cpp tests/test_obj.cpp src/scene/gltf_loader.cpp src/scene/gltf_json.cpp src/scene/gltf_accessors.cpp src/scene/gltf_materials.cpp src/scene/gltf_meshes.cpp src/scene/gltf_nodes.cpp src/scene/tinygltf_impl.cpp tests/test_gltf.cpp
 ASAN_OBJ := $(ASAN_SRC:%.cpp=$(BUILD)/asan/obj/%.o)
 
 $(BUILD)/asan/obj/%.o: %.cpp
@@ -162,11 +162,11 @@ FUZZ_FLAGS := -std=c++17 -O1 -g -fno-omit-frame-pointer -Isrc -DDSR_SOURCE_DIR=\
 # command line's value helpers.
 FUZZ_LIB_SRC := src/scene/light_law.cpp $(OBJ_LOADER_SRC) src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/framing.cpp src/scene/shapes.cpp \
                 src/scene/camera.cpp src/scene/image_io.cpp src/scene/image_extension.cpp $(USER_FILE_SRC) \
-                tests/fuzz/tinyobj_impl.cpp \
+                tests/fuzz/tinyobj_impl.cpp src/scene/gltf_loader.cpp src/scene/gltf_json.cpp src/scene/gltf_accessors.cpp src/scene/gltf_materials.cpp src/scene/gltf_meshes.cpp src/scene/gltf_nodes.cpp src/scene/tinygltf_impl.cpp \
                 src/viewer/script.cpp src/deferred/option_table.cpp src/deferred/paths.cpp src/deferred/depth_codec.cpp \
                 src/deferred/view.cpp src/app/args.cpp src/app/render_flags.cpp
 FUZZ_LIB_OBJ := $(FUZZ_LIB_SRC:%.cpp=$(BUILD)/fuzz/obj/%.o)
-FUZZ_TARGETS := obj scene_file script cli
+FUZZ_TARGETS := obj scene_file script cli gltf
 .SECONDARY: $(FUZZ_LIB_OBJ)  # kept between runs (make would delete them as intermediates)
 
 $(BUILD)/fuzz/obj/%.o: %.cpp
