@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <map>
@@ -305,6 +306,20 @@ GltfModel parse_gltf(const string& path, const string& bytes, const GltfOptions&
                 up = uploaded.emplace(node.mesh, std::move(idx)).first;
             }
             for (size_t k : up->second) {
+                // The placed mesh's bounding box within +-1e12 (a uniform scale may be any size).
+                glm::dvec3 lo(INFINITY), hi(-INFINITY);
+                for (const Vertex& v : out.meshes[k].vertices) {
+                    lo = glm::min(lo, glm::dvec3(v.pos));
+                    hi = glm::max(hi, glm::dvec3(v.pos));
+                }
+                for (int c = 0; c < 8; ++c) {
+                    const glm::dvec3 corner(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z);
+                    const glm::dvec3 w(np.world * glm::dvec4(corner, 1.0));
+                    for (int a = 0; a < 3; ++a)
+                        if (!(std::fabs(w[a]) <= gltf::kMaxCoordinate))
+                            ctx.fail(nptr, "expected world-space positions within +-1e12, got " + gltf::num(w[a]) + " for mesh " +
+                                               std::to_string(node.mesh));
+                }
                 out.placements.push_back({k, np.world});
                 out.triangles += out.meshes[k].indices.size() / 3;
             }

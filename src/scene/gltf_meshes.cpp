@@ -175,6 +175,10 @@ std::vector<PrimitiveMesh> read_mesh(Context& ctx, int mesh_index, const std::ve
             if (uv.count) {
                 glm::dvec3 t(uv.at(i, 0), uv.at(i, 1), 1.0);
                 if (use.has_transform) t = use.uv_transform * t;
+                if (!(std::fabs(t.x) <= kMaxCoordinate && std::fabs(t.y) <= kMaxCoordinate))
+                    ctx.fail(pp + "/attributes/" + uv_name, "expected uvs within +-1e12" +
+                                                                string(use.has_transform ? " after KHR_texture_transform" : "") +
+                                                                ", got (" + num(t.x) + ", " + num(t.y) + ") in element " + std::to_string(i));
                 v.uv = glm::vec2(float(t.x), float(1.0 - t.y));  // glTF's origin is the image's top left
             }
             return v;
