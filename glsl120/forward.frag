@@ -8,7 +8,8 @@
 // Variants: NORMAL_MAP (tangent space, as glsl120/material.frag), LISTING2_LITERAL,
 // MAX_LIGHTS n (set by the renderer from GL_MAX_FRAGMENT_UNIFORM_COMPONENTS), OPACITY (docs/forward.md:
 // the transparent pass, src/deferred/transparent_pass.cpp, blends with alpha = the material's
-// opacity; without it alpha is 1 as before).
+// opacity; without it alpha is 1 as before). TWO_SIDED, VERTEX_COLOR, CUT_OUT: as glsl120/material.frag
+// (shader_table.h surface_defines), so the references draw a model's surfaces as the G-buffer holds them.
 #include "lighting.glsl"
 #ifdef SHADOW
 // SHADOW: the pass's light (one) scaled by its shadow map's lookup (the shadowed lights of the
@@ -33,6 +34,12 @@ uniform int nlights;
 #ifdef OPACITY
 uniform float opacity;          // Material::opacity, in (0, 1)
 #endif
+#ifdef CUT_OUT
+uniform float alpha_cutoff;     // Material::alpha_cutoff
+#endif
+#ifdef VERTEX_COLOR
+varying vec4 vcolor;
+#endif
 // One light as five vec4s (lighting.glsl light_contribution; deferred/light_params.h).
 uniform vec4 lightpos[MAX_LIGHTS];    // eye space, w = radius
 uniform vec4 lightcolor[MAX_LIGHTS];  // S_diff = S_spec, w = type
@@ -49,13 +56,29 @@ varying vec3 binormal;
 void main()
 {
     vec2 txcoord = texcoord * tile;
+#if defined(VERTEX_COLOR) || defined(CUT_OUT)
+    vec4 colour = texture2D(colortex, txcoord);
+#ifdef VERTEX_COLOR
+    colour *= vcolor;
+#endif
+#ifdef CUT_OUT
+    if (colour.a < alpha_cutoff) discard;
+#endif
+#endif
 #ifdef NORMAL_MAP
     vec3 n = texture2D(normaltex, txcoord).xyz - 0.5;
     n = normalize(n.x * tangent + n.y * binormal + n.z * normal);
 #else
     vec3 n = normalize(normal);
 #endif
+#ifdef TWO_SIDED
+    if (!gl_FrontFacing) n = -n;
+#endif
+#if defined(VERTEX_COLOR) || defined(CUT_OUT)
+    vec3 Mdiff = colour.rgb * diffuse;
+#else
     vec3 Mdiff = texture2D(colortex, txcoord).rgb * diffuse;
+#endif
     vec3 Mspec = texture2D(speculartex, txcoord).rgb * specular;
     vec3 c = ambient * Mdiff;  // Equation 6 (zero on additive passes)
     vec3 v = view_vector(vpos);

@@ -9,6 +9,10 @@
 // NO_SPECULAR (material without specular: no specular map read), PACKED_DEPTH, ENC_LITERAL,
 // ENC_LINEAR, ENC_LOG, POSITION_TARGET (POSITION16: into half floats), TARGET_n (no MRT: write only target n to gl_FragData[0], §3.2),
 // AMBIENT_TARGET n (P-buffer 0 as render target n: what Listing 15's ambient pass would write there).
+// What a model brings (shader_table.h surface_defines): TWO_SIDED (a back face's normal, the
+// normal map's included, flipped to face the camera), VERTEX_COLOR (the per-vertex colour
+// multiplies the diffuse colour and the coverage), CUT_OUT (a fragment whose coverage, the
+// diffuse map's alpha times the vertex colour's, is below alpha_cutoff is discarded).
 #include "depth_codec.glsl"
 #include "quantize.glsl"
 
@@ -24,6 +28,12 @@ uniform float tile;
 #ifdef AMBIENT_TARGET
 uniform vec3 ambient;  // Listing 15's ambient colour
 #endif
+#ifdef CUT_OUT
+uniform float alpha_cutoff;  // Material::alpha_cutoff
+#endif
+#ifdef VERTEX_COLOR
+varying vec4 vcolor;
+#endif
 
 varying vec2 texcoord;
 varying vec3 vpos;
@@ -34,18 +44,34 @@ varying vec3 binormal;
 void main()
 {
     vec2 txcoord = texcoord * tile;
+#if defined(VERTEX_COLOR) || defined(CUT_OUT)
+    vec4 colour = texture2D(colortex, txcoord);
+#ifdef VERTEX_COLOR
+    colour *= vcolor;
+#endif
+#ifdef CUT_OUT
+    if (colour.a < alpha_cutoff) discard;
+#endif
+#endif
 #ifdef NORMAL_MAP
     vec3 n = texture2D(normaltex, txcoord).xyz - 0.5;
     n = n.x * tangent + n.y * binormal + n.z * normal;
 #else
     vec3 n = normal;
 #endif
+#ifdef TWO_SIDED
+    if (!gl_FrontFacing) n = -n;
+#endif
     // normalize(0) is undefined (NaN on llvmpipe, stored as 0, which would decode as a normal):
     // a zero normal is written as the 0.5 grey Listing 20's len > 0.1 branch leaves unlit.
     float nl = length(n);
     n = nl > 0.0 ? n / nl : vec3(0.0);
     vec4 t0 = vec4(n * 0.5 + 0.5, 1.0);
+#if defined(VERTEX_COLOR) || defined(CUT_OUT)
+    vec4 t1 = vec4(colour.rgb * diffuse, 1.0);
+#else
     vec4 t1 = vec4(texture2D(colortex, txcoord).rgb * diffuse, 1.0);
+#endif
 #ifdef NO_SPECULAR
     vec4 t2 = vec4(0.0, 0.0, 0.0, shininess_code);
 #else

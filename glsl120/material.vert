@@ -8,6 +8,9 @@ varying vec3 vpos;
 varying vec3 normal;
 varying vec3 tangent;
 varying vec3 binormal;
+#ifdef VERTEX_COLOR
+varying vec4 vcolor;  // the mesh's per-vertex colour (Mesh::colors)
+#endif
 
 void main()
 {
@@ -20,4 +23,7 @@ void main()
     normal = modelviewrot * gl_Normal;
     tangent = modelviewrot * gl_MultiTexCoord1.xyz;
     binormal = modelviewrot * gl_MultiTexCoord2.xyz;
+#ifdef VERTEX_COLOR
+    vcolor = gl_Color;
+#endif
 }

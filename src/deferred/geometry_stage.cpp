@@ -7,8 +7,17 @@
 
 namespace dsr {
 
+namespace {
+// The table's material rows by variant (shader_table.cpp).
+const char* material_row(bool normal_map, bool no_specular) {
+    return normal_map ? (no_specular ? "material_no_specular" : "material")
+                      : (no_specular ? "material_flat_no_specular" : "material_flat");
+}
+}  // namespace
+
 GeometryStage::GeometryStage(const ShaderConfig& c, ProgramSet& programs)
-    : mrt_(c.paths.mrt),
+    : sources_(programs.sources("material")),
+      mrt_(c.paths.mrt),
       variants_(c.opts.skip.material_variants),
       quantize_round_(c.tile_round),
       depth_(c.opts.depth),
@@ -16,20 +25,15 @@ GeometryStage::GeometryStage(const ShaderConfig& c, ProgramSet& programs)
       skip_prepass_(c.opts.skip.depth_prepass && c.paths.count_fragments) {
     if (skip_prepass_) glGenQueries(2, queries_);
     // The table's material rows by variant; without MRT one program per G-buffer target.
-    const struct {
-        const char* name;
-        bool normal_map, no_specular;
-    } rows[] = {{"material", true, false},
-                {"material_no_specular", true, true},
-                {"material_flat", false, false},
-                {"material_flat_no_specular", false, true}};
-    for (const auto& r : rows) {
-        if (mrt_ && programs.has(r.name)) programs_[MaterialKey{r.normal_map, r.no_specular, -1}] = programs.take(r.name);
-        for (int t = 0; !mrt_ && t < c.paths.gbuffer_targets; ++t) {
-            const std::string name = std::string(r.name) + "/" + std::to_string(t);
-            if (programs.has(name)) programs_[MaterialKey{r.normal_map, r.no_specular, t}] = programs.take(name);
+    for (const bool normal_map : {true, false})
+        for (const bool no_specular : {false, true}) {
+            const char* name = material_row(normal_map, no_specular);
+            if (mrt_ && programs.has(name)) programs_[MaterialKey{normal_map, no_specular, -1}] = programs.take(name);
+            for (int t = 0; !mrt_ && t < c.paths.gbuffer_targets; ++t) {
+                const std::string n = std::string(name) + "/" + std::to_string(t);
+                if (programs.has(n)) programs_[MaterialKey{normal_map, no_specular, t}] = programs.take(n);
+            }
         }
-    }
 }
 
 GeometryStage::~GeometryStage() {
@@ -136,7 +140,12 @@ RenderState GeometryStage::material_pass_state(bool write_depth) {
     return s;
 }
 
-// Listing 8: raw positions, no shader, colour writes off.
+// Listing 8: raw positions, no shader, colour writes off; two-sided surfaces without culling.
+// Cut-out surfaces are left out (GpuScene::draw_all): positions alone cannot tell where they are
+// cut. The material pass lays their depth down itself, after every other surface (draw_material),
+// which needs nothing the no-MRT and packed-depth paths lack, where an alpha test here would need
+// the diffuse maps, texture coordinates and vertex colours in a fixed-function pass that matches
+// the shader's coverage to the bit.
 void GeometryStage::draw_depth(const GpuScene& gpu) {
     gl_state().apply(depth_pass_state());
     gpu.bind_positions();
@@ -144,26 +153,39 @@ void GeometryStage::draw_depth(const GpuScene& gpu) {
     gpu.unbind();
 }
 
-Program& GeometryStage::material_program(const GpuMaterial& m, int target) {
+Program& GeometryStage::material_program(const GpuMaterial& m, int target, int surface) {
     // Without the variants skip, every material takes the full shader (normal map and
     // specular map read), as a single-shader renderer would.
-    const MaterialKey key{m.normal_map || !variants_, variants_ && !m.has_specular, target};
+    const MaterialKey key{m.normal_map || !variants_, variants_ && !m.has_specular, target, surface};
     auto it = programs_.find(key);
-    if (it == programs_.end()) throw Error("no material program for this material and target");
-    return it->second;
+    if (it != programs_.end()) return it->second;
+    if (surface == 0) throw Error("no material program for this material and target");
+    // A surface form: the row as the table built it, with the surface's defines after.
+    std::string name = material_row(key.normal_map, key.no_specular);
+    if (target >= 0) name += "/" + std::to_string(target);
+    return programs_[key] = sources_.build(name, surface_defines(surface));
 }
 
 // Listing 9 (target -1: all targets at once; t: only G-buffer target t), with its test un-inverted
 // (docs/errata.md): materials with a normal map use the tangent-space shader, the others a variant
-// that skips the normal map.
+// that skips the normal map. Two-sided surfaces are drawn without culling. Cut-out surfaces come
+// last with depth writes on (GL_LEQUAL): the pre-pass left them out, so each lays down its own depth
+// where it is not discarded and hides what was drawn behind it; in the passes of the no-MRT path
+// after the first, that depth passes exactly the same fragments again.
 void GeometryStage::draw_material(const FrameDef& f, const GpuScene& gpu, int target, bool write_depth,
                                   glm::vec3 ambient) {
-    gl_state().apply(material_pass_state(write_depth));
+    const RenderState pass = material_pass_state(write_depth), cut_out = material_pass_state(true);
+    gl_state().apply(pass);
     gpu.bind_all();
     int bound = -1;
     for (const DrawRange& r : gpu.ranges()) {
         const GpuMaterial& m = gpu.material(r.material);
-        Program& prog = material_program(m, target);
+        const int surface = r.surface();
+        Program& prog = material_program(m, target, surface);
+        // The pass's state, or a surface's (nothing changes where no surface brings one).
+        RenderState s = faces_state(r.cut_out ? cut_out : pass, r);
+        s.program = gl_state().current().program;
+        gl_state().apply(s);
         if (bound != int(prog.id())) {
             prog.use();
             prog.set("normaltex", 0);
@@ -180,6 +202,7 @@ void GeometryStage::draw_material(const FrameDef& f, const GpuScene& gpu, int ta
         prog.set("specular", m.specular);
         prog.set("shininess_code", m.shininess_code);
         prog.set("tile", m.tile);
+        if (r.cut_out) prog.set("alpha_cutoff", m.alpha_cutoff);
         const GLuint tex[3] = {m.normal_map || variants_ ? m.normal_tex : gpu.flat_normal(), m.diffuse_tex,
                                m.specular_tex};
         for (int u = 0; u < 3; ++u) {

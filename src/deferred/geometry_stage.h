@@ -24,8 +24,10 @@ struct MaterialKey {
     bool normal_map = false;   // tangent-space normal map read (NORMAL_MAP)
     bool no_specular = false;  // specular target written as zero, no map read (NO_SPECULAR)
     int target = -1;           // -1: every target in one pass (MRT); t: only G-buffer target t
+    int surface = 0;           // DrawRange::surface(): the shader table's surface_defines
     bool operator<(const MaterialKey& o) const {
-        return std::tie(normal_map, no_specular, target) < std::tie(o.normal_map, o.no_specular, o.target);
+        return std::tie(normal_map, no_specular, target, surface) <
+               std::tie(o.normal_map, o.no_specular, o.target, o.surface);
     }
 };
 
@@ -51,9 +53,11 @@ private:
     void draw_depth(const GpuScene& gpu);                                // Listing 8
     void draw_material(const FrameDef& f, const GpuScene& gpu, int target, bool write_depth,
                        glm::vec3 ambient);  // Listings 9-13
-    Program& material_program(const GpuMaterial& m, int target);
+    // The program of a draw; a surface form's is built from its row the first time it is drawn.
+    Program& material_program(const GpuMaterial& m, int target, int surface);
 
     std::map<MaterialKey, Program> programs_;
+    ProgramSources sources_;  // the material rows, for the surface forms
     bool mrt_, variants_;
     float quantize_round_;  // quantize.glsl's fallback offset (the ambient target's diffuse rounding)
     DepthPath depth_;

@@ -20,8 +20,22 @@ float encode_shininess(float shininess) {
     return std::clamp(std::log2(std::max(shininess, 1.0f)) / 11.0f, 0.0f, 1.0f);
 }
 
-// Bilinear resample with wrap-around (material maps tile), for GPUs without NPOT textures.
-static Image resample_wrapped(const Image& src, int w, int h) {
+// A texel index outside [0, n) as the map's wrap mode reads it.
+static int wrap_index(int i, int n, TextureSampling::Wrap w) {
+    switch (w) {
+    case TextureSampling::Wrap::clamp: return std::clamp(i, 0, n - 1);
+    case TextureSampling::Wrap::mirror: {
+        const int p = ((i % (2 * n)) + 2 * n) % (2 * n);
+        return p < n ? p : 2 * n - 1 - p;
+    }
+    case TextureSampling::Wrap::repeat: break;
+    }
+    return ((i % n) + n) % n;
+}
+
+// Bilinear resample, reading past the edges as the map's wrap modes do (material maps tile by
+// default), for GPUs without NPOT textures.
+static Image resample_wrapped(const Image& src, int w, int h, const TextureSampling& ts) {
     Image dst;
     dst.width = w;
     dst.height = h;
@@ -32,7 +46,7 @@ static Image resample_wrapped(const Image& src, int w, int h) {
             int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
             float ax = fx - x0, ay = fy - y0;
             auto px = [&](int xx, int yy) {
-                return src.at(((xx % src.width) + src.width) % src.width, ((yy % src.height) + src.height) % src.height);
+                return src.at(wrap_index(xx, src.width, ts.wrap_s), wrap_index(yy, src.height, ts.wrap_t));
             };
             for (int c = 0; c < 4; ++c)
                 dst.at(x, y)[c] = (1 - ay) * ((1 - ax) * px(x0, y0)[c] + ax * px(x0 + 1, y0)[c]) +
@@ -41,18 +55,44 @@ static Image resample_wrapped(const Image& src, int w, int h) {
     return dst;
 }
 
+static GLint gl_wrap(TextureSampling::Wrap w) {
+    switch (w) {
+    case TextureSampling::Wrap::clamp: return GL_CLAMP_TO_EDGE;
+    case TextureSampling::Wrap::mirror: return GL_MIRRORED_REPEAT;
+    case TextureSampling::Wrap::repeat: break;
+    }
+    return GL_REPEAT;
+}
+
+// The map's TextureSampling on the bound texture (mipmaps were generated where ts.mipmaps).
+static void set_sampling(const TextureSampling& ts) {
+    const GLint min = ts.mipmaps ? (ts.nearest_min ? GL_NEAREST_MIPMAP_NEAREST : GL_LINEAR_MIPMAP_LINEAR)
+                                 : (ts.nearest_min ? GL_NEAREST : GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, ts.nearest_mag ? GL_NEAREST : GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, gl_wrap(ts.wrap_s));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_wrap(ts.wrap_t));
+}
+
 static bool is_pow2(int v) { return v > 0 && (v & (v - 1)) == 0; }
 
 GpuScene::GpuScene(const Scene& scene, bool pow2_textures, ColourMaps colour_maps) {
     // Every mesh once, in object space (instances of one OBJ group share it).
     std::vector<Vertex> verts;
     std::vector<uint32_t> idx;
+    // Per-vertex colours where any mesh has them (white for the others), else no colour buffer.
+    const auto has_colors = [](const Mesh& m) { return !m.colors.empty() && m.colors.size() == m.vertices.size(); };
+    bool any_colors = false;
+    for (const Mesh& m : scene.meshes) any_colors = any_colors || has_colors(m);
+    std::vector<glm::vec4> colors;
     std::vector<std::pair<size_t, GLsizei>> mesh_at(scene.meshes.size());  // first index, count
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const Mesh& mesh = scene.meshes[m];
         const uint32_t base = uint32_t(verts.size());
         mesh_at[m] = {idx.size(), GLsizei(mesh.indices.size())};
         verts.insert(verts.end(), mesh.vertices.begin(), mesh.vertices.end());
+        if (any_colors && has_colors(mesh)) colors.insert(colors.end(), mesh.colors.begin(), mesh.colors.end());
+        else if (any_colors) colors.resize(verts.size(), glm::vec4(1));
         for (uint32_t i : mesh.indices) idx.push_back(base + i);
     }
     uploaded_vertices_ = verts.size();
@@ -64,6 +104,9 @@ GpuScene::GpuScene(const Scene& scene, bool pow2_textures, ColourMaps colour_map
         const Object& obj = scene.objects[o];
         const auto [first, count] = mesh_at.at(obj.mesh);
         object_ranges_[o] = {count, first, obj.material, o};
+        object_ranges_[o].two_sided = obj.two_sided;
+        object_ranges_[o].colors = has_colors(scene.meshes.at(obj.mesh));
+        object_ranges_[o].cut_out = scene.materials.at(size_t(obj.material)).cut_out();
         models_[o] = obj.model;
         triangles_ += size_t(count) / 3;
     }
@@ -71,14 +114,23 @@ GpuScene::GpuScene(const Scene& scene, bool pow2_textures, ColourMaps colour_map
         if (scene.materials.at(size_t(scene.objects[o].material)).transparent()) transparent_.push_back(o);
         else ranges_.push_back(object_ranges_[o]);
     }
-    std::stable_sort(ranges_.begin(), ranges_.end(),
-                     [](const DrawRange& a, const DrawRange& b) { return a.material < b.material; });
+    // Cut-outs after the others (their depth comes from the material pass), each part by material.
+    std::stable_sort(ranges_.begin(), ranges_.end(), [](const DrawRange& a, const DrawRange& b) {
+        return a.cut_out != b.cut_out ? b.cut_out : a.material < b.material;
+    });
+    solid_ranges_ = size_t(std::find_if(ranges_.begin(), ranges_.end(), [](const DrawRange& r) { return r.cut_out; }) -
+                           ranges_.begin());
     glGenBuffers(1, &vbo_);
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     glBufferData(GL_ARRAY_BUFFER, verts.size() * sizeof(Vertex), verts.data(), GL_STATIC_DRAW);
     glGenBuffers(1, &ibo_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, idx.size() * sizeof(uint32_t), idx.data(), GL_STATIC_DRAW);
+    if (any_colors) {
+        glGenBuffers(1, &cbo_);
+        glBindBuffer(GL_ARRAY_BUFFER, cbo_);
+        glBufferData(GL_ARRAY_BUFFER, colors.size() * sizeof(glm::vec4), colors.data(), GL_STATIC_DRAW);
+    }
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 
@@ -90,27 +142,36 @@ GpuScene::GpuScene(const Scene& scene, bool pow2_textures, ColourMaps colour_map
             if (m.diffuse_map >= 0) colour.at(size_t(m.diffuse_map)) = true;
     for (size_t t = 0; t < scene.textures.size(); ++t) {
         const Image& img = scene.textures[t];
+        // A map without sampling of its own keeps the defaults (and the path it always took).
+        const TextureSampling ts = t < scene.texture_sampling.size() ? scene.texture_sampling[t] : TextureSampling{};
+        const bool sampled_as_ever = ts == TextureSampling{};
         Image r;
         const Image* up = &img;
         if (pow2_textures && !(is_pow2(img.width) && is_pow2(img.height))) {
             int w = 1, h = 1;
             while (w * 2 <= img.width) w *= 2;  // nearest power of two at or below
             while (h * 2 <= img.height) h *= 2;
-            r = resample_wrapped(img, w, h);
+            r = resample_wrapped(img, w, h, ts);
             up = &r;
         }
         GLenum internal = GL_RGBA8;
         Image decoded;
-        if (colour[t] && colour_maps == ColourMaps::srgb_texture) {
+        if ((colour[t] || ts.srgb) && colour_maps == ColourMaps::srgb_texture) {
             internal = GL_SRGB8_ALPHA8;  // stored as the file's codes, decoded by the GL when sampled
-        } else if (colour[t]) {
+        } else if (colour[t] || ts.srgb) {
             decoded = *up;  // decoded here; alpha is linear in sRGB images
             for (size_t i = 0; i < decoded.rgba.size(); ++i)
                 if (i % 4 != 3) decoded.rgba[i] = srgb_to_linear(decoded.rgba[i]);
             up = &decoded;
             internal = GL_RGBA16;
         }
-        textures_.emplace_back(up->width, up->height, internal, GL_RGBA, GL_FLOAT, up->rgba.data(), GL_LINEAR, GL_REPEAT, true);
+        textures_.emplace_back(up->width, up->height, internal, GL_RGBA, GL_FLOAT, up->rgba.data(), GL_LINEAR, GL_REPEAT,
+                               ts.mipmaps);
+        if (!sampled_as_ever) {
+            glBindTexture(GL_TEXTURE_2D, textures_.back().id());
+            set_sampling(ts);
+            glBindTexture(GL_TEXTURE_2D, 0);
+        }
     }
     // A missing diffuse or specular map is a white texel: map x colour = colour exactly.
     const float one[4] = {1, 1, 1, 1};
@@ -124,6 +185,7 @@ GpuScene::GpuScene(const Scene& scene, bool pow2_textures, ColourMaps colour_map
         g.shininess_code = encode_shininess(m.shininess);
         g.tile = m.tile;
         g.opacity = m.opacity;
+        g.alpha_cutoff = m.alpha_cutoff;
         g.diffuse_tex = m.diffuse_map >= 0 ? textures_[m.diffuse_map].id() : white_.id();
         g.specular_tex = m.specular_map >= 0 ? textures_[m.specular_map].id() : white_.id();
         g.normal_map = m.normal_map >= 0;
@@ -137,6 +199,7 @@ GpuScene::GpuScene(const Scene& scene, bool pow2_textures, ColourMaps colour_map
 GpuScene::~GpuScene() {
     glDeleteBuffers(1, &vbo_);
     glDeleteBuffers(1, &ibo_);
+    if (cbo_) glDeleteBuffers(1, &cbo_);
 }
 
 void GpuScene::bind_positions() const {
@@ -158,9 +221,19 @@ void GpuScene::bind_all() const {
         glTexCoordPointer(sizes[i], GL_FLOAT, sizeof(Vertex), reinterpret_cast<void*>(offs[i]));
     }
     glClientActiveTexture(GL_TEXTURE0);
+    if (cbo_) {
+        glBindBuffer(GL_ARRAY_BUFFER, cbo_);
+        glEnableClientState(GL_COLOR_ARRAY);
+        glColorPointer(4, GL_FLOAT, sizeof(glm::vec4), nullptr);
+        glBindBuffer(GL_ARRAY_BUFFER, vbo_);
+    }
 }
 
 void GpuScene::unbind() const {
+    if (cbo_) {
+        glDisableClientState(GL_COLOR_ARRAY);
+        glColor4f(1, 1, 1, 1);  // the current colour is undefined after drawing with the array
+    }
     for (int i = 0; i < 3; ++i) {
         glClientActiveTexture(GL_TEXTURE0 + i);
         glDisableClientState(GL_TEXTURE_COORD_ARRAY);
@@ -182,7 +255,12 @@ void GpuScene::draw(const DrawRange& r) const {
 }
 
 void GpuScene::draw_all() const {
-    for (const DrawRange& r : ranges_) draw(r);
+    const RenderState pass = gl_state().current();
+    for (size_t i = 0; i < solid_ranges_; ++i) {
+        gl_state().apply(faces_state(pass, ranges_[i]));
+        draw(ranges_[i]);
+    }
+    gl_state().apply(pass);
 }
 
 }  // namespace dsr

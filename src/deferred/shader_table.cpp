@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "deferred/gpu_scene.h"
 #include "deferred/main_buffer_map.h"
 #include "deferred/tile_plan.h"
 #include "dsr_error.h"
@@ -241,6 +242,14 @@ std::string tile_size(const ShaderConfig& c) { return "TILE_SIZE " + std::to_str
 }  // namespace
 
 bool tile_depth_culling(const ShaderConfig& c) { return tile_depth(c); }
+
+Defines surface_defines(int surface) {
+    Defines d;
+    if (surface & kSurfaceTwoSided) d.push_back("TWO_SIDED");
+    if (surface & kSurfaceColors) d.push_back("VERTEX_COLOR");
+    if (surface & kSurfaceCutOut) d.push_back("CUT_OUT");
+    return d;
+}
 bool tile_spans_by_readback(const ShaderConfig& c) {
     return tile_depth(c) && c.caps.software_rasterizer && c.paths.depth_path == DepthPath::texture;
 }
@@ -258,7 +267,9 @@ const std::vector<ShaderRow>& shader_rows() {
     using C = const ShaderConfig&;
     static const std::vector<ShaderRow> rows = {
         // Geometry stage (§3.3, Listing 9). Without the variants skip every material takes the
-        // full shader (normal map and specular map read), as a single-shader renderer would.
+        // full shader (normal map and specular map read), as a single-shader renderer would. A
+        // two-sided, vertex-coloured or cut-out surface takes its row with surface_defines added,
+        // built when a scene first draws one (geometry_stage.cpp).
         {"material", "material.vert", "material.frag", "G-buffer, normal-mapped material (Listing 9)", always,
          [](C c) { return material_defines(c, {"NORMAL_MAP"}); }, true},
         {"material_no_specular", "material.vert", "material.frag", "G-buffer, normal map, no specular",

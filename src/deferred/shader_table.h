@@ -51,6 +51,14 @@ using Defines = std::vector<std::string>;
 // shadow form both compile it with these.
 Defines shadow_lookup_defines(bool packed, ShadowFilter filter);
 
+// The shader forms of what a model brings (gpu_scene.h SurfaceBits): TWO_SIDED (a back face's
+// normal flipped, gl_FrontFacing), VERTEX_COLOR (per-vertex colour times diffuse and coverage),
+// CUT_OUT (coverage below the `alpha_cutoff` uniform discarded). The material pass, the shadow
+// casters, the forward renderers and the transparent pass add them to their own rows' defines
+// (ProgramSources::build) for the surfaces that have them; a surface without any draws with the
+// rows as they are. The shadow casters take only CUT_OUT and VERTEX_COLOR (they draw both faces).
+Defines surface_defines(int surface);
+
 // The tiles' depth culling (tile_depth.h): whether the configuration has it, and whether its
 // spans come from the G-buffer read back to the CPU (a CPU rasteriser with the depth texture)
 // rather than from its two passes, whose programs are then not in the table's set.

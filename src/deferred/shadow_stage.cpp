@@ -38,6 +38,7 @@ MapPiece view_rect(const ShadowLayout& s, size_t view) {
 
 ShadowStage::ShadowStage(const ShaderConfig& c, ProgramSet& programs)
     : caster_(programs.take("shadow_caster")),
+      sources_(programs.sources("shadow_caster")),
       packed_(shadow_maps_packed(c.caps)),
       main_buffer_(!c.caps.fbo),
       hard_(c.opts.shadows.filter == ShadowFilter::hard),
@@ -49,6 +50,16 @@ ShadowStage::ShadowStage(const ShaderConfig& c, ProgramSet& programs)
 
 ShadowStage::~ShadowStage() {
     for (auto& m : maps_) release(m.second);
+}
+
+Program& ShadowStage::cut_out_caster(bool colors) {
+    Program& p = cut_out_casters_[colors];
+    if (!p.id()) {
+        p = sources_.build("shadow_caster", surface_defines(kSurfaceCutOut | (colors ? kSurfaceColors : 0)));
+        p.use();
+        p.set("colortex", 0);
+    }
+    return p;
 }
 
 void ShadowStage::release(Map& m) {
@@ -124,7 +135,11 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
     const ShadowFit fit = shadow_fit(f.camera, f.aspect, bounds_);
     const glm::dmat4 eye_to_world = glm::inverse(f.camera.view_d());
     RenderState s = opaque_geometry();
-    s.cull = false;         // open surfaces (planes) cast from either side
+    s.cull = false;         // open surfaces (planes) cast from either side, two-sided ones too
+    // Cut-out surfaces cast where they are drawn: their caster reads the diffuse map's alpha (and
+    // the vertex colours'), so the arrays are all bound where the scene has any.
+    const bool cut_outs = gpu.has_cut_outs();
+    bool map_bound = false;  // a diffuse map on unit 0
     s.color_write = packed_;
     s.program = caster_.id();
     bool bound = false;
@@ -152,7 +167,8 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
             allocate(m, layout.width, layout.height);
             m.clips = key.clips, m.objects = key.objects, m.models = key.models;
             if (!bound) {
-                gpu.bind_positions();
+                if (cut_outs) gpu.bind_all();
+                else gpu.bind_positions();
                 bound = true;
             }
             glClearDepth(1.0);
@@ -166,6 +182,19 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
                 gpu.set_view(layout.views[v].view);
                 for (size_t o : m.objects[v]) {
                     const DrawRange& rg = gpu.object_range(o);
+                    if (cut_outs) {  // the caster of the object's surface, with the map's depth range
+                        Program& p = rg.cut_out ? cut_out_caster(rg.colors) : caster_;
+                        p.use();
+                        p.set("shadow_depth", layout.depth);
+                        if (rg.cut_out) {
+                            const GpuMaterial& mat = gpu.material(rg.material);
+                            p.set("tile", mat.tile);
+                            p.set("alpha_cutoff", mat.alpha_cutoff);
+                            glActiveTexture(GL_TEXTURE0);
+                            glBindTexture(GL_TEXTURE_2D, mat.diffuse_tex);
+                            map_bound = true;
+                        }
+                    }
                     gpu.draw(rg);
                     stats.shadow_triangles += rg.count / 3;
                 }
@@ -209,6 +238,10 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
         k.generation = m.generation;
     }
     if (bound) gpu.unbind();
+    if (map_bound) {
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
     check_gl_stage("shadow stage");
     last_ = out;
     return out;

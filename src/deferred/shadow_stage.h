@@ -60,7 +60,13 @@ private:
     void allocate(Map& m, int width, int height);
     void release(Map& m);
 
+    // The caster for a cut-out surface (CUT_OUT, VERTEX_COLOR with its colours), built from the
+    // table's row the first time one is drawn, bound with its material's diffuse map on unit 0.
+    Program& cut_out_caster(bool colors);
+
     Program caster_;
+    ProgramSources sources_;       // the caster's row, for the cut-out forms
+    Program cut_out_casters_[2];   // [vertex colours]
     bool packed_ = false;
     bool main_buffer_ = false;  // no framebuffer objects: drawn in the main frame buffer and copied
     bool hard_ = false;

@@ -22,13 +22,14 @@ TransparentPass::TransparentPass(const std::string& shader_dir, bool listing2_li
     batch_ = std::clamp((int(comps) - 64) / 20, 1, 64);
 }
 
-Program& TransparentPass::program(bool normal_map, bool any_light) {
-    Program& p = progs_[normal_map][any_light];
+Program& TransparentPass::program(bool normal_map, bool any_light, int surface) {
+    Program& p = progs_[normal_map][any_light][surface];
     if (!p.id()) {
         std::vector<std::string> defs = {"MAX_LIGHTS " + std::to_string(batch_), "OPACITY"};
         if (normal_map) defs.push_back("NORMAL_MAP");
         if (listing2_literal_) defs.push_back("LISTING2_LITERAL");
         if (!any_light) defs.push_back("LIGHT_POINT_ONLY");
+        for (const std::string& d : surface_defines(surface)) defs.push_back(d);
         p = Program(shader_dir_, "forward.vert", "forward.frag", defs);
         p.use();
         p.set("normaltex", 0);
@@ -38,18 +39,20 @@ Program& TransparentPass::program(bool normal_map, bool any_light) {
     return p;
 }
 
-Program& TransparentPass::shadow_program(bool normal_map, bool packed, ShadowFilter filter) {
+Program& TransparentPass::shadow_program(bool normal_map, bool packed, ShadowFilter filter, int surface) {
     if (filter != shadow_filter_) {  // the forms of another filter are of no more use
         for (auto& row : shadow_progs_)
-            for (Program& q : row) q = Program();
+            for (auto& forms : row)
+                for (Program& q : forms) q = Program();
         shadow_filter_ = filter;
     }
-    Program& p = shadow_progs_[normal_map][packed];
+    Program& p = shadow_progs_[normal_map][packed][surface];
     if (!p.id()) {
         std::vector<std::string> defs = {"MAX_LIGHTS 1", "OPACITY"};
         if (normal_map) defs.push_back("NORMAL_MAP");
         if (listing2_literal_) defs.push_back("LISTING2_LITERAL");
         for (const std::string& d : shadow_lookup_defines(packed, filter)) defs.push_back(d);
+        for (const std::string& d : surface_defines(surface)) defs.push_back(d);
         p = Program(shader_dir_, "forward.vert", "forward.frag", defs);
         p.use();
         p.set("normaltex", 0);
@@ -65,8 +68,9 @@ namespace {
 // The first pass of an object: blended over what lies behind it, a * colour + (1 - a) * dst.
 // Later passes (more lights than one pass holds) add a * their lights on the same fragments: the
 // depth test is against the opaque depth, unchanged, so they pass exactly where the first did.
-RenderState transparent_state(GLuint program, bool first) {
-    RenderState s = opaque_geometry();
+// A two-sided object is drawn without culling.
+RenderState transparent_state(GLuint program, bool first, const DrawRange& r) {
+    RenderState s = faces_state(opaque_geometry(), r);
     s.depth_write = false;
     s.blend = true;
     s.blend_src = GL_SRC_ALPHA;
@@ -101,38 +105,41 @@ TransparentStats TransparentPass::draw(const Scene& scene, const GpuScene& gpu, 
             any_light = any_light || l.type != Light::Type::point || l.attenuation;
         }
         st.light_object_pairs += (long long)(reach.size() + shadowed.size());
-        const int mi = gpu.object_range(o).material;
+        const DrawRange& range = gpu.object_range(o);
+        const int mi = range.material;
         const GpuMaterial& m = gpu.material(mi);
-        Program& prog = program(m.normal_map, any_light);
+        Program& prog = program(m.normal_map, any_light, range.surface());
         gl_state().use_program(prog.id());
         set_forward_material(prog, m, scene.materials[size_t(mi)].shininess);  // as the forward renderers
         prog.set("opacity", m.opacity);
+        if (range.cut_out) prog.set("alpha_cutoff", m.alpha_cutoff);
         // Ambient (Eq. 6) and the first batch_ lights blended over the background; the rest added.
         size_t k = 0;
         do {
             const size_t n = std::min(reach.size() - k, size_t(batch_));
             arrays.clear();
             for (size_t i = 0; i < n; ++i) arrays.add(lights[size_t(reach[k + i])]);
-            gl_state().apply(transparent_state(prog.id(), k == 0));
+            gl_state().apply(transparent_state(prog.id(), k == 0, range));
             prog.set("nlights", int(n));
             prog.set("ambient", k == 0 ? scene.ambient : glm::vec3(0));
             if (n) arrays.set(prog, LightArrays::kLight);
-            gpu.draw(gpu.object_range(o));
+            gpu.draw(range);
             ++st.passes;
             k += n;
         } while (k < reach.size());
         // Each shadowed light added by its own pass, the light's term scaled by its map's lookup.
         for (int i : shadowed) {
             const ShadowLookup& map = *shadows[size_t(i)];
-            Program& sp = shadow_program(m.normal_map, map.packed, filter);
-            gl_state().apply(transparent_state(sp.id(), false));
+            Program& sp = shadow_program(m.normal_map, map.packed, filter, range.surface());
+            gl_state().apply(transparent_state(sp.id(), false, range));
             set_forward_material(sp, m, scene.materials[size_t(mi)].shininess);
             sp.set("opacity", m.opacity);
+            if (range.cut_out) sp.set("alpha_cutoff", m.alpha_cutoff);
             sp.set("nlights", 1);
             sp.set("ambient", glm::vec3(0));
             set_light_params(sp, lights[size_t(i)]);  // element 0 of forward.frag's arrays
             bind_shadow_map(sp, map);
-            gpu.draw(gpu.object_range(o));
+            gpu.draw(range);
             unbind_shadow_map();
             ++st.passes;
         }

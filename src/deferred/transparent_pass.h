@@ -10,7 +10,8 @@
 // object the same way: it lives here, beside the scene upload and light volumes both use.
 //
 // What is approximate (docs/guide.md, "Transparent surfaces"): the order is per object, not per pixel;
-// back faces are culled (a closed object shows its near side only); transparent surfaces cast no
+// back faces are culled (a closed object shows its near side only), except on two-sided objects,
+// whose both sides are drawn in one pass (a back face's normal flipped); transparent surfaces cast no
 // shadows and get no SSAO; nothing is written to the depth buffer, so a transparent surface never
 // hides another. They receive shadows: each shadowed light is a pass of its own, through
 // forward.frag's SHADOW form with the light's map (glsl120/shadow.glsl, docs/shadows.md).
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "deferred/frame.h"
+#include "deferred/gpu_scene.h"
 #include "deferred/light_params.h"
 #include "deferred/options.h"
 #include "gl/program.h"
@@ -26,8 +28,6 @@
 #include "scene/scene.h"
 
 namespace dsr {
-
-class GpuScene;
 
 struct TransparentStats {
     int objects = 0;             // transparent objects drawn
@@ -55,15 +55,16 @@ public:
     int lights_per_pass() const { return batch_; }
 
 private:
-    Program& program(bool normal_map, bool any_light);
+    // surface: DrawRange::surface(), the forms of shader_table.h surface_defines.
+    Program& program(bool normal_map, bool any_light, int surface);
     // The form with one shadowed light's lookup, for maps packed or not.
-    Program& shadow_program(bool normal_map, bool packed, ShadowFilter filter);
+    Program& shadow_program(bool normal_map, bool packed, ShadowFilter filter, int surface);
 
     std::string shader_dir_;
     bool listing2_literal_;
     int batch_ = 1;
-    Program progs_[2][2];  // [normal map][any light]
-    Program shadow_progs_[2][2];  // [normal map][packed]
+    Program progs_[2][2][kSurfaceForms];         // [normal map][any light][surface]
+    Program shadow_progs_[2][2][kSurfaceForms];  // [normal map][packed][surface]
     ShadowFilter shadow_filter_ = ShadowFilter::pcf2;  // what shadow_progs_ were built with
 };
 

@@ -69,16 +69,22 @@ ForwardRenderer::~ForwardRenderer() = default;
 // The tutorial's point lights take forward.frag with LIGHT_POINT_ONLY (lighting.glsl: no type or
 // law selection, the cost the forward rows always had); a scene with any other light the general
 // shader (with VIEW_PER_LIGHT on a GPU). Rebuilt only when a scene needs the other kind.
+std::vector<std::string> ForwardRenderer::program_defines(bool normal_map, int surface) const {
+    std::vector<std::string> defs = {"MAX_LIGHTS " + std::to_string(batch_)};
+    if (normal_map) defs.push_back("NORMAL_MAP");
+    if (opts_.listing2_literal) defs.push_back("LISTING2_LITERAL");
+    if (!any_light_) defs.push_back("LIGHT_POINT_ONLY");
+    // lighting.glsl: the view vector per light, the form each compiler ran fastest (forward
+    // single-pass is the baseline the deferred rows are held against, so it gets its best).
+    if (any_light_ && !caps_.software_rasterizer) defs.push_back("VIEW_PER_LIGHT");
+    for (const std::string& d : surface_defines(surface)) defs.push_back(d);
+    return defs;
+}
+
 void ForwardRenderer::build_programs(bool any_light) {
+    any_light_ = any_light;
     for (int nm = 0; nm < 2; ++nm) {
-        std::vector<std::string> defs = {"MAX_LIGHTS " + std::to_string(batch_)};
-        if (nm) defs.push_back("NORMAL_MAP");
-        if (opts_.listing2_literal) defs.push_back("LISTING2_LITERAL");
-        if (!any_light) defs.push_back("LIGHT_POINT_ONLY");
-        // lighting.glsl: the view vector per light, the form each compiler ran fastest (forward
-        // single-pass is the baseline the deferred rows are held against, so it gets its best).
-        if (any_light && !caps_.software_rasterizer) defs.push_back("VIEW_PER_LIGHT");
-        prog_[nm] = Program(shader_dir_, "forward.vert", "forward.frag", defs);
+        prog_[nm] = Program(shader_dir_, "forward.vert", "forward.frag", program_defines(nm, 0));
         prog_[nm].use();
         prog_[nm].set("normaltex", 0);
         prog_[nm].set("colortex", 1);
@@ -86,8 +92,30 @@ void ForwardRenderer::build_programs(bool any_light) {
         static const char* names[5] = {"lightpos[0]", "lightcolor[0]", "lightdir[0]", "lightspot[0]", "lightatt[0]"};
         for (int k = 0; k < 5; ++k) loc_light_[nm][k] = glGetUniformLocation(prog_[nm].id(), names[k]);
     }
+    surface_progs_.clear();  // built again with the new light defines when drawn
+    surface_locs_.clear();
     gl_state().use_program(0);
-    any_light_ = any_light;
+}
+
+Program& ForwardRenderer::surface_program(bool normal_map, int surface) {
+    Program& p = surface_progs_[int(normal_map) + 2 * surface];
+    if (!p.id()) {
+        p = Program(shader_dir_, "forward.vert", "forward.frag", program_defines(normal_map, surface));
+        p.use();
+        p.set("normaltex", 0);
+        p.set("colortex", 1);
+        p.set("speculartex", 2);
+        static const char* names[5] = {"lightpos[0]", "lightcolor[0]", "lightdir[0]", "lightspot[0]", "lightatt[0]"};
+        std::array<GLint, 5>& loc = surface_locs_[p.id()];
+        for (int k = 0; k < 5; ++k) loc[size_t(k)] = glGetUniformLocation(p.id(), names[k]);
+    }
+    return p;
+}
+
+const GLint* ForwardRenderer::light_locations(const Program& prog) {
+    if (&prog == &prog_[0]) return loc_light_[0];
+    if (&prog == &prog_[1]) return loc_light_[1];
+    return surface_locs_.at(prog.id()).data();
 }
 
 bool ForwardRenderer::needs_any_light(const Scene& scene) {
@@ -183,20 +211,43 @@ bool ForwardRenderer::touches(size_t object, const Light& light) const {
 }
 
 Program& ForwardRenderer::use_material(const Scene& scene, size_t object) {
-    const int mi = gpu_->object_range(object).material;
+    const DrawRange& r = gpu_->object_range(object);
+    const int mi = r.material;
     const GpuMaterial& m = gpu_->material(mi);
-    Program& prog = prog_[m.normal_map ? 1 : 0];
+    Program& prog = r.surface() ? surface_program(m.normal_map, r.surface()) : prog_[m.normal_map ? 1 : 0];
     prog.use();
     set_forward_material(prog, m, scene.materials[mi].shininess);  // exact, not GpuMaterial's 8-bit code
+    if (r.cut_out) prog.set("alpha_cutoff", m.alpha_cutoff);
     return prog;
 }
 
 Program& ForwardRenderer::use_shadowed(const Scene& scene, size_t object, size_t light) {
-    const int mi = gpu_->object_range(object).material;
+    const DrawRange& r = gpu_->object_range(object);
+    const int mi = r.material;
     const GpuMaterial& m = gpu_->material(mi);
-    Program& prog = shadow_prog_[m.normal_map ? 1 : 0];
+    Program* p = &shadow_prog_[m.normal_map ? 1 : 0];
+    if (r.surface()) {  // the SHADOW form of the surface, built on first use
+        Program& sp = surface_shadow_progs_[int(m.normal_map) + 2 * r.surface()];
+        if (!sp.id()) {
+            std::vector<std::string> defs = {"MAX_LIGHTS 1"};
+            if (m.normal_map) defs.push_back("NORMAL_MAP");
+            if (opts_.listing2_literal) defs.push_back("LISTING2_LITERAL");
+            for (const std::string& d : shadow_lookup_defines(shadow_stage_->packed(), opts_.shadows.filter))
+                defs.push_back(d);
+            for (const std::string& d : surface_defines(r.surface())) defs.push_back(d);
+            sp = Program(shader_dir_, "forward.vert", "forward.frag", defs);
+            sp.use();
+            sp.set("normaltex", 0);
+            sp.set("colortex", 1);
+            sp.set("speculartex", 2);
+            sp.set("shadow_map", 4);
+        }
+        p = &sp;
+    }
+    Program& prog = *p;
     prog.use();
     set_forward_material(prog, m, scene.materials[mi].shininess);
+    if (r.cut_out) prog.set("alpha_cutoff", m.alpha_cutoff);
     prog.set("nlights", 1);
     prog.set("ambient", glm::vec3(0));
     set_light_params(prog, light_params_[light]);  // element 0 of forward.frag's arrays
@@ -206,7 +257,7 @@ Program& ForwardRenderer::use_shadowed(const Scene& scene, size_t object, size_t
 
 void ForwardRenderer::set_lights(Program& prog, const std::vector<int>& lights, size_t first, size_t count,
                                  glm::vec3 ambient) {
-    const int p = &prog == &prog_[1] ? 1 : 0;
+    const GLint* loc = light_locations(prog);
     std::vector<glm::vec4> v[5];
     for (auto& a : v) a.resize(count);
     for (size_t i = 0; i < count; ++i) {
@@ -217,7 +268,7 @@ void ForwardRenderer::set_lights(Program& prog, const std::vector<int>& lights, 
     prog.set("ambient", ambient);
     if (count)
         for (int k = 0; k < 5; ++k)
-            if (loc_light_[p][k] >= 0) glUniform4fv(loc_light_[p][k], GLsizei(count), glm::value_ptr(v[k][0]));
+            if (loc[k] >= 0) glUniform4fv(loc[k], GLsizei(count), glm::value_ptr(v[k][0]));
 }
 
 void ForwardRenderer::draw_object(size_t object, ForwardStats& st) {
@@ -313,24 +364,26 @@ void ForwardRenderer::draw_single(const Scene& scene, ForwardStats& st) {
                 (light_map_.empty() || !light_map_[i] ? lights : shadowed).push_back(int(i));
         st.light_object_pairs += int(lights.size() + shadowed.size());
         Program& prog = use_material(scene, m);  // in render()'s surface state
+        const DrawRange& range = gpu_->object_range(m);
+        RenderState lay = surface_state();
+        lay.program = prog.id();
+        gl_state().apply(faces_state(lay, range));  // two-sided objects: no culling
         size_t first = std::min(lights.size(), size_t(batch_));
         set_lights(prog, lights, 0, first, scene.ambient);
         draw_object(m, st);
         if (first < lights.size() || !shadowed.empty()) {
-            gl_state().apply(add_state(prog.id()));
+            gl_state().apply(faces_state(add_state(prog.id()), range));
             for (size_t k = first; k < lights.size(); k += size_t(batch_)) {
                 set_lights(prog, lights, k, std::min(size_t(batch_), lights.size() - k), glm::vec3(0));
                 draw_object(m, st);
             }
             for (int i : shadowed) {
                 Program& sp = use_shadowed(scene, m, size_t(i));
-                gl_state().apply(add_state(sp.id()));
+                gl_state().apply(faces_state(add_state(sp.id()), range));
                 draw_object(m, st);
                 unbind_shadow_map();
             }
-            RenderState lay = surface_state();
-            lay.program = prog.id();
-            gl_state().apply(lay);
+            gl_state().apply(faces_state(lay, range));
         }
     }
 }
@@ -345,8 +398,16 @@ void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
     depth.color_write = false;
     depth.program = prog_[0].id();
     gl_state().apply(depth);
-    gpu_->draw_all();
+    gpu_->draw_all();  // two-sided objects without culling
     ++st.passes;
+    // Cut-out objects discard in their own program's form, so the pre-pass keeps their cut parts out.
+    for (size_t i = gpu_->solid_ranges(); i < gpu_->ranges().size(); ++i) {
+        const DrawRange& r = gpu_->ranges()[i];
+        RenderState d = depth;
+        d.program = use_material(scene, r.object).id();
+        gl_state().apply(faces_state(d, r));
+        draw_object(r.object, st);
+    }
     check_gl_stage("forward: depth pre-pass");
 
     RenderState ambient = add_state(0);
@@ -356,6 +417,9 @@ void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
     for (size_t m = 0; m < scene.objects.size(); ++m) {
         if (gpu_->transparent(m)) continue;
         Program& prog = use_material(scene, m);
+        RenderState a = ambient;
+        a.program = prog.id();
+        gl_state().apply(faces_state(a, gpu_->object_range(m)));
         set_lights(prog, none, 0, 0, scene.ambient);
         draw_object(m, st);
     }
@@ -376,6 +440,7 @@ void ForwardRenderer::draw_multi(const Scene& scene, ForwardStats& st) {
                 Program& prog = use_material(scene, m);
                 set_lights(prog, one, 0, 1, glm::vec3(0));
             }
+            gl_state().apply(faces_state(add_state(gl_state().current().program), gpu_->object_range(m)));
             draw_object(m, st);
             ++st.light_object_pairs;
         }

@@ -15,7 +15,13 @@
 // ShadowStage the deferred renderer draws them with, and are shaded by forward.frag's SHADOW form,
 // one light a pass: single adds each shadowed light that reaches an object by a pass of its own on
 // that object (GL_EQUAL, as its overflow passes), multi's pass of a shadowed light is that form.
+// What a model brings (scene.h) is drawn as the deferred renderer draws it: a two-sided object
+// without culling, a back face's normal flipped; vertex colours times the diffuse colour; cut-out
+// fragments discarded in every pass (multi's depth pre-pass included), through forward.frag's
+// forms of shader_table.h surface_defines.
 #pragma once
+#include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -98,6 +104,12 @@ private:
     void draw_shadow_maps(const Scene& scene, ForwardStats& st);
     bool touches(size_t object, const Light& light) const;
     void build_programs(bool any_light);         // prog_ and loc_light_, with or without LIGHT_POINT_ONLY
+    // forward.frag's defines for a material with or without a normal map (prog_'s) and a surface.
+    std::vector<std::string> program_defines(bool normal_map, int surface) const;
+    // The program of a surface form (DrawRange::surface() != 0), built on first use.
+    Program& surface_program(bool normal_map, int surface);
+    // The light arrays' locations in prog (prog_'s or a surface form's).
+    const GLint* light_locations(const Program& prog);
     static bool needs_any_light(const Scene& scene);  // a light other than the tutorial's point light
     void copy_to_main();
 
@@ -114,6 +126,9 @@ private:
     std::unique_ptr<TransparentPass> transparent_;  // scenes with transparent materials
     std::unique_ptr<ShadowStage> shadow_stage_;     // scenes with `shadow` lights, shadows on
     Program shadow_prog_[2];                        // forward.frag's SHADOW form [normal map?]
+    std::map<int, Program> surface_progs_;          // surface forms by normal map + 2 x surface
+    std::map<int, Program> surface_shadow_progs_;   // the same of the SHADOW form
+    std::map<GLuint, std::array<GLint, 5>> surface_locs_;  // light_locations of the surface forms
     std::vector<ShadowLookup> maps_;                // this frame's, by LightDraw::shadow
     std::vector<const ShadowLookup*> light_map_;    // per frame, per scene light: its map (null: none)
     std::vector<ObjectBounds> bounds_;  // per object, world space: light-object culling
