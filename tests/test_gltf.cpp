@@ -617,6 +617,20 @@ TEST(Gltf, DecodeImageChecksTheHeaderFirst) {
     } catch (const dsr::Error& e) {
         EXPECT_NE(string(e.what()).find("cannot read image z.png: 100000 x 100000 pixels, expected at most"), string::npos) << e.what();
     }
+    // Cut inside a chunk, or damaged: refused from the chunk walk before the decoder reads past
+    // the end (a fuzz finding: OpenImageIO's PNG reader leaked its message there).
+    const string good = png_bytes(8, 8, {1, 0, 0, 1});
+    for (const string& bad : {good.substr(0, good.size() - 20), good.substr(0, 40), good.substr(0, good.size() - 12)}) {
+        try {
+            dsr::decode_image(bad, "cut.png");
+            ADD_FAILURE();
+        } catch (const dsr::Error& e) {
+            EXPECT_NE(string(e.what()).find("cannot read image cut.png: cut short"), string::npos) << e.what();
+        }
+    }
+    string damaged = good;
+    damaged[good.size() - 30] ^= 0x55;
+    EXPECT_THROW(dsr::decode_image(damaged, "bad.png"), dsr::Error);
     try {
         dsr::decode_image("GIF89a....", "w.gif");
         ADD_FAILURE();
