@@ -11,7 +11,7 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
 DEB_PACKAGES := g++ make pkg-config libosmesa6-dev libglm-dev libopenimageio-dev \
                 nlohmann-json3-dev libgtest-dev libtinyobjloader-dev libegl-dev \
-                libglfw3-dev libimgui-dev libgl1-mesa-dri xvfb
+                libglfw3-dev libimgui-dev libgl1-mesa-dri xvfb libtinygltf-dev assimp-testmodels
 
 # GL context backends, linked per executable and never into the core (src/platform/context.h):
 # the headless executables get OSMesa and EGL (on Mesa both dispatch through the one shared
@@ -119,13 +119,16 @@ test: deps
 ASAN_FLAGS := -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined
 # The OBJ loader: obj_loader.cpp and the internal files it is split into.
 OBJ_LOADER_SRC := src/scene/obj_loader.cpp src/scene/obj_text.cpp src/scene/obj_check.cpp src/scene/mtl_check.cpp \
-                  src/scene/obj_geometry.cpp src/scene/height_map.cpp
+                  src/scene/obj_geometry.cpp src/scene/obj_triangulate.cpp src/scene/height_map.cpp
+# The glTF reader (tinygltf compiled from Debian's header in tinygltf_impl.cpp), and what both
+# model readers' results become (model_data).
+GLTF_LOADER_SRC := $(sort $(wildcard src/scene/gltf_*.cpp)) src/scene/tinygltf_impl.cpp src/scene/model_data.cpp
 # The readers every user file goes through (user_file), image output (output_set) and the
 # decoders' stderr (stderr_capture), which the loaders need.
 USER_FILE_SRC := src/scene/user_file.cpp src/scene/output_set.cpp src/scene/stderr_capture.cpp
 ASAN_SRC := src/scene/light_law.cpp $(OBJ_LOADER_SRC) src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/framing.cpp src/scene/shapes.cpp \
             src/scene/camera.cpp src/scene/image_io.cpp src/scene/image_extension.cpp $(USER_FILE_SRC) \
-            tests/fuzz/tinyobj_impl.cpp tests/test_obj.cpp src/scene/gltf_loader.cpp src/scene/gltf_json.cpp src/scene/gltf_accessors.cpp src/scene/gltf_materials.cpp src/scene/gltf_meshes.cpp src/scene/gltf_nodes.cpp src/scene/tinygltf_impl.cpp tests/test_gltf.cpp
+            tests/fuzz/tinyobj_impl.cpp tests/test_obj.cpp $(GLTF_LOADER_SRC) tests/test_gltf.cpp
 ASAN_OBJ := $(ASAN_SRC:%.cpp=$(BUILD)/asan/obj/%.o)
 
 $(BUILD)/asan/obj/%.o: %.cpp
@@ -162,7 +165,7 @@ FUZZ_FLAGS := -std=c++17 -O1 -g -fno-omit-frame-pointer -Isrc -DDSR_SOURCE_DIR=\
 # command line's value helpers.
 FUZZ_LIB_SRC := src/scene/light_law.cpp $(OBJ_LOADER_SRC) src/scene/tangents.cpp src/scene/scene_file.cpp src/scene/framing.cpp src/scene/shapes.cpp \
                 src/scene/camera.cpp src/scene/image_io.cpp src/scene/image_extension.cpp $(USER_FILE_SRC) \
-                tests/fuzz/tinyobj_impl.cpp src/scene/gltf_loader.cpp src/scene/gltf_json.cpp src/scene/gltf_accessors.cpp src/scene/gltf_materials.cpp src/scene/gltf_meshes.cpp src/scene/gltf_nodes.cpp src/scene/tinygltf_impl.cpp \
+                tests/fuzz/tinyobj_impl.cpp $(GLTF_LOADER_SRC) \
                 src/viewer/script.cpp src/deferred/option_table.cpp src/deferred/paths.cpp src/deferred/depth_codec.cpp \
                 src/deferred/view.cpp src/app/args.cpp src/app/render_flags.cpp
 FUZZ_LIB_OBJ := $(FUZZ_LIB_SRC:%.cpp=$(BUILD)/fuzz/obj/%.o)

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_fixture.h"
+#include "deferred/option_table.h"
 #include "dsr_error.h"
 #include "render_fixture.h"
 #include "scene/framing.h"
@@ -159,9 +160,9 @@ TEST(SceneBounds, TransformedVerticesAndRefusals) {
     EXPECT_THROW(apply_camera_fit(nan, CameraFit{}), Error);
 }
 
-TEST(SceneBounds, ModelPathsAreObjInAnyCase) {
-    for (const char* p : {"a.obj", "dir/B.OBJ", "c.Obj", ".obj"}) EXPECT_TRUE(is_model_path(p)) << p;
-    for (const char* p : {"a.scene", "obj", "a.obj.scene", "a.objx", ""}) EXPECT_FALSE(is_model_path(p)) << p;
+TEST(SceneBounds, ModelPathsAreObjOrGltfInAnyCase) {
+    for (const char* p : {"a.obj", "dir/B.OBJ", "c.Obj", ".obj", "m.gltf", "M.GLB", "d/x.Gltf"}) EXPECT_TRUE(is_model_path(p)) << p;
+    for (const char* p : {"a.scene", "obj", "a.obj.scene", "a.objx", "", "a.gltf.scene", "glb"}) EXPECT_FALSE(is_model_path(p)) << p;
 }
 
 // `dsr render MODEL.obj`'s scene at 1e-3, 1 and 1e4 units, at the origin and +-1e6 away (and a
@@ -377,4 +378,77 @@ TEST_F(Framing, CommandLine) {
     EXPECT_NE(r.output.find("expected an output folder"), std::string::npos) << r.output;
 }
 
+// The rig's key light casts a shadow, so the model stands on its ground: the ground right under
+// the model is darker than with the key's shadow off, and the shadow falls on the side away from
+// the key (in the image: left of the model, as the key lights from the front-right).
+TEST_F(Framing, KeyLightShadowsTheGround) {
+    const std::string path = write_file(dir_ + "/m.obj", model_obj(1, {0, 0, 0}));
+    const Scene s = load_scene(path);
+    ASSERT_EQ(s.lights.size(), 3u);
+    EXPECT_TRUE(s.lights[0].shadow.on) << "the key";
+    EXPECT_FALSE(s.lights[1].shadow.on);
+    EXPECT_FALSE(s.lights[2].shadow.on);
+    Scene unshadowed = s;
+    unshadowed.lights[0].shadow.on = false;
+    const Image with = test::render_scene(s, 96, 96, RenderOptions{}.resolved(s)).image;
+    const Image without = test::render_scene(unshadowed, 96, 96, RenderOptions{}.resolved(unshadowed)).image;
+    int darker = 0;
+    for (size_t i = 0; i < with.rgba.size(); i += 4) darker += with.rgba[i] + 2.0f / 255 < without.rgba[i];
+    EXPECT_GT(darker, 96 * 96 / 50) << "the shadow darkens at least 2% of the image";
+}
+
+// --from picks the side the model is seen from: `back` puts the camera on -Z of the centre, a
+// direction X,Y,Z puts it along that direction, the framing's fill unchanged.
+TEST_F(Framing, FromPicksTheSide) {
+    const std::string path = write_file(dir_ + "/m.obj", model_obj(1, {0, 0, 0}));
+    const Scene front = load_scene(path);
+    LoadOptions o;
+    o.from = glm::vec3(-1, 1, -2);
+    const Scene back = load_scene(path, o);
+    const glm::vec3 c = front.camera.target;
+    EXPECT_GT(front.camera.pos.z, c.z);
+    EXPECT_LT(back.camera.pos.z, c.z);
+    EXPECT_NEAR(glm::length(front.camera.pos - c), glm::length(back.camera.pos - c), 1e-4f);
+    test::RunResult r = test::run("render " + path + " --from back --size 32x32 -o " + dir_ + "/b.png --stats " + dir_ + "/b.json");
+    ASSERT_EQ(r.status, 0) << r.output;
+    r = test::run("render " + path + " --from 0,1,0 --size 32x32 -o " + dir_ + "/t.png");
+    ASSERT_EQ(r.status, 0) << r.output;
+}
+
+// --ambient replaces the ambient term; --strict turns the first warning into the error.
+TEST_F(Framing, AmbientAndStrict) {
+    const std::string path = write_file(dir_ + "/m.obj", model_obj(1, {0, 0, 0}) + "l 1 2\n");
+    LoadOptions o;
+    o.ambient = glm::vec3(0.5f, 0.25f, 0);
+    const Scene s = load_scene(path, o);
+    EXPECT_EQ(s.ambient, glm::vec3(0.5f, 0.25f, 0));
+    ASSERT_FALSE(s.warnings.empty()) << "the l line is skipped with a warning";
+    o.strict = true;
+    try {
+        load_scene(path, o);
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), s.warnings.front() + " (--strict: a warning is an error)");
+    }
+}
+
+// A model's MTL and textures are inputs of the run like the OBJ: no output may replace them.
+TEST_F(Framing, ModelFilesAreInputs) {
+    write_file(dir_ + "/m.mtl", "newmtl a\nKd 1 1 1\nmap_Kd t.png\n");
+    Image t;
+    t.width = t.height = 2;
+    t.rgba.assign(16, 1.0f);
+    write_image(dir_ + "/t.png", t);
+    const std::string path = write_file(dir_ + "/m.obj", "mtllib m.mtl\n" + model_obj(1, {0, 0, 0}) + "usemtl a\nf 1 2 3\n");
+    const Scene s = load_scene(path);
+    std::set<std::string> in(s.inputs.begin(), s.inputs.end());
+    EXPECT_TRUE(in.count(path)) << "the OBJ";
+    EXPECT_TRUE(in.count(dir_ + "/m.mtl")) << "its MTL";
+    EXPECT_TRUE(in.count(dir_ + "/t.png")) << "its texture";
+    const test::RunResult r = test::run("render " + path + " --size 16x16 -o " + dir_ + "/t.png");
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find("t.png"), std::string::npos) << r.output;
+}
+
 }  // namespace
+

@@ -5,6 +5,7 @@
 #include "scene/user_file.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include "gl/cap_names.h"
 #include "gl/check.h"
 #include "gl/state.h"
+#include "scene/framing.h"
 
 namespace dsr {
 
@@ -105,7 +107,67 @@ void append(std::vector<Flag>& to, std::vector<Flag> more) {
     for (Flag& f : more) to.push_back(std::move(f));
 }
 
+// --from's named sides, as a viewer names them: the view direction from the model's centre.
+const std::vector<std::pair<std::string, glm::vec3>>& from_sides() {
+    static const std::vector<std::pair<std::string, glm::vec3>> sides = {
+        {"front", kFitFrom}, {"back", {-1, 1, -2}}, {"left", {-2, 1, 1}}, {"right", {2, 1, -1}},
+        {"above", {0, 1, 0}}, {"below", {0, -1, 0}}};
+    return sides;
+}
+
 }  // namespace
+
+std::vector<Flag> load_flags(LoadOptions& load) {
+    std::string names;
+    for (const auto& [n, d] : from_sides()) names += (names.empty() ? "" : "|") + n;
+    Flag from{{"--from"}, "SIDE", names + " or X,Y,Z", "front",
+              "a model given as the scene is framed from this side of its centre: front is +Z (from the right "
+              "and above), back is -Z, or a direction X,Y,Z; it also replaces a glTF file's own camera",
+              {}, [&load](Args& a, const std::string& flag) {
+                  const std::string v = a.value(flag);
+                  for (const auto& [n, d] : from_sides())
+                      if (v == n) return void(load.from = d);
+                  glm::vec3 d(0);
+                  char* end = nullptr;
+                  const char* p = v.c_str();
+                  for (int i = 0; i < 3; ++i) {
+                      d[i] = std::strtof(p, &end);
+                      if (end == p || !std::isfinite(d[i]) || (i < 2 && *end != ',')) {
+                          d = glm::vec3(0);
+                          break;
+                      }
+                      p = end + (i < 2 ? 1 : 0);
+                  }
+                  if (*end != '\0' || !(glm::length(d) > 1e-6f) || !std::isfinite(glm::length(d)))
+                      a.fail(flag + ": expected " + "one of front, back, left, right, above, below or a non-zero "
+                                    "direction X,Y,Z, got " + quote(v));
+                  load.from = d;
+              }};
+    Flag camera{{"--camera"}, "N", "0..1000", "the file's first camera",
+                "a glTF model's camera N (from 0) instead of its first", {}, [&load](Args& a, const std::string& flag) {
+                    load.camera = a.int_value(flag, 0, 1000);
+                }};
+    Flag ambient{{"--ambient"}, "R,G,B", "each 0..1000", "the scene's (a glTF file's: none)",
+                 "the ambient colour (Listing 15), replacing the scene's; a glTF file has none of its own",
+                 {}, [&load](Args& a, const std::string& flag) {
+                     const std::string v = a.value(flag);
+                     glm::vec3 c(0);
+                     char* end = nullptr;
+                     const char* p = v.c_str();
+                     bool ok = true;
+                     for (int i = 0; i < 3 && ok; ++i) {
+                         c[i] = std::strtof(p, &end);
+                         ok = end != p && std::isfinite(c[i]) && c[i] >= 0 && c[i] <= 1000 && (i == 2 ? *end == '\0' : *end == ',');
+                         p = end + 1;
+                     }
+                     if (!ok) a.fail(flag + ": expected three numbers R,G,B in [0, 1000], got " + quote(v));
+                     load.ambient = c;
+                 }};
+    return {switch_flag("--strict", load.strict,
+                        "refuse what the readers would substitute with a warning (an unknown material, a missing "
+                        "texture, an unknown statement): the first warning is an error"),
+            from, camera, ambient};
+}
 
 std::string caps_with_environment(const std::string& flags) {
     const char* env = std::getenv("DSR_CAPS");
@@ -120,7 +182,8 @@ std::string RenderSettings::output() const {
 
 Command render_command(RenderSettings& s) {
     Command c{"render", "render SCENE with the deferred shader into one image",
-              {scene_operand("scene file (default data/default.scene), or a model FILE.obj framed with a ground and three lights")},
+              {scene_operand("scene file (default data/default.scene), or a model FILE.obj, FILE.gltf or FILE.glb "
+                             "framed with a ground and three lights")},
               one_scene(s.scene), {}, &s.options, ""};
     c.flags = {
         file_flag({"-o", "--output"}, "FILE", s.out, {".png", ".exr", ".tif", ".tiff", ".jpg", ".ppm"},
@@ -139,6 +202,7 @@ Command render_command(RenderSettings& s) {
         context_flag(s.context),
         egl_device_flag(s.context),
     };
+    append(c.flags, load_flags(s.load));
     append(c.flags, gl_debug_flags());
     return c;
 }
@@ -282,7 +346,8 @@ Command compare_command(CompareSettings& s) {
 
 Command view_command(ViewerConfig& s) {
     Command c{"view", "the renderer in a window (GLFW, GL 2.1) with a panel of every option, buffer and cost",
-              {scene_operand("scene file (default data/default.scene), or a model FILE.obj framed with a ground and three lights")},
+              {scene_operand("scene file (default data/default.scene), or a model FILE.obj, FILE.gltf or FILE.glb "
+                             "framed with a ground and three lights")},
               one_scene(s.scene_path), {}, &s.options,
               "keys:\n"
               "  W A S D, Q E            move; Q/E down/up; shift: 4x faster; scroll: speed\n"
@@ -311,6 +376,7 @@ Command view_command(ViewerConfig& s) {
                   "window open"),
         caps_flag(s.caps_list),
     };
+    append(c.flags, load_flags(s.load));
     append(c.flags, gl_debug_flags());
     return c;
 }

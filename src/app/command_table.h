@@ -36,6 +36,7 @@ struct RenderSettings {
     int frames = 1;
     std::string stats;                // --stats FILE.json; empty: none
     std::optional<LightSpec> lights;  // --lights; none: the scene's own
+    LoadOptions load;                 // --strict, --from, --camera, --ambient
     RenderOptions options;            // the option table's flags
     std::string caps;                 // --caps, added to $DSR_CAPS
     ContextSettings context;
@@ -118,6 +119,9 @@ Command view_command(ViewerConfig& s);  // dsr_view's (app/viewer_main.cpp)
 const std::vector<Command>& command_table();
 // The entry of `name`; null for an unknown command.
 const Command* find_command(const std::string& name);
+
+// --strict, --from, --camera and --ambient: how render and view read a scene or model.
+std::vector<Flag> load_flags(LoadOptions& load);
 
 // $DSR_CAPS, then `flags` (--caps), comma-separated.
 std::string caps_with_environment(const std::string& flags);

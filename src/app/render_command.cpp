@@ -44,7 +44,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     if (!stats_path.empty()) outputs.add("--stats", stats_path);
 
     const double load_start = now_ms();
-    Scene scene = load_scene(scene_path);  // every input error surfaces before any output
+    Scene scene = load_scene(scene_path, flags.load);  // every input error surfaces before any output
     add_scene_inputs(outputs, scene.inputs);
     if (flags.lights) scene = bench_scene(scene, *flags.lights);  // the bench's lights (bench_scenes.h)
     const double load_ms = now_ms() - load_start;
@@ -98,6 +98,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     };
     nlohmann::ordered_json j;
     j["scene"] = scene_path;
+    j["warnings"] = scene.warnings.size();  // what the readers substituted or ignored (stderr has each)
     j["size"] = {w, h};
     j["out_size"] = {out_w, out_h};
     j["view"] = view_name(view);

@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "dsr_error.h"
-#include "scene/obj_loader.h"
+#include "scene/model_data.h"
 
 namespace dsr {
 
@@ -15,35 +16,10 @@ namespace {
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// Appends the model's textures, materials (maps re-indexed) and material groups to `scene`,
-// with one identity instance drawing every group, as a `mesh FILE` line would.
-void add_model(Scene& scene, ObjModel obj) {
-    const int tex_base = int(scene.textures.size()), mat_base = int(scene.materials.size());
-    for (size_t i = 0; i < obj.textures.size(); ++i) {
-        scene.textures.push_back(std::move(obj.textures[i]));
-        scene.texture_paths.push_back(obj.texture_paths[i]);
-    }
-    for (Material m : obj.materials) {
-        for (int* map : {&m.diffuse_map, &m.normal_map, &m.specular_map})
-            if (*map >= 0) *map += tex_base;
-        scene.materials.push_back(m);
-    }
-    MeshModel model;
-    model.path = obj.path;
-    model.triangles = obj.triangles;
-    model.first_mesh = scene.meshes.size();
-    model.mesh_count = obj.groups.size();
-    MeshInstance inst;
-    inst.model = int(scene.models.size());
-    inst.first_object = scene.objects.size();
-    for (Mesh& g : obj.groups) {
-        g.material += mat_base;
-        scene.add(std::move(g));
-    }
-    inst.object_count = scene.objects.size() - inst.first_object;
-    for (std::string& w : obj.warnings) scene.warnings.push_back(std::move(w));
-    scene.models.push_back(std::move(model));
-    scene.instances.push_back(inst);
+std::string number_text(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+    return buf;
 }
 
 Light point_light(const glm::dvec3& pos, glm::vec3 colour, double radius) {
@@ -138,24 +114,61 @@ Camera reframe(const Scene& scene, const Camera& current, float aspect) {
     return c;
 }
 
-bool is_model_path(const std::string& path) {
-    if (path.size() < 4) return false;
-    std::string tail = path.substr(path.size() - 4);
-    for (char& ch : tail) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    return tail == ".obj";
+bool is_model_path(const std::string& path) { return is_model_file(path); }
+
+namespace {
+
+// The file's camera `index` (GltfCamera), its far plane set from the bounds where the file left
+// it infinite, and near raised to keep far / near within the scene format's limit.
+Camera file_camera(const std::string& path, const std::vector<GltfCamera>& cams, int index, const SceneBounds& b) {
+    if (index >= int(cams.size()))
+        throw Error(path + ": --camera " + std::to_string(index) + ": expected a camera index in 0.." +
+                    std::to_string(int(cams.size()) - 1) + " (the file has " + std::to_string(cams.size()) + ")");
+    Camera c = cams[size_t(index)].camera;
+    const double reach = glm::length(glm::dvec3(c.pos) - b.centre) + b.radius;
+    if (!cams[size_t(index)].far_given) c.far_plane = float(std::max(1.05 * reach, 2.0 * double(c.near_plane)));
+    c.near_plane = std::max(c.near_plane, float(double(c.far_plane) / kMaxFarOverNear));
+    return c;
 }
 
-Scene model_scene(const std::string& path) {
+}  // namespace
+
+Scene model_scene(const std::string& path, const LoadOptions& options, bool gltf) {
     Scene s;
     s.path = path;
-    add_model(s, load_obj(path));
+    ModelData data = read_model(path, {}, gltf);
+    const std::vector<GltfCamera> cameras = data.cameras;
+    const std::vector<Light> file_lights = data.lights;
+    const int model = add_model_data(s, std::move(data));
+    s.instances.push_back(place_model(s, model, glm::dmat4(1.0), -1, false));
     const SceneBounds b = scene_bounds(s);
     const std::string why = unframeable(b);
     if (!why.empty()) throw Error(path + ": expected a model with finite, non-empty bounds, got " + why);
+    // Vertices are 32-bit floats: a model narrower than about one float step at its distance from
+    // the origin lost its shape when it was read, and one smaller than kMinModelRadius cannot be
+    // lit in 32-bit (squared distances underflow).
+    const double reach = std::max(glm::length(b.min), glm::length(b.max));
+    if (b.radius < kModelPrecision * reach)
+        throw Error(path + ": expected a model wider than 1e-7 of its distance from the origin (its "
+                    "coordinates are 32-bit floats), got a radius of " + number_text(b.radius) + " at " +
+                    number_text(reach) + ": move it nearer the origin");
+    if (b.radius < kMinModelRadius)
+        throw Error(path + ": expected a model at least " + number_text(kMinModelRadius) +
+                    " units across, got a radius of " + number_text(b.radius) + ": scale it up");
     const double r = b.radius;
-    s.camera = fit_camera(b, kFitFrom, kFitFovDeg, 1.0f);
-    s.ambient = glm::vec3(0.2f);
+    const bool own_camera = !cameras.empty() && !options.from;
+    if (options.camera >= 0 && cameras.empty())
+        throw Error(path + ": --camera " + std::to_string(options.camera) + ": expected a model with cameras, got none");
+    s.camera = own_camera ? file_camera(path, cameras, std::max(options.camera, 0), b)
+                          : fit_camera(b, options.from.value_or(kFitFrom), kFitFovDeg, 1.0f);
     s.background = {0.23f, 0.27f, 0.34f};
+    if (!file_lights.empty()) {
+        // The file's lights replace the rig; glTF has no ambient term.
+        s.lights = file_lights;
+        s.ambient = options.ambient.value_or(glm::vec3(0.0f));
+        return s;
+    }
+    s.ambient = options.ambient.value_or(glm::vec3(0.2f));
 
     // The ground: a grey square just under the lowest point (a thousandth of the radius, so a
     // model's flat base does not fight it for depth), centred under the bounding sphere.
@@ -172,17 +185,22 @@ Scene model_scene(const std::string& path) {
     shape.centre = glm::vec3(at);
     shape.size = glm::vec3(float(side), 0, float(side));
     s.add(make_plane(float(side), int(s.materials.size() - 1)), glm::translate(glm::dmat4(1.0), at), shape);
-    // far reaches the ground's farthest corner (the sphere alone sets it otherwise).
-    double far = s.camera.far_plane;
-    for (int c = 0; c < 4; ++c) {
-        const glm::dvec3 corner = at + glm::dvec3((c & 1) ? side / 2 : -side / 2, 0, (c & 2) ? side / 2 : -side / 2);
-        far = std::max(far, 1.05 * glm::length(corner - glm::dvec3(s.camera.pos)));
+    if (!own_camera) {
+        // far reaches the ground's farthest corner (the sphere alone sets it otherwise).
+        double far = s.camera.far_plane;
+        for (int c = 0; c < 4; ++c) {
+            const glm::dvec3 corner = at + glm::dvec3((c & 1) ? side / 2 : -side / 2, 0, (c & 2) ? side / 2 : -side / 2);
+            far = std::max(far, 1.05 * glm::length(corner - glm::dvec3(s.camera.pos)));
+        }
+        s.camera.far_plane = float(far);
     }
-    s.camera.far_plane = float(far);
 
     // The rig, in bounding radii from the centre; each radius reaches past the ground's corners.
+    // The key light casts a shadow (scene.h LightShadow), so the model stands on the ground.
     const glm::dvec3 c = b.centre;
-    s.lights.push_back(point_light(c + 3.0 * r * glm::normalize(glm::dvec3(1.5, 2.0, 1.2)), {1.0f, 0.95f, 0.85f}, 10 * r));
+    Light key = point_light(c + 3.0 * r * glm::normalize(glm::dvec3(1.5, 2.0, 1.2)), {1.0f, 0.95f, 0.85f}, 10 * r);
+    key.shadow.on = true;
+    s.lights.push_back(key);
     s.lights.push_back(point_light(c + 3.0 * r * glm::normalize(glm::dvec3(-2.0, 0.6, 1.0)), {0.30f, 0.36f, 0.48f}, 8 * r));
     s.lights.push_back(point_light(c + 3.0 * r * glm::normalize(glm::dvec3(-0.6, 1.4, -2.0)), {0.55f, 0.55f, 0.6f}, 7 * r));
     return s;

@@ -58,16 +58,26 @@ Camera reframe(const Scene& scene, const Camera& current, float aspect);
 // The material model_scene gives its ground plane.
 inline const char* const kGroundMaterial = "(ground)";
 
-// A model is a scene: the OBJ file at `path` drawn as it is (object space = world space), with
-// the camera fit_camera(kFitFrom, kFitFovDeg, aspect 1) gives, a ground plane just under its
-// lowest point (a square 8 bounding radii across, neutral grey, kGroundMaterial), and three
-// point lights with Equation 2's radius, placed and sized from the bounding sphere: a warm key
-// from the front-right above, a dim cool fill from the left, a rim light from behind. Throws
-// dsr::Error naming the file: the OBJ loader's errors, or "PATH: expected a model with finite,
-// non-empty bounds, got <why>".
-Scene model_scene(const std::string& path);
+// A model is a scene: the OBJ or glTF file at `path` (glTF also when `gltf`, whatever its name)
+// drawn as it is (object space = world space). The camera: the file's first camera
+// (options.camera picks another), else fit_camera(options.from or kFitFrom, kFitFovDeg, aspect
+// 1). The lights: the file's own (glTF's KHR_lights_punctual, with no ambient term), else a
+// ground plane just under its lowest point (a square 8 bounding radii across, neutral grey,
+// kGroundMaterial) and three point lights with Equation 2's radius, placed and sized from the
+// bounding sphere: a warm key from the front-right above casting a shadow, a dim cool fill from
+// the left, a rim light from behind. options.ambient replaces the ambient term. Throws dsr::Error
+// naming the file: the reader's errors, or "PATH: expected a model with finite, non-empty bounds,
+// got <why>", or a model too small, or too narrow for its distance from the origin, to draw in
+// 32-bit floats (kModelPrecision, kMinModelRadius).
+Scene model_scene(const std::string& path, const LoadOptions& options = {}, bool gltf = false);
 
-// True for a path ending ".obj" in any case: where a scene is expected, such a path is a model.
+// A model's bounding radius must be at least kModelPrecision times its farthest point's distance
+// from the origin (about one step of a 32-bit float there), and at least kMinModelRadius.
+constexpr double kModelPrecision = 1e-7;
+constexpr double kMinModelRadius = 1e-12;
+
+// True for a path ending ".obj", ".gltf" or ".glb" in any case: where a scene is expected, such a
+// path is a model.
 bool is_model_path(const std::string& path);
 
 }  // namespace dsr

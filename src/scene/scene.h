@@ -147,13 +147,20 @@ struct Object {
     bool two_sided = false;
 };
 
-// An OBJ model as parsed: its material groups are Scene::meshes[first_mesh, first_mesh +
-// mesh_count), in object space. Parsed once per resolved path however many `mesh` lines name it
-// (scene/obj_loader.h).
+// A model file (OBJ or glTF) as read: its meshes are Scene::meshes[first_mesh, first_mesh +
+// mesh_count), in object space. Read once per resolved path however many `mesh` lines name it
+// (scene/model_data.h).
+// A glTF model's meshes may be drawn several times each, by nodes with their own transforms:
+// `placements` lists what one instance draws (an OBJ's: each group once, at identity).
 struct MeshModel {
     std::string path;  // as resolved
     size_t first_mesh = 0, mesh_count = 0;
-    size_t triangles = 0;
+    size_t triangles = 0;  // drawn by one instance: over placements
+    struct Placement {
+        size_t mesh = 0;        // index into Scene::meshes
+        glm::dmat4 model{1.0};  // in the model's space; rigid with a uniform scale
+    };
+    std::vector<Placement> placements;
 };
 
 // One `mesh` line: its model, transform and material override; it draws
@@ -215,11 +222,21 @@ constexpr size_t kMaxSceneTexels = size_t(1) << 26;   // all textures together: 
 // Past this ratio of a triangle's longest edge to the camera's distance, load_scene warns.
 constexpr double kMaxEdgeOverDistance = 1e5;
 
-// Parses a scene file (format in docs/scene-format.md); a path ending .obj is a model, framed by
-// model_scene (scene/framing.h). Throws dsr::Error whose message is
+// How a scene or model is read: the render and view commands' --strict, --from, --camera and
+// --ambient (docs/scene-format.md, "Models as scenes").
+struct LoadOptions {
+    bool strict = false;                // the first warning is an error, as it was before dsr substituted
+    std::optional<glm::vec3> from;      // a framed model's view direction (framing.h kFitFrom)
+    int camera = -1;                    // a glTF's camera N (0-based); -1: its first, if it has one
+    std::optional<glm::vec3> ambient;   // replaces the scene's ambient term
+};
+
+// Parses a scene file (format in docs/scene-format.md); a path ending .obj, .gltf or .glb is a
+// model, framed by model_scene (scene/framing.h). Throws dsr::Error whose message is
 // "FILE:LINE: expected ..., got ..." for any mistake; textures are loaded here.
-// Warnings (statements of OBJ/MTL files dsr ignores) are in Scene::warnings and printed to stderr.
-Scene load_scene(const std::string& path);
+// Warnings (what the readers ignored or substituted) are in Scene::warnings and printed to
+// stderr, one line each; with options.strict the first is thrown instead.
+Scene load_scene(const std::string& path, const LoadOptions& options = {});
 // The same from text in memory: `path` names it in messages and resolves relative files;
 // warnings are only collected.
 Scene parse_scene(const std::string& path, const std::string& text);

@@ -5,6 +5,7 @@
 // projection, the culling planes, the depth codecs) ever meets a value it cannot represent; the
 // scene's triangles and texels are counted against their budgets before anything is allocated.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,12 +18,14 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "dsr_error.h"
 #include "scene/framing.h"
 #include "scene/light_law.h"
-#include "scene/obj_loader.h"
+#include "scene/model_data.h"
 #include "scene/scene.h"
 #include "scene/user_file.h"
 
@@ -407,105 +410,81 @@ private:
         object_lines_.push_back({line.number(), object});
     }
 
-    // mesh FILE.obj [scale S] [at X Y Z] [rotate_y DEGREES] [material NAME]
+    // mesh FILE [scale S] [at X Y Z] [rotate_y DEGREES] [material NAME] [one-sided]
+    // FILE: an OBJ (.obj) or glTF 2.0 (.gltf, .glb) model (scene/model_data.h).
     void mesh(Line& line) {
-        const std::string file = line.word("an OBJ file name");
+        const std::string file = line.word("a model file name (.obj, .gltf or .glb)");
         std::filesystem::path p(file);
         if (p.is_relative()) p = dir_ / p;
         const std::string resolved = p.lexically_normal().string();
-        const std::vector<std::string> keys = {"scale", "at", "rotate_y", "material"};
+        const std::vector<std::string> keys = {"scale", "at", "rotate_y", "material", "one-sided"};
         std::set<std::string> seen;
         MeshInstance inst;
         inst.line = line.number();
+        bool one_sided = false;
         while (!line.done()) {
             const std::string k = line.key(keys, seen);
             if (k == "scale") inst.scale = line.positive("mesh scale");
             else if (k == "at") inst.at = glm::dvec3(line.vec3("mesh at"));
             else if (k == "rotate_y") inst.rotate_y_deg = line.number("mesh rotate_y (degrees)");
+            else if (k == "one-sided") one_sided = true;
             else inst.material = material_named(line);
         }
-        // The same file is parsed once (cached by resolved path), its materials and textures
+        if (!is_model_file(file)) line.expected_last("a model file ending .obj, .gltf or .glb");
+        // The same file is read once (cached by resolved path), its materials and textures
         // added to the scene once.
         auto cached = model_index_.find(resolved);
         if (cached == model_index_.end()) {
-            ObjModel obj;
-            ObjOptions options;
-            // What is left of the scene's budgets, checked by the OBJ reader before it allocates.
-            options.max_triangles = kMaxSceneTriangles - triangles_;
-            options.max_texels = kMaxSceneTexels - texels_;
-            options.budget_note = "the scene's budget of " + count(kMaxSceneTriangles) + " triangles and " +
-                                  count(kMaxSceneTexels) + " texels has " + count(options.max_triangles) + " and " +
-                                  count(options.max_texels) + " left";
+            ModelData model;
+            ModelBudget budget;
+            // What is left of the scene's budgets, checked by the reader before it allocates.
+            budget.max_triangles = kMaxSceneTriangles - triangles_;
+            budget.max_texels = kMaxSceneTexels - texels_;
+            budget.note = "the scene's budget of " + count(kMaxSceneTriangles) + " triangles and " +
+                          count(kMaxSceneTexels) + " texels has " + count(budget.max_triangles) + " and " +
+                          count(budget.max_texels) + " left";
             try {
-                obj = load_obj(resolved, options);
+                model = read_model(resolved, budget);
             } catch (const Error& e) {
-                line.fail("expected a readable OBJ file for mesh, got " + quote(file) + ": " + e.what());
+                line.fail("expected a readable model file for mesh, got " + quote(file) + ": " + e.what());
             }
-            for (const std::string& f : obj.inputs) scene_.inputs.push_back(f);
-            std::vector<int> tex(obj.textures.size());
-            for (size_t i = 0; i < obj.textures.size(); ++i) {
-                tex[i] = -1;
-                for (size_t j = 0; j < scene_.texture_paths.size() && tex[i] < 0; ++j)
-                    if (scene_.texture_paths[j] == obj.texture_paths[i]) tex[i] = int(j);
-                if (tex[i] < 0) {
-                    texels_ += size_t(obj.textures[i].width) * size_t(obj.textures[i].height);
-                    scene_.textures.push_back(std::move(obj.textures[i]));
-                    scene_.texture_paths.push_back(obj.texture_paths[i]);
-                    tex[i] = int(scene_.textures.size() - 1);
-                }
-            }
-            const int base = int(scene_.materials.size());
-            for (Material m : obj.materials) {
-                for (int* map : {&m.diffuse_map, &m.normal_map, &m.specular_map})
-                    if (*map >= 0) *map = tex[size_t(*map)];
-                scene_.materials.push_back(m);
-                material_lines_.push_back(line.number());
-            }
-            MeshModel model;
-            model.path = resolved;
-            model.triangles = obj.triangles;
-            model.first_mesh = scene_.meshes.size();
-            model.mesh_count = obj.groups.size();
-            for (Mesh& g : obj.groups) {
-                g.material += base;
-                scene_.meshes.push_back(std::move(g));
-            }
-            for (std::string& w : obj.warnings) scene_.warnings.push_back(std::move(w));
-            scene_.models.push_back(std::move(model));
-            cached = model_index_.emplace(resolved, int(scene_.models.size() - 1)).first;
+            if (!model.cameras.empty() || !model.lights.empty())
+                scene_.warnings.push_back(line.where() + ": the cameras and lights of " + quote(file) +
+                                          " are not used: a scene file's own camera and lights light it");
+            size_t added = 0;
+            const int index = add_model_data(scene_, std::move(model), &added);
+            texels_ += added;
+            material_lines_.resize(scene_.materials.size(), line.number());
+            cached = model_index_.emplace(resolved, index).first;
         }
-        inst.model = cached->second;
-        // The model stays in object space, uploaded once; each instance is one object per group
-        // drawn with model_matrix() (composed with the view in double by the renderers).
+        // The model stays in object space, uploaded once; each instance is one object per
+        // placement drawn with model_matrix() x the placement's (composed with the view in
+        // double by the renderers).
         const glm::dmat4 m = inst.model_matrix();
-        const MeshModel& model = scene_.models[size_t(inst.model)];
+        const MeshModel& model = scene_.models[size_t(cached->second)];
         // Every vertex must stay within +-1e12 in world space, as OBJ coordinates and the scene's
         // own numbers do (the analytic reference and the bounds the renderers cull with are
-        // world-space): checked on the model's bounding box corners.
-        for (size_t g = model.first_mesh; g < model.first_mesh + model.mesh_count; ++g) {
+        // world-space): checked on each placed mesh's bounding box corners.
+        for (const MeshModel::Placement& pl : model.placements) {
             glm::vec3 lo(0), hi(0);
             bool first = true;
-            for (const Vertex& v : scene_.meshes[g].vertices) {
+            for (const Vertex& v : scene_.meshes[pl.mesh].vertices) {
                 lo = first ? v.pos : glm::min(lo, v.pos);
                 hi = first ? v.pos : glm::max(hi, v.pos);
                 first = false;
             }
             for (int c = 0; c < 8; ++c) {
                 const glm::dvec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
-                check_world(line, "scale and at that keep " + quote(file), glm::dvec3(m * glm::dvec4(corner, 1.0)));
+                check_world(line, "scale and at that keep " + quote(file), glm::dvec3(m * pl.model * glm::dvec4(corner, 1.0)));
             }
         }
         spend_triangles(line, "mesh " + quote(file), model.triangles);
-        inst.first_object = scene_.objects.size();
-        for (size_t g = model.first_mesh; g < model.first_mesh + model.mesh_count; ++g) {
-            Object o;
-            o.mesh = g;
-            o.model = m;
-            o.material = inst.material >= 0 ? inst.material : scene_.meshes[g].material;
-            object_lines_.push_back({line.number(), scene_.objects.size()});
-            scene_.objects.push_back(o);
-        }
-        inst.object_count = scene_.objects.size() - inst.first_object;
+        const MeshInstance placed = place_model(scene_, cached->second, m, inst.material, one_sided);
+        inst.model = placed.model;
+        inst.first_object = placed.first_object;
+        inst.object_count = placed.object_count;
+        for (size_t o = inst.first_object; o < inst.first_object + inst.object_count; ++o)
+            object_lines_.push_back({line.number(), o});
         scene_.instances.push_back(inst);
     }
 
@@ -659,8 +638,54 @@ glm::dmat4 MeshInstance::model_matrix() const {
     return glm::scale(m, glm::dvec3(scale));
 }
 
-Scene load_scene(const std::string& path) {
-    Scene s = is_model_path(path) ? model_scene(path) : Parser(path).run();  // a model is a scene
+namespace {
+
+// Formats other programs read and dsr does not: a file named so gets one line saying what dsr reads.
+bool foreign_model(const std::string& path) {
+    static const char* const exts[] = {".fbx", ".dae", ".3ds", ".ply", ".stl", ".blend", ".off", ".x", ".ase", ".lwo",
+                                       ".lws", ".md2", ".md3", ".md5mesh", ".ms3d", ".3mf", ".amf", ".wrl", ".x3d",
+                                       ".ifc", ".usd", ".usda", ".usdc", ".usdz", ".abc", ".b3d", ".ac", ".irr", ".cob",
+                                       ".dxf", ".smd", ".mdl", ".nff", ".ter", ".xgl", ".ogex", ".q3o", ".sib", ".iqm"};
+    std::string e = std::filesystem::path(path).extension().string();
+    for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+    for (const char* x : exts)
+        if (e == x) return true;
+    return false;
+}
+
+// What the first bytes of a file that is not named as a model say it is: glTF binary ("glTF"),
+// JSON (a '{' first: a .gltf), or anything else (a scene file, or what its parser will refuse).
+enum class Sniffed { text, glb, json };
+Sniffed sniff(const std::string& path) {
+    const int fd = open_user_file(path, "scene file", kMaxSceneBytes);
+    char head[64] = {};
+    const ssize_t n = ::read(fd, head, sizeof head);
+    ::close(fd);
+    if (n >= 4 && std::string(head, 4) == "glTF") return Sniffed::glb;
+    for (ssize_t i = 0; i < n; ++i) {
+        const unsigned char c = static_cast<unsigned char>(head[i]);
+        if (c == 0xEF || c == 0xBB || c == 0xBF || std::isspace(c)) continue;  // a UTF-8 mark, blanks
+        return c == '{' ? Sniffed::json : Sniffed::text;
+    }
+    return Sniffed::text;
+}
+
+}  // namespace
+
+Scene load_scene(const std::string& path, const LoadOptions& options) {
+    Scene s;
+    if (is_model_path(path)) {
+        s = model_scene(path, options);  // a model is a scene
+    } else if (foreign_model(path)) {
+        throw Error(path + ": expected a scene file (docs/scene-format.md) or a model dsr reads: OBJ (.obj) or "
+                    "glTF 2.0 (.gltf, .glb); this format is not one of them");
+    } else if (sniff(path) != Sniffed::text) {
+        s = model_scene(path, options, true);  // glTF, whatever its name
+    } else {
+        s = Parser(path).run();
+        if (options.ambient) s.ambient = *options.ambient;
+    }
+    if (options.strict && !s.warnings.empty()) throw Error(s.warnings.front() + " (--strict: a warning is an error)");
     for (const std::string& w : s.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     return s;
 }

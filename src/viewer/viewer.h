@@ -7,6 +7,7 @@
 
 #include "analysis/bench_scenes.h"
 #include "deferred/option_table.h"
+#include "scene/scene.h"
 
 namespace dsr {
 
@@ -17,6 +18,7 @@ struct ViewerConfig {
     std::string caps_list;          // --caps, added to $DSR_CAPS
     std::string script_path;        // --script FILE; empty: a person drives it
     std::optional<LightSpec> lights;  // --lights: the bench's generated lights instead of the scene's
+    LoadOptions load;                 // --strict, --from, --camera, --ambient
 };
 
 // Opens the window and runs until it is closed, Esc, or the script's end (unless its last line

@@ -77,7 +77,7 @@ private:
 
 Viewer::Viewer(const ViewerConfig& cfg) : cfg_(cfg) {
     const std::string path = cfg.scene_path.empty() ? resource_dir("data") + "/default.scene" : cfg.scene_path;
-    scene_ = load_scene(path);  // input errors before any window opens
+    scene_ = load_scene(path, cfg.load);  // input errors before any window opens
     for (size_t i = 0; i < scene_.inputs.size(); ++i)
         shots_.add_input(scene_.inputs[i], i == 0 ? "the scene file" : "a file the scene reads,");
     if (cfg.lights) scene_ = bench_scene(scene_, *cfg.lights);  // as `render --lights` (bench_scenes.h)
