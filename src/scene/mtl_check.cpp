@@ -6,8 +6,6 @@
 #include <cstring>
 #include <set>
 
-#include "scene/obj_text.h"
-
 namespace dsr::obj {
 
 using std::string;
@@ -17,42 +15,57 @@ int line_of(const MtlMaterialInfo& info, const string& key) {
     return it == info.lines.end() ? info.line : it->second;
 }
 
-void check_mtl(MtlFile& mtl, std::map<string, MtlMaterialInfo>& info, std::vector<string>& warnings) {
-    LineScanner s(mtl.path, mtl.text);
+string check_mtl(const string& path, string& text, MtlMaterials& all, Notes& notes) {
+    LineScanner s(path, text);
     static const std::set<string> ignored = {
-        "Ka", "Ke", "Tf", "Ni", "illum", "map_Ka", "map_d", "map_Ke", "disp", "decal", "refl", "sharpness",
+        "Ka", "Ke", "Tf", "Ni", "illum", "map_Ka", "map_Ke", "disp", "decal", "refl", "sharpness",
         "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso", "anisor", "map_Pr", "map_Pm", "map_Ps", "map_aat"};
-    static const std::set<string> maps = {"map_Kd", "map_Ks", "map_Ns", "map_bump", "map_Bump", "bump", "norm"};
-    const string known =
-        "an MTL statement (newmtl, Kd, Ks, Ns, d, Tr, map_Kd, map_Ks, map_Ns, map_bump, bump, norm; "
-        "Ka, Ke, Ni, illum, Tf, map_Ka, map_d, disp, refl are read and ignored)";
-    Ignored skipped;
+    static const std::set<string> maps = {"map_Kd", "map_Ks", "map_Ns", "map_bump", "map_Bump", "bump", "norm", "map_d"};
+    const size_t kMaxUnknownKinds = 16;
+    std::set<string> unknown;
+    string tiny;
     MtlMaterialInfo* current = nullptr;
     while (s.next()) {
         const auto& t = s.tokens();
         if (t.empty()) continue;
         const string k(t[0]);
         if (k == "newmtl") {
-            if (t.size() != 2) s.expected("one material name (no spaces) after newmtl", t.size() < 2 ? 1 : 2);
-            const string name(t[1]);
-            auto it = info.find(name);
-            if (it != info.end())
+            const string name(s.rest_after_keyword());
+            auto it = all.by_name.find(name);
+            if (it != all.by_name.end()) {
+                const MtlMaterialInfo& first = all.materials[it->second];
                 s.fail("expected a material name not defined before, got " + quote(name) + " (first defined at " +
-                       it->second.file + ":" + std::to_string(it->second.line) + ")");
-            current = &info[name];
-            current->file = mtl.path;
+                       first.file + ":" + std::to_string(first.line) + ")");
+            }
+            all.by_name[name] = all.materials.size();
+            tiny += "newmtl m" + std::to_string(all.materials.size()) + "\n";
+            all.materials.emplace_back();
+            current = &all.materials.back();
+            current->name = name;
+            current->file = path;
             current->line = s.number();
             continue;
         }
-        const bool is_ignored = ignored.count(k) > 0;
-        if (!is_ignored && !maps.count(k) && k != "Kd" && k != "Ks" && k != "Ns" && k != "d" && k != "Tr")
-            s.expected(known, 0);
+        const bool is_ignored = ignored.count(k) > 0, is_map = maps.count(k) > 0;
+        if (!is_ignored && !is_map && k != "Kd" && k != "Ks" && k != "Ns" && k != "d" && k != "Tr") {
+            // Not a statement dsr knows: a warning per keyword, never given to tinyobjloader.
+            if (unknown.size() < kMaxUnknownKinds || unknown.count(k)) {
+                unknown.insert(k);
+                notes.add(path, s.number(), k, quote(k) + " is not an MTL statement dsr knows: ignored");
+            } else {
+                notes.add(path, s.number(), " more", "more statements dsr does not know: ignored");
+            }
+            continue;
+        }
         if (!current) s.fail("expected newmtl before " + quote(k));
         current->lines[k] = s.number();
+        string line(s.line());
         if (k == "Kd" || k == "Ks" || k == "Ka" || k == "Ke" || k == "Tf") {
-            if (t.size() != 4) s.expected("three numbers r g b for " + k, std::min<size_t>(t.size(), 4));
-            for (size_t i = 1; i < 4; ++i)
+            // r g b, or one number for all three (the MTL format's rule).
+            if (t.size() != 4 && t.size() != 2) s.expected("three numbers r g b (or one) for " + k, std::min<size_t>(t.size(), 4));
+            for (size_t i = 1; i < t.size(); ++i)
                 if (s.number(i, k) < 0) s.expected(k + " components >= 0", i);
+            if (t.size() == 2) line = k + " " + string(t[1]) + " " + string(t[1]) + " " + string(t[1]);
         } else if (k == "Ns" || k == "Ni" || k == "d" || k == "Tr" || k == "illum" || k == "sharpness" || k == "Pr" ||
                    k == "Pm" || k == "Ps" || k == "Pc" || k == "Pcr" || k == "aniso" || k == "anisor") {
             if (t.size() != 2) s.expected("one number for " + k, std::min<size_t>(t.size(), 2));
@@ -89,10 +102,14 @@ void check_mtl(MtlFile& mtl, std::map<string, MtlMaterialInfo>& info, std::vecto
             }
             if (i >= t.size()) s.expected("a texture file name for " + k, i);
             if (k == "bump" || k == "map_bump" || k == "map_Bump") current->lines["bump"] = s.number();
+            if (is_map && backslashes_to_slashes(line))
+                notes.add(path, s.number(), "backslash",
+                          "'\\' in the file name " + quote(s.rest_after_keyword()) + " read as '/'");
         }
-        if (is_ignored) skipped.add(k, s.number());
+        if (is_ignored) notes.add(path, s.number(), k, quote(k) + " ignored (dsr does not use it)");
+        else tiny += line + "\n";
     }
-    skipped.report(mtl.path, "dsr does not use it", warnings);
+    return tiny;
 }
 
 }  // namespace dsr::obj

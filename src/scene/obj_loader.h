@@ -1,24 +1,56 @@
-// Wavefront OBJ/MTL models (docs/scene-format.md): parsed with tinyobjloader, validated here so that every
-// mistake in a file is one dsr::Error naming the file, the line and what was expected. Pure: no
-// GL. Textures go through the image interface (scene/image.h); paths in an MTL are resolved
-// relative to the MTL, an MTL relative to its OBJ.
+// Wavefront OBJ/MTL models (docs/scene-format.md): parsed with tinyobjloader, checked here line by
+// line. Strict where a file is broken, generous where it is merely unusual: what a viewer
+// (Blender, MeshLab, assimp) can draw is drawn, each substitution a warning in
+// ObjModel::warnings, one line per kind per file ("FILE:LINE: what was substituted (and N more
+// lines)"), so --strict can refuse it; where nothing sensible can be drawn, one dsr::Error naming
+// the file, the line and what was expected. Pure: no GL. Textures go through the image
+// interface (scene/image.h); paths in an MTL are resolved relative to the MTL, an MTL relative to
+// its OBJ.
 //
 // What is read (docs/scene-format.md, "Meshes"):
-//   OBJ: v (3, 4, 6 or 7 numbers: colours and w ignored), vt (1-3), vn (3), f (3 to
-//        kMaxPolygonVertices corners, v | v/t | v//n | v/t/n, negative = relative), o, g, s,
-//        mtllib (one file per line), usemtl; l, p, vp and the free-form statements are warned
-//        about and skipped; anything else is an error.
-//   MTL: newmtl, Kd, Ks, Ns, d / Tr (opacity: below 1 drawn by the forward stage, docs/forward.md), map_Kd, map_Ks, map_Ns
-//        (a specular map, as some exported models use it), map_bump / map_Bump /
-//        bump / norm (a tangent-space normal map; a greyscale one is a height map, converted on
-//        load with strength -bm). Ka, Ke, Ni, illum, Tf, map_Ka, map_d, disp, refl and the PBR
-//        extension are warned about and skipped; anything else is an error.
-// Faces are triangulated (tinyobjloader: quads by the shorter diagonal, larger polygons by ear
-// clipping), grouped by material (Listing 9: one Mesh per material used), vertices shared by
-// hash of their (position, uv, normal) indices. Missing normals are computed: area-weighted face
-// normals averaged over the faces around a position whose normals lie within
-// ObjOptions::smooth_angle_deg of each other, so creases sharper than that stay flat.
-// Tangent frames come from compute_tangents (scene/tangents.h).
+//   OBJ: v (3, 4, 6 or 7 numbers: x y z, w ignored; with 6 or 7, r g b are the vertex's colour and
+//        a 7th is ignored), vt (1-3), vn (3), f (3 or more corners, v | v/t | v//n | v/t/n,
+//        negative = relative), o, g, s, mtllib (the rest of the line names one file, "\ " an
+//        escaped space; failing that, each name on it is one), usemtl (the rest of the line,
+//        trimmed, is the name: spaces allowed; the MTLs of every mtllib line are searched,
+//        wherever that line is).
+//   MTL: newmtl (the rest of the line, trimmed, is the name), Kd, Ks (r g b, or one number for
+//        all three), Ns, d / Tr (opacity: below 1 drawn by the forward stage, docs/forward.md),
+//        map_Kd, map_Ks, map_Ns (a specular map, as some exported models use it), map_bump /
+//        map_Bump / bump / norm (a tangent-space normal map; a greyscale one is a height map,
+//        converted on load with strength -bm), map_d (a cut-out: below).
+// Substituted, with a warning:
+//   - usemtl naming no material of the MTLs read, or no name: the default material (grey
+//     diffuse 0.8, no specular), the one faces before any usemtl get ("OBJFILE:(default)");
+//   - an mtllib file that cannot be read (missing, not a regular file, unreadable): left out,
+//     its names then get the default material; one over kMaxObjBytes is an error;
+//   - a texture that cannot be read, missing or damaged (the image reader refuses it, or it has
+//     no pixels or non-finite texels): the map left out; a header claiming an absurd size
+//     and a texture over the texel budget are errors;
+//   - statements dsr skips (OBJ l, p, free-form geometry; MTL Ka, Ke, Ni, illum, Tf, map_Ka, ...)
+//     and statements it does not know, in OBJ or MTL (one line per keyword, the first line and
+//     how many more; past 16 keywords the rest share one line): ignored, and never handed to
+//     tinyobjloader;
+//   - `\` in mtllib and map file names: read as `/`;
+//   - UTF-16 text (byte-order mark FE FF or FF FE): decoded to UTF-8;
+//   - a polygon ear clipping cannot handle: a fan (obj_triangulate.h); triangles without area
+//     dropped;
+//   - vertex colours outside 0..1 clamped; in a group with coloured vertices, one without a
+//     colour is white.
+// Faces are triangulated by obj_triangulate.h (quads along the shorter diagonal, as
+// tinyobjloader split them; larger polygons by ear clipping in the plane of their Newell
+// normal), grouped by material (Listing 9: one Mesh per material used), vertices shared by hash
+// of their (position, uv, normal) indices (a position has one colour, so corners of different
+// colour never merge). Every group is two-sided (Mesh::two_sided: OBJ faces are seen from both
+// sides); a group with coloured vertices gets Mesh::colors (alpha 1), others leave it empty.
+// Missing normals are computed: area-weighted face normals averaged over the faces around a
+// position whose normals lie within ObjOptions::smooth_angle_deg of each other, so creases
+// sharper than that stay flat. Tangent frames come from compute_tangents (scene/tangents.h).
+// Cut-outs: a material's map_d gives coverage (its alpha where it has any texel below 1, else
+// its red), which replaces the alpha of a copy of the diffuse map (of a white map of map_d's
+// size without map_Kd), map_d resampled to the diffuse map's size by the nearest texel (with a
+// warning) where they differ; the material's alpha_cutoff is 0.5. A diffuse map with any alpha
+// below 0.5 makes its material a cut-out too.
 #pragma once
 #include <functional>
 #include <string>
@@ -29,10 +61,10 @@
 
 namespace dsr {
 
-// Limits beyond which an input is refused as absurd (each error says which limit).
-constexpr size_t kMaxObjBytes = size_t(2) << 30;       // an OBJ or MTL file
+// Limits beyond which an input is refused as absurd (each error says which limit). A face may
+// have any number of corners within the triangle budget.
+constexpr size_t kMaxObjBytes = size_t(2) << 30;       // an OBJ or MTL file (UTF-8, as decoded)
 constexpr size_t kMaxObjElements = 20'000'000;        // v, vt, vn, triangles, each
-constexpr int kMaxPolygonVertices = 256;              // corners of one face
 constexpr double kMaxObjCoordinate = 1e12;            // |any number in v, vt, vn|
 
 struct ObjOptions {
@@ -53,7 +85,8 @@ struct ObjOptions {
 
 // A parsed model in object space. groups[i].material indexes materials; materials' maps index
 // textures (texture_paths parallel, as resolved; a height map converted to a normal map is named
-// "PATH (height map, bm B)").
+// "PATH (height map, bm B)", a diffuse map with map_d's alpha "PATH (alpha from MAP_D)", with
+// PATH "white" where the material has no map_Kd).
 struct ObjModel {
     std::string path;
     std::vector<Material> materials;  // names are "OBJFILE:MTLNAME"; "OBJFILE:(default)" for faces without usemtl
@@ -61,7 +94,7 @@ struct ObjModel {
     std::vector<std::string> texture_paths;
     std::vector<Mesh> groups;
     size_t triangles = 0, vertices = 0;
-    std::vector<std::string> warnings;  // "FILE:LINE: ..." for statements dsr ignores
+    std::vector<std::string> warnings;  // "FILE:LINE: ..." for each kind of substitution (above)
     std::vector<std::string> inputs;    // every file read: the OBJ, its MTLs and images
 };
 

@@ -1,8 +1,14 @@
-// Reading files and scanning OBJ/MTL text for the OBJ loader (obj_text.h).
+// Reading files, scanning OBJ/MTL text and collecting warnings for the OBJ loader (obj_text.h).
 #include "scene/obj_text.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 
@@ -13,7 +19,96 @@ namespace dsr::obj {
 using std::string;
 using std::string_view;
 
-string read_regular_file(const string& path, const string& what) { return read_user_text(path, what, kMaxObjBytes); }
+string dquote(string_view s) {
+    string q = quote(s);
+    q.front() = '"';
+    q.back() = '"';
+    return q;
+}
+
+string read_regular_file(const string& path, const string& what) {
+    // The size limit is checked here, not by open_user_file, so that it is told apart from a
+    // file that cannot be read at all.
+    const int fd = open_user_file(path, what, SIZE_MAX);
+    struct stat st {};
+    ::fstat(fd, &st);
+    auto too_large = [&](const string& got) {
+        ::close(fd);
+        throw FileTooLarge("cannot open " + what + " " + path + ": expected at most " + std::to_string(kMaxObjBytes) +
+                           " bytes, got " + got);
+    };
+    if (uintmax_t(st.st_size) > kMaxObjBytes) too_large(std::to_string(uintmax_t(st.st_size)));
+    string text;
+    text.reserve(size_t(st.st_size));
+    // Read to the end, not to st_size: one byte past the limit is enough to refuse a file that grew.
+    char buf[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fd, buf, sizeof buf);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            const int e = errno;
+            ::close(fd);
+            throw Error("cannot read " + what + " " + path + ": " + std::strerror(e));
+        }
+        if (n == 0) break;
+        text.append(buf, size_t(n));
+        if (text.size() > kMaxObjBytes) too_large("more");
+    }
+    ::close(fd);
+    return text;
+}
+
+void decode_text(const string& path, string& text, std::vector<string>& warnings) {
+    const bool be = text.size() >= 2 && (unsigned char)text[0] == 0xFE && (unsigned char)text[1] == 0xFF;
+    const bool le = text.size() >= 2 && (unsigned char)text[0] == 0xFF && (unsigned char)text[1] == 0xFE;
+    if (be || le) {
+        int line = 1;
+        auto fail = [&](const string& why) {
+            throw Error(path + ":" + std::to_string(line) + ": expected UTF-16 text (it begins with a UTF-16 " +
+                        "byte-order mark), got " + why);
+        };
+        if (text.size() % 2) fail("an odd number of bytes");
+        string out;
+        out.reserve(text.size() / 2);
+        auto unit = [&](size_t i) {
+            const unsigned a = (unsigned char)text[i], b = (unsigned char)text[i + 1];
+            return be ? (a << 8 | b) : (b << 8 | a);
+        };
+        for (size_t i = 2; i < text.size(); i += 2) {
+            uint32_t cp = unit(i);
+            if (cp >= 0xDC00 && cp <= 0xDFFF) fail("an unpaired surrogate");
+            if (cp >= 0xD800 && cp <= 0xDBFF) {
+                if (i + 2 >= text.size()) fail("an unpaired surrogate");
+                const uint32_t lo = unit(i + 2);
+                if (lo < 0xDC00 || lo > 0xDFFF) fail("an unpaired surrogate");
+                cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
+                i += 2;
+            }
+            if (cp == '\n') ++line;
+            if (cp < 0x80) {
+                out += char(cp);
+            } else if (cp < 0x800) {
+                out += char(0xC0 | (cp >> 6));
+                out += char(0x80 | (cp & 0x3F));
+            } else if (cp < 0x10000) {
+                out += char(0xE0 | (cp >> 12));
+                out += char(0x80 | ((cp >> 6) & 0x3F));
+                out += char(0x80 | (cp & 0x3F));
+            } else {
+                out += char(0xF0 | (cp >> 18));
+                out += char(0x80 | ((cp >> 12) & 0x3F));
+                out += char(0x80 | ((cp >> 6) & 0x3F));
+                out += char(0x80 | (cp & 0x3F));
+            }
+            if (out.size() > kMaxObjBytes)
+                throw Error(path + ": expected at most " + std::to_string(kMaxObjBytes) + " bytes of UTF-8 text, got more");
+        }
+        text.swap(out);
+        warnings.push_back(path + ":1: UTF-16 text (" + (be ? "big" : "little") +
+                           "-endian, by its byte-order mark) read as UTF-8");
+    }
+    check_user_text(path, text);
+}
 
 Image read_regular_image(const string& path, size_t max_texels) { return load_image(path, max_texels); }
 
@@ -59,6 +154,11 @@ string_view LineScanner::rest_after_keyword() const {
     return line.substr(i, e - i);
 }
 
+void LineScanner::blank() {
+    tokens_.clear();
+    std::fill(text_.begin() + long(line_begin_), text_.begin() + long(line_end_), ' ');
+}
+
 void LineScanner::expected(const string& what, size_t token) const {
     if (token < tokens_.size()) fail("expected " + what + ", got " + quote(tokens_[token]));
     fail("expected " + what + ", got end of line");
@@ -96,16 +196,30 @@ long LineScanner::integer(string_view t, const string& subject) const {
     return std::strtol(string(t).c_str(), nullptr, 10);
 }
 
-void Ignored::add(const string& k, int line) {
-    auto it = seen.find(k);
-    if (it == seen.end()) seen[k] = {line, 1};
-    else ++it->second.second;
+// ---- warnings ------------------------------------------------------------------------------
+
+void Notes::add(const string& file, int line, const string& kind, const string& message, size_t times) {
+    auto [it, fresh] = index_.try_emplace({file, kind}, entries_.size());
+    if (fresh) entries_.push_back(Entry{file, message, line, 0});
+    entries_[it->second].count += times;
 }
 
-void Ignored::report(const string& file, const string& why, std::vector<string>& warnings) const {
-    for (const auto& [k, v] : seen)
-        warnings.push_back(file + ":" + std::to_string(v.first) + ": '" + k + "' ignored (" + why + "; " +
-                           std::to_string(v.second) + (v.second == 1 ? " line)" : " lines)"));
+void Notes::flush(std::vector<string>& warnings) {
+    for (const Entry& e : entries_) {
+        string w = e.file + (e.line > 0 ? ":" + std::to_string(e.line) : string()) + ": " + e.message;
+        if (e.count > 1)
+            w += " (and " + std::to_string(e.count - 1) + (e.count == 2 ? " more line)" : " more lines)");
+        warnings.push_back(std::move(w));
+    }
+    entries_.clear();
+    index_.clear();
+}
+
+bool backslashes_to_slashes(string& name) {
+    bool any = false;
+    for (char& c : name)
+        if (c == '\\') c = '/', any = true;
+    return any;
 }
 
 }  // namespace dsr::obj
