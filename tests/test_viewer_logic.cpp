@@ -3,6 +3,7 @@
 // light pass itself counts.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "deferred/option_table.h"
@@ -202,6 +203,22 @@ TEST(FlyCamera, StartsAtTheSceneCameraAndMovesAsTold) {
     f.look(0, 10.0f);
     EXPECT_NEAR(glm::degrees(std::acos(glm::dot(f.forward, f.world_up))), 1.0f, 1e-2f);
     EXPECT_NEAR(glm::length(f.forward), 1.0f, 1e-5f);
+}
+
+// Orbiting keeps the distance to the centre and looks at it; half a turn puts the camera on the
+// other side (a model whose front faces -Z is seen from the front).
+TEST(FlyCamera, OrbitCirclesTheCentre) {
+    Camera c;
+    c.pos = {0, 1, 5};
+    c.target = {0, 1, 0};
+    FlyCamera f = FlyCamera::from(c);
+    f.orbit(c.target, 0.5f, 0.2f);
+    EXPECT_NEAR(glm::length(f.pos - c.target), 5.0f, 1e-4f);
+    EXPECT_NEAR(glm::length(glm::normalize(c.target - f.pos) - f.forward), 0.0f, 1e-5f);
+    f = FlyCamera::from(c);
+    f.orbit(c.target, glm::pi<float>(), 0);
+    EXPECT_NEAR(f.pos.x, 0.0f, 1e-4f);
+    EXPECT_NEAR(f.pos.z, -5.0f, 1e-4f);
 }
 
 // The overlay draws the rectangles the pass used: as many as lights drawn, their areas summing to

@@ -352,6 +352,7 @@ Command view_command(ViewerConfig& s) {
               "keys:\n"
               "  W A S D, Q E            move; Q/E down/up; shift: 4x faster; scroll: speed\n"
               "  right mouse button      hold and drag to look around\n"
+              "  left mouse button       hold and drag to orbit the scene's target (a model's centre)\n"
               "  R                       back to the scene's camera\n"
               "  F                       frame the scene: look at its centre along the current view\n"
               "                          direction, its bounding sphere 70% of the window\n"

@@ -183,6 +183,34 @@ int cmd_figures(const std::vector<std::string>& argv) {
         save("windmill_normal.png", view(ds, View::normal));
         save("windmill_specular.png", view(ds, View::specular));
     }
+    // Models nobody here wrote (docs/models.md): a glTF and a textured OBJ of Debian's
+    // assimp-testmodels, framed and lit as `dsr render FILE` shows them (the key light's shadow
+    // on). Read in place from the package; only with the default scene.
+    if (default_scene) {
+        const std::string corpus = "/usr/share/assimp/models";
+        const struct {
+            const char* file;
+            const char* out;
+        } models[] = {{"glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb", "model_engine.png"},
+                      {"OBJ/spider.obj", "model_spider.png"}};
+        for (const auto& m : models) {
+            const std::string path = corpus + "/" + m.file;
+            if (!std::filesystem::is_regular_file(path)) {
+                std::printf("figures: %s left out: %s is absent (make deps installs assimp-testmodels)\n", m.out, path.c_str());
+                continue;
+            }
+            const Scene ms = load_scene(path);
+            add_scene_inputs(outputs, ms.inputs);
+            RenderOptions ro;
+            ShaderOptions o = ro.resolved(ms);  // the model's shadow light on
+            o.light_geometry = plain.light_geometry;
+            o.post.aa = true;
+            DeferredShader ds(caps, n, n, o, shaders);
+            ds.set_scene(ms);
+            ds.render(ms, n, n);
+            save(m.out, view(ds, View::final));
+        }
+    }
     // Light beyond 1.0 (docs/hdr.md): the default scene with its lights x4, with the tutorial's RGBA8
     // P-buffer 0 (sums clip at 1) and in half floats with each operator of the final stage; last, the
     // linear pipeline whole (sRGB colour maps decoded, ACES, sRGB output). Only with the default scene.

@@ -31,6 +31,12 @@ void FlyCamera::look(float yaw, float pitch) {
     forward = glm::normalize(f);
 }
 
+void FlyCamera::orbit(glm::vec3 centre, float yaw, float pitch) {
+    const float d = glm::length(centre - pos);
+    look(yaw, pitch);
+    pos = centre - forward * d;
+}
+
 void FlyCamera::move(glm::vec3 dir, float dt, float scale) {
     const glm::vec3 right = glm::normalize(glm::cross(forward, world_up));
     pos += (right * dir.x + world_up * dir.y + forward * dir.z) * (speed * scale * dt);

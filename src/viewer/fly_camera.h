@@ -17,6 +17,9 @@ struct FlyCamera {
     // Turns by yaw (about world_up, positive to the left) and pitch (positive up), in radians;
     // the angle to world_up stays within [1, 179] degrees.
     void look(float yaw, float pitch);
+    // Circles `centre` at the current distance from it: turns as look(yaw, pitch) does, then puts
+    // pos where forward points at `centre` (the viewer's left-drag: a model seen from any side).
+    void orbit(glm::vec3 centre, float yaw, float pitch);
     // Moves along right (x), world_up (y) and forward (z) for dt seconds at speed * scale.
     void move(glm::vec3 dir, float dt, float scale);
     // `base` (fov, near, far) placed where this camera is: target = pos + forward.

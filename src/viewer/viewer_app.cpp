@@ -70,7 +70,7 @@ private:
     std::vector<std::string> shot_lines_;            // their "wrote" lines, printed once renamed
     double start_ = 0, last_time_ = 0, anim_angle_ = 0, ideal_time_ = -1e9;
     double last_x_ = 0, last_y_ = 0;
-    bool dragging_ = false;
+    bool dragging_ = false, orbiting_ = false;  // right-drag looks, left-drag orbits the scene's target
     std::vector<double> frame_ms_, loop_ms_;  // every rendered frame, for the summary
     long long programs_after_build_ = 0;
 };
@@ -303,8 +303,14 @@ void Viewer::update_camera(float dt) {
             camera_ = st_.fly.apply(camera_);  // keeps camera_'s fov, near and far
         }
         dragging_ = true;
+    } else if (glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS && (orbiting_ || mouse_free)) {
+        if (orbiting_) {
+            st_.fly.orbit(scene_.camera.target, float(-(x - last_x_) * 0.006), float(-(y - last_y_) * 0.006));
+            camera_ = st_.fly.apply(camera_);
+        }
+        orbiting_ = true;
     } else {
-        dragging_ = false;
+        dragging_ = orbiting_ = false;
     }
     last_x_ = x, last_y_ = y;
     if (ImGui::GetIO().WantCaptureKeyboard) return;
