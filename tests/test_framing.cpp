@@ -450,5 +450,54 @@ TEST_F(Framing, ModelFilesAreInputs) {
     EXPECT_NE(r.output.find("t.png"), std::string::npos) << r.output;
 }
 
+// A glTF model as the scene: its first camera and its own lights (with no ambient term, no
+// ground), --camera picking another, --from framing it instead, --ambient adding one.
+TEST_F(Framing, GltfCamerasAndLights) {
+    const float tri[9] = {-1, 0, 0, 1, 0, 0, 0, 2, 0};
+    std::ofstream(dir_ + "/t.bin", std::ios::binary).write(reinterpret_cast<const char*>(tri), sizeof tri);
+    const std::string gltf = R"({"asset": {"version": "2.0"},
+      "extensionsUsed": ["KHR_lights_punctual"],
+      "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "color": [1, 0.5, 0.25], "intensity": 20}]}},
+      "buffers": [{"uri": "t.bin", "byteLength": 36}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [-1, 0, 0], "max": [1, 2, 0]}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+      "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1, "zfar": 50}},
+                  {"type": "perspective", "perspective": {"yfov": 0.5, "znear": 0.2}}],
+      "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0, 1, 6]}, {"camera": 1, "translation": [0, 1, -6],
+                 "rotation": [0, 1, 0, 0]}, {"extensions": {"KHR_lights_punctual": {"light": 0}}, "translation": [0, 1, 2]}],
+      "scenes": [{"nodes": [0, 1, 2, 3]}]})";
+    const std::string path = write_file(dir_ + "/m.gltf", gltf);
+    const Scene s = load_scene(path);
+    EXPECT_NEAR(s.camera.pos.z, 6.0f, 1e-5f) << "the first camera";
+    EXPECT_NEAR(s.camera.fov_deg, glm::degrees(0.8f), 1e-3f);
+    EXPECT_NEAR(s.camera.far_plane, 50.0f, 1e-4f);
+    ASSERT_EQ(s.lights.size(), 1u) << "the file's light, not the rig";
+    EXPECT_NEAR(s.lights[0].pos.z, 2.0f, 1e-5f);
+    EXPECT_EQ(s.ambient, glm::vec3(0)) << "glTF has no ambient term";
+    for (const Object& o : s.objects) EXPECT_NE(s.materials.at(size_t(o.material)).name, kGroundMaterial) << "no ground";
+    LoadOptions o;
+    o.camera = 1;
+    const Scene second = load_scene(path, o);
+    EXPECT_NEAR(second.camera.pos.z, -6.0f, 1e-5f);
+    EXPECT_GT(second.camera.target.z, second.camera.pos.z) << "it looks back towards +Z";
+    EXPECT_GT(second.camera.far_plane, 6.0f) << "no zfar: the far plane reaches past the model";
+    o.camera = 2;
+    try {
+        load_scene(path, o);
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()), path + ": --camera 2: expected a camera index in 0..1 (the file has 2)");
+    }
+    LoadOptions from;
+    from.from = glm::vec3(0, 0, -1);
+    from.ambient = glm::vec3(0.1f);
+    const Scene framed = load_scene(path, from);
+    EXPECT_LT(framed.camera.pos.z, 0.0f) << "--from frames it instead";
+    EXPECT_EQ(framed.ambient, glm::vec3(0.1f));
+    const test::RunResult r = test::run("render " + path + " --size 32x32 -o " + dir_ + "/g.png");
+    EXPECT_EQ(r.status, 0) << r.output;
+}
+
 }  // namespace
 
