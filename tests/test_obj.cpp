@@ -684,6 +684,23 @@ TEST(ObjTriangulate, EarClippingMatchesBruteForce) {
     }
 }
 
+// Past the work budget a polygon is a fan, still of n-2 triangles.
+TEST(ObjTriangulate, PastTheBudgetAFan) {
+    std::vector<glm::dvec3> p;
+    for (int i = 0; i < 40; ++i) {
+        const double a = 2 * M_PI * i / 40, r = i % 2 ? 1.0 : 0.5;
+        p.push_back({r * std::cos(a), r * std::sin(a), 0});
+    }
+    std::vector<uint32_t> tris;
+    size_t work = 0;
+    EXPECT_EQ(dsr::obj::triangulate_polygon(p, tris, work), dsr::obj::Polygon::ear_clipped);
+    EXPECT_GT(work, 0u);
+    tris.clear();
+    work = dsr::obj::kMaxEarClipWork;
+    EXPECT_EQ(dsr::obj::triangulate_polygon(p, tris, work), dsr::obj::Polygon::fan_over_budget);
+    EXPECT_EQ(tris.size(), 3u * 38u);
+}
+
 // Quads split as tinyobjloader split them (triangulate=true), so models of quads draw as before:
 // tinyobjloader on random quads, convex and not, against triangulate_quad, which differs only on
 // concave quads whose shorter diagonal lies outside.
@@ -910,6 +927,10 @@ TEST_F(ObjFiles, DegeneratePolygonFallsBackToAFan) {
     EXPECT_EQ(one_warning(m, "d.obj:7: a face of 5 corners has no area in any plane: drawn as a fan"), 1);
     EXPECT_EQ(one_warning(m, "d.obj:7: triangles without area dropped"), 1);
     EXPECT_EQ(m.triangles, 1u);
+    // A hexagon crossing itself, where ear clipping finds no ear after the first: the rest a fan.
+    const dsr::ObjModel x = dsr::load_obj(write("x.obj", "v 2 4 0\nv 7 2 0\nv 1 0 0\nv 4 4 0\nv 9 0 0\nv 2 9 0\nf 1 2 3 4 5 6\n"));
+    EXPECT_EQ(one_warning(x, "x.obj:7: a face of 6 corners crosses itself (ear clipping found no ear): the rest drawn as a fan"), 1);
+    EXPECT_EQ(x.triangles, 4u);
 }
 
 // Per-vertex colours (v x y z r g b): Mesh::colors parallel to the vertices, alpha 1, only in

@@ -32,7 +32,8 @@ enum class Polygon { ear_clipped, fan_no_area, fan_not_simple, fan_over_budget }
 // kMaxEarClipWork the remaining ring becomes a fan.
 Polygon triangulate_polygon(const std::vector<glm::dvec3>& p, std::vector<uint32_t>& out, size_t& work);
 
-// Point-in-triangle tests one load may spend on ear clipping (about a second).
-constexpr size_t kMaxEarClipWork = size_t(300) << 20;
+// Point-in-triangle tests one load may spend on ear clipping (ear clipping is quadratic in a
+// polygon's corners): past it, the polygons left become fans.
+constexpr size_t kMaxEarClipWork = size_t(100) << 20;
 
 }  // namespace dsr::obj
