@@ -26,7 +26,7 @@ fetch)
     rev=${2:-HEAD}
     mkdir -p .gpu/debs
     (cd .gpu/debs && apt-get download libgl-dev libegl-dev libglx-dev libpng-dev libglm-dev nlohmann-json3-dev \
-        libtinyobjloader-dev libtinyobjloader2rc10 zlib1g-dev libegl1 libglvnd0 libopengl0 libgl1 libglx0)
+        libtinyobjloader-dev libtinyobjloader2rc10 libtinygltf-dev zlib1g-dev libegl1 libglvnd0 libopengl0 libgl1 libglx0)
     rm -rf .gpu/src && mkdir -p .gpu/src
     git archive "$rev" | tar -x -C .gpu/src
     git rev-parse "$rev" > .gpu/src/REVISION
