@@ -523,7 +523,8 @@ TEST_F(ObjFiles, NaNAndInfNumbers) {
 
 TEST_F(ObjFiles, EmptyMeshes) {
     EXPECT_HAS(bad_obj(""), "bad.obj: expected at least one face (f line), got none: an empty mesh");
-    EXPECT_HAS(bad_obj(std::string(kQuad) + "# no faces\n"), "an empty mesh");
+    EXPECT_HAS(bad_obj(std::string(kQuad) + "# no faces\n"), "got none: only vertices, and dsr draws faces");
+    EXPECT_HAS(bad_obj(std::string(kQuad) + "p 1 2\nl 1 2 3\n"), "got none: only points and lines (p, l), and dsr draws faces");
     EXPECT_HAS(bad_obj(std::string(kQuad) + "f 1 1 2\nf 1 2 1\n"), "bad.obj: expected at least one triangle with area");
 }
 

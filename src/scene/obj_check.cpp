@@ -150,6 +150,7 @@ ObjCheck check_obj(const string& path, string& text, Notes& notes, size_t max_tr
                 ++c.usemtl_count[size_t(it->second)];
                 slot = it->second;
             } else if (k == "l" || k == "p") {
+                ++c.points_and_lines;
                 notes.add(path, s.number(), string(k), quote(k) + " ignored (dsr draws faces only)");
             } else if (free_form.count(string(k))) {
                 notes.add(path, s.number(), string(k), quote(k) + " ignored (free-form geometry is not supported)");

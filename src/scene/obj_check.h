@@ -15,6 +15,7 @@ namespace dsr::obj {
 
 struct ObjCheck {
     size_t v = 0, vt = 0, vn = 0, faces = 0, corners = 0, triangles = 0;
+    size_t points_and_lines = 0;  // p and l statements, skipped
     struct Mtllib {
         std::string whole;               // the rest of the line, "\ " unescaped, other `\` read as `/`
         std::vector<std::string> names;  // the same split on unescaped spaces

@@ -249,7 +249,10 @@ ObjModel parse_obj(const string& path, string text, const ObjOptions& options) {
     // 1. Check the OBJ, then every MTL it names, line by line (text from a hook too).
     obj::decode_text(path, text, model.warnings);
     const obj::ObjCheck check = obj::check_obj(path, text, notes, options.max_triangles, options.budget_note);
-    if (check.faces == 0) throw Error(path + ": expected at least one face (f line), got none: an empty mesh");
+    if (check.faces == 0)
+        throw Error(path + ": expected at least one face (f line), got none: " +
+                    (check.points_and_lines ? "only points and lines (p, l), and dsr draws faces"
+                                            : check.v ? "only vertices, and dsr draws faces" : std::string("an empty mesh")));
     MtlMaterials all;
     std::vector<std::pair<string, size_t>> mtl_texts;  // text for tinyobjloader, materials it defines
     std::set<string> read;                               // MTLs read or tried, as resolved
