@@ -14,7 +14,12 @@ int cmd_gen_model(const std::vector<std::string>& argv) {
     if (flags.dir.empty()) fail_command("gen-model", "expected an output folder, got nothing");
     const std::string dir = flags.dir;
     const GeneratedModel model = windmill_model();
-    const std::string obj = write_model(model, dir);
+    std::string obj;
+    try {
+        obj = write_model(model, dir);  // all or nothing; errors name DIR as given
+    } catch (const Error& e) {
+        throw Error(std::string("dsr gen-model: ") + e.what());
+    }
     std::printf("wrote %zu files into %s; render the model with: dsr render %s\n", model.files.size(), dir.c_str(),
                 obj.c_str());
     return 0;

@@ -1,5 +1,7 @@
 #include "scene/generated_model.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -16,6 +18,7 @@
 
 #include "dsr_error.h"
 #include "scene/procedural_textures.h"
+#include "scene/user_file.h"
 
 namespace dsr {
 
@@ -282,35 +285,175 @@ GeneratedModel windmill_model() {
     return m;
 }
 
-std::string write_model(const GeneratedModel& model, const std::string& dir) {
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (!fs::is_directory(dir)) throw Error("cannot write " + dir + ": " + (ec ? ec.message() : "not a folder"));
-    const fs::path tmp = fs::path(dir) / (".gen-model-" + std::to_string(getpid()));
-    fs::remove_all(tmp, ec);
-    if (!fs::create_directory(tmp, ec)) throw Error("cannot write " + tmp.string() + ": " + ec.message());
-    try {
-        for (const GeneratedFile& f : model.files) {
-            const std::string path = (tmp / f.name).string();
-            if (f.is_image()) {
-                write_image(path, f.image);
-                continue;
-            }
-            std::ofstream out(path, std::ios::binary);
-            out << f.text;
-            out.flush();
-            if (!out) throw Error("cannot write " + path + ": " + std::strerror(errno));
-        }
-        for (const GeneratedFile& f : model.files) {
-            fs::rename(tmp / f.name, fs::path(dir) / f.name, ec);
-            if (ec) throw Error("cannot write " + (fs::path(dir) / f.name).string() + ": " + ec.message());
-        }
-    } catch (...) {
-        fs::remove_all(tmp, ec);
-        throw;
+namespace {
+
+// write_model's steps, undone in reverse by its destructor unless done() was called: folders it
+// made, the hidden folder it writes into, and every file it moved into place (with the file that
+// was there before, kept in the hidden folder until the end).
+class ModelWrite {
+public:
+    explicit ModelWrite(const std::string& dir) : dir_(dir) {}
+    ~ModelWrite() {
+        if (!done_) undo();
     }
-    fs::remove_all(tmp, ec);
-    return (fs::path(dir) / model.obj_name).string();
+    ModelWrite(const ModelWrite&) = delete;
+    ModelWrite& operator=(const ModelWrite&) = delete;
+
+    [[noreturn]] void fail(const std::string& what) const { throw Error(what); }
+    std::string in_dir(const std::string& name) const { return quote(name) + " in " + quote(dir_); }
+
+    // dir_ and its missing parents, one level at a time (each removed again on failure).
+    void make_folders() {
+        struct stat st {};
+        if (::stat(dir_.c_str(), &st) == 0) {
+            if (!S_ISDIR(st.st_mode))
+                fail("DIR: expected a folder, got " + quote(dir_) + ", " +
+                     (S_ISREG(st.st_mode) ? std::string("a file") : kind_of(st.st_mode)));
+            return;
+        }
+        std::string prefix;
+        size_t i = 0;
+        while (i < dir_.size()) {
+            const size_t slash = dir_.find('/', i + 1);
+            const size_t end = slash == std::string::npos ? dir_.size() : slash;
+            prefix = dir_.substr(0, end);
+            i = end;
+            if (prefix == "/" || prefix.empty() || ::stat(prefix.c_str(), &st) == 0) continue;
+            if (::mkdir(prefix.c_str(), 0777) != 0) fail("cannot create " + quote(prefix) + ": " + std::strerror(errno));
+            made_.push_back(prefix);
+        }
+    }
+
+    // Refuses a name already taken by anything but a file (a folder in the way), before any write.
+    void check_target(const std::string& name) const {
+        struct stat st {};
+        if (::stat((dir_ + "/" + name).c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+            fail("DIR: expected a file to write, got " + in_dir(name) + ", " +
+                 (S_ISDIR(st.st_mode) ? std::string("a folder") : kind_of(st.st_mode)));
+    }
+
+    // The hidden folder inside dir_ every file is written into first (same file system: the
+    // moves into place are renames).
+    void make_temp() {
+        for (int n = 0;; ++n) {
+            temp_ = dir_ + "/.dsr-" + std::to_string(long(::getpid())) + "-" + std::to_string(n);
+            if (::mkdir(temp_.c_str(), 0777) == 0) return;
+            if (errno != EEXIST || n > 100) {
+                const int e = errno;
+                temp_.clear();
+                fail("cannot write into " + quote(dir_) + ": " + std::strerror(e));
+            }
+        }
+    }
+
+    void put(const GeneratedFile& f) {
+        const std::string path = temp_ + "/" + f.name;
+        const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd < 0) fail("cannot write " + in_dir(f.name) + ": " + std::strerror(errno));
+        written_.push_back(f.name);
+        if (f.is_image()) {
+            ::close(fd);
+            try {
+                encode_image(path, f.name, f.image);
+            } catch (const Error& e) {
+                // The encoder names f.name; what follows is its reason.
+                std::string why = e.what();
+                const std::string head = "cannot write " + f.name + ": ";
+                if (why.rfind(head, 0) == 0) why = why.substr(head.size());
+                fail("cannot write " + in_dir(f.name) + ": " + why);
+            }
+            return;
+        }
+        size_t done = 0;
+        while (done < f.text.size()) {
+            const ssize_t n = ::write(fd, f.text.data() + done, f.text.size() - done);
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) {
+                const int e = n < 0 ? errno : EIO;
+                ::close(fd);
+                fail("cannot write " + in_dir(f.name) + ": " + std::strerror(e));
+            }
+            done += size_t(n);
+        }
+        if (::close(fd) != 0) fail("cannot write " + in_dir(f.name) + ": " + std::strerror(errno));
+    }
+
+    // Moves every written file into place, keeping whatever was there in the hidden folder.
+    void move_into_place() {
+        const std::string kept = temp_ + "/.kept";
+        if (::mkdir(kept.c_str(), 0777) != 0) fail("cannot write into " + quote(dir_) + ": " + std::strerror(errno));
+        for (const std::string& name : written_) {
+            const std::string target = dir_ + "/" + name;
+            struct stat st {};
+            Moved m{name, false};
+            if (::lstat(target.c_str(), &st) == 0) {
+                if (::rename(target.c_str(), (kept + "/" + name).c_str()) != 0)
+                    fail("cannot write " + in_dir(name) + ": " + std::strerror(errno));
+                m.kept = true;
+            }
+            moved_.push_back(m);
+            if (::rename((temp_ + "/" + name).c_str(), target.c_str()) != 0) {
+                const int e = errno;
+                moved_.back().placed = false;
+                fail("cannot write " + in_dir(name) + ": " + std::strerror(e));
+            }
+        }
+    }
+
+    void done() {
+        done_ = true;
+        remove_temp();
+    }
+
+private:
+    struct Moved {
+        std::string name;
+        bool kept;           // the file that was there is in temp_/.kept
+        bool placed = true;  // the new file reached dir_
+    };
+
+    void remove_temp() {
+        if (temp_.empty()) return;
+        std::error_code ec;
+        fs::remove_all(temp_, ec);
+        temp_.clear();
+    }
+
+    void undo() {
+        for (auto m = moved_.rbegin(); m != moved_.rend(); ++m) {
+            const std::string target = dir_ + "/" + m->name;
+            if (m->placed) ::unlink(target.c_str());
+            if (m->kept) ::rename((temp_ + "/.kept/" + m->name).c_str(), target.c_str());
+        }
+        remove_temp();
+        for (auto d = made_.rbegin(); d != made_.rend(); ++d) ::rmdir(d->c_str());
+    }
+
+    std::string dir_, temp_;
+    std::vector<std::string> made_, written_;
+    std::vector<Moved> moved_;
+    bool done_ = false;
+};
+
+// "a/b//" -> "a/b": a folder's name without the slashes after it ("/" stays).
+std::string without_trailing_slashes(std::string dir) {
+    while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
+    return dir;
+}
+
+}  // namespace
+
+std::string write_model(const GeneratedModel& model, const std::string& dir_as_given) {
+    if (dir_as_given.empty()) throw Error("DIR: expected a folder name, got ''");
+    const std::string dir = without_trailing_slashes(dir_as_given);
+    ModelWrite w(dir);
+    w.make_folders();
+    for (const GeneratedFile& f : model.files) w.check_target(f.name);
+    w.make_temp();
+    for (const GeneratedFile& f : model.files) w.put(f);
+    w.move_into_place();
+    w.done();
+    return dir + "/" + model.obj_name;
 }
 
 }  // namespace dsr

@@ -36,10 +36,14 @@ struct GeneratedModel {
 
 GeneratedModel windmill_model();
 
-// Writes every file of `model` into `dir` (created when missing): all of them first into a fresh
-// temporary folder inside `dir`, then each renamed into place, so no file is ever half-written
-// and a failure while writing (a full disk) leaves `dir` as it was. Returns the OBJ's path.
-// Throws dsr::Error naming the path that failed.
+// Writes every file of `model` into `dir` (created, with its missing parents, when absent), all
+// or nothing: a name in `dir` held by a folder (or anything but a file) is refused before any
+// write; every file is written into a hidden folder inside `dir`, then each moved into place (the
+// file it replaces kept aside until the end); a failure anywhere (a full disk, a name too long)
+// puts back what was there and removes every folder it made. Returns the OBJ's path. Throws
+// dsr::Error naming `dir` as given (quoted, scene/user_file.h) and the file, never the hidden
+// folder: "cannot write 'brick_normal.png' in 'out/wm': No space left on device",
+// "DIR: expected a folder, got 'out/wm', a file".
 std::string write_model(const GeneratedModel& model, const std::string& dir);
 
 }  // namespace dsr
