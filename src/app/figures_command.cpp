@@ -2,6 +2,8 @@
 // each a plain PNG; docs/figures.md sets them beside the captions.
 #include <stdlib.h>
 
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -18,10 +20,19 @@
 #include "platform/resources.h"
 #include "scene/generated_model.h"
 #include "scene/scene.h"
+#include "scene/user_file.h"
 
 namespace dsr {
 
 namespace {
+
+// An output folder that exists as something else is refused by what it is ("a file").
+void require_folder(const std::string& command, const std::string& flag, const std::string& dir) {
+    struct stat st {};
+    if (::stat(dir.c_str(), &st) != 0 || S_ISDIR(st.st_mode)) return;
+    throw Error(command + ": " + flag + ": expected a folder, got " + quote(dir) + ", " +
+                (S_ISREG(st.st_mode) ? std::string("a file") : kind_of(st.st_mode)));
+}
 
 // A square close-up, magnified with nearest neighbour so single pixels (and aliasing)
 // stay visible. (x0, y0) is the top-left corner in top-down pixel coordinates.
@@ -55,6 +66,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
     OutputSet outputs("dsr figures");
     add_scene_inputs(outputs, scene.inputs);
     if (dir == FiguresSettings{}.dir) outputs.make_dir("-o", kOutDir);  // the default's parent
+    require_folder("dsr figures", "-o", dir);
     outputs.make_dir("-o", dir);
     const Stage stage("rendering the figures of " + scene_path);
     auto ctx = create_context(ContextDesc{context_backend(flags.context), n, n});

@@ -1,21 +1,38 @@
 // `dsr gen-textures DIR`: the default scene's procedural textures (scene/procedural_textures.h)
 // written as files, as data/ holds them.
+#include <sys/stat.h>
+
 #include <cstdio>
 
 #include "app/args.h"
 #include "app/command_table.h"
 #include "app/commands.h"
+#include "dsr_error.h"
 #include "scene/image.h"
 #include "scene/output_set.h"
 #include "scene/procedural_textures.h"
+#include "scene/user_file.h"
 
 namespace dsr {
+
+namespace {
+
+// An output folder that exists as something else is refused by what it is ("a file").
+void require_folder(const std::string& command, const std::string& flag, const std::string& dir) {
+    struct stat st {};
+    if (::stat(dir.c_str(), &st) != 0 || S_ISDIR(st.st_mode)) return;
+    throw Error(command + ": " + flag + ": expected a folder, got " + quote(dir) + ", " +
+                (S_ISREG(st.st_mode) ? std::string("a file") : kind_of(st.st_mode)));
+}
+
+}  // namespace
 
 int cmd_gen_textures(const std::vector<std::string>& argv) {
     GenTexturesSettings flags;  // the gen-textures command's table (app/command_table.h)
     parse_command_line(gen_textures_command(flags), argv);
     if (flags.dir.empty()) fail_command("gen-textures", "expected an output folder, got nothing");
     const std::string dir = flags.dir;
+    require_folder("dsr gen-textures", "DIR", dir);
     OutputSet outputs("dsr gen-textures");  // all or none (scene/output_set.h)
     outputs.make_dir("DIR", dir);
     for (const auto& [name, img] : default_textures()) outputs.put_image("DIR", dir + "/" + name, img);
