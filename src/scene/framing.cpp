@@ -101,7 +101,30 @@ void apply_camera_fit(Scene& scene, const CameraFit& fit) {
     const SceneBounds b = scene_bounds(scene);
     const std::string why = unframeable(b);
     if (!why.empty()) throw Error(fit.where + ": camera fit: expected something to frame, got " + why);
-    scene.camera = fit_camera(b, fit.from, fit.fov_deg, 1.0f);
+    const Camera c = fit_camera(b, fit.from, fit.fov_deg, 1.0f);
+    // The framed camera is held to a written camera line's rules (scene_file.cpp): every number
+    // finite and within +-1e12, fov in (0, 180), near > 0, far / near at most kMaxFarOverNear, the
+    // target away from the position and up not along the view.
+    const std::string at = fit.where + ": camera fit: expected ";
+    char fov[32];
+    std::snprintf(fov, sizeof fov, "%g", double(c.fov_deg));
+    const glm::vec3 v[3] = {c.pos, c.target, c.up};
+    for (const glm::vec3& p : v)
+        for (int i = 0; i < 3; ++i)
+            if (!(std::fabs(p[i]) <= kMaxSceneNumber))
+                throw Error(at + "a camera within +-1e12, got a position of " + number_text(c.pos.x) + " " +
+                            number_text(c.pos.y) + " " + number_text(c.pos.z) + " (fov " + fov + ")");
+    if (!(c.fov_deg > 0 && c.fov_deg < 180)) throw Error(at + "fov in (0, 180) degrees, got " + fov);
+    if (!(c.near_plane > 0 && double(c.far_plane) > double(c.near_plane) &&
+          double(c.far_plane) <= kMaxFarOverNear * double(c.near_plane)))
+        throw Error(at + "far / near at most 1e7, got " + number_text(c.far_plane) + " / " + number_text(c.near_plane) +
+                    " (fov " + fov + " frames the scene from too near: use a smaller fov)");
+    const glm::vec3 dir = c.target - c.pos;
+    if (!(glm::length(dir) > 0) || !(glm::length(glm::cross(glm::normalize(dir), c.up)) > 1e-4f * glm::length(c.up)))
+        throw Error(at + "a camera away from its target with up not along the view, got position " +
+                    number_text(c.pos.x) + " " + number_text(c.pos.y) + " " + number_text(c.pos.z) + " and target " +
+                    number_text(c.target.x) + " " + number_text(c.target.y) + " " + number_text(c.target.z));
+    scene.camera = c;
 }
 
 Camera reframe(const Scene& scene, const Camera& current, float aspect) {
