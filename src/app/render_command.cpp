@@ -25,6 +25,7 @@
 #include "platform/resources.h"
 #include "scene/framing.h"
 #include "scene/scene.h"
+#include "scene/shadow_budget.h"
 
 namespace dsr {
 
@@ -56,6 +57,18 @@ int cmd_render(const std::vector<std::string>& argv) {
     Caps caps = probe_caps(split_caps(caps_with_environment(flags.caps)));
     // depth auto: choose_paths decides (the depth texture where ARB_depth_texture exists).
     const ShaderOptions opts = ro.resolved(scene);
+    // --lights N-shadow / own-shadow: the shadow maps' budget, at the texel size and clamp the
+    // shadow stage will allocate with (scene/shadow_budget.h), before any is made.
+    if (flags.lights && flags.lights->set == LightSet::shadow && opts.shadow_lights) {
+        GLint max_texture = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+        const int texel_bytes = shadow_texel_bytes(shadow_maps_packed(caps), caps.fbo);
+        const ShadowBudgetUse use = shadow_budget_use(scene.lights, texel_bytes, std::max(64, int(max_texture)));
+        if (use.over)
+            throw Error("dsr render: --lights: expected " +
+                        shadow_budget_text(scene.lights[use.light], use.before, texel_bytes, std::max(64, int(max_texture))) +
+                        " (light " + std::to_string(use.light + 1) + " of " + std::to_string(scene.lights.size()) + ")");
+    }
     const PostOptions& post = opts.post;
     const SkipOptions& skip = opts.skip;
 

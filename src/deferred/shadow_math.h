@@ -17,11 +17,13 @@
 
 #include "scene/bounds.h"
 #include "scene/scene.h"
+#include "scene/shadow_budget.h"
 
 namespace dsr {
 
-// A spot cone of half-angle above this (degrees) is mapped by six faces, not one frustum.
-constexpr float kSpotCubeAngle = 75.0f;
+// A spot cone of half-angle above this (degrees) is mapped by six faces, not one frustum (the
+// shadow budget counts maps by the same rule: scene/shadow_budget.h).
+constexpr float kSpotCubeAngle = kShadowCubeSpotAngle;
 // The slope-scaled bias's tangent is capped here (a surface edge-on to the light).
 constexpr float kMaxShadowTangent = 8.0f;
 

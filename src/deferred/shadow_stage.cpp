@@ -2,6 +2,7 @@
 #include "deferred/shadow_stage.h"
 
 #include <algorithm>
+#include <string>
 
 #include "deferred/depth_codec.h"
 #include "deferred/gpu_scene.h"
@@ -10,6 +11,7 @@
 #include "gl/check.h"
 #include "gl/readback.h"
 #include "gl/state.h"
+#include "scene/shadow_budget.h"
 
 namespace dsr {
 
@@ -131,6 +133,13 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
     std::vector<ShadowLookup> out(size_t(f.shadowed_lights));
     last_.clear();
     if (f.shadowed_lights == 0) return out;
+    // Every shadowed light's map counted against the budget before any is made, at this stage's
+    // own texel size (scene/shadow_budget.h).
+    const int texel_bytes = shadow_texel_bytes(packed_, !main_buffer_);
+    const ShadowBudgetUse use = shadow_budget_use(scene.lights, texel_bytes, max_texture_);
+    if (use.over)
+        throw Error("shadow stage: expected " + shadow_budget_text(scene.lights[use.light], use.before, texel_bytes, max_texture_) +
+                    " (light " + std::to_string(use.light + 1) + " of " + std::to_string(scene.lights.size()) + ")");
     if (bounds_.size() != scene.objects.size()) bounds_ = object_bounds(scene);
     const ShadowFit fit = shadow_fit(f.camera, f.aspect, bounds_);
     const glm::dmat4 eye_to_world = glm::inverse(f.camera.view_d());

@@ -27,6 +27,7 @@
 #include "scene/light_law.h"
 #include "scene/model_data.h"
 #include "scene/scene.h"
+#include "scene/shadow_budget.h"
 #include "scene/user_file.h"
 
 namespace dsr {
@@ -563,6 +564,14 @@ private:
                 line.fail("expected attenuation whose radius (where it reaches threshold " + fmt(l.threshold) +
                           ") is within 1e12, got " + fmt(l.radius));
         }
+        // Every shadow map of the scene together within kMaxShadowBytes, at the most a texel
+        // takes on any path (scene/shadow_budget.h).
+        if (l.shadow.on) {
+            const long long bytes = shadow_map_bytes(l, kMaxShadowTexelBytes);
+            if (bytes > kMaxShadowBytes - shadow_bytes_)
+                line.fail("expected " + shadow_budget_text(l, shadow_bytes_, kMaxShadowTexelBytes));
+            shadow_bytes_ += bytes;
+        }
         scene_.lights.push_back(l);
     }
 
@@ -627,6 +636,7 @@ private:
     std::vector<int> material_lines_;  // parallel to scene_.materials
     std::map<std::string, int> model_index_;  // resolved OBJ path -> scene_.models
     size_t triangles_ = 0, texels_ = 0;       // spent of kMaxSceneTriangles, kMaxSceneTexels
+    long long shadow_bytes_ = 0;              // spent of kMaxShadowBytes
     std::vector<std::pair<int, size_t>> object_lines_;  // (line, index into scene_.objects)
 };
 
