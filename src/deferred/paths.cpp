@@ -64,10 +64,10 @@ std::string accum_format_missing(const Caps& caps, bool fbo, AccumFormat a) {
                      forced_note(caps, "no-fbo");
     if (!caps.texture_float || (half && !caps.half_float))
         return std::string("needs float targets (ARB_texture_float") + (half ? " and ARB_half_float_pixel" : "") +
-               "), which this GL lacks" + forced_note(caps, "no-float");
+               "), " + which_missing(caps, "no-float");
     if (half ? !caps.half_float_blend : !caps.float_blend)
-        return std::string("needs additive blending into ") + (half ? "RGBA16F" : "RGBA32F") +
-               " targets, which this GL does not do (measured)" + forced_note(caps, "no-float-blend");
+        return std::string("needs additive blending into ") + (half ? "RGBA16F" : "RGBA32F") + " targets, " +
+               which_missing(caps, "no-float-blend", "which this GL does not do (measured)");
     return "";
 }
 
@@ -159,37 +159,42 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     choose_ambient_target(caps, opts, p);
 
     if (!caps.glsl120)
-        p.refused = "GLSL 1.20 is required and this GL offers " +
-                    (caps.glsl_version.empty() ? std::string("none") : caps.glsl_version) + " (GL " + caps.version + ")";
+        p.refused = "GLSL 1.20 is required" +
+                    (is_forced_off(caps, "no-glsl") ? ", " + which_missing(caps, "no-glsl")
+                                                 : " and this GL offers " +
+                                                       (caps.glsl_version.empty() ? std::string("none") : caps.glsl_version) +
+                                                       " (GL " + caps.version + ")");
     else if (position && !caps.fbo)
         p.refused = std::string("--depth ") + p.depth +
                     " needs render to texture (EXT_framebuffer_object): without it the G-buffer is copied from the "
                     "8-bit main frame buffer" + forced_note(caps, "no-fbo");
     else if (position && !(caps.texture_float && (p.depth_path == DepthPath::position32 || caps.half_float)))
         p.refused = std::string("--depth ") + p.depth + " needs a float G-buffer target (ARB_texture_float" +
-                    (p.depth_path == DepthPath::position16 ? " and ARB_half_float_pixel" : "") +
-                    "), which this GL lacks" + forced_note(caps, "no-float") + " (use --depth texture or packed)";
+                    (p.depth_path == DepthPath::position16 ? " and ARB_half_float_pixel" : "") + "), " +
+                    which_missing(caps, "no-float") + " (use --depth texture or packed)";
     else if (p.depth_path == DepthPath::texture && !caps.depth_texture)
-        p.refused = "--depth texture needs ARB_depth_texture, which is missing (use --depth packed)";
+        p.refused = "--depth texture needs ARB_depth_texture, " + which_missing(caps, "no-depth-texture", "which is missing") +
+                    " (use --depth packed)";
     else if (opts.hdr.float_accum() && !accum_format_ok(caps, p.fbo, opts.hdr.accum))
         p.refused = "--accum " + std::string(accum_format_name(opts.hdr.accum)) + " " + accum_format_missing(caps, p.fbo, opts.hdr.accum);
     else if (opts.hdr.exposure_auto && !(caps.texture_float && p.fbo))
         p.refused = "--exposure auto reduces P-buffer 0's log luminance into a float target: it needs ARB_texture_float and "
                     "EXT_framebuffer_object" + forced_note(caps, "no-float") + forced_note(caps, "no-fbo");
     else if (opts.gbuffer_half && !(caps.half_float && caps.texture_float))
-        p.refused = "half-float G-buffer targets need ARB_texture_float and ARB_half_float_pixel";
+        p.refused = "half-float G-buffer targets need ARB_texture_float and ARB_half_float_pixel, " + which_missing(caps, "no-float");
     else if (opts.depth_bounds && !caps.depth_bounds)
-        p.refused = "--depth-bounds on needs EXT_depth_bounds_test, which this GL lacks (llvmpipe has none)";
+        p.refused = "--depth-bounds on needs EXT_depth_bounds_test, " +
+                    which_missing(caps, "no-depth-bounds", "which this GL lacks (llvmpipe has none)");
     else if (opts.render_target == RenderTarget::fbo && !caps.fbo)
-        p.refused = "--render-target fbo needs EXT_framebuffer_object, which this GL lacks";
+        p.refused = "--render-target fbo needs EXT_framebuffer_object, " + which_missing(caps, "no-fbo");
     else if (opts.render_target == RenderTarget::pbuffer && !caps.pbuffer_surfaces)
         p.refused = "--render-target pbuffer needs pbuffer surfaces: run with --context egl (OSMesa has none)";
     else if (opts.depth_bounds && opts.light_geometry != LightGeometry::quad)
         p.refused = "--depth-bounds on applies to --light-geometry quad only";
     else if (opts.depth_handoff == DepthHandoff::blit && !(p.fbo && caps.framebuffer_blit))
-        p.refused = std::string("--depth-handoff blit needs EXT_framebuffer_blit between framebuffer objects, which ") +
-                    (p.fbo ? "this GL lacks" + forced_note(caps, "no-framebuffer-blit")
-                           : "the " + p.render_target + " render target has not") + " (use --depth-handoff pass)";
+        p.refused = std::string("--depth-handoff blit needs EXT_framebuffer_blit between framebuffer objects, ") +
+                    (p.fbo ? which_missing(caps, "no-framebuffer-blit")
+                           : "which the " + p.render_target + " render target has not") + " (use --depth-handoff pass)";
     else if (opts.depth_handoff == DepthHandoff::blit && p.accum_stencil)
         p.refused = "--depth-handoff blit: the stencil geometry's depth-stencil buffer and the G-buffer's depth differ in "
                     "format, and a depth blit between them is INVALID_OPERATION (use --depth-handoff pass or auto)";
@@ -197,7 +202,7 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
              (p.tile_size < 8 || p.tile_size > 512 || p.tile_lights < 1 || p.tile_lights > 32))
         p.refused = "tiles: tile size must be 8..512 and lights per pass 1..32";
     else if (draws_tiles(opts.light_geometry) && p.tile_fetch_vertex && !caps.glsl130)
-        p.refused = "--tile-fetch vertex needs GLSL 1.30 (flat varyings), which this GL lacks" + forced_note(caps, "no-glsl130");
+        p.refused = "--tile-fetch vertex needs GLSL 1.30 (flat varyings), " + which_missing(caps, "no-glsl130");
     else if (draws_tiles(opts.light_geometry) && p.tile_fetch_vertex && opts.tile_plan != TileGrouping::lists)
         p.refused = "--tile-fetch vertex applies to --tile-plan lists (groups read their lights with a uniform count)";
     else if (draws_tiles(opts.light_geometry) && p.tile_fetch_vertex && p.tile_lights > p.tile_vertex_lights)

@@ -1,6 +1,7 @@
 // Capabilities, probed once at start-up into booleans; every path
 // decision branches on this struct, never on version strings.
 #pragma once
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,18 @@ struct Caps {
 // Reads the current context. `force_off` lists capabilities to report missing, by the names of
 // cap_names.h; an unknown name throws dsr::Error (check_cap_names' line).
 Caps probe_caps(const std::vector<std::string>& force_off = {});
+
+// Whether --caps (or $DSR_CAPS) hid capability `name` (cap_names.h).
+inline bool is_forced_off(const Caps& caps, const char* name) {
+    return std::find(caps.forced_off.begin(), caps.forced_off.end(), name) != caps.forced_off.end();
+}
+
+// The end of a refusal for a missing capability `name`: `otherwise` ("which this GL lacks") where
+// the GL has none, "which --caps or $DSR_CAPS hides (forced off: NAME)" where they hid it, so a
+// refusal never blames a GL that has it. Inline: the fuzz targets link the paths without the probe.
+inline std::string which_missing(const Caps& caps, const char* name, const std::string& otherwise = "which this GL lacks") {
+    return is_forced_off(caps, name) ? std::string("which --caps or $DSR_CAPS hides (forced off: ") + name + ")" : otherwise;
+}
 
 // One line per capability with the extension it comes from, for `dsr info`.
 std::string describe(const Caps& caps);
