@@ -87,7 +87,15 @@ int cmd_render(const std::vector<std::string>& argv) {
         counted = ds.render(scene, out_w, out_h);
     }
     if (view != View::final) ds.draw_view(view, out_w, out_h);
-    Image img = opaque(view == View::final ? ds.read_output(out_w, out_h) : read_pixels(out_w, out_h));
+    // A float image file (.exr, .tif) of a float P-buffer 0 without an operator holds the light
+    // as it is, past 1 (docs/hdr.md); every other output is the 8-bit main frame buffer's.
+    const std::string ext = image_extension(out);
+    const bool float_file = ext == ".exr" || ext == ".tif" || ext == ".tiff";
+    const bool linear = view == View::final && float_file && opts.hdr.float_accum() &&
+                        opts.hdr.tonemap == ToneMap::none && !opts.hdr.output_srgb;
+    Image img = opaque(linear ? ds.read_output_linear(out_w, out_h)
+                       : view == View::final ? ds.read_output(out_w, out_h)
+                                             : read_pixels(out_w, out_h));
 
     const FrameStats& last = counted;
     auto med = [&](double StageTimes::*field) {
@@ -175,7 +183,8 @@ int cmd_render(const std::vector<std::string>& argv) {
     // with the scale the counted frame's final pass applied (2^stops, or --exposure auto's).
     j["hdr"] = {{"accum", accum_format_name(opts.hdr.accum)}, {"tonemap", tone_map_name(opts.hdr.tonemap)},
                 {"exposure_stops", opts.hdr.exposure}, {"exposure_auto", opts.hdr.exposure_auto},
-                {"exposure_scale", ds.exposure_scale()}, {"output_srgb", opts.hdr.output_srgb}};
+                {"exposure_scale", ds.exposure_scale()}, {"output_srgb", opts.hdr.output_srgb},
+                {"float_image", linear}};  // the image file holds P-buffer 0's values past 1
     j["depth_bounds"] = paths.depth_bounds;
     j["light_passes"] = last.light_passes;
     // The depth hand-off as run (docs/forward.md) (null: nothing needed it) and the forward stage's work.

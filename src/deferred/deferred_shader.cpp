@@ -287,6 +287,8 @@ Image DeferredShader::read_output(int out_w, int out_h) {
     return read_texture_rgba8(b.texture(0), b.width(), b.height(), b.texture_width(), b.texture_height());
 }
 
+Image DeferredShader::read_output_linear(int out_w, int out_h) const { return final_.read_linear(*targets_, out_w, out_h); }
+
 Image DeferredShader::read_pbuffer(int fb) {
     const PBuffer& b = targets_->pbuffer(fb);
     return read_texture(b.texture(0), b.width(), b.height(), b.texture_width(), b.texture_height(), false);

@@ -57,6 +57,9 @@ public:
     // The last frame's image as the main frame buffer would hold it after the final pass, out_w x
     // out_h (render()'s): read from P-buffer 0 where the final pass was skipped, else read_pixels.
     Image read_output(int out_w, int out_h);
+    // The same frame without the 8-bit main frame buffer: P-buffer 0 as float after the final
+    // stage's exposure, unclamped (FinalStage::read_linear), for float image files.
+    Image read_output_linear(int out_w, int out_h) const;
     // The main frame buffer's size the frames are projected for (§3.6): its aspect is the
     // projection's, so an image scaled to it keeps its proportions. render() sets it; before
     // any, the buffers' aspect. For the one-stage API below.

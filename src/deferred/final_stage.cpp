@@ -9,6 +9,7 @@
 #include "deferred/screen_quad.h"
 #include "gl/blit.h"
 #include "gl/check.h"
+#include "gl/readback.h"
 #include "gl/state.h"
 
 namespace dsr {
@@ -18,6 +19,37 @@ float auto_exposure_scale(const std::vector<float>& means, float key) {
     double sum = 0;
     for (float m : means) sum += m;
     return float(double(key) / std::exp2(sum / double(means.size())));
+}
+
+Image resample_bilinear(const Image& img, int w, int h) {
+    if (w == img.width && h == img.height) return img;
+    Image out;
+    out.width = w, out.height = h;
+    out.rgba.resize(size_t(w) * size_t(h) * 4);
+    // Output pixel centre x + 0.5 lands at source texel coordinate (x + 0.5) * W / w - 0.5.
+    auto taps = [](int i, int n_out, int n_in, int& a, int& b, float& t) {
+        const double c = std::clamp((i + 0.5) * double(n_in) / double(n_out) - 0.5, 0.0, double(n_in - 1));
+        a = int(std::floor(c));
+        b = std::min(a + 1, n_in - 1);
+        t = float(c - a);
+    };
+    for (int y = 0; y < h; ++y) {
+        int y0, y1;
+        float ty;
+        taps(y, h, img.height, y0, y1, ty);
+        for (int x = 0; x < w; ++x) {
+            int x0, x1;
+            float tx;
+            taps(x, w, img.width, x0, x1, tx);
+            float* d = out.at(x, y);
+            for (int c = 0; c < 4; ++c) {
+                const float top = img.at(x0, y1)[c] + (img.at(x1, y1)[c] - img.at(x0, y1)[c]) * tx;
+                const float bottom = img.at(x0, y0)[c] + (img.at(x1, y0)[c] - img.at(x0, y0)[c]) * tx;
+                d[c] = bottom + (top - bottom) * ty;
+            }
+        }
+    }
+    return out;
 }
 
 FinalStage::FinalStage(bool fbo) : fbo_(fbo) {}
@@ -94,6 +126,15 @@ void FinalStage::draw(const RenderTargets& t, int out_w, int out_h) {
     draw_quad(1.0f, 1.0f, extent.x, extent.y);
     glBindTexture(GL_TEXTURE_2D, 0);
     check_gl_stage("final stage: tone mapping");
+}
+
+Image FinalStage::read_linear(const RenderTargets& t, int out_w, int out_h) const {
+    const PBuffer& accum = t.pbuffer(P_ACCUM);
+    Image img = read_texture(accum.texture(0), accum.width(), accum.height(), accum.texture_width(),
+                             accum.texture_height(), false);
+    for (size_t i = 0; i < img.rgba.size(); ++i)
+        if (i % 4 != 3) img.rgba[i] = (img.rgba[i] < 0.0f ? 0.0f : img.rgba[i]) * scale_;
+    return resample_bilinear(img, out_w, out_h);
 }
 
 void FinalStage::draw_texture(GLuint texture, int out_w, int out_h, glm::vec2 extent) const {

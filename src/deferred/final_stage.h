@@ -13,12 +13,17 @@
 #include "deferred/shader_table.h"
 #include "gl/gl.h"
 #include "gl/program.h"
+#include "scene/image.h"
 
 namespace dsr {
 
 // The exposure scale --exposure auto applies: key / exp2(mean of log2(delta + L)) (Reinhard et
 // al. 2002, Eqs. 1-2, key a = 0.18), from the reduced copy's means; 1 for an empty one. Pure.
 float auto_exposure_scale(const std::vector<float>& block_log2_means, float key = 0.18f);
+
+// `img` resampled to w x h as the final pass scales P-buffer 0 (bilinear, each output pixel's
+// centre mapped onto the source's texel centres, clamped to its edge); img itself at its own size.
+Image resample_bilinear(const Image& img, int w, int h);
 
 class FinalStage {
 public:
@@ -32,6 +37,11 @@ public:
     void draw_texture(GLuint texture, int out_w, int out_h, glm::vec2 extent = {1, 1}) const;
     // The scale the last draw multiplied P-buffer 0 by (2^E, or auto's); 1 on the fixed-function path.
     float exposure_scale() const { return scale_; }
+    // What the last draw wrote without its 8-bit main frame buffer: P-buffer 0 read back as float,
+    // times exposure_scale() (negative values taken as 0, as the tonemap program takes them),
+    // not clamped above; at out_w x out_h through resample_bilinear. For float image files
+    // (docs/hdr.md): meaningful with the operator `none` and linear output.
+    Image read_linear(const RenderTargets& targets, int out_w, int out_h) const;
     // P-buffer 0 reduced to a small grid (at most 64 blocks a side), each block's mean log2(1e-4 + L)
     // and its largest L, as (mean, max) pairs. Empty where the configuration has no log_luminance
     // program (--exposure auto or float accumulation, with float targets).
