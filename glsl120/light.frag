@@ -125,7 +125,7 @@ void main()
     vec3 diffuse = texture2D(diffuse_map, texcoord).rgb;
     vec4 specular = texture2D(specular_map, texcoord);
     vec3 c = light_contribution(lightpos, lightcolor, lightdir, lightspot, lightatt, pos, view_vector(pos), normal, diffuse,
-                                specular.rgb, decode_shininess(specular.a));
+                                specular.rgb, GBUFFER_SHININESS(specular.a));
 #ifdef SHADOW
     vec3 to_light = lightcolor.w > 1.5 ? -lightdir.xyz : normalize(lightpos.xyz - pos);
     c *= shadow_factor(pos, normal, to_light);

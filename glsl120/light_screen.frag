@@ -49,7 +49,7 @@ void main()
     vec4 surface = texture2D(diffuse_map, texcoord);
     vec3 diffuse = surface.rgb;
     vec4 specular = texture2D(specular_map, texcoord);
-    float shininess = decode_shininess(specular.a);
+    float shininess = GBUFFER_SHININESS(specular.a);
     vec3 v = view_vector(pos);  // once, not per light
     vec3 c = vec3(0.0);
     for (int k = 0; k < LIGHTS; ++k) {  // the demo's loop, to its constant NR_LIGHTS

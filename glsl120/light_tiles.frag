@@ -71,7 +71,7 @@ void main()
     normal /= len;
     vec3 diffuse = texture2D(diffuse_map, texcoord).rgb;
     vec4 specular = texture2D(specular_map, texcoord);
-    float shininess = decode_shininess(specular.a);
+    float shininess = GBUFFER_SHININESS(specular.a);
     vec3 v = view_vector(pos);  // once, not per light
     vec3 c = vec3(0.0);
     bool any = false;

@@ -19,8 +19,58 @@ vec3 view_vector(vec3 p)
     return -normalize(p);  // Equation 5: from p towards the viewer at the eye-space origin
 }
 
+#ifdef METAL_ROUGH
+// glTF 2.0's metallic-roughness BRDF (the glTF 2.0 specification, Appendix B, as the Khronos glTF
+// Sample Viewer's brdf.glsl writes it; docs/metal_rough.md), for unit l towards the light and
+// unit v towards the viewer; returns f * Scolor * NdotL, the caller applies the attenuation:
+//   D = a^2 / (pi ((N.H)^2 (a^2 - 1) + 1)^2),  a = roughness^2 (Trowbridge-Reitz / GGX)
+//   V = 0.5 / (N.L sqrt((N.V)^2 (1 - a^2) + a^2) + N.V sqrt((N.L)^2 (1 - a^2) + a^2))  (height-correlated Smith)
+//   F = F0 + (1 - F0) (1 - V.H)^5,  F0 = mix(0.04, base, metallic)  (Schlick)
+//   f = (1 - F) c_diff / pi + F D V,  c_diff = mix(base, 0, metallic)
+// Dot products clamped to [0, 1] as the sample viewer clamps them. Beyond the spec: roughness
+// below kMinRoughness is raised to it, so a point light's highlight on a smooth surface stays a
+// finite peak (a = 0 would make D a delta); analytic_reference.cpp does the same.
+const float kPi = 3.14159265358979;
+const float kMinRoughness = 0.03;
+vec3 brdf_metal_rough(vec3 Scolor, vec3 l, vec3 v, vec3 n, vec3 base, float metallic, float roughness)
+{
+    vec3 hv = l + v;
+    float hl = length(hv);
+    vec3 h = hl > 1e-6 ? hv / hl : n;  // l opposite v: no highlight, no NaN (as brdf())
+    float NdotL = clamp(dot(n, l), 0.0, 1.0);
+    float NdotV = clamp(dot(n, v), 0.0, 1.0);
+    float NdotH = clamp(dot(n, h), 0.0, 1.0);
+    float VdotH = clamp(dot(v, h), 0.0, 1.0);
+    float r = max(roughness, kMinRoughness);
+    float a2 = r * r * r * r;  // alpha^2, alpha = roughness^2
+    float dd = NdotH * NdotH * (a2 - 1.0) + 1.0;
+    float D = a2 / (kPi * dd * dd);
+    float ggx = NdotL * sqrt(NdotV * NdotV * (1.0 - a2) + a2) + NdotV * sqrt(NdotL * NdotL * (1.0 - a2) + a2);
+    float V = ggx > 0.0 ? 0.5 / ggx : 0.0;
+    vec3 F0 = mix(vec3(0.04), base, metallic);
+    float s = 1.0 - VdotH;
+    float s2 = s * s;
+    vec3 F = F0 + (1.0 - F0) * (s2 * s2 * s);
+    vec3 cdiff = mix(base, vec3(0.0), metallic);
+    return ((1.0 - F) * cdiff / kPi + F * (D * V)) * Scolor * NdotL;
+}
+
+// The material model of a G-buffer pixel: target 0's alpha is 1 for Phong (as the tutorial's
+// material pass writes it) and 0.5 for metallic-roughness (docs/guide.md). A metallic-roughness
+// pixel gets Mshi = -1, which brdf() takes as the flag (Phong's decoded shininess is >= 1); its
+// Mdiff is the base colour, Mspec (metallic, roughness, occlusion).
+float material_model(float normal_alpha, float shininess)
+{
+    return normal_alpha < 0.75 ? -1.0 : shininess;
+}
+#endif
+
 vec3 brdf(vec3 Scolor, vec3 l, float dist, vec3 p, vec3 v, vec3 n, vec3 Mdiff, vec3 Mspec, float Mshi)
 {
+#ifdef METAL_ROUGH
+    if (Mshi < 0.0)
+        return brdf_metal_rough(Scolor, dist > 0.0 ? l / dist : n, v, n, Mdiff, Mspec.x, Mspec.y);
+#endif
 #ifdef LISTING2_LITERAL
     v = -v;  // Listing 2's normalize(p), exactly: negation rounds nothing
     vec3 h = normalize(v + l);
@@ -116,3 +166,12 @@ float decode_shininess(float a)
 {
     return exp2(a * 11.0);
 }
+
+// What the deferred light shaders pass as Mshi for the pixel at texcoord, from the specular
+// target's alpha a: the decoded shininess, or with METAL_ROUGH the material model's flag
+// (material_model above) from the normal target's alpha (normal_map, texcoord: the shader's).
+#ifdef METAL_ROUGH
+#define GBUFFER_SHININESS(code) material_model(texture2D(normal_map, texcoord).a, decode_shininess(code))
+#else
+#define GBUFFER_SHININESS(code) decode_shininess(code)
+#endif

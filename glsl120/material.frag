@@ -13,6 +13,12 @@
 // normal map's included, flipped to face the camera), VERTEX_COLOR (the per-vertex colour
 // multiplies the diffuse colour and the coverage), CUT_OUT (a fragment whose coverage, the
 // diffuse map's alpha times the vertex colour's, is below alpha_cutoff is discarded).
+// METAL_ROUGH_MATERIAL: a glTF metallic-roughness material (docs/guide.md, "The G-buffer"):
+// target 0's alpha 0.5 marks the model, target 1 holds the base colour (map x factor), target 2
+// (metallic, roughness, occlusion, 0) with `specular` = (metallic, roughness, occlusion strength)
+// and speculartex the metallic-roughness map (green roughness, blue metallic, as glTF stores
+// them); where the ambient term is written here, it is scaled by the occlusion and the emissive
+// colour (emissive x emissivetex) is added.
 #include "depth_codec.glsl"
 #include "quantize.glsl"
 
@@ -27,6 +33,11 @@ uniform vec3 zrange;  // (near, far, log2(far/near))
 uniform float tile;
 #ifdef AMBIENT_TARGET
 uniform vec3 ambient;  // Listing 15's ambient colour
+#endif
+#ifdef METAL_ROUGH_MATERIAL
+uniform sampler2D occlusiontex;  // unit 3
+uniform sampler2D emissivetex;   // unit 4
+uniform vec3 emissive;
 #endif
 #ifdef CUT_OUT
 uniform float alpha_cutoff;  // Material::alpha_cutoff
@@ -72,7 +83,12 @@ void main()
 #else
     vec4 t1 = vec4(texture2D(colortex, txcoord).rgb * diffuse, 1.0);
 #endif
-#ifdef NO_SPECULAR
+#if defined(METAL_ROUGH_MATERIAL)
+    vec4 mr = texture2D(speculartex, txcoord);
+    float occlusion = 1.0 + specular.z * (texture2D(occlusiontex, txcoord).r - 1.0);  // glTF's strength mix
+    vec4 t2 = vec4(specular.x * mr.b, specular.y * mr.g, occlusion, 0.0);
+    t0.a = 0.5;  // the material model's flag (lighting.glsl material_model)
+#elif defined(NO_SPECULAR)
     vec4 t2 = vec4(0.0, 0.0, 0.0, shininess_code);
 #else
     vec4 t2 = vec4(texture2D(speculartex, txcoord).rgb * specular, shininess_code);
@@ -109,7 +125,16 @@ void main()
 #ifdef QUANTIZE_8BIT
     stored = texel8(stored);
 #endif
+#ifdef METAL_ROUGH_MATERIAL
+    // Occlusion scales the ambient (indirect) term only; the emissive colour is added once, here.
+    float occ = clamp(t2.b, 0.0, 1.0);
+#ifdef QUANTIZE_8BIT
+    occ = texel8(vec3(occ)).x;  // as target 2 stores it
+#endif
+    gl_FragData[AMBIENT_TARGET] = vec4(ambient * stored * occ + emissive * texture2D(emissivetex, txcoord).rgb, 1.0);
+#else
     gl_FragData[AMBIENT_TARGET] = vec4(ambient * stored, 1.0);
+#endif
 #endif
 #endif
 }

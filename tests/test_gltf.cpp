@@ -450,15 +450,19 @@ TEST(Gltf, MaterialMappingFromMetallicRoughness) {
     ASSERT_EQ(m.materials.size(), 5u);
     const dsr::Material& gold = m.materials[0];
     EXPECT_EQ(gold.name, "m.gltf:gold");
-    EXPECT_EQ(gold.diffuse, glm::vec3(1, 0.5f, 0.25f)) << "the base colour, not times 1 - metallic";
-    EXPECT_NEAR(gold.specular.g, 0.5 * 0.25, 1e-6) << "mix(0.04, base, metallic) x (1 - roughness)^2";
-    EXPECT_NEAR(gold.shininess, 2.0 / 0.0625 - 2.0, 1e-4) << "2 / a^2 - 2, a = roughness^2";
+    EXPECT_TRUE(gold.metal_rough()) << "glTF's own material model (docs/metal_rough.md)";
+    EXPECT_EQ(gold.diffuse, glm::vec3(1, 0.5f, 0.25f)) << "the base colour";
+    EXPECT_EQ(gold.metallic, 1.0f);
+    EXPECT_EQ(gold.roughness, 0.5f);
     EXPECT_EQ(m.materials[1].name, "m.gltf:#1");
     EXPECT_EQ(m.materials[1].alpha_cutoff, 0.5f) << "MASK's default cutoff";
     EXPECT_EQ(m.materials[2].alpha_cutoff, 0.3f);
     EXPECT_EQ(m.materials[3].opacity, 0.4f);
-    EXPECT_EQ(m.materials[3].shininess, 2048.0f) << "roughness 0 clamps";
-    EXPECT_NEAR(m.materials[3].specular.r, 0.04, 1e-6);
+    EXPECT_EQ(m.materials[3].roughness, 0.0f);
+    EXPECT_EQ(m.materials[3].metallic, 0.0f);
+    EXPECT_TRUE(m.materials[4].metal_rough()) << "the default material";
+    EXPECT_EQ(m.materials[4].metallic, 1.0f);
+    EXPECT_EQ(m.materials[4].roughness, 1.0f);
     ASSERT_EQ(m.meshes.size(), 4u);
     EXPECT_TRUE(m.meshes[0].two_sided);
     EXPECT_FALSE(m.meshes[1].two_sided);
@@ -471,15 +475,16 @@ TEST(Gltf, TexturesSrgbSamplingAndMaps) {
                 {"normalTexture", {{"index", 0}, {"scale", 2.0}}}};
     Builder b = textured_quad(mat, png, {{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}, {"minFilter", 9729}});
     const dsr::GltfModel m = parse(b.gltf());
-    ASSERT_EQ(m.textures.size(), 3u) << "one image baked three ways";
+    ASSERT_EQ(m.textures.size(), 3u) << "one image in three roles";
     const dsr::Material& mt = m.materials[0];
     ASSERT_GE(mt.diffuse_map, 0);
     ASSERT_GE(mt.normal_map, 0);
-    ASSERT_GE(mt.specular_map, 0);
+    ASSERT_GE(mt.metallic_roughness_map, 0);
+    EXPECT_EQ(mt.specular_map, -1);
     const auto& s = m.texture_sampling[size_t(mt.diffuse_map)];
     EXPECT_TRUE(s.srgb) << "base colour is sRGB-encoded";
     EXPECT_FALSE(m.texture_sampling[size_t(mt.normal_map)].srgb);
-    EXPECT_FALSE(m.texture_sampling[size_t(mt.specular_map)].srgb);
+    EXPECT_FALSE(m.texture_sampling[size_t(mt.metallic_roughness_map)].srgb);
     EXPECT_EQ(s.wrap_s, dsr::TextureSampling::Wrap::clamp);
     EXPECT_EQ(s.wrap_t, dsr::TextureSampling::Wrap::mirror);
     EXPECT_TRUE(s.nearest_mag);
@@ -488,9 +493,9 @@ TEST(Gltf, TexturesSrgbSamplingAndMaps) {
     // The normal map with scale 2 baked: (0, 1, -1) scaled to (0, 2, -1), normalised.
     const float* n = m.textures[size_t(mt.normal_map)].at(0, 0);
     EXPECT_NEAR(n[1], 2 / std::sqrt(5.0) * 0.5 + 0.5, 2e-3);
-    // Specular map: metallic (blue 0) x 1 = 0, roughness (green 1) x 1 = 1: black.
-    EXPECT_EQ(m.textures[size_t(mt.specular_map)].at(1, 1)[0], 0.0f);
-    EXPECT_EQ(mt.specular, glm::vec3(1)) << "the map gives the specular colour";
+    // The metallic-roughness map as stored (roughness in green, metallic in blue): the shader reads it.
+    EXPECT_EQ(m.textures[size_t(mt.metallic_roughness_map)].at(1, 1)[1], 1.0f);
+    EXPECT_EQ(m.textures[size_t(mt.metallic_roughness_map)].at(1, 1)[2], 0.0f);
 }
 
 TEST(Gltf, TextureTransformBakedIntoUvs) {

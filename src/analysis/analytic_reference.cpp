@@ -334,6 +334,34 @@ dvec3 closest_to_origin(const dvec3& a, const dvec3& b, const dvec3& c) {
 
 }  // namespace
 
+glm::dvec3 metal_rough_brdf(const dvec3& n, const dvec3& l, const dvec3& v, const dvec3& base, double metallic,
+                            double roughness, BrdfTerm perturb, double perturb_by) {
+    // Written from the glTF 2.0 specification's Appendix B and the Khronos sample viewer's
+    // brdf.glsl (docs/metal_rough.md), not from lighting.glsl.
+    auto scale = [&](BrdfTerm t) { return perturb == t ? 1.0 + perturb_by : 1.0; };
+    if (perturb == BrdfTerm::metallic_mix) metallic = std::clamp(metallic + perturb_by, 0.0, 1.0);
+    const dvec3 hv = l + v;
+    const double hl = glm::length(hv);
+    const dvec3 h = hl > 1e-12 ? hv / hl : n;
+    const double NdotL = std::clamp(glm::dot(n, l), 0.0, 1.0), NdotV = std::clamp(glm::dot(n, v), 0.0, 1.0);
+    const double NdotH = std::clamp(glm::dot(n, h), 0.0, 1.0), VdotH = std::clamp(glm::dot(v, h), 0.0, 1.0);
+    const double r = std::max(roughness, kMinRoughness);
+    const double alpha = r * r;
+    // D and V enter as a product, so scaling either would be the same change: each is put off
+    // through its own alpha instead.
+    const double aD = alpha * scale(BrdfTerm::D), a2D = aD * aD;
+    const double dd = NdotH * NdotH * (a2D - 1) + 1;
+    const double D = a2D / (kPi * dd * dd);
+    const double aV = alpha * scale(BrdfTerm::V), a2 = aV * aV;
+    const double ggx = NdotL * std::sqrt(NdotV * NdotV * (1 - a2) + a2) + NdotV * std::sqrt(NdotL * NdotL * (1 - a2) + a2);
+    const double V = ggx > 0 ? 0.5 / ggx : 0.0;
+    const dvec3 F0 = glm::mix(dvec3(0.04), base, metallic);
+    const dvec3 F = (F0 + (1.0 - F0) * std::pow(1 - VdotH, 5.0)) * scale(BrdfTerm::F);
+    const dvec3 c_diff = glm::mix(base, dvec3(0.0), metallic);
+    const dvec3 f = (1.0 - F) * c_diff / kPi * scale(BrdfTerm::diffuse) + F * D * V;
+    return f * NdotL;
+}
+
 glm::dvec3 bump_normal(const BumpMap& b, double u, double v) {
     const double w = 2 * kPi * b.periods;
     const double dhdu = b.amplitude * w * std::cos(w * u) * std::sin(w * v);
@@ -379,6 +407,8 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
         if (m.transparent())  // the trace finds the nearest surface only: nothing is blended
             throw Error(what + "is transparent (opacity " + std::to_string(m.opacity) + "); the reference is opaque only");
         if (m.specular_map >= 0) throw Error(what + "has a specular map; the reference has none");
+        if (m.metallic_roughness_map >= 0 || m.occlusion_map >= 0 || m.emissive_map >= 0)
+            throw Error(what + "has a metallic-roughness, occlusion or emissive map; the reference has none");
         if (m.diffuse_map >= 0 && !opts.bilinear_diffuse_maps)
             throw Error(what + "has a diffuse map; only constant materials have an analytic reference "
                                "(AnalyticOptions::bilinear_diffuse_maps allows a magnified map on a plane)");
@@ -495,16 +525,21 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
             }
             double Mshi = mat.shininess;
             if (opts.gbuffer_normals_8bit) n = glm::normalize(unorm8(n * 0.5 + 0.5) - 0.5);
+            const bool mr = mat.metal_rough();
+            double metallic = mat.metallic, roughness = mat.roughness;
             if (opts.gbuffer_materials_8bit) {
                 Mdiff = unorm8(Mdiff);
                 Mspec = unorm8(Mspec);
                 Mshi = std::exp2(11.0 * unorm8(double(encode_shininess(mat.shininess))));
+                metallic = unorm8(metallic);
+                roughness = unorm8(roughness);
             }
             // With passes_8bit every pass's contribution is rounded before the sum (blending
             // into an RGBA8 target); the clamp to [0, 1] comes last either way.
             auto pass = [&](const dvec3& x) { return opts.passes_8bit ? unorm8(x) : x; };
             const dvec3 v = glm::normalize(eye - p);     // Eq. 5: from p to the viewer
-            dvec3 c = pass(Mdiff * dvec3(scene.ambient));  // Eq. 6
+            // Eq. 6; metallic-roughness: occlusion (1 without a map) and the emissive colour.
+            dvec3 c = pass(mr ? Mdiff * dvec3(scene.ambient) + dvec3(mat.emissive) : Mdiff * dvec3(scene.ambient));
             for (size_t li = 0; li < scene.lights.size(); ++li) {
                 const Light& light = scene.lights[li];
                 // The laws of docs/scene-format.md, written again here from their
@@ -540,6 +575,11 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
                         out.occluded[li][size_t(j) * width + i] = 1;
                         continue;  // an occluded light adds nothing, its specular term included
                     }
+                }
+                if (mr) {  // glTF's BRDF in place of Equations 3-4 (Equation 1's attenuation kept)
+                    c += pass(att * dvec3(light.color) *
+                              metal_rough_brdf(n, l, v, Mdiff, metallic, roughness, opts.perturb, opts.perturb_by));
+                    continue;
                 }
                 const dvec3 hv = l + v;
                 const double hl = glm::length(hv);

@@ -27,7 +27,9 @@
 // position by gap / cos theta. That error is part of what the exact trace measures;
 // AnalyticOptions::triangles traces the renderer's triangles instead, to separate it out.
 //
-// Materials. Constant materials, plus two kinds of texture map that have a closed form here:
+// Materials. Phong (Equations 3-4) or glTF's metallic-roughness (metal_rough_brdf below; its
+// ambient term is ambient x base colour x occlusion plus the emissive colour, as the material pass
+// writes it where it writes the ambient term). Constant materials, plus two kinds of texture map that have a closed form here:
 // a diffuse map on a plane, sampled as GL_LINEAR at level 0 (bilinear, GL_REPEAT, texels
 // rounded to RGBA8 as the upload stores them; valid only where the map is magnified, which
 // AnalyticTrace::max_texel_footprint reports), with AnalyticOptions::bilinear_diffuse_maps;
@@ -61,6 +63,11 @@ glm::dvec3 bump_normal(const BumpMap& b, double u, double v);
 // ((i + 0.5) / w, (j + 0.5) / h) as n * 0.5 + 0.5, rounded to 8-bit codes (k / 255).
 Image make_bump_normal_map(const BumpMap& b, int w, int h);
 
+// The terms of glTF's metallic-roughness BRDF (docs/metal_rough.md), each of which
+// AnalyticOptions::perturb can put off by a relative amount, so a test can show that a render
+// that matches the reference would not match it with that term wrong.
+enum class BrdfTerm { none, D, V, F, diffuse, metallic_mix };
+
 // Off by default (the reference). Each 8-bit switch makes the trace round one quantity the way
 // the deferred path does, so that path's error can be attributed term by term; they, and
 // `triangles`, are an error model, not a reference.
@@ -81,7 +88,21 @@ struct AnalyticOptions {
     ToneMap tonemap = ToneMap::none;
     double exposure = 0;                  // stops
     bool srgb_output = false;
+    // Metallic-roughness materials: one term of the BRDF put off by perturb_by. D, V: alpha in that
+    // term alone scaled by 1 + perturb_by; F, diffuse ((1 - F) c_diff / pi): the term scaled by
+    // 1 + perturb_by; metallic_mix: the metallic weight of both mixes (c_diff and F0) moved by
+    // + perturb_by, clamped to [0, 1]. none: the BRDF as specified.
+    BrdfTerm perturb = BrdfTerm::none;
+    double perturb_by = 0;
 };
+
+// glTF 2.0's metallic-roughness BRDF times N.L (Appendix B; docs/metal_rough.md), in double, for
+// unit n, l (towards the light) and v (towards the viewer): what one light of colour 1 adds before
+// its attenuation. Roughness below kMinRoughness is raised to it, as the shader does.
+constexpr double kMinRoughness = 0.03;
+glm::dvec3 metal_rough_brdf(const glm::dvec3& n, const glm::dvec3& l, const glm::dvec3& v, const glm::dvec3& base,
+                            double metallic, double roughness, BrdfTerm perturb = BrdfTerm::none,
+                            double perturb_by = 0);
 
 // That mapping of one linear colour (pure; analytic_trace applies it to every pixel).
 glm::dvec3 analytic_output(glm::dvec3 c, const AnalyticOptions& opts);

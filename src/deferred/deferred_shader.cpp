@@ -44,7 +44,10 @@ DeferredShader::DeferredShader(const Caps& caps, int width, int height, const Sh
 
 DeferredShader::~DeferredShader() = default;
 
-void DeferredShader::set_counting(bool on) { lighting_->set_counting(on); }
+void DeferredShader::set_counting(bool on) {
+    counting_ = on;
+    lighting_->set_counting(on);
+}
 
 void DeferredShader::resize(int width, int height) {
     if (width == this->width() && height == this->height()) return;
@@ -58,6 +61,16 @@ void DeferredShader::set_scene(const Scene& scene) {
                             : config_.caps.texture_srgb    ? ColourMaps::srgb_texture
                                                            : ColourMaps::decoded_on_upload;
     gpu_ = std::make_unique<GpuScene>(scene, !config_.caps.npot, maps);
+    // A metallic-roughness material where the options did not foresee one (RenderOptions::resolved
+    // does): the light programs are built again with the material model's flag (METAL_ROUGH).
+    bool metal_rough = false;
+    for (const Material& m : scene.materials) metal_rough = metal_rough || m.metal_rough();
+    if (metal_rough && !config_.opts.metal_rough) {
+        config_.opts.metal_rough = true;
+        ProgramSet programs(shader_dir_, config_);
+        lighting_ = std::make_unique<LightingStage>(config_, programs, width(), height());
+        lighting_->set_counting(counting_);
+    }
     // Transparent materials are drawn by the forward stage, which needs the scene's depth in
     // P-buffer 0: where the options did not foresee them (RenderOptions::resolved does), the paths
     // are chosen again, the buffers reallocated and the depth hand-off built; no other shader is.

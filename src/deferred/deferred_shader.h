@@ -133,6 +133,7 @@ private:
     std::unique_ptr<GeometryStage> geometry_;
     std::unique_ptr<SsaoStage> ssao_;  // with --ssao
     std::unique_ptr<LightingStage> lighting_;
+    bool counting_ = true;  // set_counting's, kept for a lighting stage built again by set_scene
     std::unique_ptr<ForwardStage> forward_;
     std::unique_ptr<PostStage> post_;
     FinalStage final_;

@@ -180,7 +180,7 @@ void GeometryStage::draw_material(const FrameDef& f, const GpuScene& gpu, int ta
     int bound = -1;
     for (const DrawRange& r : gpu.ranges()) {
         const GpuMaterial& m = gpu.material(r.material);
-        const int surface = r.surface();
+        const int surface = r.surface() | (m.metal_rough ? kMaterialMetalRough : 0);
         Program& prog = material_program(m, target, surface);
         // The pass's state, or a surface's (nothing changes where no surface brings one).
         RenderState s = faces_state(r.cut_out ? cut_out : pass, r);
@@ -191,6 +191,10 @@ void GeometryStage::draw_material(const FrameDef& f, const GpuScene& gpu, int ta
             prog.set("normaltex", 0);
             prog.set("colortex", 1);
             prog.set("speculartex", 2);
+            if (surface & kMaterialMetalRough) {
+                prog.set("occlusiontex", 3);
+                prog.set("emissivetex", 4);
+            }
             prog.set("planes", f.planes);
             prog.set("zrange", f.zrange);
             prog.set("ambient", ambient);  // where the program writes the ambient target
@@ -203,15 +207,16 @@ void GeometryStage::draw_material(const FrameDef& f, const GpuScene& gpu, int ta
         prog.set("shininess_code", m.shininess_code);
         prog.set("tile", m.tile);
         if (r.cut_out) prog.set("alpha_cutoff", m.alpha_cutoff);
-        const GLuint tex[3] = {m.normal_map || variants_ ? m.normal_tex : gpu.flat_normal(), m.diffuse_tex,
-                               m.specular_tex};
-        for (int u = 0; u < 3; ++u) {
+        if (m.metal_rough) prog.set("emissive", m.emissive);
+        const GLuint tex[5] = {m.normal_map || variants_ ? m.normal_tex : gpu.flat_normal(), m.diffuse_tex,
+                               m.specular_tex, m.occlusion_tex, m.emissive_tex};
+        for (int u = 0; u < (m.metal_rough ? 5 : 3); ++u) {
             glActiveTexture(GL_TEXTURE0 + u);
             glBindTexture(GL_TEXTURE_2D, tex[u]);
         }
         gpu.draw(r);
     }
-    for (int u = 2; u >= 0; --u) {
+    for (int u = 4; u >= 0; --u) {
         glActiveTexture(GL_TEXTURE0 + u);
         glBindTexture(GL_TEXTURE_2D, 0);
     }

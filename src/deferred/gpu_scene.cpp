@@ -135,11 +135,12 @@ GpuScene::GpuScene(const Scene& scene, bool pow2_textures, ColourMaps colour_map
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 
     // Material maps: RGBA8 with mipmaps, repeating (tile > 1 wraps, Listing 13). With --textures
-    // srgb the diffuse maps (only they hold colour) are decoded (ColourMaps).
+    // srgb the diffuse (base colour) and emissive maps (only they hold colour) are decoded (ColourMaps).
     std::vector<bool> colour(scene.textures.size(), false);
     if (colour_maps != ColourMaps::as_stored)
         for (const Material& m : scene.materials)
-            if (m.diffuse_map >= 0) colour.at(size_t(m.diffuse_map)) = true;
+            for (int map : {m.diffuse_map, m.emissive_map})
+                if (map >= 0) colour.at(size_t(map)) = true;
     for (size_t t = 0; t < scene.textures.size(); ++t) {
         const Image& img = scene.textures[t];
         // A map without sampling of its own keeps the defaults (and the path it always took).
@@ -191,6 +192,16 @@ GpuScene::GpuScene(const Scene& scene, bool pow2_textures, ColourMaps colour_map
         g.normal_map = m.normal_map >= 0;
         g.has_specular = m.specular.r > 0 || m.specular.g > 0 || m.specular.b > 0;
         g.normal_tex = g.normal_map ? textures_[m.normal_map].id() : white_.id();
+        g.occlusion_tex = g.emissive_tex = white_.id();
+        if (m.metal_rough()) {
+            g.metal_rough = true;
+            g.specular = glm::vec3(m.metallic, m.roughness, m.occlusion_strength);
+            g.has_specular = true;  // target 2 holds metallic and roughness: no NO_SPECULAR form
+            g.specular_tex = m.metallic_roughness_map >= 0 ? textures_[m.metallic_roughness_map].id() : white_.id();
+            if (m.occlusion_map >= 0) g.occlusion_tex = textures_[m.occlusion_map].id();
+            if (m.emissive_map >= 0) g.emissive_tex = textures_[m.emissive_map].id();
+            g.emissive = m.emissive;
+        }
         materials_.push_back(g);
     }
     check_gl("uploading the scene");

@@ -23,6 +23,11 @@ struct GpuMaterial {
     bool has_specular = true;  // false: M_spec is zero, the specular target is zero
     float opacity = 1;         // below 1: transparent, drawn by the forward stage (docs/forward.md)
     float alpha_cutoff = 0;    // above 0: cut-out, coverage below it discarded (Material::alpha_cutoff)
+    // Metallic-roughness (Material::Model): `diffuse` is the base colour, `specular` holds
+    // (metallic, roughness, occlusion strength), specular_tex the metallic-roughness map.
+    bool metal_rough = false;
+    glm::vec3 emissive{0};
+    GLuint occlusion_tex = 0, emissive_tex = 0;
 };
 
 // --textures srgb: the diffuse maps decoded from sRGB to linear when sampled, by the GL
@@ -39,6 +44,9 @@ enum SurfaceBits {
     kSurfaceCutOut = 4,    // Material::alpha_cutoff > 0: coverage below it discarded
     kSurfaceForms = 8,     // how many combinations
 };
+// The material pass's form for a metallic-roughness material (material.frag METAL_ROUGH_MATERIAL),
+// beside the surface bits: the geometry stage adds it, DrawRange::surface() does not carry it.
+constexpr int kMaterialMetalRough = 16;
 
 struct DrawRange {
     GLsizei count = 0;        // indices

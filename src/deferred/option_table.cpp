@@ -366,6 +366,7 @@ ShaderOptions RenderOptions::resolved(const Scene& scene) const {
     if (view == View::ssao) s.ssao.on = true;      // the view shows the AO buffer
     for (const Material& m : scene.materials) s.forward_surfaces = s.forward_surfaces || m.transparent();
     for (const Light& l : scene.lights) s.shadow_lights = s.shadow_lights || (s.shadows.on && l.shadow.on);
+    for (const Material& m : scene.materials) s.metal_rough = s.metal_rough || m.metal_rough();
     return s;
 }
 

@@ -181,6 +181,10 @@ struct ShaderOptions {
     // Set by RenderOptions::resolved when the scene has lights with `shadow` and shadows are on:
     // the shadow stage and the light programs' shadowed forms are built. Not a user option.
     bool shadow_lights = false;
+    // Set by RenderOptions::resolved (and DeferredShader::set_scene) when the scene has a
+    // metallic-roughness material: the light programs take the material model from the G-buffer
+    // (lighting.glsl METAL_ROUGH). Phong-only scenes keep the programs they always had. Not a user option.
+    bool metal_rough = false;
 };
 
 // "auto", "blit", "pass"; from_name throws dsr::Error listing them otherwise.

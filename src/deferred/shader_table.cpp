@@ -92,6 +92,7 @@ Defines with(Defines d, std::initializer_list<std::string> more) {
 // in-shader rejections of the skips.
 Defines light_defines(const ShaderConfig& c, bool rejections = true) {
     Defines d = depth_defines(c);
+    if (c.opts.metal_rough) d.push_back("METAL_ROUGH");  // the material model per pixel (lighting.glsl)
     if (c.opts.listing2_literal) d.push_back("LISTING2_LITERAL");
     if (rejections && c.opts.skip.light_depth_test) d.push_back("LIGHT_DEPTH_TEST");
     if (rejections && c.opts.skip.light_sphere_test) d.push_back("LIGHT_SPHERE_TEST");
@@ -248,6 +249,7 @@ Defines surface_defines(int surface) {
     if (surface & kSurfaceTwoSided) d.push_back("TWO_SIDED");
     if (surface & kSurfaceColors) d.push_back("VERTEX_COLOR");
     if (surface & kSurfaceCutOut) d.push_back("CUT_OUT");
+    if (surface & kMaterialMetalRough) d.push_back("METAL_ROUGH_MATERIAL");
     return d;
 }
 bool tile_spans_by_readback(const ShaderConfig& c) {

@@ -1,6 +1,6 @@
-// glTF materials as dsr's Phong materials (gltf_internal.h; the mapping is the table in
-// docs/scene-format.md, "glTF 2.0"), their textures decoded through decode_image within the
-// texel budget, each (image, sampler, bake) once.
+// glTF materials as dsr's metallic-roughness materials (gltf_internal.h; the mapping is the table
+// in docs/scene-format.md, "glTF 2.0"; the BRDF is docs/metal_rough.md's), their textures decoded
+// through decode_image within the texel budget, each (image, sampler, bake) once.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -41,7 +41,7 @@ string uri_to_path(const Context& ctx, const string& uri, const string& ptr) {
 }
 
 // Roles a texture is read for; each bakes its image differently.
-enum class Role { base_colour, normal, specular, emissive };
+enum class Role { base_colour, normal, metallic_roughness, emissive, occlusion };
 
 struct Textures {
     std::map<string, int> index;  // "image:sampler:role:params" -> ctx.out.textures
@@ -205,16 +205,15 @@ std::vector<MaterialUse> read_materials(Context& ctx) {
     Textures t;
     std::vector<MaterialUse> uses;
     const string file = fs::path(ctx.path).filename().string();
-    bool warned_occlusion = false;
     for (size_t i = 0; i <= ctx.tm.materials.size(); ++i) {
         Material m;
         MaterialUse use;
+        m.model = Material::Model::metallic_roughness;
+        m.specular = glm::vec3(0);  // unused by the model; the forward stage's Phong sees no highlight
         if (i == ctx.tm.materials.size()) {
-            // The glTF default material: white, metallic 1, roughness 1 (no specular here).
+            // The glTF default material: white, metallic 1, roughness 1.
             m.name = file + ":(default)";
             m.diffuse = glm::vec3(1);
-            m.specular = glm::vec3(0);
-            m.shininess = 1;
             ctx.out.materials.push_back(m);
             uses.push_back(use);
             break;
@@ -230,20 +229,9 @@ std::vector<MaterialUse> read_materials(Context& ctx) {
         check_unit(ctx, pbr.roughnessFactor, pp + "/roughnessFactor");
         const glm::dvec3 base(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]);
         const double alpha = pbr.baseColorFactor[3];
-        const double metallic = pbr.metallicFactor, roughness = pbr.roughnessFactor;
-        // Phong from metallic-roughness (docs/scene-format.md, "glTF 2.0"): the base colour stays the
-        // diffuse colour (not times 1 - metallic, so a metal keeps its colour); the specular colour is
-        // glTF's F0, mix(0.04, base, metallic), dimmed by (1 - roughness)^2; Ns = 2 / a^2 - 2, a = roughness^2.
-        auto specular_of = [](glm::dvec3 b, double met, double rough) {
-            return glm::mix(glm::dvec3(0.04), b, met) * (1.0 - rough) * (1.0 - rough);
-        };
-        auto shininess_of = [](double rough) {
-            const double a = rough * rough;
-            return a <= 0 ? 2048.0 : std::clamp(2.0 / (a * a) - 2.0, 1.0, 2048.0);
-        };
         m.diffuse = glm::vec3(base);
-        m.specular = glm::vec3(specular_of(base, metallic, roughness));
-        m.shininess = float(shininess_of(roughness));
+        m.metallic = float(pbr.metallicFactor);
+        m.roughness = float(pbr.roughnessFactor);
         use.double_sided = g.doubleSided;
 
         // Which uv set and transform the maps read: the base colour texture's, else the normal
@@ -271,6 +259,8 @@ std::vector<MaterialUse> read_materials(Context& ctx) {
         note_uv(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, pp + "/baseColorTexture");
         note_uv(g.normalTexture.index, g.normalTexture.texCoord, mp + "/normalTexture");
         note_uv(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord, pp + "/metallicRoughnessTexture");
+        note_uv(g.occlusionTexture.index, g.occlusionTexture.texCoord, mp + "/occlusionTexture");
+        note_uv(g.emissiveTexture.index, g.emissiveTexture.texCoord, mp + "/emissiveTexture");
         use.has_transform = chosen.present;
         use.uv_transform = chosen.m;
         use.needs_uvs = have_uv;
@@ -315,53 +305,24 @@ std::vector<MaterialUse> read_materials(Context& ctx) {
                 }
             });
         }
-        if (pbr.metallicRoughnessTexture.index >= 0) {
-            const string ptr = pp + "/metallicRoughnessTexture";
-            const string params = num(base.r) + "," + num(base.g) + "," + num(base.b) + "," + num(metallic) + "," + num(roughness);
-            double mean_rough = roughness;
-            m.specular_map = texture(ctx, t, pbr.metallicRoughnessTexture.index, ptr, Role::specular, params, [&](Image& img) {
-                // Per texel: metallic in blue, roughness in green, each times its factor.
-                double sum = 0;
-                for (size_t k = 0; k < img.rgba.size(); k += 4) {
-                    const double r = std::clamp(double(img.rgba[k + 1]), 0.0, 1.0) * roughness;
-                    const double mt = std::clamp(double(img.rgba[k + 2]), 0.0, 1.0) * metallic;
-                    const glm::dvec3 s = specular_of(base, mt, r);
-                    img.rgba[k] = float(s.r);
-                    img.rgba[k + 1] = float(s.g);
-                    img.rgba[k + 2] = float(s.b);
-                    img.rgba[k + 3] = 1.0f;
-                    sum += r;
-                }
-                mean_rough = sum / double(img.rgba.size() / 4);
-            });
-            if (m.specular_map >= 0) {
-                m.specular = glm::vec3(1);
-                // Ns from the map's mean roughness (one shininess per material); for a map shared by
-                // several materials, the first one's.
-                m.shininess = float(shininess_of(mean_rough));
-            }
+        if (pbr.metallicRoughnessTexture.index >= 0)  // roughness in green, metallic in blue, as stored
+            m.metallic_roughness_map = texture(ctx, t, pbr.metallicRoughnessTexture.index, pp + "/metallicRoughnessTexture",
+                                               Role::metallic_roughness, "", [](Image&) {});
+        if (g.emissiveFactor.size() == 3) {
+            for (size_t c = 0; c < 3; ++c)
+                if (!(g.emissiveFactor[c] >= 0))
+                    ctx.fail(mp + "/emissiveFactor/" + std::to_string(c), "expected a number >= 0, got " + num(g.emissiveFactor[c]));
+            m.emissive = glm::vec3(float(g.emissiveFactor[0]), float(g.emissiveFactor[1]), float(g.emissiveFactor[2]));
+        } else if (!g.emissiveFactor.empty()) {
+            ctx.fail(mp + "/emissiveFactor", "expected 3 numbers");
         }
-        // Read and checked, not drawn: occlusion and emission.
-        const bool emissive = g.emissiveTexture.index >= 0 ||
-                              (g.emissiveFactor.size() == 3 && (g.emissiveFactor[0] > 0 || g.emissiveFactor[1] > 0 || g.emissiveFactor[2] > 0));
-        for (size_t c = 0; c < g.emissiveFactor.size(); ++c)
-            if (!(g.emissiveFactor[c] >= 0)) ctx.fail(mp + "/emissiveFactor/" + std::to_string(c), "expected a number >= 0, got " + num(g.emissiveFactor[c]));
-        if (g.emissiveTexture.index >= 0) {
-            const string ptr = mp + "/emissiveTexture";
-            if (g.emissiveTexture.texCoord < 0 || g.emissiveTexture.texCoord > 1)
-                ctx.fail(ptr + "/texCoord", "expected 0 or 1, got " + std::to_string(g.emissiveTexture.texCoord));
-            texture(ctx, t, g.emissiveTexture.index, ptr, Role::emissive, "", [](Image&) {});
-        }
+        if (g.emissiveTexture.index >= 0)
+            m.emissive_map = texture(ctx, t, g.emissiveTexture.index, mp + "/emissiveTexture", Role::emissive, "", [](Image&) {});
         if (g.occlusionTexture.index >= 0) {
             const string ptr = mp + "/occlusionTexture";
-            if (g.occlusionTexture.texCoord < 0 || g.occlusionTexture.texCoord > 1)
-                ctx.fail(ptr + "/texCoord", "expected 0 or 1, got " + std::to_string(g.occlusionTexture.texCoord));
             check_unit(ctx, g.occlusionTexture.strength, ptr + "/strength");
-            texture_source(ctx, g.occlusionTexture.index, ptr);
-        }
-        if ((emissive || g.occlusionTexture.index >= 0) && !warned_occlusion) {
-            warned_occlusion = true;
-            ctx.warn(mp, "occlusion and emission are read and checked but not drawn (dsr's G-buffer has no target for them)");
+            m.occlusion_strength = float(g.occlusionTexture.strength);
+            m.occlusion_map = texture(ctx, t, g.occlusionTexture.index, ptr, Role::occlusion, "", [](Image&) {});
         }
         ctx.out.materials.push_back(m);
         uses.push_back(use);

@@ -80,6 +80,22 @@ struct Material {
     // shadow casters, as if the surface were not there (an MTL map_d, a glTF alphaMode MASK).
     float alpha_cutoff = 0.0f;
     bool cut_out() const { return alpha_cutoff > 0.0f; }
+    // The material model (docs/metal_rough.md): the tutorial's Phong (diffuse, specular, shininess
+    // and their maps), or glTF 2.0's metallic-roughness, whose base colour is `diffuse` (times
+    // diffuse_map, the base colour map) and which reads metallic, roughness and the maps below;
+    // its specular, shininess and specular_map are unused. Each factor is in [0, 1].
+    enum class Model { phong, metallic_roughness };
+    Model model = Model::phong;
+    float metallic = 1.0f, roughness = 1.0f;  // glTF's defaults
+    // glTF's metallicRoughnessTexture: roughness in green, metallic in blue, times the factors.
+    int metallic_roughness_map = -1;
+    // glTF's occlusionTexture (red), mixed by occlusion_strength: 1 + strength (map - 1). It scales
+    // the ambient term only (the glTF spec: occlusion applies to indirect light).
+    int occlusion_map = -1;
+    float occlusion_strength = 1.0f;
+    glm::vec3 emissive{0};  // emissiveFactor, times emissive_map (linear RGB, added once)
+    int emissive_map = -1;
+    bool metal_rough() const { return model == Model::metallic_roughness; }
 };
 
 // How a texture is sampled (glTF samplers; every other texture keeps the defaults, which are

@@ -43,6 +43,7 @@ public:
     std::string where() const { return file_ + ":" + std::to_string(number_); }
     int number() const { return number_; }
     bool done() const { return pos_ >= tokens_.size(); }
+    const std::string& peek() const { return tokens_.at(pos_); }  // the next token, not consumed
 
     [[noreturn]] void fail(const std::string& problem) const { throw Error(where() + ": " + problem); }
     // "expected X, got 'tok'", or "got end of line" when the tokens ran out.
@@ -311,12 +312,34 @@ private:
             if (scene_.materials[i].name == m.name)
                 line.expected_last("a material name not used before (first defined on line " +
                                    std::to_string(material_lines_[i]) + ")");
-        const std::vector<std::string> keys = {"diffuse", "specular", "shininess", "diffuse_map",
-                                               "normal_map", "specular_map", "tile", "opacity"};
+        // Phong (the tutorial's): diffuse, specular, shininess and their maps. Metallic-roughness
+        // (glTF's, docs/metal_rough.md): base, metallic, roughness, their maps and emissive. A
+        // line is one or the other, as its first key says.
+        const std::vector<std::string> phong = {"diffuse", "specular", "shininess", "diffuse_map",
+                                                "normal_map", "specular_map", "tile", "opacity"};
+        const std::vector<std::string> metal = {"base", "metallic", "roughness", "base_map", "metallic_roughness_map",
+                                                "normal_map", "emissive", "tile", "opacity"};
+        if (!line.done() && line.peek() == "base") m.model = Material::Model::metallic_roughness;
+        const std::vector<std::string>& keys = m.metal_rough() ? metal : phong;
         std::set<std::string> seen;
+        auto unit = [&](const char* what) {
+            const float f = line.number(what);
+            if (!(f >= 0 && f <= 1)) line.expected_last(std::string(what) + " in [0, 1]");
+            return f;
+        };
         while (!line.done()) {
             const std::string k = line.key(keys, seen);
-            if (k == "diffuse") m.diffuse = line.colour("diffuse");
+            if (k == "base") {
+                m.diffuse = line.colour("base");
+                for (int c = 0; c < 3; ++c)
+                    if (m.diffuse[c] > 1) line.expected_last("base component in [0, 1]");
+            } else if (k == "metallic") m.metallic = unit("metallic");
+            else if (k == "roughness") m.roughness = unit("roughness");
+            else if (k == "emissive") m.emissive = line.colour("emissive");
+            else if (k == "base_map" || k == "metallic_roughness_map") {
+                const std::string& file = line.word("a file name for " + k);
+                (k == "base_map" ? m.diffuse_map : m.metallic_roughness_map) = texture(line, k, file);
+            } else if (k == "diffuse") m.diffuse = line.colour("diffuse");
             else if (k == "specular") m.specular = line.colour("specular");
             else if (k == "shininess") {
                 m.shininess = line.number("shininess");
@@ -333,7 +356,12 @@ private:
                 else m.specular_map = index;
             }
         }
-        line.require({"diffuse", "specular", "shininess"}, seen);
+        if (m.metal_rough()) {
+            line.require({"base", "metallic", "roughness"}, seen);
+            m.specular = glm::vec3(0);  // unused by the model; the forward stage's Phong sees no highlight
+        } else {
+            line.require({"diffuse", "specular", "shininess"}, seen);
+        }
         scene_.materials.push_back(m);
         material_lines_.push_back(line.number());
     }
