@@ -252,6 +252,23 @@ int cmd_figures(const std::vector<std::string>& argv) {
             save(h.file, view(ds, View::final));
         }
     }
+    // glTF's metallic-roughness BRDF (docs/metal_rough.md): data/metal_rough.scene's grid of spheres,
+    // metallic 0 to 1 across and roughness 0 to 1 down, in half floats, ACES and sRGB output (the
+    // linear pipeline, docs/hdr.md). Only with the default scene, where a GL has float targets.
+    if (default_scene && accum_format_ok(caps, caps.fbo, AccumFormat::half)) {
+        const Scene mr = load_scene(resource_dir("data") + "/metal_rough.scene");
+        add_scene_inputs(outputs, mr.inputs);
+        RenderOptions ro;
+        ShaderOptions o = ro.resolved(mr);  // the light programs' material model flag
+        o.light_geometry = plain.light_geometry;
+        o.hdr.accum = AccumFormat::half;
+        o.hdr.tonemap = ToneMap::aces;
+        o.hdr.output_srgb = true;
+        DeferredShader ds(caps, n, n, o, shaders);
+        ds.set_scene(mr);
+        ds.render(mr, n, n);
+        save("metal_rough_grid.png", view(ds, View::final));
+    }
     outputs.commit();
     for (auto& w : outputs.written()) std::printf("wrote %s\n", w.c_str());
     return 0;
