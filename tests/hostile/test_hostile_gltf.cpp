@@ -126,7 +126,7 @@ std::vector<Case> cases() {
     c.push_back(text("huge_count", gltf([](json& j) { j["accessors"][0]["count"] = 2000000000; }),
                      "m.gltf: /accessors/0/count: expected a count in [1, 20000000], got 2000000000 (an absurd size)"));
     c.push_back(text("index_out_of_range", gltf([](json& j) {
-                         j["bufferViews"].push_back({{"buffer", 0}, {"byteLength", 6}});
+                         j["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 12}, {"byteLength", 6}});  // 0, 16256, 0
                          j["accessors"].push_back({{"bufferView", 2}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}});
                          j["meshes"][0]["primitives"][0]["indices"] = 2;
                      }),
