@@ -472,6 +472,9 @@ TEST_F(Framing, GltfCamerasAndLights) {
     EXPECT_NEAR(s.camera.pos.z, 6.0f, 1e-5f) << "the first camera";
     EXPECT_NEAR(s.camera.fov_deg, glm::degrees(0.8f), 1e-3f);
     EXPECT_NEAR(s.camera.far_plane, 50.0f, 1e-4f);
+    // The file's near (0.1) raised to half the distance to the model's bounding sphere (centre
+    // (0, 1, 0), radius sqrt 2, 6 away): depth precision for what is drawn.
+    EXPECT_NEAR(s.camera.near_plane, 0.5f * (6.0f - std::sqrt(2.0f)), 1e-4f);
     ASSERT_EQ(s.lights.size(), 1u) << "the file's light, not the rig";
     EXPECT_NEAR(s.lights[0].pos.z, 2.0f, 1e-5f);
     EXPECT_EQ(s.ambient, glm::vec3(0)) << "glTF has no ambient term";

@@ -142,15 +142,23 @@ bool is_model_path(const std::string& path) { return is_model_file(path); }
 namespace {
 
 // The file's camera `index` (GltfCamera), its far plane set from the bounds where the file left
-// it infinite, and near raised to keep far / near within the scene format's limit.
-Camera file_camera(const std::string& path, const std::vector<GltfCamera>& cams, int index, const SceneBounds& b) {
+// it infinite, and near raised as far as nothing drawn is cut: half the distance to the model's
+// bounding sphere and (with a ground) to the ground's plane. A file's near is often far smaller
+// than it needs to be, and depth precision, which reconstructed positions and shadow tests rest
+// on, falls with far / near.
+Camera file_camera(const std::string& path, const std::vector<GltfCamera>& cams, int index, const SceneBounds& b,
+                   bool ground, double ground_y) {
     if (index >= int(cams.size()))
         throw Error(path + ": --camera " + std::to_string(index) + ": expected a camera index in 0.." +
                     std::to_string(int(cams.size()) - 1) + " (the file has " + std::to_string(cams.size()) + ")");
     Camera c = cams[size_t(index)].camera;
-    const double reach = glm::length(glm::dvec3(c.pos) - b.centre) + b.radius;
-    if (!cams[size_t(index)].far_given) c.far_plane = float(std::max(1.05 * reach, 2.0 * double(c.near_plane)));
+    const double to_centre = glm::length(glm::dvec3(c.pos) - b.centre);
+    if (!cams[size_t(index)].far_given) c.far_plane = float(std::max(1.05 * (to_centre + b.radius), 2.0 * double(c.near_plane)));
+    double clear = to_centre - b.radius;  // nothing of the model nearer than this
+    if (ground) clear = std::min(clear, double(c.pos.y) - ground_y);
+    if (clear > 0) c.near_plane = std::max(c.near_plane, float(0.5 * clear));
     c.near_plane = std::max(c.near_plane, float(double(c.far_plane) / kMaxFarOverNear));
+    if (!(c.far_plane > c.near_plane)) c.far_plane = 2 * c.near_plane;
     return c;
 }
 
@@ -182,7 +190,8 @@ Scene model_scene(const std::string& path, const LoadOptions& options, bool gltf
     const bool own_camera = !cameras.empty() && !options.from;
     if (options.camera >= 0 && cameras.empty())
         throw Error(path + ": --camera " + std::to_string(options.camera) + ": expected a model with cameras, got none");
-    s.camera = own_camera ? file_camera(path, cameras, std::max(options.camera, 0), b)
+    const double ground_y = b.min.y - 1e-3 * b.radius;  // the ground's plane, where the rig lights the model
+    s.camera = own_camera ? file_camera(path, cameras, std::max(options.camera, 0), b, file_lights.empty(), ground_y)
                           : fit_camera(b, options.from.value_or(kFitFrom), kFitFovDeg, 1.0f);
     s.background = {0.23f, 0.27f, 0.34f};
     if (!file_lights.empty()) {
@@ -202,7 +211,7 @@ Scene model_scene(const std::string& path, const LoadOptions& options, bool gltf
     ground.shininess = 16;
     s.materials.push_back(ground);
     const double side = 8 * r;
-    const glm::dvec3 at(b.centre.x, b.min.y - 1e-3 * r, b.centre.z);
+    const glm::dvec3 at(b.centre.x, ground_y, b.centre.z);
     ShapeDesc shape;
     shape.kind = ShapeDesc::Kind::plane;
     shape.centre = glm::vec3(at);
