@@ -26,14 +26,6 @@ namespace dsr {
 
 namespace {
 
-// An output folder that exists as something else is refused by what it is ("a file").
-void require_folder(const std::string& command, const std::string& flag, const std::string& dir) {
-    struct stat st {};
-    if (::stat(dir.c_str(), &st) != 0 || S_ISDIR(st.st_mode)) return;
-    throw Error(command + ": " + flag + ": expected a folder, got " + quote(dir) + ", " +
-                (S_ISREG(st.st_mode) ? std::string("a file") : kind_of(st.st_mode)));
-}
-
 // A square close-up, magnified with nearest neighbour so single pixels (and aliasing)
 // stay visible. (x0, y0) is the top-left corner in top-down pixel coordinates.
 Image closeup(const Image& src, int x0, int y0, int size, int zoom) {

@@ -7,6 +7,7 @@
 #include "app/args.h"
 #include "app/command_table.h"
 #include "app/commands.h"
+#include "app/files.h"
 #include "dsr_error.h"
 #include "scene/image.h"
 #include "scene/output_set.h"
@@ -14,18 +15,6 @@
 #include "scene/user_file.h"
 
 namespace dsr {
-
-namespace {
-
-// An output folder that exists as something else is refused by what it is ("a file").
-void require_folder(const std::string& command, const std::string& flag, const std::string& dir) {
-    struct stat st {};
-    if (::stat(dir.c_str(), &st) != 0 || S_ISDIR(st.st_mode)) return;
-    throw Error(command + ": " + flag + ": expected a folder, got " + quote(dir) + ", " +
-                (S_ISREG(st.st_mode) ? std::string("a file") : kind_of(st.st_mode)));
-}
-
-}  // namespace
 
 int cmd_gen_textures(const std::vector<std::string>& argv) {
     GenTexturesSettings flags;  // the gen-textures command's table (app/command_table.h)

@@ -50,30 +50,8 @@ namespace fs = std::filesystem;
 using gltf::Context;
 using gltf::kMaxGltfBytes;
 
-// A binary file through user_file.h's checks (regular, at most max_bytes), read whole.
-string read_binary(const string& path, const string& what) {
-    const int fd = open_user_file(path, what, kMaxGltfBytes);
-    string data;
-    char buf[1 << 16];
-    for (;;) {
-        const ssize_t n = ::read(fd, buf, sizeof buf);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            const int e = errno;
-            ::close(fd);
-            throw Error("cannot read " + what + " " + path + ": " + std::strerror(e));
-        }
-        if (n == 0) break;
-        data.append(buf, size_t(n));
-        if (data.size() > kMaxGltfBytes) {
-            ::close(fd);
-            throw Error("cannot read " + what + " " + path + ": expected at most " + std::to_string(kMaxGltfBytes) +
-                        " bytes, got more");
-        }
-    }
-    ::close(fd);
-    return data;
-}
+// A binary file through user_file.h's checks (regular, at most kMaxGltfBytes), read whole.
+string read_binary(const string& path, const string& what) { return read_user_bytes(path, what, kMaxGltfBytes); }
 
 uint32_t le32(const string& b, size_t at) {
     return uint32_t((unsigned char)b[at]) | uint32_t((unsigned char)b[at + 1]) << 8 |

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,6 +51,62 @@ bool ends_with_png_iend(const std::string& path) {
     return ok && std::memcmp(tail, iend, 12) == 0;
 }
 
+// An opened image read whole: the size checked against the limits and `max_texels` before
+// anything is allocated (a header can claim any size), the first four channels (alpha where the
+// file puts it later), grey made RGB, rows flipped to bottom first. `fail` throws the one line;
+// `complete` says whether the whole file was read (OpenImageIO stops reading a PNG after its
+// pixels: a file cut in its last chunk would pass).
+Image read_opened(OIIO::ImageInput& in, const OIIO::ImageSpec& spec, const std::string& name, size_t max_texels,
+                  StderrCapture& chatter, const std::function<void(std::string)>& fail,
+                  const std::function<bool()>& complete) {
+    const int w = spec.width, h = spec.height, nc = spec.nchannels;
+    if (w <= 0 || h <= 0 || nc <= 0 || spec.depth > 1) fail("unsupported size or channel layout");
+    if (nc > 64) fail(std::to_string(nc) + " channels, expected at most 64 (an absurd size)");
+    if (w > kMaxImageSide || h > kMaxImageSide || size_t(w) * size_t(h) > kMaxImageTexels)
+        fail(std::to_string(w) + " x " + std::to_string(h) + " pixels, expected at most " +
+             std::to_string(kMaxImageSide) + " a side and " + std::to_string(kMaxImageTexels) + " in all (an absurd size)");
+    if (size_t(w) * size_t(h) > max_texels)
+        throw ImageTooLarge("cannot read image " + name + ": " + std::to_string(w) + " x " + std::to_string(h) +
+                                " pixels, expected at most " + std::to_string(max_texels) + " (the caller's budget)",
+                            w, h);
+    int alpha = spec.alpha_channel;
+    if (alpha < 0 && (nc == 2 || nc >= 4)) alpha = nc == 2 ? 1 : 3;
+    const int colour = std::min(nc, 4);
+    const bool grey = nc <= 2;
+    std::vector<float> raw(size_t(w) * h * size_t(colour)), alpha_raw;
+    bool ok = in.read_image(0, 0, 0, colour, OIIO::TypeDesc::FLOAT, raw.data());
+    if (ok && alpha >= colour) {
+        alpha_raw.resize(size_t(w) * h);
+        ok = in.read_image(0, 0, alpha, alpha + 1, OIIO::TypeDesc::FLOAT, alpha_raw.data());
+    }
+    // A truncated file can leave read_image true with an error recorded (and the missing rows
+    // grey): the error state, not the return value alone, decides.
+    if (!ok || in.has_error()) fail(in.geterror());
+    if (!in.close() || in.has_error()) fail(in.geterror());
+    const std::string stray = OIIO::geterror();
+    if (!stray.empty()) fail(stray);
+    const std::string said = chatter.text();
+    if (is_damage(said)) fail(said);
+    if (!complete()) fail("cut short: no IEND chunk at its end");
+
+    Image img;
+    img.width = w;
+    img.height = h;
+    img.rgba.resize(size_t(w) * h * 4);
+    for (int y = 0; y < h; ++y) {
+        // File row y (top first) lands in Image row h-1-y (bottom first).
+        const float* src = &raw[size_t(y) * w * colour];
+        for (int x = 0; x < w; ++x, src += colour) {
+            float* d = img.at(x, h - 1 - y);
+            d[0] = src[0];
+            d[1] = grey ? src[0] : src[1];
+            d[2] = grey ? src[0] : src[2];
+            d[3] = alpha < 0 ? 1.0f : alpha < colour ? src[alpha] : alpha_raw[size_t(y) * w + x];
+        }
+    }
+    return img;
+}
+
 }  // namespace
 
 Image load_image(const std::string& path, size_t max_texels) {
@@ -71,56 +128,8 @@ Image load_image(const std::string& path, size_t max_texels) {
     auto in = OIIO::ImageInput::open(path, &config);
     if (!in) fail(oiio_message(""));
     const OIIO::ImageSpec spec = in->spec();
-    const int w = spec.width, h = spec.height, nc = spec.nchannels;
-    if (w <= 0 || h <= 0 || nc <= 0 || spec.depth > 1) fail("unsupported size or channel layout");
-    // Refused before anything is allocated: a header can claim any size.
-    if (nc > 64) fail(std::to_string(nc) + " channels, expected at most 64 (an absurd size)");
-    if (w > kMaxImageSide || h > kMaxImageSide || size_t(w) * size_t(h) > kMaxImageTexels)
-        fail(std::to_string(w) + " x " + std::to_string(h) + " pixels, expected at most " +
-             std::to_string(kMaxImageSide) + " a side and " + std::to_string(kMaxImageTexels) + " in all (an absurd size)");
-    if (size_t(w) * size_t(h) > max_texels)
-        throw ImageTooLarge("cannot read image " + path + ": " + std::to_string(w) + " x " + std::to_string(h) +
-                                " pixels, expected at most " + std::to_string(max_texels) + " (the caller's budget)",
-                            w, h);
-
-    // Only the channels dsr uses: the first four, and alpha where the file puts it later.
-    int alpha = spec.alpha_channel;
-    if (alpha < 0 && (nc == 2 || nc >= 4)) alpha = nc == 2 ? 1 : 3;
-    const int colour = std::min(nc, 4);
-    const bool grey = nc <= 2;
-    std::vector<float> raw(size_t(w) * h * size_t(colour)), alpha_raw;
-    bool ok = in->read_image(0, 0, 0, colour, OIIO::TypeDesc::FLOAT, raw.data());
-    if (ok && alpha >= colour) {
-        alpha_raw.resize(size_t(w) * h);
-        ok = in->read_image(0, 0, alpha, alpha + 1, OIIO::TypeDesc::FLOAT, alpha_raw.data());
-    }
-    // A truncated file can leave read_image true with an error recorded (and the missing rows
-    // grey): the error state, not the return value alone, decides.
-    if (!ok || in->has_error()) fail(in->geterror());
-    if (!in->close() || in->has_error()) fail(in->geterror());
-    const std::string stray = OIIO::geterror();
-    if (!stray.empty()) fail(stray);
-    const std::string said = chatter.text();
-    if (is_damage(said)) fail(said);
-    // OpenImageIO stops reading a PNG after its pixels: a file cut in its last chunk would pass.
-    if (std::strcmp(in->format_name(), "png") == 0 && !ends_with_png_iend(path)) fail("cut short: no IEND chunk at its end");
-
-    Image img;
-    img.width = w;
-    img.height = h;
-    img.rgba.resize(size_t(w) * h * 4);
-    for (int y = 0; y < h; ++y) {
-        // File row y (top first) lands in Image row h-1-y (bottom first).
-        const float* src = &raw[size_t(y) * w * colour];
-        for (int x = 0; x < w; ++x, src += colour) {
-            float* d = img.at(x, h - 1 - y);
-            d[0] = src[0];
-            d[1] = grey ? src[0] : src[1];
-            d[2] = grey ? src[0] : src[2];
-            d[3] = alpha < 0 ? 1.0f : alpha < colour ? src[alpha] : alpha_raw[size_t(y) * w + x];
-        }
-    }
-    return img;
+    const bool png = std::strcmp(in->format_name(), "png") == 0;
+    return read_opened(*in, spec, path, max_texels, chatter, fail, [&] { return !png || ends_with_png_iend(path); });
 }
 
 Image decode_image(const std::string& bytes, const std::string& name, size_t max_texels) {
@@ -178,51 +187,10 @@ Image decode_image(const std::string& bytes, const std::string& name, size_t max
     if (!in->set_ioproxy(&proxy)) fail(oiio_message("the reader cannot read from memory"));
     OIIO::ImageSpec spec;
     if (!in->open(name, spec, config)) fail(in->geterror());
-    const int w = spec.width, h = spec.height, nc = spec.nchannels;
-    if (w <= 0 || h <= 0 || nc <= 0 || spec.depth > 1) fail("unsupported size or channel layout");
-    if (nc > 64) fail(std::to_string(nc) + " channels, expected at most 64 (an absurd size)");
-    if (w > kMaxImageSide || h > kMaxImageSide || size_t(w) * size_t(h) > kMaxImageTexels)
-        fail(std::to_string(w) + " x " + std::to_string(h) + " pixels, expected at most " +
-             std::to_string(kMaxImageSide) + " a side and " + std::to_string(kMaxImageTexels) + " in all (an absurd size)");
-    if (size_t(w) * size_t(h) > max_texels)
-        throw ImageTooLarge("cannot read image " + name + ": " + std::to_string(w) + " x " + std::to_string(h) +
-                                " pixels, expected at most " + std::to_string(max_texels) + " (the caller's budget)",
-                            w, h);
-    int alpha = spec.alpha_channel;
-    if (alpha < 0 && (nc == 2 || nc >= 4)) alpha = nc == 2 ? 1 : 3;
-    const int colour = std::min(nc, 4);
-    const bool grey = nc <= 2;
-    std::vector<float> raw(size_t(w) * h * size_t(colour)), alpha_raw;
-    bool ok = in->read_image(0, 0, 0, colour, OIIO::TypeDesc::FLOAT, raw.data());
-    if (ok && alpha >= colour) {
-        alpha_raw.resize(size_t(w) * h);
-        ok = in->read_image(0, 0, alpha, alpha + 1, OIIO::TypeDesc::FLOAT, alpha_raw.data());
-    }
-    if (!ok || in->has_error()) fail(in->geterror());
-    if (!in->close() || in->has_error()) fail(in->geterror());
-    const std::string stray = OIIO::geterror();
-    if (!stray.empty()) fail(stray);
-    const std::string said = chatter.text();
-    if (is_damage(said)) fail(said);
     static const char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', '\xAE', '\x42', '\x60', '\x82'};
-    if (png && (bytes.size() < 12 || bytes.compare(bytes.size() - 12, 12, iend, 12) != 0))
-        fail("cut short: no IEND chunk at its end");
-
-    Image img;
-    img.width = w;
-    img.height = h;
-    img.rgba.resize(size_t(w) * h * 4);
-    for (int y = 0; y < h; ++y) {
-        const float* src = &raw[size_t(y) * w * colour];
-        for (int x = 0; x < w; ++x, src += colour) {
-            float* d = img.at(x, h - 1 - y);
-            d[0] = src[0];
-            d[1] = grey ? src[0] : src[1];
-            d[2] = grey ? src[0] : src[2];
-            d[3] = alpha < 0 ? 1.0f : alpha < colour ? src[alpha] : alpha_raw[size_t(y) * w + x];
-        }
-    }
-    return img;
+    return read_opened(*in, spec, name, max_texels, chatter, fail, [&] {
+        return !png || (bytes.size() >= 12 && bytes.compare(bytes.size() - 12, 12, iend, 12) == 0);
+    });
 }
 
 void encode_image(const std::string& file, const std::string& name, const Image& img) {

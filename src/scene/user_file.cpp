@@ -92,12 +92,12 @@ void check_user_file(const std::string& path, const std::string& what, size_t ma
     ::close(open_user_file(path, what, max_bytes));
 }
 
-std::string read_user_text(const std::string& path, const std::string& what, size_t max_bytes) {
+std::string read_user_bytes(const std::string& path, const std::string& what, size_t max_bytes) {
     const int fd = open_user_file(path, what, max_bytes);
     struct stat st {};
     ::fstat(fd, &st);
-    std::string text;
-    text.reserve(size_t(st.st_size));
+    std::string data;
+    data.reserve(size_t(st.st_size));
     // Read to the end, not to st_size: files under /proc say 0 and have text; one byte past the
     // limit is enough to refuse a file that grew.
     char buf[1 << 16];
@@ -110,14 +110,19 @@ std::string read_user_text(const std::string& path, const std::string& what, siz
             throw Error("cannot read " + what + " " + path + ": " + std::strerror(e));
         }
         if (n == 0) break;
-        text.append(buf, size_t(n));
-        if (text.size() > max_bytes) {
+        data.append(buf, size_t(n));
+        if (data.size() > max_bytes) {
             ::close(fd);
             throw Error("cannot read " + what + " " + path + ": expected at most " + std::to_string(max_bytes) +
                         " bytes, got more");
         }
     }
     ::close(fd);
+    return data;
+}
+
+std::string read_user_text(const std::string& path, const std::string& what, size_t max_bytes) {
+    std::string text = read_user_bytes(path, what, max_bytes);
     check_user_text(path, text);
     return text;
 }

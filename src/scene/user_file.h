@@ -29,6 +29,9 @@ int open_user_file(const std::string& path, const std::string& what, size_t max_
 // The same check for a file another library opens by name (image decoders): throws as above.
 void check_user_file(const std::string& path, const std::string& what, size_t max_bytes);
 
+// The whole file as bytes, after open_user_file's checks (binary files: a .glb, its buffers).
+std::string read_user_bytes(const std::string& path, const std::string& what, size_t max_bytes);
+
 // The whole file: open_user_file's checks, then check_user_text's.
 std::string read_user_text(const std::string& path, const std::string& what, size_t max_bytes);
 
