@@ -165,9 +165,9 @@ struct Object {
 
 // A model file (OBJ or glTF) as read: its meshes are Scene::meshes[first_mesh, first_mesh +
 // mesh_count), in object space. Read once per resolved path however many `mesh` lines name it
-// (scene/model_data.h).
-// A glTF model's meshes may be drawn several times each, by nodes with their own transforms:
-// `placements` lists what one instance draws (an OBJ's: each group once, at identity).
+// (scene/model_data.h). A glTF model's meshes may be drawn several times each, by nodes with their
+// own transforms: `placements` lists what one instance draws (an OBJ's: each group once, at
+// identity).
 struct MeshModel {
     std::string path;  // as resolved
     size_t first_mesh = 0, mesh_count = 0;
@@ -211,7 +211,7 @@ struct Scene {
     enum class MarkerShape { sphere, box };
     MarkerShape marker_shape = MarkerShape::sphere;
     float marker_size = 0;  // the box's half-size in world units; unused for spheres
-    std::vector<MeshModel> models;         // `mesh` lines' OBJ models, object space
+    std::vector<MeshModel> models;         // model files (`mesh` lines, a model as the scene), object space
     std::vector<MeshInstance> instances;   // one per `mesh` line
     // What the loaders read and ignored or substituted, one line each ("FILE:LINE: ..."), printed
     // to stderr, counted in --stats (`warnings`); --strict makes the first one an error.
@@ -239,9 +239,9 @@ constexpr size_t kMaxSceneTexels = size_t(1) << 26;   // all textures together: 
 constexpr double kMaxEdgeOverDistance = 1e5;
 
 // How a scene or model is read: the render and view commands' --strict, --from, --camera and
-// --ambient (docs/scene-format.md, "Models as scenes").
+// --ambient (docs/scene-format.md, "A model is a scene").
 struct LoadOptions {
-    bool strict = false;                // the first warning is an error, as it was before dsr substituted
+    bool strict = false;                // the first warning is an error: nothing substituted
     std::optional<glm::vec3> from;      // a framed model's view direction (framing.h kFitFrom)
     int camera = -1;                    // a glTF's camera N (0-based); -1: its first, if it has one
     std::optional<glm::vec3> ambient;   // replaces the scene's ambient term
