@@ -62,7 +62,9 @@ TEST(FrameTimer, LlvmpipeTimerQueriesAreFoundNotToMeasureRasterisation) {
                 t.wall_ms, t.reason.c_str());
     EXPECT_EQ(t.source, TimingSource::wall);
     EXPECT_GT(t.wall_ms, 0);
-    EXPECT_LT(t.query_ms, 0.5 * t.wall_ms);
+    // How far the query falls short of the wall clock is printed, not asserted: a timing depends
+    // on the load (the suite's shards share the cores), and the choice above rests on the
+    // software rasteriser, not on that ratio.
 }
 
 TEST(FrameTimer, BothSourcesTimeEveryStageOfAFrame) {
