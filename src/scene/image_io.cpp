@@ -40,6 +40,16 @@ bool is_damage(const std::string& said) {
     return false;
 }
 
+// "cannot read image NAME: WHY" as one line, with what the decoders printed meanwhile (`chatter`)
+// beside WHY, or as WHY when there is none.
+[[noreturn]] void fail_reading(const std::string& name, StderrCapture& chatter, std::string why) {
+    const std::string said = chatter.text();
+    if (why.empty()) why = said.empty() ? "read failed" : said;
+    else if (!said.empty() && why.find(said) == std::string::npos) why += " (" + said + ")";
+    for (size_t at; (at = why.find('\n')) != std::string::npos;) why.replace(at, 1, "; ");
+    throw Error("cannot read image " + name + ": " + one_line(why));
+}
+
 // A PNG ends with its IEND chunk: length 0, "IEND", CRC AE 42 60 82.
 bool ends_with_png_iend(const std::string& path) {
     std::FILE* f = std::fopen(path.c_str(), "rb");
@@ -114,13 +124,7 @@ Image load_image(const std::string& path, size_t max_texels) {
     // The decoders' own words (libpng's warnings, libjpeg's "Premature end of JPEG file") go
     // into the one error line, not onto the terminal.
     StderrCapture chatter;
-    auto fail = [&](std::string why) {
-        const std::string said = chatter.text();
-        if (why.empty()) why = said.empty() ? "read failed" : said;
-        else if (!said.empty() && why.find(said) == std::string::npos) why += " (" + said + ")";
-        for (size_t at; (at = why.find('\n')) != std::string::npos;) why.replace(at, 1, "; ");
-        throw Error("cannot read image " + path + ": " + one_line(why));
-    };
+    auto fail = [&](std::string why) { fail_reading(path, chatter, std::move(why)); };
     // Ask for the stored (unassociated) alpha: OIIO would otherwise premultiply PNG colour.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
@@ -134,13 +138,7 @@ Image load_image(const std::string& path, size_t max_texels) {
 
 Image decode_image(const std::string& bytes, const std::string& name, size_t max_texels) {
     StderrCapture chatter;
-    auto fail = [&](std::string why) {
-        const std::string said = chatter.text();
-        if (why.empty()) why = said.empty() ? "read failed" : said;
-        else if (!said.empty() && why.find(said) == std::string::npos) why += " (" + said + ")";
-        for (size_t at; (at = why.find('\n')) != std::string::npos;) why.replace(at, 1, "; ");
-        throw Error("cannot read image " + name + ": " + one_line(why));
-    };
+    auto fail = [&](std::string why) { fail_reading(name, chatter, std::move(why)); };
     // glTF's formats, told by their signatures; the plugin is picked by a name with that extension.
     const bool png = bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
     const bool jpeg = bytes.compare(0, 3, "\xFF\xD8\xFF") == 0;

@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,68 +48,6 @@ void png_warn(png_structp png, png_const_charp msg) {
     if (said && msg && said->size() < 1024) *said += (said->empty() ? "" : "; ") + std::string(msg);
 }
 
-}  // namespace
-
-Image load_image(const std::string& path, size_t max_texels) {
-    const std::string ext = image_extension(path);
-    if (ext != ".png") throw Error("cannot read image " + path + ": this build reads PNG only (libpng backend)");
-    const int fd = open_user_file(path, "image", kMaxImageFileBytes);
-    File in;
-    in.f = fdopen(fd, "rb");
-    if (!in.f) {
-        close(fd);
-        throw Error("cannot read image " + path + ": " + std::strerror(errno));
-    }
-    std::string warnings;
-    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &warnings, png_fail, png_warn);
-    png_infop info = png_create_info_struct(png);
-    Image img;
-    try {
-        png_init_io(png, in.f);
-        png_read_info(png, info);
-        const png_uint_32 w = png_get_image_width(png, info), h = png_get_image_height(png, info);
-        const size_t limit = std::min(max_texels, kMaxImageTexels);
-        if (w == 0 || h == 0) throw Error(std::to_string(w) + " x " + std::to_string(h) + " pixels (no pixels)");
-        if (w > png_uint_32(kMaxImageSide) || h > png_uint_32(kMaxImageSide) || size_t(w) * h > kMaxImageTexels)
-            throw Error(std::to_string(w) + " x " + std::to_string(h) + " pixels, expected at most " +
-                        std::to_string(kMaxImageSide) + " a side and " + std::to_string(kMaxImageTexels) +
-                        " in all (an absurd size)");
-        if (size_t(w) * h > limit)
-            throw ImageTooLarge("cannot read image " + path + ": " + std::to_string(w) + " x " + std::to_string(h) +
-                                    " pixels, expected at most " + std::to_string(limit) + " (the caller's budget)",
-                                int(w), int(h));
-        // Everything to 8-bit RGBA: palette and grey expanded, 16-bit stripped, alpha 255 added.
-        png_set_expand(png);
-        png_set_strip_16(png);
-        png_set_gray_to_rgb(png);
-        png_set_add_alpha(png, 0xff, PNG_FILLER_AFTER);
-        png_read_update_info(png, info);
-        std::vector<uint8_t> bytes(size_t(w) * h * 4);
-        std::vector<png_bytep> rows(h);
-        for (png_uint_32 y = 0; y < h; ++y) rows[y] = &bytes[size_t(y) * w * 4];
-        png_read_image(png, rows.data());
-        png_read_end(png, nullptr);
-        img.width = int(w);
-        img.height = int(h);
-        img.rgba.resize(bytes.size());
-        for (png_uint_32 y = 0; y < h; ++y)  // file row y (top first) -> Image row h-1-y
-            for (size_t i = 0; i < size_t(w) * 4; ++i)
-                img.rgba[size_t(h - 1 - y) * w * 4 + i] = bytes[size_t(y) * w * 4 + i] / 255.0f;
-    } catch (const ImageTooLarge&) {
-        png_destroy_read_struct(&png, &info, nullptr);
-        throw;
-    } catch (const Error& e) {
-        png_destroy_read_struct(&png, &info, nullptr);
-        std::string why = e.what();
-        if (!warnings.empty()) why += " (" + warnings + ")";
-        throw Error("cannot read image " + path + ": " + one_line(why));
-    }
-    png_destroy_read_struct(&png, &info, nullptr);
-    return img;
-}
-
-namespace {
-
 // libpng reads decode_image's bytes through this.
 struct MemRead {
     const std::string* bytes;
@@ -121,20 +60,17 @@ void mem_read(png_structp png, png_bytep out, png_size_t n) {
     m->pos += n;
 }
 
-}  // namespace
-
-Image decode_image(const std::string& bytes, const std::string& name, size_t max_texels) {
-    if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0)
-        throw Error("cannot read image " + name + ": " +
-                    (bytes.compare(0, 3, "\xFF\xD8\xFF") == 0 ? std::string("this build reads PNG only (libpng backend), got JPEG")
-                                                              : std::string("expected PNG data, got no PNG signature")));
+// A PNG read whole, from wherever `set_io` points libpng (a file or bytes in memory): the size
+// checked against the limits and `max_texels` before anything is allocated, everything to 8-bit
+// RGBA (palette and grey expanded, 16-bit stripped, alpha 255 added), rows flipped to bottom first.
+// Errors name `name`, with libpng's warnings beside them.
+Image read_png(const std::string& name, size_t max_texels, const std::function<void(png_structp)>& set_io) {
     std::string warnings;
     png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &warnings, png_fail, png_warn);
     png_infop info = png_create_info_struct(png);
-    MemRead src{&bytes, 0};
     Image img;
     try {
-        png_set_read_fn(png, &src, mem_read);
+        set_io(png);
         png_read_info(png, info);
         const png_uint_32 w = png_get_image_width(png, info), h = png_get_image_height(png, info);
         const size_t limit = std::min(max_texels, kMaxImageTexels);
@@ -160,7 +96,7 @@ Image decode_image(const std::string& bytes, const std::string& name, size_t max
         img.width = int(w);
         img.height = int(h);
         img.rgba.resize(pixels.size());
-        for (png_uint_32 y = 0; y < h; ++y)
+        for (png_uint_32 y = 0; y < h; ++y)  // file row y (top first) -> Image row h-1-y
             for (size_t i = 0; i < size_t(w) * 4; ++i)
                 img.rgba[size_t(h - 1 - y) * w * 4 + i] = pixels[size_t(y) * w * 4 + i] / 255.0f;
     } catch (const ImageTooLarge&) {
@@ -174,6 +110,30 @@ Image decode_image(const std::string& bytes, const std::string& name, size_t max
     }
     png_destroy_read_struct(&png, &info, nullptr);
     return img;
+}
+
+}  // namespace
+
+Image load_image(const std::string& path, size_t max_texels) {
+    const std::string ext = image_extension(path);
+    if (ext != ".png") throw Error("cannot read image " + path + ": this build reads PNG only (libpng backend)");
+    const int fd = open_user_file(path, "image", kMaxImageFileBytes);
+    File in;
+    in.f = fdopen(fd, "rb");
+    if (!in.f) {
+        close(fd);
+        throw Error("cannot read image " + path + ": " + std::strerror(errno));
+    }
+    return read_png(path, max_texels, [&](png_structp png) { png_init_io(png, in.f); });
+}
+
+Image decode_image(const std::string& bytes, const std::string& name, size_t max_texels) {
+    if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0)
+        throw Error("cannot read image " + name + ": " +
+                    (bytes.compare(0, 3, "\xFF\xD8\xFF") == 0 ? std::string("this build reads PNG only (libpng backend), got JPEG")
+                                                              : std::string("expected PNG data, got no PNG signature")));
+    MemRead src{&bytes, 0};
+    return read_png(name, max_texels, [&](png_structp png) { png_set_read_fn(png, &src, mem_read); });
 }
 
 void encode_image(const std::string& file, const std::string& name, const Image& img) {
