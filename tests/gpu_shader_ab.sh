@@ -1,5 +1,5 @@
 #!/bin/bash
-# A/B of shader folders on the GPU (docs/gpu.md, run 10): one dsr binary, several glsl120/ folders.
+# A/B of shader folders on the GPU (docs/gpu.md, "Other stages on a GPU"; docs/gpu/run10/): one dsr binary, several glsl120/ folders.
 #   here:  tests/gpu_bench.sh fetch; mkdir -p .gpu/var; cp -r glsl120 .gpu/var/NAME (one per variant,
 #          edited as the experiment needs; `git archive REV glsl120` gives an older one)
 #   there: GPU_BENCH_PARTS=none tests/gpu_bench.sh run /tmp/b   (builds .gpu/build/dsr)

@@ -1,8 +1,8 @@
 #!/bin/bash
-# Diagnostic (docs/gpu.md, run6 and run7): the tiles shader's variants on the GPU, speed only (some
+# Diagnostic (docs/gpu.md, "How to run it"; its output: docs/gpu/run6/): the tiles shader's variants on the GPU, speed only (some
 # give wrong images, to price a part): base; noquant (QUANTIZE_8BIT off); constidx (slots 0 and 1
 # in place of the decoded ones; beware: those two lights reach few pixels, so it skips lighting
-# rather than pricing the fetch, docs/gpu.md); notests (the in-shader light tests
+# rather than pricing the fetch); notests (the in-shader light tests
 # off). Each variant is a copy of the binary beside an edited glsl120/. Run on the device after
 # `tests/gpu_bench.sh run` built .gpu/build/dsr:  tests/gpu_tiles_variants.sh OUTDIR
 # (VARIANTS, SCENES pick; DSR0, SIZE, CTX=osmesa, SRC=. run it here on llvmpipe). Writes --stats JSONs.
