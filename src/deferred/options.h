@@ -161,7 +161,7 @@ struct ShaderOptions {
     // and 32 (llvmpipe at 256x256: as fast as 8 pixels on 1024-overlap, faster on 32-large, and
     // 32 pixels let 3x more tile-light pairs through the depth culling), else 32 and 8 (the H200:
     // 7.16 against 9.13 ms on 1024-overlap at 1920x1080, 6.77 against 8.44 on 32-large;
-    // docs/light_geometry.md). With the tiles' vertex fetch (Paths::tile_fetch_vertex) the lights a
+    // docs/tiles.md, "Settings"). With the tiles' vertex fetch (Paths::tile_fetch_vertex) the lights a
     // pass are as many as its flat varyings hold, 16 at most.
     int tile_size = 0;
     int tile_lights = 0;

@@ -108,7 +108,7 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     // the lights cost the fragment shader a constant read, and each count of lights gets a program
     // of its own with the lights' terms in a row (light_geometry_tiles.cpp). A GPU gained too (an
     // H100 at 1920x1080: 1024-overlap's frame 5.2-5.6 against 6.2-6.4 ms, 32-large's 3.9-4.0
-    // against 4.3-4.7; docs/light_geometry.md).
+    // against 4.3-4.7; docs/tiles.md).
     p.tile_vertex_lights = caps.glsl130 ? std::min(16, caps.max_varying_components / 8) : 0;
     const bool vertex_fetch = p.tile_vertex_lights > 0 && opts.tile_plan == TileGrouping::lists;
     p.tile_fetch_vertex = opts.tile_fetch == TileFetch::vertex ||
@@ -122,7 +122,7 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     // quad pays for the blocks along its diagonal twice; a point is one square primitive (llvmpipe
     // rasterises points itself, as squares). The tiles' light stage with points: 5% lower on
     // 32-large at 800x600 on llvmpipe, 4% on 1024-overlap at 1920x1080 on an H100
-    // (docs/light_geometry.md).
+    // (docs/tiles.md).
     p.tile_points = opts.tile_shape != TileShape::quads && float(p.tile_size) <= caps.max_point_size;
     if (opts.light_geometry == LightGeometry::stencil) {
         const char* missing = !caps.stencil ? "a stencil buffer"

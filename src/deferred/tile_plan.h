@@ -1,4 +1,4 @@
-// The tiles light geometry's plan (§3.4.3's "multiple lights per pass"; docs/light_geometry.md), pure math with
+// The tiles light geometry's plan (§3.4.3's "multiple lights per pass"; docs/tiles.md), pure math with
 // no GL: which lights shade which screen tile in which draw.
 //  1. Lights are ordered along a Morton curve of their scissor rectangle's centre tile, so that
 //     lights near each other on screen share a batch, and cut into batches of `batch_size`: a

@@ -1,7 +1,7 @@
 // The tiles' depth spans made on the CPU from the G-buffer read back (tile_depth.h): what
 // tile_depth.frag and tile_depth_reduce.frag compute in two passes, for a CPU rasteriser, where
 // reading the two targets back and taking each tile's span here costs less than the passes
-// (llvmpipe, 32-large at 800x600: docs/light_geometry.md). No GL.
+// (llvmpipe, 32-large at 800x600: docs/tiles.md, "Depth culling of the tiles"). No GL.
 #pragma once
 #include <cstdint>
 #include <vector>
