@@ -36,7 +36,7 @@ TEST(DepthEncodings, NamesRoundTrip) {
     EXPECT_THROW(encoding_from_name("cubic"), Error);
 }
 
-// The table docs/accuracy.md explains: log keeps a constant relative error (~ln(f/n)/2^24),
+// The tables docs/accuracy.md measures, docs/depth_precision.md explains: log keeps a constant relative error (~ln(f/n)/2^24),
 // the window-depth packings lose it near the far plane (~f/n/2^24), linear near the camera.
 TEST(DepthEncodings, RelativeEyeZErrorOnTheCpu) {
     const float n = 0.1f;

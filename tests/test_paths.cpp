@@ -126,7 +126,7 @@ TEST(Paths, DescribeNamesEveryDecision) {
 }
 
 
-// The position paths (docs/accuracy.md). `auto` never picks them; with ARB_framebuffer_object the other
+// The position paths (docs/depth_precision.md). `auto` never picks them; with ARB_framebuffer_object the other
 // targets stay RGBA8, with EXT_framebuffer_object alone every target takes the float format.
 TEST(Paths, AutoNeverPicksAPositionPath) {
     for (int mask = 0; mask < 16; ++mask) {

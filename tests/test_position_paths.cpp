@@ -1,5 +1,5 @@
 // --depth position16|position32, the G-buffer of LearnOpenGL, the lecture and Vasilovici
-// (eye-space position stored in a float target; docs/accuracy.md). Image tests against the
+// (eye-space position stored in a float target; docs/depth_precision.md). Image tests against the
 // depth-texture path, and the one-line refusal when float targets are forced off. choose_paths' side is in tests/test_paths.cpp, the accuracy bounds in
 // tests/test_stress.cpp (the ratio and coords cases of both paths).
 #include <gtest/gtest.h>

@@ -22,7 +22,7 @@ TEST(Reconstruct, PlanesAndDepthAtNearAndFar) {
     EXPECT_FLOAT_EQ(p.y, -200.0f * 0.5f / 199.5f);
     EXPECT_FLOAT_EQ(dsr::depth_from_eye_z(-0.5f, 0.5f, 200.0f), 0.0f);
     EXPECT_FLOAT_EQ(dsr::depth_from_eye_z(-200.0f, 0.5f, 200.0f), 1.0f);
-    // Float planes: at the far end their rounding is magnified by ~far/near (docs/accuracy.md).
+    // Float planes: at the far end their rounding is magnified by ~far/near (docs/depth_precision.md).
     EXPECT_FLOAT_EQ(dsr::eye_z_from_depth(0.0f, p), -0.5f);
     EXPECT_NEAR(dsr::eye_z_from_depth(1.0f, p), -200.0f, 200 * 400 * 1.2e-7);
     // Listing 13's d = (planes.x*z + planes.y)/(-z) and GL's window depth, via glm::perspective.
@@ -39,7 +39,7 @@ TEST(Reconstruct, PlanesAndDepthAtNearAndFar) {
 }
 
 // The error allowed in z after a float depth in between: a few float roundings, magnified by the
-// condition number of z(depth), |z|(f-n)/(f n) (docs/accuracy.md: it grows like far/near near far).
+// condition number of z(depth), |z|(f-n)/(f n) (docs/depth_precision.md: it grows like far/near near far).
 double z_tolerance(double z, double n, double f) {
     return 1.5 * kEps * (1 + std::abs(z) * (f - n) / (f * n));
 }

@@ -350,7 +350,7 @@ std::vector<StressCase> stress_cases(bool quick) {
         }
     }
     if (!quick) {
-        // Past 1e7: planes.x = -f/(f-n) rounds to -1 in float once f/n > 2^24 (docs/accuracy.md).
+        // Past 1e7: planes.x = -f/(f-n) rounds to -1 in float once f/n > 2^24 (docs/depth_precision.md, "Past the required range").
         for (double r : {2e7, 1e8})
             for (const char* p : {"texture", "corrected", "log"}) {
                 StressCase c = make_case("limit", sci(r), p, depth_range_scene(r));

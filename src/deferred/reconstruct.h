@@ -12,7 +12,7 @@ glm::vec2 planes_uniform(float near_plane, float far_plane);
 
 // Eye-space z (< 0) from window depth in [0,1]: -planes.y / (planes.x + depth) (Listing 20
 // line 21). Computed in double from the float inputs; its relative error still grows like
-// eps(depth) * far/near near the far plane (docs/accuracy.md), which the inputs already carry.
+// eps(depth) * far/near near the far plane (docs/depth_precision.md), which the inputs already carry.
 float eye_z_from_depth(float depth, glm::vec2 planes);
 
 // The inverse: what GL's depth buffer holds (glDepthRange(0,1)) for eye z < 0, which is also

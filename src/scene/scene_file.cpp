@@ -275,7 +275,7 @@ private:
             }
         }
         line.require(keys, seen);
-        // Past 1e7 the projection's far row rounds to the near row's (docs/accuracy.md: at 1e8
+        // Past 1e7 the projection's far row rounds to the near row's (docs/depth_precision.md: at 1e8
         // every path loses its far plane).
         if (!(double(c.far_plane) <= kMaxFarOverNear * double(c.near_plane)))
             line.fail("expected far / near at most 1e7, got " + fmt(c.far_plane) + " / " + fmt(c.near_plane) + " = " +
