@@ -26,7 +26,7 @@
 
 namespace dsr::gltf {
 
-// Limits (docs/scene-format.md, "glTF 2.0").
+// Limits (docs/gltf.md, "Limits and refusals").
 constexpr size_t kMaxGltfBytes = size_t(2) << 30;       // a .gltf/.glb, each buffer and image file
 constexpr size_t kMaxElements = 20'000'000;             // an accessor's count; vertices of a mesh
 constexpr int kMaxNodeDepth = 256;                      // of the node hierarchy

@@ -3,7 +3,7 @@
 // pointer of what is wrong ("model.gltf: /accessors/3/count: expected ..., got ..."). Pure: no GL.
 // Images go through the image interface (scene/image.h).
 //
-// What is read, approximated and refused: docs/scene-format.md, "glTF 2.0".
+// What is read, approximated and refused: docs/gltf.md.
 #pragma once
 #include <functional>
 #include <string>

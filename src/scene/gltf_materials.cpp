@@ -1,5 +1,5 @@
 // glTF materials as dsr's metallic-roughness materials (gltf_internal.h; the mapping is the table
-// in docs/scene-format.md, "glTF 2.0"; the BRDF is docs/metal_rough.md's), their textures decoded
+// in docs/gltf.md, "Materials"; the BRDF is docs/metal_rough.md's), their textures decoded
 // through decode_image within the texel budget, each (image, sampler, bake) once.
 #include <algorithm>
 #include <cmath>

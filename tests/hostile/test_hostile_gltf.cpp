@@ -1,6 +1,6 @@
 // Hostile glTF files and the buffers and images they name, rendered as models (`dsr render
 // m.gltf`): the file rules of user_file.h, then the glTF reader's checks, each one line naming the
-// file and the JSON pointer (docs/scene-format.md, "glTF 2.0").
+// file and the JSON pointer (docs/gltf.md, "Limits and refusals").
 #include <cmath>
 #include <string>
 #include <vector>
