@@ -34,7 +34,7 @@ const char* target_format_name(TargetFormat f);  // "RGBA8", "RGBA16F", "RGBA32F
 //  tiles    screen tiles; up to `tile_lights` lights per pass in one shader (§3.4.3's closing remark)
 //  screen   every light at every pixel, in full-screen passes with no culling (LearnOpenGL's
 //           deferred demo's lighting pass): the peer's algorithm, measured beside dsr's
-//  automatic  each light by the cheapest of quad, volume and tiles (light_path_choice.h)
+//  automatic  each light by the cheapest of quad, volume and tiles (light_cost.h choose_light_paths)
 enum class LightGeometry { quad, volume, stencil, tiles, screen, automatic };
 
 // Where the G-buffer and P-buffers are rendered (§3.2's pPBuffer): automatic picks fbo where
