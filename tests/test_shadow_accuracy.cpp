@@ -1,4 +1,4 @@
-// Shadow maps against the analytic reference's shadow rays (docs/accuracy.md, "Shadows"), on
+// Shadow maps against the analytic reference's shadow rays (docs/shadow_accuracy.md), on
 // data/shadow.scene: a box resting on a floor under a spot, a directional and a point light, each
 // with `shadow` at the default map size, bias and slope. On both depth paths (depth textures with
 // ARB_shadow, and the RGB8-packed maps `--caps no-depth-texture` forces). The measures are
