@@ -34,7 +34,7 @@ CORE_SRC := $(filter-out src/platform/glfw_%.cpp $(HEADLESS_BACKEND_SRC) src/sce
 APP_SRC  := $(filter-out src/app/viewer_%.cpp,$(sort $(wildcard src/app/*.cpp)))
 # The command-line tables and what prints them (src/app/command_table.h, help_text.h): linked into
 # all three executables, so `dsr view --help` and the tests' docs/cli.md check read the same tables.
-APP_TABLE_SRC := src/app/args.cpp src/app/command_line.cpp src/app/command_table.cpp src/app/help_text.cpp \
+APP_TABLE_SRC := src/app/args.cpp src/app/command_line.cpp src/app/command_table.cpp src/app/environment.cpp src/app/help_text.cpp \
                  src/app/render_flags.cpp
 TEST_SRC := $(sort $(wildcard tests/*.cpp tests/hostile/*.cpp))
 

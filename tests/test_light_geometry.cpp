@@ -28,6 +28,14 @@ ShaderOptions with_geometry(LightGeometry g, DepthPath d = DepthPath::texture) {
     return o;
 }
 
+// auto with each path's starting cost scale given (ShaderOptions::light_cost_scale, "Q,V,T" as
+// --light-cost-scale takes it: a large one keeps a path out); "" leaves them guessed.
+ShaderOptions auto_with_scales(const std::string& scales, DepthPath d = DepthPath::texture) {
+    ShaderOptions o = with_geometry(LightGeometry::automatic, d);
+    if (!scales.empty()) o.light_cost_scale = parse_cost_scale(scales);
+    return o;
+}
+
 // Every light shader takes its view ray from gl_FragCoord (light.frag), so a
 // pixel's reconstructed point is the same float whatever geometry draws it, and on llvmpipe the
 // geometries' images are identical (0 LSB); before, interpolated across each primitive, quad and
@@ -502,7 +510,7 @@ TEST(LightGeometry, ScreenIsQuadWithinAFewLsb) {
 
 // auto (light_cost.h): each light by quad (in batches), volume or tiles, mixed in one frame, and the
 // image is quad's to the byte whatever it chose: as the model chooses, and with each path forced by
-// its starting scales (DSR_LIGHT_COST_SCALE: a large scale keeps a path out). Every light is
+// its starting scales (ShaderOptions::light_cost_scale: a large scale keeps a path out). Every light is
 // counted on exactly one path.
 TEST(LightGeometry, AutoIsQuadToTheByteWhateverItChooses) {
     struct Case {
@@ -515,10 +523,9 @@ TEST(LightGeometry, AutoIsQuadToTheByteWhateverItChooses) {
                                      {"1024-overlap", bench_scene(base, LightSpec{1024, LightSet::overlap})}};
     int used[3] = {0, 0, 0};
     for (const char* scale : {"", "1,1000,1000", "1000,1,1000", "1000,1000,1"}) {
-        setenv("DSR_LIGHT_COST_SCALE", scale, 1);
         for (const Case& c : cases) {
             const RenderResult quad = render_scene(c.scene, kW, kH, with_geometry(LightGeometry::quad));
-            const RenderResult a = render_scene(c.scene, kW, kH, with_geometry(LightGeometry::automatic));
+            const RenderResult a = render_scene(c.scene, kW, kH, auto_with_scales(scale));
             expect_same(std::string("auto_") + c.name + (*scale ? std::string("_") + scale : ""), a, quad);
             ASSERT_TRUE(a.stats.auto_geometry);
             // (a light over the whole screen may have gone with the ambient pass folded into it)
@@ -531,7 +538,6 @@ TEST(LightGeometry, AutoIsQuadToTheByteWhateverItChooses) {
                         a.stats.lights_drawn, a.stats.light_passes);
         }
     }
-    unsetenv("DSR_LIGHT_COST_SCALE");
     for (int p = 0; p < 3; ++p) EXPECT_GT(used[p], 0) << "path " << p << " never taken";
 }
 
@@ -568,12 +574,11 @@ TEST(LightGeometry, AutoPricesTheHandoffAsTheFrameDrawsIt) {
 // gl_FragDepth pass where there is no framebuffer blit; the test is taken (the hand-off ran).
 TEST(LightGeometry, AutoQuadsAgainstTheDepthOnEveryDepthPath) {
     const Scene s = bench_scene(default_scene(), LightSpec{256, LightSet::spread});
-    setenv("DSR_LIGHT_COST_SCALE", "1,1000,1000", 1);
     for (DepthPath d : {DepthPath::texture, DepthPath::packed, DepthPath::position16, DepthPath::position32})
         for (bool blit : {true, false}) {
             const std::vector<std::string> off = blit ? std::vector<std::string>{} : std::vector<std::string>{"no-framebuffer-blit"};
             const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad, d), off);
-            const RenderResult a = render_scene(s, kW, kH, with_geometry(LightGeometry::automatic, d), off);
+            const RenderResult a = render_scene(s, kW, kH, auto_with_scales("1,1000,1000", d), off);
             const std::string name = std::string("auto_quads_depth_") + depth_path_name(d) + (blit ? "" : "_copy");
             expect_same(name, a, quad);
             EXPECT_EQ(a.stats.auto_lights[0], a.stats.lights_drawn) << name;
@@ -583,17 +588,16 @@ TEST(LightGeometry, AutoQuadsAgainstTheDepthOnEveryDepthPath) {
         }
     // With the shaders' depth test off (--no-skip light-depth-test) a quad lights what its shader
     // finds behind the light too, so GL must not reject it: no test, no hand-off, quad's image.
-    ShaderOptions q = with_geometry(LightGeometry::quad), a = with_geometry(LightGeometry::automatic);
+    ShaderOptions q = with_geometry(LightGeometry::quad), a = auto_with_scales("1,1000,1000");
     q.skip.light_depth_test = a.skip.light_depth_test = false;
     const RenderResult quad = render_scene(s, kW, kH, q), untested = render_scene(s, kW, kH, a);
     expect_same("auto_quads_no_light_depth_test", untested, quad);
     EXPECT_FALSE(untested.stats.auto_quad_depth);
     EXPECT_EQ(untested.stats.ms.depth_copy, 0);
-    unsetenv("DSR_LIGHT_COST_SCALE");
 }
 
 // Frames of auto, one per scene of `frames`, with the paths' cost scales `scales`
-// (DSR_LIGHT_COST_SCALE): each frame's stats handed to check(frame, stats), and its image compared
+// (auto_with_scales): each frame's stats handed to check(frame, stats), and its image compared
 // with quad's at the same camera to the byte. Returns quad's images (one per frame).
 template <class Check>
 std::vector<Image> auto_frames_against_quad(const std::vector<Scene>& frames, const char* scales, const std::string& name,
@@ -605,10 +609,9 @@ std::vector<Image> auto_frames_against_quad(const std::vector<Scene>& frames, co
                           c.up == frames[i - 1].camera.up;
         quad.push_back(same ? quad.back() : render_scene(frames[i], kW, kH, with_geometry(LightGeometry::quad)));
     }
-    setenv("DSR_LIGHT_COST_SCALE", scales, 1);
     auto ctx = create_context(ContextDesc{"osmesa", kW, kH});
     const Caps caps = probe_caps();
-    DeferredShader ds(caps, kW, kH, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
+    DeferredShader ds(caps, kW, kH, auto_with_scales(scales), resource_dir("glsl120"));
     ds.set_scene(frames.front());
     std::vector<Image> images;
     for (size_t frame = 0; frame < frames.size(); ++frame) {
@@ -621,7 +624,6 @@ std::vector<Image> auto_frames_against_quad(const std::vector<Scene>& frames, co
         expect_same(name + std::to_string(frame), r, quad[frame]);
         images.push_back(quad[frame].image);
     }
-    unsetenv("DSR_LIGHT_COST_SCALE");
     return images;
 }
 
@@ -734,9 +736,8 @@ TEST(LightGeometry, AutoCalibratesEveryPathItDraws) {
     // 256 spread lights with quad cheapest: most by quad, the few priced 0 on the tiles (they keep
     // no tile) by the tiles, both paths drawn in every frame.
     {
-        setenv("DSR_LIGHT_COST_SCALE", "1,1000,1000", 1);
         const Scene s = bench_scene(default_scene(), LightSpec{256, LightSet::spread});
-        DeferredShader ds(caps, kSize, kSize, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
+        DeferredShader ds(caps, kSize, kSize, auto_with_scales("1,1000,1000"), resource_dir("glsl120"));
         ds.set_scene(s);
         FrameStats st;
         for (int frame = 0; frame < 12; ++frame) st = ds.render(s, kSize, kSize);
@@ -748,9 +749,8 @@ TEST(LightGeometry, AutoCalibratesEveryPathItDraws) {
     // 1024-overlap, every light by the tiles: one priced frame in eight, the rest kept; a kept frame
     // is timed and predicted anew from the priced frame's prices at the current scale.
     {
-        setenv("DSR_LIGHT_COST_SCALE", "1000,1000,1", 1);
         const Scene s = bench_scene(default_scene(), LightSpec{1024, LightSet::overlap});
-        DeferredShader ds(caps, kW, kH, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
+        DeferredShader ds(caps, kW, kH, auto_with_scales("1000,1000,1"), resource_dir("glsl120"));
         ds.set_scene(s);
         std::vector<FrameStats> st;
         for (int frame = 0; frame < 8; ++frame) st.push_back(ds.render(s, kW, kH));
@@ -760,7 +760,6 @@ TEST(LightGeometry, AutoCalibratesEveryPathItDraws) {
         std::printf("[ calib    ] tiles kept: scale %.3f, predicted %.2f ms (priced frame %.2f)\n", st[7].auto_scale[2],
                     st[7].auto_predicted_ms, st[0].auto_predicted_ms);
     }
-    unsetenv("DSR_LIGHT_COST_SCALE");
 }
 
 }  // namespace dsr::test
@@ -781,7 +780,6 @@ TEST(LightGeometry, AutoPricesTheTilesAgainOnceADearerPathIsMeasured) {
     auto ctx = create_context(ContextDesc{"osmesa", kSize, kSize});
     const Caps caps = probe_caps();
     if (!caps.software_rasterizer) GTEST_SKIP() << "wall-clock calibration is a CPU rasteriser's";
-    unsetenv("DSR_LIGHT_COST_SCALE");
     const Scene s = default_scene();
     DeferredShader ds(caps, kSize, kSize, with_geometry(LightGeometry::automatic), resource_dir("glsl120"));
     ds.set_scene(s);

@@ -1,8 +1,8 @@
 // The viewer (`dsr view`, build/dsr_view) under its own Xvfb, driven by --script: its screenshot
 // is `dsr render`'s image, the resize sequence reallocates the buffers without a GL error or a
-// rebuilt shader, `set` changes what it must and nothing else, the panel is never captured, and
-// the executable links the system libGL, not libOSMesa. Skips, saying why, only when Xvfb cannot
-// run here (`make deps` installs it).
+// rebuilt shader, `set` changes what it must and nothing else, the panel is captured only where
+// the script asks (`screenshot FILE panel`), and the executable links the system libGL, not
+// libOSMesa. Skips, saying why, only when Xvfb cannot run here (`make deps` installs it).
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
@@ -130,6 +130,20 @@ TEST_F(Viewer, ScreenshotIsTheRenderWithoutThePanel) {
     ASSERT_EQ(v.width, 192);
     ASSERT_EQ(v.height, 144);
     EXPECT_LE(max_lsb(v, ref), 1.0) << r.output;
+}
+
+// `screenshot FILE panel` captures the window as shown: with the panel open it differs from the
+// deferred image; with the panel closed it is the deferred image.
+TEST_F(Viewer, ScreenshotPanelCapturesThePanel) {
+    RunResult r = view("--size 320x240", "frames 2\nscreenshot " + out("plain.png") + "\nscreenshot " + out("panel.png") +
+                                             " panel\nset panel off\nscreenshot " + out("closed.png") + " panel\nquit\n");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Image plain = load_image(out("plain.png")), panel = load_image(out("panel.png")),
+                closed = load_image(out("closed.png"));
+    ASSERT_EQ(panel.width, 320);
+    ASSERT_EQ(panel.height, 240);
+    EXPECT_GT(max_lsb(panel, plain), 50.0) << "the panel is not in the panel screenshot";
+    EXPECT_LE(max_lsb(closed, plain), 1.0) << "with the panel closed, the window is the deferred image";
 }
 
 // A script ends when it ends: no `quit`, and the viewer closes after its last line (a `timeout`

@@ -57,6 +57,12 @@ TEST(ViewerScript, EveryCommandParses) {
     EXPECT_EQ(s.commands[5].name, "overlay");
     EXPECT_EQ(s.commands[6].count, 3);
     EXPECT_EQ(s.commands[7].value, "out/a.png");
+    EXPECT_FALSE(s.commands[7].with_panel);
+    const Script shot = parse_script("screenshot out/b.png panel\n", "s.txt");
+    ASSERT_EQ(shot.commands.size(), 1u);
+    EXPECT_EQ(shot.commands[0].kind, ScriptCommand::screenshot);
+    EXPECT_EQ(shot.commands[0].value, "out/b.png");
+    EXPECT_TRUE(shot.commands[0].with_panel);
     EXPECT_EQ(s.commands[8].w, 0);
     EXPECT_EQ(s.commands[9].kind, ScriptCommand::quit);
     EXPECT_EQ(s.where(s.commands[9]), "s.txt:12: ");
@@ -96,7 +102,9 @@ TEST(ViewerScript, BadLineIsOneErrorNamingFileAndLine) {
         {"camera pos 0 0 5 look 0 0 0 up 0 1 0\n", "s.txt:1: camera: expected 'target', got 'look'"},
         {"camera pos 0 0 nan target 0 0 0 up 0 1 0\n", "s.txt:1: camera pos: expected a finite number, got 'nan'"},
         {"camera pos 0 0 5 target 0 0 0 up 0 0 1\n", "s.txt:1: camera: expected target apart from pos and up not along"},
-        {"screenshot\n", "s.txt:1: expected 'screenshot FILE', got 'screenshot'"},
+        {"screenshot\n", "s.txt:1: expected 'screenshot FILE [panel]', got 'screenshot'"},
+        {"screenshot a.png panel now\n", "s.txt:1: expected 'screenshot FILE [panel]', got 'screenshot a.png panel now'"},
+        {"screenshot a.png window\n", "s.txt:1: screenshot: expected 'panel' or nothing after FILE, got 'window'"},
         {"screenshot a.bmp\n", "s.txt:1: screenshot: expected a file ending .png, .exr, .tif, .jpg or .ppm, got 'a.bmp'"},
         {"quit now\n", "s.txt:1: expected 'quit', got 'quit now'"},
         {"wait 5\n", "s.txt:1: expected 'wait', got 'wait 5'"},

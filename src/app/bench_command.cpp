@@ -105,7 +105,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
     const Stage stage("benchmarking");
 
     const auto [context_w, context_h] = bench::context_size(cfg);  // N-large may run at the demo's size
-    auto ctx = create_context(ContextDesc{context_backend(flags.context), context_w, context_h});
+    auto ctx = create_context(context_desc(flags.context, context_w, context_h));
     const Caps caps = probe_caps();
     bench::Summary sum;
     sum.machine = bench::machine_name();

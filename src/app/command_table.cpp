@@ -12,7 +12,10 @@
 
 #include "analysis/bench_run.h"
 #include "gl/cap_names.h"
+#include "deferred/light_cost.h"
+#include "dsr_error.h"
 #include "gl/check.h"
+#include "gl/frame_timer.h"
 #include "gl/state.h"
 #include "scene/framing.h"
 
@@ -78,14 +81,41 @@ Flag caps_flag(std::string& field) {
     return f;
 }
 
-// --gl-state-cache and --debug-gl: set where they live (gl/state.h, gl/check.h), not in settings.
+// --gl-state-cache, --debug-gl and --timing: set where they live (gl/state.h, gl/check.h,
+// gl/frame_timer.h), not in settings; their environment defaults are set before the command line
+// is read (app/environment.h apply_gl_environment).
 std::vector<Flag> gl_debug_flags() {
     Flag cache{{"--gl-state-cache"}, "on|off", "", "on, or $DSR_GL_STATE_CACHE",
                "off: every pass sets all of its GL state, so a cache bug can be told from a pass bug", {},
                [](Args& a, const std::string& flag) { gl_state().set_cache(a.on_off(flag)); }};
     Flag debug{{"--debug-gl"}, "", "", "", "check GL errors after every stage and name it (also DSR_DEBUG_GL=1)", {},
                [](Args&, const std::string&) { set_debug_gl(true); }};
-    return {cache, debug};
+    Flag timing{{"--timing"}, "measure|wall|gpu-timer", "", "$DSR_TIMING, else measure",
+                "how the stages are timed (docs/stats.md): measure both ways on the GL and choose, or force the "
+                "wall clock or timer queries (gpu-timer only where the GL has ARB_timer_query)", {},
+                [](Args& a, const std::string& flag) {
+                    const std::string v = a.value(flag);
+                    if (v == "measure") set_timing_choice(TimingChoice::measure);
+                    else if (v == "wall") set_timing_choice(TimingChoice::wall);
+                    else if (v == "gpu-timer") set_timing_choice(TimingChoice::gpu_timer);
+                    else a.fail(flag + ": expected measure, wall or gpu-timer, got " + quote(v));
+                }};
+    return {cache, debug, timing};
+}
+
+// --light-cost-scale: auto's starting cost scales, given instead of guessed.
+Flag light_cost_scale_flag(RenderOptions& options) {
+    return Flag{{"--light-cost-scale"}, "Q,V,T", "three positive numbers", "$DSR_LIGHT_COST_SCALE, else guessed",
+                "--light-geometry auto: each path's starting cost scale, quad, volume, tiles (docs/light_geometry.md): "
+                "given, they count as measured; a large one keeps a path out",
+                {}, [&options](Args& a, const std::string& flag) {
+                    const std::string v = a.value(flag);
+                    try {
+                        options.shader.light_cost_scale = parse_cost_scale(v);
+                    } catch (const Error&) {
+                        a.fail(flag + ": expected three positive numbers Q,V,T (quad, volume, tiles), got " + quote(v));
+                    }
+                }};
 }
 
 Flag lights_flag(std::optional<LightSpec>& field) {
@@ -169,11 +199,6 @@ std::vector<Flag> load_flags(LoadOptions& load) {
             from, camera, ambient};
 }
 
-std::string caps_with_environment(const std::string& flags) {
-    const char* env = std::getenv("DSR_CAPS");
-    return std::string(env ? env : "") + "," + flags;
-}
-
 std::string RenderSettings::output() const {
     if (!out.empty()) return out;
     const std::string stem = scene.empty() ? "default" : std::filesystem::path(scene).stem().string();
@@ -201,6 +226,7 @@ Command render_command(RenderSettings& s) {
         caps_flag(s.caps),
         context_flag(s.context),
         egl_device_flag(s.context),
+        light_cost_scale_flag(s.options),
     };
     append(c.flags, load_flags(s.load));
     append(c.flags, gl_debug_flags());
@@ -372,10 +398,12 @@ Command view_command(ViewerConfig& s) {
         text_flag({"--script"}, "FILE", s.script_path,
                   "run FILE's commands, one a line: size W H (0 0 minimises), camera pos X Y Z target X Y Z up X Y Z, "
                   "set NAME VALUE (a renderer option by its name without dashes: set scissor off, set view normal, "
-                  "set bloom on; or panel, overlay, animate on|off), frames N, screenshot FILE, quit, wait. "
+                  "set bloom on; or panel, overlay, animate on|off), frames N, screenshot FILE (the deferred image, no "
+                  "panel), screenshot FILE panel (the window as shown, the panel and overlay over the image), quit, wait. "
                   "The viewer closes after the script's last line unless that line is wait, which leaves the "
                   "window open"),
         caps_flag(s.caps_list),
+        light_cost_scale_flag(s.options),
     };
     append(c.flags, load_flags(s.load));
     append(c.flags, gl_debug_flags());

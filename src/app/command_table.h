@@ -9,20 +9,19 @@
 
 #include "analysis/bench_scenes.h"
 #include "app/command_line.h"
+#include "app/environment.h"
 #include "deferred/option_table.h"
 #include "platform/context.h"
 #include "viewer/viewer.h"
 
 namespace dsr {
 
-// --context and --egl-device: resolved by the command ($DSR_CONTEXT, $DSR_EGL_DEVICE) when not given.
+// --context and --egl-device: resolved by the command ($DSR_CONTEXT, $DSR_EGL_DEVICE) when not
+// given (app/environment.h context_desc).
 struct ContextSettings {
     std::string backend;  // empty: $DSR_CONTEXT, else the build's first backend (osmesa)
     int egl_device = -1;  // -1: $DSR_EGL_DEVICE, else 0
 };
-
-// The backend to create: --context, else default_context_backend().
-inline std::string context_backend(const ContextSettings& c) { return c.backend.empty() ? default_context_backend() : c.backend; }
 
 // The folder the commands' default outputs go under, made when missing (git ignores it): a
 // run without -o never writes into the checkout's own files.
@@ -66,7 +65,7 @@ struct BenchSettings {
     // The light sets of a full sweep and of --quick, and --quick's size and frames.
     static constexpr const char* kBenchLights = "own,32,256,1024,1024-overlap,32-large";
     static constexpr const char* kQuickLights = "own,32,256";
-    static constexpr int kQuickSize = 128, kQuickFrames = 3, kQuickWarmup = 1;
+    static constexpr int kQuickSize = 128, kQuickFrames = 11, kQuickWarmup = 1;
     static_assert(kQuickWarmup == 1, "--quick's help says one quiet warm-up frame");
 };
 
@@ -122,8 +121,5 @@ const Command* find_command(const std::string& name);
 
 // --strict, --from, --camera and --ambient: how render and view read a scene or model.
 std::vector<Flag> load_flags(LoadOptions& load);
-
-// $DSR_CAPS, then `flags` (--caps), comma-separated.
-std::string caps_with_environment(const std::string& flags);
 
 }  // namespace dsr

@@ -61,7 +61,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
     require_folder("dsr figures", "-o", dir);
     outputs.make_dir("-o", dir);
     const Stage stage("rendering the figures of " + scene_path);
-    auto ctx = create_context(ContextDesc{context_backend(flags.context), n, n});
+    auto ctx = create_context(context_desc(flags.context, n, n));
     Caps caps = probe_caps();
     const std::string shaders = resource_dir("glsl120");
     auto save = [&](const std::string& name, const Image& img) { outputs.put_image("-o", dir + "/" + name, opaque(img)); };

@@ -15,7 +15,7 @@ int cmd_hdr(const std::vector<std::string>& argv) {
     HdrSettings flags;
     parse_command_line(hdr_command(flags), argv);
     const Stage stage("measuring light beyond 1.0");
-    auto ctx = create_context(ContextDesc{context_backend(flags.context), flags.size, flags.size, flags.context.egl_device});
+    auto ctx = create_context(context_desc(flags.context, flags.size, flags.size));
     const Caps caps = probe_caps(split_caps(caps_with_environment(flags.caps)));
     const auto results = hdr::measure(caps, resource_dir("glsl120"), hdr::default_cases(), flags.size, flags.frames,
                                       [](const std::string& s) { std::fprintf(stderr, "%s\n", s.c_str()); });

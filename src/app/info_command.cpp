@@ -20,7 +20,7 @@ namespace dsr {
 int cmd_info(const std::vector<std::string>& argv) {
     InfoSettings flags;  // the info command's table (app/command_table.h)
     parse_command_line(info_command(flags), argv);
-    auto ctx = create_context(ContextDesc{context_backend(flags.context), 512, 512, flags.context.egl_device});  // big enough to time a pass (timing line)
+    auto ctx = create_context(context_desc(flags.context, 512, 512));  // big enough to time a pass (timing line)
     Caps caps = probe_caps(split_caps(caps_with_environment(flags.caps)));
     std::printf("context        %s\n", ctx->description().c_str());
     // Which shader folder this binary compiles (resources.h): a binary moved away from its tree

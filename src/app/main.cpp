@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
     // Every error is one line (dsr::one_line), with the stage it left when it came from inside
     // the renderer (app/stage.h).
     try {
+        dsr::apply_gl_environment();  // the GL switches' defaults (app/environment.h), before the flags
         return run(args);
     } catch (const dsr::Error& e) {
         // A message that names the command already is the command's own, not the renderer's.

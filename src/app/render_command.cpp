@@ -31,6 +31,7 @@ namespace dsr {
 
 int cmd_render(const std::vector<std::string>& argv) {
     RenderSettings flags;  // the render command's table (app/command_table.h)
+    flags.options.shader.light_cost_scale = light_cost_scale_from_environment();  // --light-cost-scale's default
     parse_command_line(render_command(flags), argv);
     const std::string out = flags.output(), stats_path = flags.stats;
     const std::string scene_path = flags.scene.empty() ? resource_dir("data") + "/default.scene" : flags.scene;
@@ -53,7 +54,7 @@ int cmd_render(const std::vector<std::string>& argv) {
     if (out_w == 0) out_w = w, out_h = h;
     const View view = ro.view;
     // The no-FBO path renders its buffers inside the main frame buffer: make it fit both.
-    auto ctx = create_context(ContextDesc{context_backend(flags.context), std::max(w, out_w), std::max(h, out_h), flags.context.egl_device});
+    auto ctx = create_context(context_desc(flags.context, std::max(w, out_w), std::max(h, out_h)));
     Caps caps = probe_caps(split_caps(caps_with_environment(flags.caps)));
     // depth auto: choose_paths decides (the depth texture where ARB_depth_texture exists).
     const ShaderOptions opts = ro.resolved(scene);

@@ -70,7 +70,7 @@ int cmd_stress(const std::vector<std::string>& argv) {
     for (const StressCase& c : cases) mw = std::max(mw, c.width), mh = std::max(mh, c.height);
 
     const double t0 = now_ms();
-    auto ctx = create_context(ContextDesc{context_backend(flags.context), mw, mh});
+    auto ctx = create_context(context_desc(flags.context, mw, mh));
     StressRunner runner(*ctx, resource_dir("glsl120"));
     std::vector<StressResult> results;
     int failed = 0;

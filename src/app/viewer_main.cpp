@@ -17,7 +17,10 @@ namespace dsr {
 
 int cmd_view(const std::vector<std::string>& argv) {
     ViewerConfig cfg;
+    apply_gl_environment();  // the GL switches' defaults, before the flags
+    cfg.options.shader.light_cost_scale = light_cost_scale_from_environment();  // --light-cost-scale's default
     parse_command_line(view_command(cfg), argv);
+    cfg.caps_list = caps_with_environment(cfg.caps_list);
     return run_viewer(cfg);
 }
 

@@ -44,8 +44,8 @@ public:
     // After prepare(f): whether f.lights[i], a light over the whole screen, costs this geometry a
     // pass of its own, so that folding the ambient pass into that pass saves the ambient pass
     // (quad, volume, stencil). Where the light would be one more in a batch (tiles, screen), the
-    // fold's pass is a pass added: 32-large at 800x600 on llvmpipe, the light stage took 37-47 ms
-    // with the fold against 29-33 ms and a 2 ms ambient pass without it.
+    // fold's pass is a pass added, dearer than the ambient pass it saves: false (docs/guide.md has
+    // the figures).
     virtual bool own_pass(size_t i) const { return true; }
     // The fold draws f.lights[i] (own_pass(i) was true): draw() is then handed f without it, and the
     // plan prepare() made must follow.

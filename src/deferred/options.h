@@ -2,6 +2,8 @@
 // data, no GL: choose_paths (paths.h) turns it and the probed capabilities into the paths
 // that run.
 #pragma once
+#include <array>
+#include <optional>
 #include <string>
 
 #include "deferred/depth_codec.h"
@@ -155,6 +157,9 @@ struct ShaderOptions {
     bool gbuffer_half = false;
     // auto: each light by its cheapest path (light_cost.h); quad is the tutorial's (§3.4.2).
     LightGeometry light_geometry = LightGeometry::automatic;
+    // auto: each path's starting cost scale (quad, volume, tiles; light_cost.h LightCostCalibration),
+    // given instead of guessed: a large one keeps a path out (--light-cost-scale).
+    std::optional<std::array<double, 3>> light_cost_scale;
     bool depth_bounds = false;      // EXT_depth_bounds_test on the quad passes (refused where missing)
     // tiles: pixels per side and lights per pass (the shader's constant loop bound); 0 is auto,
     // resolved by choose_paths (Paths::tile_size, tile_lights) from the GL: on a CPU rasteriser 16

@@ -8,7 +8,7 @@
 //  3. One draw per (batch, layer): a quad for every tile with lights in that layer (neighbouring
 //     tiles with the same lights merged: runs along a row, then equal runs down), each quad's
 //     vertices carrying its lights' indices into the batch. So a frame is a handful of draws, not
-//     one per tile (the earlier plan: 2040 draws at 1920x1080, 13 ms of CPU submission on the H200).
+//     one per tile: a GPU's CPU submits each draw, so their count is the plan's cost (docs/tiles.md).
 #pragma once
 #include <array>
 #include <initializer_list>
@@ -122,11 +122,10 @@ TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height
                     const std::vector<bool>* shadowed = nullptr, int max_shadowed = 0);
 
 // plan_tiles a batch at a time, so that a renderer can draw a batch while it plans the next (on a
-// GPU the plan is CPU time the GPU would otherwise wait through: at 1920x1080 with 1024-overlap's
-// lights, 2-6 ms on the H200's host). The same batches and draws as plan_tiles. depth, when given,
+// GPU the plan is CPU time the GPU would otherwise wait through; docs/tiles.md has the figures). The same batches and draws as plan_tiles. depth, when given,
 // must outlive the planner. kept, when given, is each rectangle's tiles as tiles_kept (below) gave
 // them for the same rects, size and depth: the planner takes them instead of culling again (auto
-// has culled every light once to price it; at 1920x1080 culling twice was a third of its CPU time).
+// has culled every light once to price it: it never culls a light twice).
 class TilePlanner {
 public:
     TilePlanner(const std::vector<ScissorRect>& rects, int width, int height, int tile_size, int lights_per_pass,

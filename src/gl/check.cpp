@@ -37,10 +37,7 @@ const char* framebuffer_status_name(GLenum status) {
 
 namespace {
 bool& debug_flag() {
-    static bool on = [] {
-        const char* e = std::getenv("DSR_DEBUG_GL");
-        return e && *e && std::string(e) != "0";
-    }();
+    static bool on = false;  // `--debug-gl` (its default from $DSR_DEBUG_GL, app/environment.h)
     return on;
 }
 }  // namespace

@@ -96,25 +96,32 @@ void draw_passes(int w, int h, int passes) {
     glColor4f(1, 1, 1, 1);
 }
 
+TimingChoice& timing_choice() {
+    static TimingChoice c = TimingChoice::measure;
+    return c;
+}
+
 }  // namespace
+
+void set_timing_choice(TimingChoice c) { timing_choice() = c; }
 
 const TimingCheck& choose_timing(const Caps& caps, int w, int h) {
     static TimingCheck check;
     static bool done = false;
     if (done) return check;
     done = true;
-    const char* forced = std::getenv("DSR_TIMING");
-    if (forced && std::strcmp(forced, "wall") == 0) {
-        check.reason = "forced by DSR_TIMING=wall";
+    const TimingChoice forced = timing_choice();
+    if (forced == TimingChoice::wall) {
+        check.reason = "forced by --timing wall or $DSR_TIMING";
         return check;
     }
     if (!caps.timer_query || !gl_entry.GetQueryObjectui64v) {
         check.reason = "no ARB_timer_query";
         return check;
     }
-    if (forced && std::strcmp(forced, "gpu-timer") == 0) {
+    if (forced == TimingChoice::gpu_timer) {
         check.source = TimingSource::gpu_timer;
-        check.reason = "forced by DSR_TIMING=gpu-timer";
+        check.reason = "forced by --timing gpu-timer or $DSR_TIMING";
         return check;
     }
     // Enough work that a real GPU's fill shows and a driver's fixed cost (glFinish's round trip)

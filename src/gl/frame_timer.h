@@ -2,8 +2,8 @@
 //   gpu-timer  GL_TIME_ELAPSED queries (ARB_timer_query) around each stage, read once after
 //              the frame: the GPU's own time per stage, one glFinish per frame.
 //   wall       glFinish after each stage and the wall clock: what a software rasteriser needs,
-//              since its timer queries do not measure rasterisation (llvmpipe read 0.05 ms by
-//              query for a 1920x1080 pass that took 10.2 ms by the wall clock).
+//              since its timer queries do not measure rasterisation (docs/stats.md has the
+//              figures).
 // choose_timing decides on the running GL by measuring both on the same work.
 #pragma once
 #include <string>
@@ -28,8 +28,12 @@ struct TimingCheck {
 // of the same passes (drawn into a 1024x1024 target of their own with framebuffer objects;
 // else over the current frame buffer of width x height, whose colour they overwrite: call
 // before rendering); the wall clock otherwise. Measured once per process (the result is
-// kept). DSR_TIMING=wall|gpu-timer forces the choice.
+// kept), unless set_timing_choice forced the choice before.
 const TimingCheck& choose_timing(const Caps& caps, int width, int height);
+// `--timing measure|wall|gpu-timer` (its default from $DSR_TIMING, app/environment.h): what
+// choose_timing decides by; gpu-timer only where the GL has ARB_timer_query.
+enum class TimingChoice { measure, wall, gpu_timer };
+void set_timing_choice(TimingChoice c);
 
 class FrameTimer {
 public:

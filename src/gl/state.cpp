@@ -40,12 +40,7 @@ RenderState textured_2d(GLenum env) {
 }
 
 GlState& gl_state() {
-    static thread_local GlState state = [] {
-        GlState s;
-        const char* e = std::getenv("DSR_GL_STATE_CACHE");
-        if (e && std::strcmp(e, "off") == 0) s.set_cache(false);
-        return s;
-    }();
+    static thread_local GlState state;
     return state;
 }
 

@@ -90,7 +90,7 @@ public:
     // What the cache believes GL holds (the last applied state).
     const RenderState& current() const { return cur_; }
     // Off: every apply sets every field, so a cache bug can be told from a pass bug. Set from
-    // `--gl-state-cache off` or DSR_GL_STATE_CACHE=off (read once, on first use).
+    // `--gl-state-cache off` (its default from $DSR_GL_STATE_CACHE, app/environment.h).
     void set_cache(bool on) { cache_ = on; }
     bool cache() const { return cache_; }
     // How many GL state calls apply made (tests: the cache must skip what is unchanged).

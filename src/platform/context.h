@@ -29,7 +29,7 @@ public:
 struct ContextDesc {
     std::string backend = "osmesa";  // osmesa (headless Mesa) | egl (EGL pbuffer: a GPU, or Mesa); later glfw
     int width = 64, height = 64;
-    int egl_device = -1;             // egl: which EGL_EXT_platform_device device; -1: $DSR_EGL_DEVICE, else 0
+    int egl_device = -1;             // egl: which EGL_EXT_platform_device device; -1: 0
 };
 
 // Creates the context, makes it current and loads dsr's GL entry-point table through
@@ -45,7 +45,8 @@ void load_gl_entry_points(const GLContext& ctx);
 // The backends linked into this executable ("osmesa", ...), for help and error messages.
 std::vector<std::string> context_backends();
 
-// The backend `--context` defaults to: $DSR_CONTEXT when set, else the first of context_backends().
+// The first of context_backends(): what `--context` defaults to where $DSR_CONTEXT is unset
+// (app/environment.h reads it).
 std::string default_context_backend();
 
 }  // namespace dsr

@@ -1,7 +1,5 @@
 // create_context for the headless executables (dsr, dsr_tests): the backends that need no
 // window system. The viewer links its own list with the GLFW backend instead.
-#include <cstdlib>
-
 #include "dsr_error.h"
 #include "gl/state.h"
 #include "platform/context.h"
@@ -18,10 +16,7 @@ std::vector<std::string> context_backends() { return {"osmesa", "egl"}; }
 std::vector<std::string> context_backends() { return {"egl"}; }
 #endif
 
-std::string default_context_backend() {
-    const char* env = std::getenv("DSR_CONTEXT");
-    return env && *env ? env : context_backends().front();
-}
+std::string default_context_backend() { return context_backends().front(); }
 
 std::unique_ptr<GLContext> create_context(const ContextDesc& d) {
     std::unique_ptr<GLContext> ctx;  // current on return from its backend
@@ -29,12 +24,7 @@ std::unique_ptr<GLContext> create_context(const ContextDesc& d) {
     if (d.backend == "osmesa") ctx = create_osmesa_context(d.width, d.height);
 #endif
     if (d.backend == "egl") {
-        int device = d.egl_device;
-        if (device < 0) {
-            const char* env = std::getenv("DSR_EGL_DEVICE");
-            device = env && *env ? std::atoi(env) : 0;
-        }
-        ctx = create_egl_context(d.width, d.height, device);
+        ctx = create_egl_context(d.width, d.height, d.egl_device < 0 ? 0 : d.egl_device);
     }
     if (ctx) {
         // Reloaded with every context: another backend's entry points may differ.

@@ -110,7 +110,10 @@ Script parse_script(std::string text, const std::string& path) {
                 fail(path, n, "frames: expected an integer in [1, 1000000], got " + quote(w[1]));
             c.kind = ScriptCommand::frames;
         } else if (cmd == "screenshot") {
-            want_words(2, "screenshot FILE");
+            if (w.size() != 3) want_words(2, "screenshot FILE [panel]");
+            if (w.size() == 3 && w[2] != "panel")
+                fail(path, n, "screenshot: expected 'panel' or nothing after FILE, got " + quote(w[2]));
+            c.with_panel = w.size() == 3;
             const std::string ext = image_extension(w[1]);
             if (ext != ".png" && ext != ".exr" && ext != ".tif" && ext != ".tiff" && ext != ".jpg" && ext != ".ppm")
                 fail(path, n, "screenshot: expected a file ending .png, .exr, .tif, .jpg or .ppm, got " + quote(w[1]));

@@ -8,6 +8,8 @@
 //                                             panel|overlay|animate on|off (the viewer's own)
 //   frames N                                  render N frames
 //   screenshot FILE                           the deferred image (no panel), written with the image seam
+//   screenshot FILE panel                     the window as shown: the image with the panel and
+//                                             overlay drawn over it (where they are on)
 //   quit                                      close the viewer
 //   wait                                      (last line only) leave the window open for a person
 // A script ends when it ends: after its last line the viewer closes, as if `quit` followed,
@@ -26,6 +28,7 @@ struct ScriptCommand {
     int w = 0, h = 0;                    // size
     glm::vec3 pos{0}, target{0}, up{0};  // camera
     std::string name, value;             // set (checked against the option table); screenshot: value = FILE
+    bool with_panel = false;             // screenshot: FILE panel
     int count = 0;                       // frames
 };
 

@@ -15,7 +15,7 @@ struct ViewerConfig {
     std::string scene_path;  // empty: data/default.scene
     int width = 1280, height = 720;  // the window's framebuffer at start; the deferred buffers follow it
     RenderOptions options;          // the option table's flags
-    std::string caps_list;          // --caps, added to $DSR_CAPS
+    std::string caps_list;          // $DSR_CAPS and --caps (the app joins them: app/environment.h)
     std::string script_path;        // --script FILE; empty: a person drives it
     std::optional<LightSpec> lights;  // --lights: the bench's generated lights instead of the scene's
     LoadOptions load;                 // --strict, --from, --camera, --ambient

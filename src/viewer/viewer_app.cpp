@@ -1,7 +1,8 @@
 // The viewer's loop: GLFW window (platform/glfw_context), the deferred shader drawing into its
 // back buffer, the panel on top (viewer_panel.cpp), input, resize, screenshots and --script.
 // A screenshot is read back after the deferred image and before the panel is drawn, so it is
-// exactly what `dsr render` writes for the same options, camera and size.
+// exactly what `dsr render` writes for the same options, camera and size; a script's
+// `screenshot FILE panel` is read back after the panel, before the buffers swap: the window as shown.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
@@ -45,7 +46,8 @@ public:
 private:
     void rebuild();
     bool apply_option(const RenderOption& o, const std::string& value);
-    bool frame(const std::string* screenshot);
+    // with_panel: the screenshot is taken with the panel and overlay drawn (script: screenshot FILE panel).
+    bool frame(const std::string* screenshot, bool with_panel = false);
     void resize_window(int w, int h, const std::string& where);
     void update_camera(float dt);
     void on_key(int key, int mods);
@@ -92,8 +94,7 @@ Viewer::Viewer(const ViewerConfig& cfg) : cfg_(cfg) {
     ctx_ = std::make_unique<GlfwContext>(cfg.width, cfg.height, "dsr view " + path);
     load_gl_entry_points(*ctx_);
     gl_state().reset();
-    const char* env_caps = std::getenv("DSR_CAPS");
-    st_.caps = probe_caps(split_caps(std::string(env_caps ? env_caps : "") + "," + cfg.caps_list));
+    st_.caps = probe_caps(split_caps(cfg.caps_list));
     st_.renderer = st_.caps.renderer + ", GL " + st_.caps.version;
 
     glfwSetWindowUserPointer(ctx_->window(), this);
@@ -194,7 +195,7 @@ void Viewer::resize_window(int w, int h, const std::string& where) {
 void Viewer::screenshot(const std::string& path, int w, int h) {
     const Image img = opaque(read_pixels(w, h));
     const FrameStats& s = st_.last;
-    // "panel on": it is drawn over the window after this read-back, so never in the file.
+    // "panel on": drawn over the window after this read-back, unless the script asked for it.
     char line[512];
     std::snprintf(line, sizeof line, " (%dx%d, view %s, scissor %s, panel %s, %d/%d lights drawn, scissor_pixels %lld)",
                   w, h, view_name(st_.options.view), st_.options.shader.scissor ? "on" : "off",
@@ -212,7 +213,7 @@ void Viewer::screenshot(const std::string& path, int w, int h) {
 
 // One frame; false (after a short wait, so a minimised window does not spin) when there is
 // nothing to draw into.
-bool Viewer::frame(const std::string* shot) {
+bool Viewer::frame(const std::string* shot, bool with_panel) {
     glfwPollEvents();
     const double now = now_ms() / 1000.0;
     const float dt = float(std::min(0.25, now - last_time_));
@@ -245,7 +246,7 @@ bool Viewer::frame(const std::string* shot) {
         }
     }
     check_gl("viewer frame");
-    if (shot) screenshot(*shot, w, h);
+    if (shot && !with_panel) screenshot(*shot, w, h);
     if (!pending_shot_.empty()) {
         screenshot(pending_shot_, w, h);
         pending_shot_.clear();
@@ -279,6 +280,7 @@ bool Viewer::frame(const std::string* shot) {
     ImGui::Render();
     ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
     gl_state().reset();  // foreign GL code ran (the viewer's panel: Dear ImGui)
+    if (shot && with_panel) screenshot(*shot, w, h);
     ctx_->swap();
 
     const auto pending = std::move(st_.pending);  // the panel's changes, now that it is drawn
@@ -416,7 +418,7 @@ int Viewer::run(const Script* script) {
                     if (fb_width() <= 0 || fb_height() <= 0)
                         throw Error(where + "screenshot: the window is minimised (0x0): nothing to capture");
                     try {
-                        frame(&c.value);
+                        frame(&c.value, c.with_panel);
                     } catch (const Error& e) {
                         const std::string what = e.what();  // add() named the line already
                         throw Error(what.rfind(where, 0) == 0 ? what : where + "screenshot: " + what);
