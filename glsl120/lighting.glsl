@@ -106,8 +106,12 @@ vec3 lighting(vec3 Scolor, vec3 Spos, float Sradius, vec3 p, vec3 v, vec3 n, vec
 //   Lspot  = (cos of the soft edge's inner angle, GL_SPOT_EXPONENT, -, -)          spot
 //   Latt   = (KC, KL, KQ, law)   law 0: Equation 2, max(0, 1 - d / radius);
 //                                law 1: 1 / (KC + KL d + KQ d^2) for d < radius, else 0
+//                                law 2 (physical, KHR_lights_punctual): Latt.x = 1 / range^2
+//                                (0: no range), max(min(1 - (d / range)^4, 1), 0) / d^2 for
+//                                d < radius, else 0; Lspot = (lightAngleScale, lightAngleOffset)
 // Spot: 0 on and outside the cone (GL_SPOT_CUTOFF), inside cos(theta)^E times
-// smoothstep(cos half-angle, Lspot.x, cos theta). Directional: l = -dir, no attenuation.
+// smoothstep(cos half-angle, Lspot.x, cos theta); physical: the extension's
+// clamp(cos theta * scale + offset, 0, 1)^2. Directional: l = -dir, no attenuation.
 // With LIGHT_POINT_ONLY defined, the shader promises only point lights with Equation 2
 // (Lcolor.w = 0, Latt.w = 0) and gets lighting() without the selection; with LIGHT_POINT_INVERSE,
 // only point lights with the attenuation law (Lcolor.w = 0, Latt.w = 1), at the same cost.
@@ -151,10 +155,18 @@ vec3 light_contribution(vec4 Lpos, vec4 Lcolor, vec4 Ldir, vec4 Lspot, vec4 Latt
     float linear = max(0.0, 1.0 - dist / Lpos.w);      // Equation 2
     float inverse = dist < Lpos.w ? inverse_law(Latt, dist) : 0.0;
     float f = Latt.w > 0.5 ? inverse : linear;
+    // Physical (law 2): (d / range)^4 as (d^2 / range^2)^2, so no range (Latt.x = 0) gives 0,
+    // not infinity times 0, however far the pixel.
+    float q = dist * dist * Latt.x;
+    float window = clamp(1.0 - q * q, 0.0, 1.0);
+    float physical = dist < Lpos.w ? window / max(dist * dist, 1e-30) : 0.0;
+    f = Latt.w > 1.5 ? physical : f;
     // Spot: cos theta from the axis; GL_SPOT_CUTOFF, the soft edge, GL_SPOT_EXPONENT.
     float c = dot(-l, Ldir.xyz) / max(dist, 1e-30);
     float edge = c > Ldir.w ? smoothstep(Ldir.w, Lspot.x, c) : 0.0;
     float spot = edge * (Lspot.y > 0.0 ? pow(max(c, 1e-30), Lspot.y) : 1.0);
+    float cone = clamp(c * Lspot.x + Lspot.y, 0.0, 1.0);
+    spot = Latt.w > 1.5 ? cone * cone : spot;
     f = directional ? 1.0 : (Lcolor.w > 0.5 ? f * spot : f);
     return f * brdf(Lcolor.rgb, l, dist, p, v, n, Mdiff, Mspec, Mshi);
 #endif

@@ -21,6 +21,7 @@
 #include "dsr_error.h"
 #include "scene/gltf_loader.h"
 #include "scene/image.h"
+#include "scene/light_law.h"
 
 namespace {
 
@@ -555,20 +556,23 @@ TEST(Gltf, LightsPlacedByTheirNodes) {
     const dsr::Light& pt = m.lights[0];
     EXPECT_EQ(pt.type, dsr::Light::Type::point);
     EXPECT_EQ(pt.pos, glm::vec3(1, 2, 3));
-    EXPECT_EQ(pt.color, glm::vec3(10, 5, 0));
-    EXPECT_TRUE(pt.attenuation);
-    EXPECT_EQ(pt.kl, 0.0f);
-    EXPECT_EQ(pt.kq, 1.0f);
-    EXPECT_GT(pt.kc, 0.0f);
-    EXPECT_NEAR(pt.radius, std::sqrt(10 / pt.threshold), 1e-3) << "where 10 / d^2 reaches the threshold";
+    EXPECT_EQ(pt.color, glm::vec3(10, 5, 0)) << "colour times candela";
+    EXPECT_TRUE(pt.physical);
+    EXPECT_FALSE(pt.attenuation);
+    EXPECT_EQ(pt.range, 0.0f);
+    EXPECT_NEAR(pt.radius, std::sqrt(10 * dsr::kPhysicalResponse / dsr::kPhysicalThreshold), 1e-2)
+        << "where 10 / d^2 falls under the threshold";
     const dsr::Light& sp = m.lights[1];
     EXPECT_EQ(sp.type, dsr::Light::Type::spot);
-    EXPECT_EQ(sp.radius, 2.0f) << "the range, below the law's radius";
+    EXPECT_TRUE(sp.physical);
+    EXPECT_EQ(sp.range, 2.0f);
+    EXPECT_EQ(sp.radius, 2.0f) << "the range";
     EXPECT_NEAR(sp.angle_deg, glm::degrees(0.5), 1e-4);
-    EXPECT_GT(sp.exponent, 0.0f);
+    EXPECT_NEAR(sp.inner_deg, glm::degrees(0.1), 1e-4);
     EXPECT_NEAR(sp.dir.y, -1.0f, 1e-6) << "-Z turned down";
     const dsr::Light& dl = m.lights[2];
     EXPECT_EQ(dl.type, dsr::Light::Type::directional);
+    EXPECT_TRUE(dl.physical);
     EXPECT_NEAR(dl.dir.x, -1.0f, 1e-6) << "-Z turned to -X";
     EXPECT_EQ(dl.color, glm::vec3(3));
 }

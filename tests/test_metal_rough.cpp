@@ -10,6 +10,7 @@
 
 #include "analysis/analytic_reference.h"
 #include "dsr_error.h"
+#include "scene/light_law.h"
 #include "render_fixture.h"
 
 using namespace dsr;
@@ -31,7 +32,7 @@ Material metal_rough(const std::string& name, glm::vec3 base, float metallic, fl
 
 // The analytic scene's shapes (a plane and two spheres) in metallic-roughness materials: a rough
 // dielectric floor, a half-metallic sphere and a gold-like metal, lit by `lights`.
-Scene mr_scene(std::vector<Light> lights) {
+Scene mr_scene(std::vector<Light> lights, bool spheres = true) {
     Scene s;
     s.camera.pos = {0, 2, 6};
     s.camera.target = {0, 0.5f, 0};
@@ -44,8 +45,10 @@ Scene mr_scene(std::vector<Light> lights) {
     s.materials.push_back(metal_rough("half", {0.8f, 0.3f, 0.2f}, 0.5f, 0.75f));
     s.materials.push_back(metal_rough("gold", {1.0f, 0.77f, 0.34f}, 1.0f, 0.7f));
     add_plane(s, 10, {0, 0, 0}, 0);
-    add_sphere(s, 1.0f, {-1.2f, 1, 0}, 1);
-    add_sphere(s, 0.6f, {1.4f, 0.6f, 0.8f}, 2);
+    if (spheres) {
+        add_sphere(s, 1.0f, {-1.2f, 1, 0}, 1);
+        add_sphere(s, 0.6f, {1.4f, 0.6f, 0.8f}, 2);
+    }
     s.lights = std::move(lights);
     return s;
 }
@@ -78,6 +81,40 @@ Scene mixed_scene() {
     sun.dir = glm::normalize(glm::vec3(0.5f, -1.0f, -0.4f));
     sun.color = {0.5f, 0.55f, 0.7f};
     return mr_scene({inv, spot, sun});
+}
+
+// Lights in physical units (KHR_lights_punctual; docs/metal_rough.md): colour times candela or
+// lux, radius the bound physical_radius gives (the range, or half an 8-bit step).
+Light physical(Light::Type type, glm::vec3 pos, glm::vec3 colour, float intensity, float range) {
+    Light l;
+    l.physical = true;
+    l.type = type;
+    l.pos = pos;
+    l.color = colour * intensity;
+    l.range = range;
+    l.radius = float(physical_radius(std::max(l.color.r, std::max(l.color.g, l.color.b)), range));
+    return l;
+}
+
+// Two point lights: one without a range (inverse square out to its bound), one whose range
+// window ends on the floor.
+Scene physical_points_scene() {
+    return mr_scene({physical(Light::Type::point, {-2, 3, 2}, {1.0f, 0.9f, 0.8f}, 5, 0),
+                     physical(Light::Type::point, {1, 3.5f, 2.5f}, {0.8f, 0.9f, 1.0f}, 8, 6)});
+}
+
+// A spot whose cone fades from 15 to 35 degrees, with a range, and a directional light in lux.
+Light physical_spot(glm::vec3 pos, glm::vec3 dir, float intensity) {
+    Light spot = physical(Light::Type::spot, pos, {1.0f, 0.8f, 0.6f}, intensity, 12);
+    spot.dir = glm::normalize(dir);
+    spot.angle_deg = 35;
+    spot.inner_deg = 15;
+    return spot;
+}
+Scene physical_spot_scene() {
+    Light sun = physical(Light::Type::directional, {0, 0, 0}, {0.5f, 0.55f, 0.7f}, 1, 0);
+    sun.dir = glm::normalize(glm::vec3(0.5f, -1.0f, -0.4f));
+    return mr_scene({physical_spot({1, 4.5f, 3}, {-2.2f, -3.5f, -3}, 30), sun});
 }
 
 ShaderOptions options(LightGeometry g, DepthPath d) {
@@ -118,7 +155,9 @@ TEST(MetalRough, ReferenceBrdfByHand) {
 // trace on interior pixels (no tone mapping, RGBA8 accumulation).
 TEST(MetalRough, EveryLightPathMatchesTheReference) {
     for (const auto& [scene_name, s] : {std::pair<const char*, Scene>{"point lights", points_scene()},
-                                        std::pair<const char*, Scene>{"attenuation, spot, directional", mixed_scene()}}) {
+                                        std::pair<const char*, Scene>{"attenuation, spot, directional", mixed_scene()},
+                                        std::pair<const char*, Scene>{"physical points", physical_points_scene()},
+                                        std::pair<const char*, Scene>{"physical spot, directional", physical_spot_scene()}}) {
         const AnalyticTrace tr = analytic_trace(s, kSize, kSize);
         const auto mask = interior_mask(tr, kSize, kSize);
         const Image ref = rounded(tr.image);
@@ -161,6 +200,31 @@ TEST(MetalRough, PerturbedReferenceTermsFail) {
         o.perturb_by = 0.1;
         const Image ref = rounded(analytic_trace(s, kSize, kSize, o).image);
         const ImageDiff d = logged(std::string("reference with ") + name + " perturbed", r.image, ref, mask, 2 * kLsb);
+        EXPECT_GT(d.max_lsb(), 2.0 + 1e-3) << name;
+        EXPECT_GT(d.failing, 10) << name;
+    }
+}
+
+// The comparison fails for physical lights too: the reference's range window computed with the
+// range 10% longer, or the spot's cone term not squared (raised to 1), no longer matches. The
+// floor alone, lit from above where the window and the cone's fade cover much of it.
+TEST(MetalRough, PerturbedPhysicalLawsFail) {
+    const std::pair<LightTerm, const char*> terms[] = {{LightTerm::range_window, "range window"},
+                                                       {LightTerm::spot_falloff, "spot falloff"}};
+    for (const auto& [term, name] : terms) {
+        const Scene s = term == LightTerm::range_window
+                            ? mr_scene({physical(Light::Type::point, {0, 2.5f, 0}, glm::vec3(1), 25, 5)}, false)
+                            : mr_scene({physical_spot({0, 4, 0}, {0, -1, 0}, 40)}, false);
+        const RenderResult r = render_scene(s, kSize, kSize, options(LightGeometry::quad, DepthPath::texture));
+        const AnalyticTrace exact = analytic_trace(s, kSize, kSize);
+        const auto mask = interior_mask(exact, kSize, kSize);
+        const ImageDiff same = logged(std::string("physical, ") + name + " as specified", r.image, rounded(exact.image), mask, 2 * kLsb);
+        EXPECT_LE(same.max_lsb(), 2.0 + 1e-3) << name;
+        AnalyticOptions o;
+        o.perturb_light = term;
+        o.perturb_light_by = term == LightTerm::range_window ? 0.1 : -0.5;
+        const Image ref = rounded(analytic_trace(s, kSize, kSize, o).image);
+        const ImageDiff d = logged(std::string("reference with the ") + name + " perturbed", r.image, ref, mask, 2 * kLsb);
         EXPECT_GT(d.max_lsb(), 2.0 + 1e-3) << name;
         EXPECT_GT(d.failing, 10) << name;
     }
@@ -277,3 +341,44 @@ TEST(MetalRough, SceneFileMaterialLine) {
     }
 }
 
+
+// The scene file's physical light words: `intensity I candela|lux`, `range R`, a spot's
+// `inner DEGREES`; one-line errors naming file:line.
+TEST(MetalRough, SceneFilePhysicalLights) {
+    const std::string head = "camera pos 0 0 5 target 0 0 0 up 0 1 0 fov 60 near 0.1 far 100\n";
+    const Scene s = parse_scene("t.scene", head +
+                                               "light point pos 1 2 3 color 1 0.5 0 intensity 10 candela\n"
+                                               "light spot pos 0 5 0 dir 0 -1 0 color 1 1 1 intensity 100 candela range 2 angle 30 inner 10\n"
+                                               "light directional dir 0 -1 0 color 1 1 1 intensity 3 lux\n");
+    ASSERT_EQ(s.lights.size(), 3u);
+    EXPECT_TRUE(s.lights[0].physical);
+    EXPECT_EQ(s.lights[0].color, glm::vec3(10, 5, 0));
+    EXPECT_EQ(s.lights[0].range, 0.0f);
+    EXPECT_NEAR(s.lights[0].radius, std::sqrt(10 * kPhysicalResponse / kPhysicalThreshold), 1e-2);
+    EXPECT_EQ(s.lights[1].radius, 2.0f) << "the range";
+    EXPECT_EQ(s.lights[1].angle_deg, 30.0f);
+    EXPECT_EQ(s.lights[1].inner_deg, 10.0f);
+    EXPECT_TRUE(s.lights[2].physical);
+    EXPECT_EQ(s.lights[2].color, glm::vec3(3));
+    const std::pair<const char*, const char*> bad[] = {
+        {"light point pos 0 0 0 color 1 1 1 intensity 5 lux\n", "t.scene:2: expected the intensity's unit 'candela', got 'lux'"},
+        {"light directional dir 0 -1 0 color 1 1 1 intensity 5 candela\n", "t.scene:2: expected the intensity's unit 'lux'"},
+        {"light point pos 0 0 0 color 1 1 1 intensity 5 candela radius 3\n", "t.scene:2: expected radius or intensity, not both"},
+        {"light point pos 0 0 0 color 1 1 1 radius 3 range 2\n", "t.scene:2: expected range only with intensity"},
+        {"light point pos 0 0 0 color 1 1 1 intensity 5 candela range 0\n", "t.scene:2: expected light range > 0"},
+        {"light point pos 0 0 0 color 1 1 1 intensity -1 candela\n", "t.scene:2: expected light intensity >= 0"},
+        {"light spot pos 0 0 0 dir 0 -1 0 color 1 1 1 intensity 5 candela angle 30 inner 30\n",
+         "t.scene:2: expected spot inner angle below the angle 30"},
+        {"light spot pos 0 0 0 dir 0 -1 0 color 1 1 1 intensity 5 candela angle 30 exponent 2\n",
+         "t.scene:2: expected exponent or intensity, not both"},
+        {"light directional dir 0 -1 0 color 1 1 1 intensity 5 lux range 2\n", "t.scene:2: expected one of dir"},
+    };
+    for (const auto& [line, message] : bad) {
+        try {
+            parse_scene("t.scene", head + line);
+            ADD_FAILURE() << "accepted: " << line;
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()).find(message), 0u) << e.what();
+        }
+    }
+}

@@ -552,11 +552,33 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
                     l = dvec3(light.pos) - p;  // towards the light (docs/errata.md #3)
                     const double dist = glm::length(l);
                     const double R = light.radius;
-                    if (!light.attenuation) att = std::max(0.0, 1.0 - dist / R);  // Eq. 2
-                    else att = dist < R ? 1.0 / (light.kc + dist * (light.kl + dist * double(light.kq))) : 0.0;
+                    if (light.physical) {
+                        // KHR_lights_punctual's README, "Range Property": max(min(1 - (d/range)^4,
+                        // 1), 0) / d^2, or 1 / d^2 without a range; nothing beyond the light's bound.
+                        double range = light.range;
+                        if (opts.perturb_light == LightTerm::range_window) range *= 1.0 + opts.perturb_light_by;
+                        const double window = range > 0 ? std::max(std::min(1.0 - std::pow(dist / range, 4.0), 1.0), 0.0) : 1.0;
+                        att = dist < R && dist > 0 ? window / (dist * dist) : 0.0;
+                    } else if (!light.attenuation) {
+                        att = std::max(0.0, 1.0 - dist / R);  // Eq. 2
+                    } else {
+                        att = dist < R ? 1.0 / (light.kc + dist * (light.kl + dist * double(light.kq))) : 0.0;
+                    }
                     if (att <= 0) continue;
                     l = dist > 0 ? l / dist : n;
-                    if (light.type == Light::Type::spot) {
+                    if (light.type == Light::Type::spot && light.physical) {
+                        // The README's "Inner and Outer Cone Angles": lightAngleScale =
+                        // 1 / max(0.001, cos inner - cos outer), lightAngleOffset = -cos outer *
+                        // scale, saturate(cd * scale + offset) squared, cd the cosine from the axis.
+                        const double ci = std::cos(glm::radians(double(light.inner_deg)));
+                        const double co = std::cos(glm::radians(double(light.angle_deg)));
+                        const double scale = 1.0 / std::max(0.001, ci - co), offset = -co * scale;
+                        const double cd = glm::dot(-l, glm::normalize(dvec3(light.dir)));
+                        const double a = std::clamp(cd * scale + offset, 0.0, 1.0);
+                        const double power = opts.perturb_light == LightTerm::spot_falloff ? 2.0 * (1.0 + opts.perturb_light_by) : 2.0;
+                        att *= std::pow(a, power);
+                        if (att <= 0) continue;
+                    } else if (light.type == Light::Type::spot) {
                         // GL_SPOT_CUTOFF: nothing at or beyond the half-angle; inside, the
                         // exponent's cos^E times a smoothstep over the outer fifth of the angle.
                         const double theta = std::acos(std::clamp(glm::dot(-l, glm::normalize(dvec3(light.dir))), -1.0, 1.0));

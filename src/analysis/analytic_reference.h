@@ -68,6 +68,10 @@ Image make_bump_normal_map(const BumpMap& b, int w, int h);
 // that matches the reference would not match it with that term wrong.
 enum class BrdfTerm { none, D, V, F, diffuse, metallic_mix };
 
+// The parts of a physical light's law (KHR_lights_punctual, docs/metal_rough.md) that
+// AnalyticOptions::perturb_light can put off, as BrdfTerm does for the BRDF.
+enum class LightTerm { none, range_window, spot_falloff };
+
 // Off by default (the reference). Each 8-bit switch makes the trace round one quantity the way
 // the deferred path does, so that path's error can be attributed term by term; they, and
 // `triangles`, are an error model, not a reference.
@@ -94,6 +98,11 @@ struct AnalyticOptions {
     // + perturb_by, clamped to [0, 1]. none: the BRDF as specified.
     BrdfTerm perturb = BrdfTerm::none;
     double perturb_by = 0;
+    // Physical lights: range_window computes the window with the range scaled by
+    // 1 + perturb_light_by; spot_falloff raises the cone's clamped term to 2 (1 + perturb_light_by)
+    // instead of squaring it. none: the laws as the extension recommends them.
+    LightTerm perturb_light = LightTerm::none;
+    double perturb_light_by = 0;
 };
 
 // glTF 2.0's metallic-roughness BRDF times N.L (Appendix B; docs/metal_rough.md), in double, for

@@ -34,9 +34,9 @@ struct LightDraw {
     int shadow = -1;
     // The tutorial's point light with Equation 2 (no type or law selection): the light shaders'
     // cheaper LIGHT_POINT_ONLY variant shades it.
-    bool tutorial() const { return light->type == Light::Type::point && !light->attenuation; }
+    bool tutorial() const { return light->type == Light::Type::point && !light->attenuation && !light->physical; }
     LightShader shader() const {
-        if (light->type != Light::Type::point) return LightShader::any;
+        if (light->type != Light::Type::point || light->physical) return LightShader::any;
         return light->attenuation ? LightShader::point_inverse : LightShader::point_linear;
     }
 };

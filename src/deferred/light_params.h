@@ -13,8 +13,8 @@ struct LightParams {
     glm::vec4 pos{0};    // eye-space position, radius
     glm::vec4 color{0};  // colour, type (0 point, 1 spot, 2 directional)
     glm::vec4 dir{0};    // eye-space unit direction the light travels, cos(half-angle)
-    glm::vec4 spot{0};   // cos of the soft edge's inner angle, exponent
-    glm::vec4 att{0};    // KC, KL, KQ, law (0 Equation 2, 1 attenuation)
+    glm::vec4 spot{0};   // cos of the soft edge's inner angle, exponent; physical: scale, offset
+    glm::vec4 att{0};    // KC, KL, KQ, law (0 Equation 2, 1 attenuation); physical: 1 / range^2, -, -, 2
 };
 
 // `view`: the camera's view matrix (rotation + translation).

@@ -102,7 +102,7 @@ TransparentStats TransparentPass::draw(const Scene& scene, const GpuScene& gpu, 
                 continue;
             }
             reach.push_back(int(i));
-            any_light = any_light || l.type != Light::Type::point || l.attenuation;
+            any_light = any_light || l.type != Light::Type::point || l.attenuation || l.physical;
         }
         st.light_object_pairs += (long long)(reach.size() + shadowed.size());
         const DrawRange& range = gpu.object_range(o);

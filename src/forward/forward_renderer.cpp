@@ -120,7 +120,7 @@ const GLint* ForwardRenderer::light_locations(const Program& prog) {
 
 bool ForwardRenderer::needs_any_light(const Scene& scene) {
     for (const Light& l : scene.lights)
-        if (l.type != Light::Type::point || l.attenuation) return true;
+        if (l.type != Light::Type::point || l.attenuation || l.physical) return true;
     return false;
 }
 

@@ -19,10 +19,6 @@ using std::string;
 
 namespace {
 
-// The inverse-square law as dsr's attenuation law 1 / (KC + KL d + KQ d^2): KC = 0 would be
-// infinite at the light, so the law is glTF's beyond a centimetre (a glTF unit is a metre).
-constexpr double kLightKc = 1e-4;
-
 glm::dmat4 local_matrix(const Context& ctx, int i) {
     const tinygltf::Node& n = ctx.tm.nodes[size_t(i)];
     const string np = "/nodes/" + std::to_string(i);
@@ -228,7 +224,10 @@ void read_cameras_and_lights(Context& ctx, const std::vector<NodePlacement>& pla
         if (!(intensity >= 0 && intensity <= 1e12))
             ctx.fail(lp + "/intensity", "expected a number in [0, 1e12], got " + num(intensity));
         const string type = gl.at("type").get<string>();
+        // KHR_lights_punctual's units and laws (scene.h Light, docs/metal_rough.md): colour times
+        // candela or lux.
         Light l;
+        l.physical = true;
         l.color = glm::vec3(colour * intensity);
         const double i_max = std::max({double(l.color.r), double(l.color.g), double(l.color.b)});
         if (type == "directional") {
@@ -240,20 +239,19 @@ void read_cameras_and_lights(Context& ctx, const std::vector<NodePlacement>& pla
         } else if (type == "point" || type == "spot") {
             l.type = type == "point" ? Light::Type::point : Light::Type::spot;
             l.pos = glm::vec3(pos);
-            l.attenuation = true;
-            l.kc = float(kLightKc);
-            l.kl = 0;
-            l.kq = 1;
-            double radius = attenuation_radius(l.kc, l.kl, l.kq, l.threshold, i_max);
             if (auto it = gl.find("range"); it != gl.end()) {
                 const double range = it->get<double>();
-                if (!(range > 0)) ctx.fail(lp + "/range", "expected a number > 0, got " + num(range));
-                radius = std::min(radius, range);
+                // 1e-12: 1 / range^2 stays a finite float (the light shaders' window).
+                if (!(range >= 1e-12 && range <= 1e12))
+                    ctx.fail(lp + "/range", "expected a number in [1e-12, 1e12], got " + num(range));
+                l.range = float(range);
             }
+            const double radius = physical_radius(i_max, l.range);
             if (!(radius > 0)) {
-                ctx.warn(lp, "a light too dim to reach dsr's threshold anywhere is left out");
+                ctx.warn(lp, "a light of intensity 0 is left out");
                 continue;
             }
+            if (!(radius <= 1e12)) ctx.fail(lp + "/intensity", "expected an intensity whose bound is within 1e12, got one of " + num(radius));
             l.radius = float(radius);
             if (l.type == Light::Type::spot) {
                 if (forward == glm::dvec3(0)) ctx.fail(nptr, "expected a placement with a direction for the light, got a degenerate one");
@@ -266,13 +264,7 @@ void read_cameras_and_lights(Context& ctx, const std::vector<NodePlacement>& pla
                 if (!(inner >= 0 && inner < outer))
                     ctx.fail(lp + "/spot/innerConeAngle", "expected radians in [0, outerConeAngle), got " + num(inner));
                 l.angle_deg = float(glm::degrees(outer));
-                // glTF fades from the outer cone to the inner one; dsr's spot has a soft edge over the
-                // outer kSpotSoftEdge of its half-angle, times cos^E: E puts the half-way point of
-                // glTF's fade at half intensity where that fade is wider than dsr's edge.
-                const double mid = 0.5 * (inner + outer);
-                l.exponent = inner >= (1.0 - kSpotSoftEdge) * outer || mid <= 0
-                                 ? 0.0f
-                                 : float(std::clamp(std::log(0.5) / std::log(std::cos(mid)), 0.0, 128.0));
+                l.inner_deg = float(glm::degrees(inner));
             }
         } else {
             ctx.fail(lp + "/type", "expected point, spot or directional, got " + quote(type));

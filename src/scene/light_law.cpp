@@ -31,9 +31,37 @@ double spot_factor(double cos_theta, double angle_deg, double exponent) {
     return (exponent > 0 ? std::pow(cos_theta, exponent) : 1.0) * edge;
 }
 
+double physical_distance_factor(double d, double range) {
+    if (!(d > 0)) return 0.0;
+    const double window = range > 0 ? std::clamp(1.0 - std::pow(d / range, 4.0), 0.0, 1.0) : 1.0;
+    return window / (d * d);
+}
+
+glm::dvec2 spot_scale_offset(double inner_deg, double outer_deg) {
+    const double ci = std::cos(glm::radians(inner_deg)), co = std::cos(glm::radians(outer_deg));
+    const double scale = 1.0 / std::max(0.001, ci - co);
+    return {scale, -co * scale};
+}
+
+double physical_spot_factor(double cos_theta, double inner_deg, double outer_deg) {
+    const glm::dvec2 so = spot_scale_offset(inner_deg, outer_deg);
+    const double t = std::clamp(cos_theta * so.x + so.y, 0.0, 1.0);
+    return t * t;
+}
+
+double physical_radius(double i_max, double range, double threshold, double response) {
+    if (!std::isfinite(i_max) || !std::isfinite(range) || i_max < 0 || range < 0)
+        throw Error("physical light: the intensity and the range must be finite and >= 0");
+    if (!std::isfinite(threshold) || !std::isfinite(response) || !(threshold > 0) || !(response > 0))
+        throw Error("physical light: the threshold and the response must be finite and > 0");
+    if (range > 0) return range;
+    return std::sqrt(i_max * response / threshold);
+}
+
 double distance_factor(const Light& light, double d) {
     const double r = light.radius;
     if (!(d < r)) return 0.0;
+    if (light.physical) return physical_distance_factor(d, light.range);
     if (!light.attenuation) return std::max(0.0, 1.0 - d / r);  // Equation 2
     return 1.0 / (double(light.kc) + double(light.kl) * d + double(light.kq) * d * d);
 }
@@ -50,7 +78,10 @@ LightAt light_at(const Light& light, glm::dvec3 p) {
     if (!(d > 0)) return a;
     a.l = v / d;
     a.factor = distance_factor(light, d);
-    if (light.type == Light::Type::spot && a.factor > 0)
+    if (light.type == Light::Type::spot && a.factor > 0 && light.physical)
+        a.factor *= physical_spot_factor(glm::dot(-a.l, glm::normalize(glm::dvec3(light.dir))), light.inner_deg,
+                                         light.angle_deg);
+    else if (light.type == Light::Type::spot && a.factor > 0)
         a.factor *= spot_factor(glm::dot(-a.l, glm::normalize(glm::dvec3(light.dir))), light.angle_deg,
                                 light.exponent);
     return a;

@@ -9,6 +9,11 @@
 //              smoothstep(cos a, cos((1 - kSpotSoftEdge) a), cos theta), which rises from 0 at the
 //              cone's edge to 1 at kSpotSoftEdge of the half-angle inside it (C1, no visible rim)
 //   directional l = -dir everywhere, factor 1 (no attenuation)
+//   physical   KHR_lights_punctual (its README, "Range Property" and "Inner and Outer Cone
+//              Angles"; docs/metal_rough.md): max(min(1 - (d / range)^4, 1), 0) / d^2 for
+//              d < radius (1 / d^2 without a range), and a spot's
+//              clamp(cos theta * scale + offset, 0, 1)^2 (spot_scale_offset); a directional
+//              light's factor is 1, its colour being in lux
 #pragma once
 #include <glm/glm.hpp>
 
@@ -32,8 +37,31 @@ double spot_inner_cos(double angle_deg);
 // The spot factor for cos(theta) (theta from the axis), half-angle a in degrees, exponent e.
 double spot_factor(double cos_theta, double angle_deg, double exponent);
 
-// The distance law at distance d (0 at and beyond the radius).
+// The distance law at distance d (0 at and beyond the radius; a physical light's 0 at d = 0,
+// where 1 / d^2 has no value).
 double distance_factor(const Light& light, double d);
+
+// Physical lights' bound (docs/metal_rough.md, "Bounds"): their contribution is counted as
+// colour x kPhysicalResponse x factor, and it is negligible under half a step of the 8-bit output.
+constexpr double kPhysicalThreshold = 0.5 / 255.0;
+constexpr double kPhysicalResponse = 2.0;
+
+// KHR_lights_punctual's range window times the inverse square at d > 0; range <= 0: no window.
+double physical_distance_factor(double d, double range);
+
+// The extension's lightAngleScale and lightAngleOffset for cone half-angles in degrees:
+// scale = 1 / max(0.001, cos inner - cos outer), offset = -cos outer * scale.
+glm::dvec2 spot_scale_offset(double inner_deg, double outer_deg);
+
+// Its angular attenuation: clamp(cos_theta * scale + offset, 0, 1)^2.
+double physical_spot_factor(double cos_theta, double inner_deg, double outer_deg);
+
+// The radius beyond which a physical point or spot light adds nothing: the range where there is
+// one (the window is 0 from there on), else the d where i_max x response / d^2 = threshold,
+// sqrt(i_max x response / threshold); 0 for i_max = 0. Throws dsr::Error for a negative or
+// non-finite argument, or a threshold or response <= 0.
+double physical_radius(double i_max, double range, double threshold = kPhysicalThreshold,
+                       double response = kPhysicalResponse);
 
 // At world-space point p: the unit vector towards the light (l of Equations 3-5) and the factor
 // that multiplies I_diff + I_spec (distance law x spot). p at the light's position: factor 0.

@@ -32,6 +32,13 @@ struct Camera {
 // radius is S_radius of Equation 2 when `attenuation` is off; with it, the distance where
 // color_max / (kc + kl d + kq d^2) falls to `threshold` (attenuation_radius), beyond which the
 // light adds nothing.
+// `physical`: KHR_lights_punctual's units and laws instead (docs/metal_rough.md, "Lights in
+// physical units"): color is the colour times the intensity in candela (point, spot) or lux
+// (directional); point and spot fall off as 1 / d^2, windowed to 0 at `range` where range > 0;
+// a spot fades from inner_deg to angle_deg (the outer cone) by the extension's squared
+// scale-and-offset curve. radius is then the range, or where the light falls under half an
+// 8-bit step (physical_radius, scene/light_law.h); attenuation, kc, kl, kq, threshold and
+// exponent are unused.
 // The first three fields stay pos, color, radius so {pos, color, radius} still makes a point light.
 // A light's shadow map (`shadow [size N] [bias B] [slope S]`, docs/scene-format.md; the
 // renderer's shadow stage, src/deferred/shadow_stage.h). The map stores each surface's depth from
@@ -60,6 +67,9 @@ struct Light {
     bool attenuation = false;     // false: Equation 2's 1 - d / S_radius
     float kc = 1.0f, kl = 0.0f, kq = 0.0f;  // attenuation law, each >= 0
     float threshold = 5.0f / 256.0f;        // LearnOpenGL's 5/256
+    bool physical = false;        // KHR_lights_punctual's units and laws (above)
+    float range = 0.0f;           // physical point, spot: the window's range, 0 for none (infinite)
+    float inner_deg = 0.0f;       // physical spot: where the fade begins, in [0, angle_deg)
     LightShadow shadow{};                   // off unless the light line says `shadow`
 };
 

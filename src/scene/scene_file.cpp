@@ -528,18 +528,21 @@ private:
     void light(Line& line) {
         const std::string& kind = line.word("light kind 'point', 'spot' or 'directional'");
         Light l;
+        float intensity = 1;
         std::vector<std::string> keys, required;
+        // `intensity I candela|lux` makes the light physical (KHR_lights_punctual's units and
+        // laws, docs/metal_rough.md), with `range R` and a spot's `inner DEGREES`.
         if (kind == "point") {
-            keys = {"pos", "color", "radius", "attenuation", "threshold"};
+            keys = {"pos", "color", "radius", "attenuation", "threshold", "intensity", "range"};
             required = {"pos", "color"};
         } else if (kind == "spot") {
             l.type = Light::Type::spot;
-            keys = {"pos", "dir", "color", "radius", "attenuation", "threshold", "angle", "exponent"};
+            keys = {"pos", "dir", "color", "radius", "attenuation", "threshold", "angle", "exponent", "intensity", "range", "inner"};
             required = {"pos", "dir", "color", "angle"};
         } else if (kind == "directional") {
             l.type = Light::Type::directional;
-            keys = {"dir", "color"};
-            required = keys;
+            keys = {"dir", "color", "intensity"};
+            required = {"dir", "color"};
         } else {
             line.expected_last("light kind 'point', 'spot' or 'directional'");
         }
@@ -572,25 +575,40 @@ private:
             } else if (k == "angle") {
                 l.angle_deg = line.number("spot angle");
                 if (!(l.angle_deg > 0 && l.angle_deg <= 90)) line.expected_last("spot angle in (0, 90] degrees");
+            } else if (k == "intensity") {
+                l.physical = true;
+                intensity = line.non_negative("light intensity");
+                const char* unit = l.type == Light::Type::directional ? "lux" : "candela";
+                if (!line.accept(unit)) line.expected_here(std::string("the intensity's unit '") + unit + "'");
+            } else if (k == "range") {
+                l.range = line.positive("light range");
+            } else if (k == "inner") {
+                l.inner_deg = line.non_negative("spot inner angle");
             } else {
                 l.exponent = line.non_negative("spot exponent");
             }
         }
         line.require(required, seen);
-        if (l.type != Light::Type::directional && !seen.count("radius") && !seen.count("attenuation"))
-            line.expected(kind == "spot" ? "radius or attenuation (the spot's range)" : "radius or attenuation",
-                          size_t(-1));
-        if (seen.count("threshold") && !seen.count("attenuation"))
-            line.fail("expected threshold only with attenuation KC KL KQ");
-        if (l.attenuation) {
-            const float i_max = std::max(l.color.r, std::max(l.color.g, l.color.b));
-            l.radius = float(attenuation_radius(l.kc, l.kl, l.kq, l.threshold, i_max));
-            if (i_max > 0 && !(l.radius > 0))
-                line.fail("expected attenuation under which the light reaches threshold " + fmt(l.threshold) +
-                          " somewhere (KC < largest colour / threshold), got KC " + fmt(l.kc));
-            if (!(l.radius <= kMaxSceneNumber))
-                line.fail("expected attenuation whose radius (where it reaches threshold " + fmt(l.threshold) +
-                          ") is within 1e12, got " + fmt(l.radius));
+        if (l.physical) {
+            physical_light(line, l, seen, intensity);
+        } else {
+            for (const char* k : {"range", "inner"})
+                if (seen.count(k)) line.fail("expected " + std::string(k) + " only with intensity I candela");
+            if (l.type != Light::Type::directional && !seen.count("radius") && !seen.count("attenuation"))
+                line.expected(kind == "spot" ? "radius or attenuation (the spot's range)" : "radius or attenuation",
+                              size_t(-1));
+            if (seen.count("threshold") && !seen.count("attenuation"))
+                line.fail("expected threshold only with attenuation KC KL KQ");
+            if (l.attenuation) {
+                const float i_max = std::max(l.color.r, std::max(l.color.g, l.color.b));
+                l.radius = float(attenuation_radius(l.kc, l.kl, l.kq, l.threshold, i_max));
+                if (i_max > 0 && !(l.radius > 0))
+                    line.fail("expected attenuation under which the light reaches threshold " + fmt(l.threshold) +
+                              " somewhere (KC < largest colour / threshold), got KC " + fmt(l.kc));
+                if (!(l.radius <= kMaxSceneNumber))
+                    line.fail("expected attenuation whose radius (where it reaches threshold " + fmt(l.threshold) +
+                              ") is within 1e12, got " + fmt(l.radius));
+            }
         }
         // Every shadow map of the scene together within kMaxShadowBytes, at the most a texel
         // takes on any path (scene/shadow_budget.h).
@@ -601,6 +619,25 @@ private:
             shadow_bytes_ += bytes;
         }
         scene_.lights.push_back(l);
+    }
+
+    // A light line with `intensity` (KHR_lights_punctual's units; scene.h Light): colour times
+    // the intensity, and the radius its bound (physical_radius). The Equation 2 and attenuation
+    // words do not mix with it.
+    void physical_light(Line& line, Light& l, const std::set<std::string>& seen, float intensity) {
+        for (const char* k : {"radius", "attenuation", "threshold", "exponent"})
+            if (seen.count(k)) line.fail("expected " + std::string(k) + " or intensity, not both");
+        if (l.type == Light::Type::spot && !(l.inner_deg < l.angle_deg))
+            line.fail("expected spot inner angle below the angle " + fmt(l.angle_deg) + ", got " + fmt(l.inner_deg));
+        l.color *= intensity;
+        const double i_max = std::max(l.color.r, std::max(l.color.g, l.color.b));
+        if (!std::isfinite(i_max) || i_max > kMaxSceneNumber)
+            line.fail("expected color times intensity within 1e12, got " + fmt(float(i_max)));
+        if (l.type == Light::Type::directional) return;
+        l.radius = float(physical_radius(i_max, l.range));
+        if (!(l.radius <= kMaxSceneNumber))
+            line.fail("expected intensity whose radius (where it falls under half an 8-bit step) is within 1e12, got " +
+                      fmt(l.radius));
     }
 
     // `shadow [size N] [bias B] [slope S]` (scene.h LightShadow): the three right after `shadow`,
