@@ -167,7 +167,7 @@ FUZZ_LIB_SRC := src/scene/light_law.cpp $(OBJ_LOADER_SRC) src/scene/tangents.cpp
                 src/scene/camera.cpp src/scene/image_io.cpp src/scene/image_extension.cpp $(USER_FILE_SRC) \
                 tests/fuzz/tinyobj_impl.cpp $(GLTF_LOADER_SRC) \
                 src/viewer/script.cpp src/deferred/option_table.cpp src/deferred/paths.cpp src/deferred/depth_codec.cpp \
-                src/deferred/view.cpp src/app/args.cpp src/app/render_flags.cpp
+                src/deferred/view_names.cpp src/app/args.cpp src/app/render_flags.cpp
 FUZZ_LIB_OBJ := $(FUZZ_LIB_SRC:%.cpp=$(BUILD)/fuzz/obj/%.o)
 FUZZ_TARGETS := obj scene_file script cli gltf
 .SECONDARY: $(FUZZ_LIB_OBJ)  # kept between runs (make would delete them as intermediates)

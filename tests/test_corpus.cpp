@@ -72,7 +72,7 @@ int covered_percent(const dsr::Scene& loaded) {
     dsr::DeferredShader ds(caps, kSize, kSize, dsr::ShaderOptions{}, dsr::resource_dir("glsl120"));
     ds.set_scene(s);
     ds.render(s, kSize, kSize);
-    ds.draw_view(dsr::View::normal, kSize, kSize);
+    ds.draw_view(dsr::View::normal, s.camera, kSize, kSize);
     const dsr::Image img = dsr::read_pixels(kSize, kSize);
     int covered = 0;
     for (int y = 0; y < kSize; ++y)

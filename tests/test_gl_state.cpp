@@ -84,7 +84,7 @@ StageRun run_stages(const Scene& scene, int w, int h, const ShaderOptions& opts,
     after("geometry");
     ds.draw_lights(scene, true, st);
     after("lights");
-    ds.post_stage(st);
+    ds.post_stage(scene.camera);
     after("post");
     ds.final_stage(w, h);
     after("final");
@@ -168,7 +168,7 @@ Image stages_with_matrices(const Scene& scene, int w, int h, const ShaderOptions
     if (scramble) scramble_matrices();
     ds.draw_lights(scene, true, st);
     if (scramble) scramble_matrices();
-    ds.post_stage(st);
+    ds.post_stage(scene.camera);
     if (scramble) scramble_matrices();
     ds.final_stage(w, h);
     return read_pixels(w, h);

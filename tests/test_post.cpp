@@ -30,7 +30,7 @@ Frame render_post(const Scene& s, int n, const PostOptions& post) {
     Frame f;
     f.stats = ds.render(s, n, n);
     f.image = read_pixels(n, n);
-    ds.draw_view(View::blur_factor, n, n);
+    ds.draw_view(View::blur_factor, s.camera, n, n);
     f.factor = read_pixels(n, n);
     f.bloom_w = ds.pbuffer_width(2);
     return f;

@@ -183,7 +183,7 @@ TEST(SsaoView, ShowsTheAoBuffer) {
     DeferredShader ds(probe_caps(), kN, kN, o, resource_dir("glsl120"));
     ds.set_scene(s);
     ds.render(s, kN, kN);
-    ds.draw_view(View::ssao, kN, kN);
+    ds.draw_view(View::ssao, s.camera, kN, kN);
     const Image v = read_pixels(kN, kN);
     const glm::ivec2 open = pixel_of(s, {1.8f, 0, -1.2f}), crease = pixel_of(s, {0, 0, 0.56f});
     EXPECT_EQ(lsb(v, open.x, open.y, 0), 255);
@@ -193,7 +193,7 @@ TEST(SsaoView, ShowsTheAoBuffer) {
     DeferredShader plain(probe_caps(), kN, kN, no, resource_dir("glsl120"));
     plain.set_scene(s);
     plain.render(s, kN, kN);
-    EXPECT_THROW(plain.draw_view(View::ssao, kN, kN), Error);
+    EXPECT_THROW(plain.draw_view(View::ssao, s.camera, kN, kN), Error);
 }
 
 TEST(SsaoCli, BadValuesAreOneClearErrorAndTheViewRenders) {

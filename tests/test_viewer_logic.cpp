@@ -242,7 +242,7 @@ TEST(ScissorOverlay, RectanglesAreThoseTheLightPassDrew) {
         DeferredShader ds(caps, w, h, opts, resource_dir("glsl120"));
         ds.set_scene(scene);
         const FrameStats st = ds.render(scene, w, h);
-        const auto rects = light_scissor_rects(scene, ds.view_matrix(), ds.proj_matrix(), w, h, scissors, true);
+        const auto rects = light_scissor_rects(scene, scene.camera.view(), ds.proj_matrix(scene.camera), w, h, scissors, true);
         long long area = 0;
         for (const LightRect& r : rects) {
             area += r.rect.area();

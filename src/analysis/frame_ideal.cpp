@@ -17,7 +17,7 @@ FrameIdeal frame_ideal_fragments(DeferredShader& ds, const Scene& scene) {
         return r;
     }
     try {
-        r.fragments = ideal_count(surface_from_positions(ds.reconstructed_positions()), scene.lights,
+        r.fragments = ideal_count(surface_from_positions(ds.reconstructed_positions(scene.camera)), scene.lights,
                                   scene.camera.view_d());
         r.source = depth_path_name(path);  // "packed", "position16", "position32"
     } catch (const Error& e) {  // the read-back needs float targets; the count is then unknown

@@ -19,7 +19,7 @@ namespace dsr {
 // PBuffer::DEPTH): window depth in r), rebuilt as the light pass does (Listing 20: eye z from
 // `planes`, x and y along the view ray through the pixel centre). rgb = position, alpha 1 where
 // there is a surface, 0 where depth is 1 (cleared: background). Same layout as
-// DeferredShader::reconstructed_positions(). p00, p11: the projection's P[0][0] and P[1][1].
+// DeferredShader::reconstructed_positions(camera). p00, p11: the projection's P[0][0] and P[1][1].
 Image positions_from_depth(const Image& depth, glm::vec2 planes, float p00, float p11);
 
 // lights: eye-space centre in xyz, radius in w. A pixel counts for a light when its position

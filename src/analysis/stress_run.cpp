@@ -144,7 +144,7 @@ StressResult StressRunner::run(const StressCase& c) {
         r.gl_errors += drain_gl_errors();
         final_img = read_pixels(w, h);
         p0 = ds->read_pbuffer(0);
-        pos = ds->reconstructed_positions();
+        pos = ds->reconstructed_positions(c.scene.camera);
         r.gl_errors += drain_gl_errors();
         rendered = true;
     } catch (const Error& e) {

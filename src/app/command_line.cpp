@@ -78,11 +78,6 @@ Flag choice_flag(std::string name, const std::vector<std::string>& values, std::
                 [&field, values](Args& a, const std::string& flag) { field = a.choice(flag, values); }};
 }
 
-Flag on_off_flag(std::string name, bool& field, std::string help) {
-    return Flag{{std::move(name)}, "on|off", "", field ? "on" : "off", std::move(help), {},
-                [&field](Args& a, const std::string& flag) { field = a.on_off(flag); }};
-}
-
 Flag list_flag(std::string name, std::string arg, const std::vector<std::string>& values, std::vector<std::string>& field,
                std::string help, std::string def) {
     return Flag{{std::move(name)}, std::move(arg), joined(values, ", ") + " (comma-separated)",

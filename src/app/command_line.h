@@ -53,7 +53,6 @@ Flag float_flag(std::string name, std::string arg, float lo, float hi, double& f
 Flag size_flag(std::string name, int& w, int& h, std::string help, std::string def = "");  // WxH
 Flag choice_flag(std::string name, const std::vector<std::string>& values, std::string& field, std::string help,
                  std::string def = "");
-Flag on_off_flag(std::string name, bool& field, std::string help);
 // A comma-separated subset of `values`, in the order given.
 Flag list_flag(std::string name, std::string arg, const std::vector<std::string>& values, std::vector<std::string>& field,
                std::string help, std::string def = "");

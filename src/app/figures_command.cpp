@@ -73,7 +73,7 @@ int cmd_figures(const std::vector<std::string>& argv) {
         then(ds);
     };
     auto view = [&](DeferredShader& ds, View v) {
-        ds.draw_view(v, n, n);
+        ds.draw_view(v, scene.camera, n, n);
         return read_pixels(n, n);
     };
     const int cx = n * 300 / 512, cy = n * 220 / 512, cs = n / 4;  // close-up: the red ball's rim on the floor

@@ -1,14 +1,11 @@
-// Whole-file output that is never half-written, and never one of the run's inputs: an
-// OutputSet of one (scene/output_set.h), for a command with a single text output.
+// Helpers of the commands' outputs (scene/output_set.h): a folder an output goes into, and the
+// scene's files as inputs no output may overwrite.
 #pragma once
 #include <string>
 
 #include "scene/output_set.h"
 
 namespace dsr {
-
-// Throws dsr::Error naming the path and the system's reason on failure.
-void write_file_atomic(const std::string& path, const std::string& contents);
 
 // An output folder that exists as something else is refused by what it is: throws
 // "COMMAND: FLAG: expected a folder, got 'DIR', a file" (nothing when it is a folder or absent).

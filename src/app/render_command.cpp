@@ -87,7 +87,7 @@ int cmd_render(const std::vector<std::string>& argv) {
         ds.set_counting(true);
         counted = ds.render(scene, out_w, out_h);
     }
-    if (view != View::final) ds.draw_view(view, out_w, out_h);
+    if (view != View::final) ds.draw_view(view, scene.camera, out_w, out_h);
     // A float image file (.exr, .tif) of a float P-buffer 0 without an operator holds the light
     // as it is, past 1 (docs/hdr.md); every other output is the 8-bit main frame buffer's.
     const std::string ext = image_extension(out);

@@ -2,6 +2,7 @@
 #include "deferred/deferred_shader.h"
 
 #include "deferred/ambient_fold.h"
+#include "deferred/ambient_writer.h"
 #include "deferred/forward_stage.h"
 #include "deferred/geometry_stage.h"
 #include "deferred/gpu_scene.h"
@@ -111,7 +112,10 @@ void DeferredShader::set_output_size(int out_w, int out_h) {
     out_aspect_ = out_w > 0 && out_h > 0 ? float(out_w) / float(out_h) : 0.0f;
 }
 
-FrameDef DeferredShader::last_frame() const { return frame_of(camera_, {}, true); }
+bool DeferredShader::skips_final(int out_w, int out_h) const {
+    return config_.opts.skip.final_pass && read_back_ && out_w == width() && out_h == height() &&
+           !config_.opts.hdr.float_accum() && !config_.opts.hdr.final_program();
+}
 
 FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     if (!gpu_) throw Error("DeferredShader::render before set_scene");
@@ -130,7 +134,6 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
         st.ms.cpu_make_frame += thread_cpu_ms() - t0;
     };
     st.ms.cpu_make_frame = thread_cpu_ms() - cpu0;
-    camera_ = scene.camera;
     // 0. the shadow maps of the frame's shadowed lights, handed to the light passes in the frame.
     if (shadows_) {
         cull_lights();
@@ -139,24 +142,22 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     // 1. geometry stage, which also writes the ambient pass's colours into P-buffer 0 where it can
     // (Paths::ambient_target): the lighting stage then draws no ambient pass.
     const AmbientTerm ambient{scene.background, scene.ambient};
-    st.ambient_in_material = targets_->ambient_target();
+    const bool material_writes_ambient = targets_->ambient_target();
     timed(timer_, S_GEOMETRY,
-          [&] { geometry_->draw(f, *gpu_, *targets_, st, st.ambient_in_material ? &ambient : nullptr); });
+          [&] { geometry_->draw(f, *gpu_, *targets_, st, material_writes_ambient ? &ambient : nullptr); });
     if (!shadows_) {
         glFlush();  // the GPU starts on the G-buffer now, not when the light stage first waits on it
         cull_lights();
     }
     const double cpu_lights0 = thread_cpu_ms();
-    draw_lights(f, scene, st);                                          // 2. lighting stage
+    draw_lights(f, scene, material_writes_ambient, st);                 // 2. lighting stage
     st.ms.cpu_lights = thread_cpu_ms() - cpu_lights0;
-    post_stage(f);                                                      // 3. post-processing
+    draw_post(f);                                                       // 3. post-processing
     // 4. final stage, unless the caller reads P-buffer 0 itself at its own size (read_output): then
     // the fixed-function copy into the main frame buffer would give it the same bytes. Not with a
     // float P-buffer 0, nor where the final pass maps or encodes (docs/hdr.md).
-    final_skipped_ = config_.opts.skip.final_pass && read_back_ && out_w == width() && out_h == height() &&
-                     !config_.opts.hdr.float_accum() && !config_.opts.hdr.final_program();
-    st.final_pass_ran = !final_skipped_;
-    if (!final_skipped_) timed(timer_, S_FINAL, [&] { final_.draw(*targets_, out_w, out_h); });
+    st.final_pass_ran = !skips_final(out_w, out_h);
+    if (st.final_pass_ran) timed(timer_, S_FINAL, [&] { final_.draw(*targets_, out_w, out_h); });
     std::vector<double> ms;
     st.ms.cpu = thread_cpu_ms() - cpu0;
     st.ms.frame = timer_.end_frame(ms);
@@ -176,8 +177,9 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
 }
 
 // Listing 14, with SSAO before the ambient pass it scales, the depth hand-off before the light
-// passes that test against it, and the forward stage after them, all into P-buffer 0.
-void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameStats& st) {
+// passes that test against it, and the forward stage after them, all into P-buffer 0. Which pass
+// writes the ambient term is decided by ambient_writer.h; this draws what it says, in its order.
+void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, bool material_wrote_ambient, FrameStats& st) {
     if (ssao_) timed(timer_, S_SSAO, [&] { ssao_->draw(f, *targets_); });
     fb_bind_render(P_ACCUM);
     const int units[4] = {0, 1, 2, 3};
@@ -194,46 +196,62 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
         check_gl_stage("lighting stage: ambient pass");
         timer_.end();
     };
-    // Where nothing can fold the ambient pass, it goes first: a GPU draws it while the light
-    // geometry plans (the auto geometry prices its lights). Where the material pass wrote it, neither.
-    const bool written = st.ambient_in_material;
-    const bool may_fold = !written && lighting_->may_fold(f, ssao_ != nullptr);
-    // Or the depth hand-off's pass writes it (Paths::ambient_in_handoff), where the frame hands off:
-    // known after the plan, so the ambient pass then waits for it.
-    const bool handoff_may_write = !written && lighting_->handoff_writes_ambient(ssao_ != nullptr);
-    // Or, where the plan reads back (the tiles' depth spans), after the plan: the read-back then
-    // waits for the G-buffer alone, and the GPU draws the ambient pass while the CPU plans the
-    // light draws (H100, auto on 1024-overlap at 1920x1080: frame 5.41-5.51 ms against 5.62-5.70,
-    // docs/gpu.md).
-    const bool ambient_ours = !may_fold && !written && !handoff_may_write;  // nothing else writes it
-    const bool ambient_after_plan = ambient_ours && lighting_->prepare_reads_back(f);
-    if (ambient_ours && !ambient_after_plan) ambient_pass();
+    const AmbientTerm colours{scene.background, scene.ambient};
+    const std::optional<size_t> full_light = full_screen_light(f);
+    AmbientFacts facts;
+    facts.material_pass = material_wrote_ambient;
+    facts.ssao = ssao_ != nullptr;
+    facts.fold_program = lighting_->fold_built();
+    facts.geometry_draws_own = lighting_->geometry_writes_ambient();
+    facts.has_lights = !f.lights.empty();
+    facts.full_screen_light = full_light.has_value();
+    facts.handoff_program = lighting_->handoff_writes_ambient();
+    facts.plan_reads_back = lighting_->prepare_reads_back(f);
+    // Where nothing can take the ambient pass's place and the plan does not read back, it goes
+    // first: the GPU draws it while the light geometry plans.
+    const std::optional<AmbientWriter> early = ambient_before_plan(facts);
+    if (early == AmbientWriter::pass_before_plan) ambient_pass();
     // The light geometry's plan for the frame (the auto geometry's depth spans, timed with the
     // light passes): whether its lights need the scene's depth decides the hand-off, and whether it
-    // would draw a light over the whole screen by a pass of its own decides the fold.
+    // would draw the full-screen light by a pass of its own decides the fold.
     bool lights_need_depth = false;
     bind_gbuffer();
     timed(timer_, S_LIGHTS, [&] { lights_need_depth = lighting_->prepare(f, *targets_, st); });
-    // Where that light takes a pass of its own, its pass writes what the ambient pass would have.
-    const std::optional<AmbientFold> fold =
-        may_fold ? lighting_->ambient_fold(f, scene, ssao_ != nullptr) : std::optional<AmbientFold>{};
-    const bool hands_off =
-        config_.paths.accum_depth && (lights_need_depth || config_.paths.forward_stage || config_.paths.depth_bounds);
-    st.ambient_in_handoff = handoff_may_write && !fold && hands_off;
-    if (((may_fold || handoff_may_write) && !fold && !st.ambient_in_handoff) || ambient_after_plan) {
+    PlanFacts plan;
+    plan.own_pass = full_light && lighting_->own_pass(*full_light);
+    plan.hands_off =
+        hands_off_depth(config_.paths.accum_depth, lights_need_depth, config_.paths.forward_stage, config_.paths.depth_bounds);
+    const AmbientWriter writer = decide_ambient(facts, plan);
+    st.ambient_in_material = writer == AmbientWriter::material_pass;
+    st.ambient_folded = writer == AmbientWriter::light_fold || writer == AmbientWriter::geometry_first_batch;
+    st.ambient_in_handoff = writer == AmbientWriter::handoff;
+    // After the plan: where the plan reads back, the read-back waits for the G-buffer alone and the
+    // GPU draws the ambient pass while the CPU plans the light draws (docs/gpu_frame.md, "The
+    // ambient pass after the plan"); or where a fold
+    // or a hand-off could have written it and did not.
+    if (writer == AmbientWriter::pass_after_plan) {
         unbind_gbuffer();
         ambient_pass();
         bind_gbuffer();
-        if (ambient_after_plan) glFlush();  // handed to the GPU now, not with the first light batch
+        // Placed here for the read-back: handed to the GPU now, not with the first light batch.
+        if (early == AmbientWriter::pass_after_plan) glFlush();
     }
-    // The lights the light geometry draws (the frame's, less the one the fold draws).
+    // The fold: the full-screen light's own pass, which the geometry then leaves out of its plan,
+    // or the geometry's first batch; the geometry draws the frame's lights less the folded one.
+    std::optional<AmbientFold> fold;
+    if (writer == AmbientWriter::light_fold) {
+        lighting_->drop(*full_light);
+        fold = AmbientFold{*full_light, false, colours};
+    } else if (writer == AmbientWriter::geometry_first_batch) {
+        fold = AmbientFold{0, true, colours};
+    }
     std::optional<FrameDef> rest;
-    if (fold && !fold->by_geometry) rest = without_light(f, fold->light);
+    if (writer == AmbientWriter::light_fold) rest = without_light(f, fold->light);
     const FrameDef& lights = rest ? *rest : f;
-    if (hands_off) {
-        const AmbientTerm ambient{scene.background, scene.ambient};
-        timed(timer_, S_DEPTH_COPY,
-              [&] { lighting_->hand_off_depth(f, *targets_, st.ambient_in_handoff ? &ambient : nullptr); });
+    if (plan.hands_off) {
+        timed(timer_, S_DEPTH_COPY, [&] {
+            lighting_->hand_off_depth(f, *targets_, writer == AmbientWriter::handoff ? &colours : nullptr);
+        });
         check_gl_stage("lighting stage: depth hand-off");
     }
     timer_.begin(S_LIGHTS);
@@ -250,7 +268,7 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, FrameSta
     timer_.end();
 }
 
-void DeferredShader::post_stage(const FrameDef& f) {
+void DeferredShader::draw_post(const FrameDef& f) {
     if (post_->bloom()) timed(timer_, S_BLOOM, [&] { post_->draw_bloom(*targets_); });
     if (post_->anti_alias()) timed(timer_, S_AA, [&] { post_->draw_anti_alias(f, *targets_); });
 }
@@ -258,24 +276,23 @@ void DeferredShader::post_stage(const FrameDef& f) {
 // --- one stage at a time -------------------------------------------------------------------
 void DeferredShader::geometry_stage(const Scene& scene) {
     if (!gpu_) throw Error("DeferredShader::geometry_stage before set_scene");
-    camera_ = scene.camera;
     FrameStats st;
-    geometry_->draw(last_frame(), *gpu_, *targets_, st);
+    geometry_->draw(frame_of(scene.camera), *gpu_, *targets_, st);
 }
 
 void DeferredShader::draw_lights(const Scene& scene, bool scissors, FrameStats& stats) {
-    camera_ = scene.camera;
     FrameDef f = frame_of(scene.camera, scene.lights, scissors);
     if (shadows_ && f.shadowed_lights > 0) f.shadows = shadows_->draw(f, scene, *gpu_, stats);
-    stats.ambient_in_material = false;  // geometry_stage() leaves P-buffer 0 alone: the ambient pass runs
-    draw_lights(f, scene, stats);
+    draw_lights(f, scene, false, stats);  // geometry_stage() leaves P-buffer 0 alone: the ambient pass runs
 }
 
-void DeferredShader::post_stage(FrameStats&) { post_stage(last_frame()); }
+void DeferredShader::post_stage(const Camera& camera) { draw_post(frame_of(camera)); }
 void DeferredShader::final_stage(int out_w, int out_h) { final_.draw(*targets_, out_w, out_h); }
 void DeferredShader::blur(int src, int dst, glm::vec2 dir, bool select) { post_->blur(*targets_, src, dst, dir, select); }
 void DeferredShader::draw_bloom() { post_->draw_bloom(*targets_); }
-void DeferredShader::draw_anti_alias(bool factor_only) { post_->draw_anti_alias(last_frame(), *targets_, factor_only); }
+void DeferredShader::draw_anti_alias(const Camera& camera, bool factor_only) {
+    post_->draw_anti_alias(frame_of(camera), *targets_, factor_only);
+}
 
 // --- read-back -----------------------------------------------------------------------------
 Image DeferredShader::read_gbuffer(int target) {
@@ -292,10 +309,12 @@ std::vector<uint32_t> DeferredShader::read_gbuffer_depth_codes() {
     return read_depth_codes(g.texture(PBuffer::DEPTH), width(), height(), g.texture_width(), g.texture_height());
 }
 
-Image DeferredShader::reconstructed_positions() { return lighting_->reconstructed_positions(last_frame(), *targets_); }
+Image DeferredShader::reconstructed_positions(const Camera& camera) {
+    return lighting_->reconstructed_positions(frame_of(camera), *targets_);
+}
 
 Image DeferredShader::read_output(int out_w, int out_h) {
-    if (!final_skipped_) return read_pixels(out_w, out_h);
+    if (!skips_final(out_w, out_h)) return read_pixels(out_w, out_h);
     const PBuffer& b = targets_->pbuffer(P_ACCUM);
     return read_texture_rgba8(b.texture(0), b.width(), b.height(), b.texture_width(), b.texture_height());
 }

@@ -20,7 +20,7 @@
 #include "deferred/frame_stats.h"
 #include "deferred/render_targets.h"
 #include "deferred/shader_table.h"
-#include "deferred/view.h"
+#include "deferred/view_names.h"
 #include "gl/frame_timer.h"
 #include "scene/image.h"
 #include "scene/scene.h"
@@ -55,7 +55,8 @@ public:
     // Off by default: the final pass draws into the main frame buffer, which a window shows.
     void set_read_back(bool on) { read_back_ = on; }
     // The last frame's image as the main frame buffer would hold it after the final pass, out_w x
-    // out_h (render()'s): read from P-buffer 0 where the final pass was skipped, else read_pixels.
+    // out_h (render()'s): read from P-buffer 0 where render() left the final pass out at that size
+    // (skips_final), else read_pixels.
     Image read_output(int out_w, int out_h);
     // The same frame without the 8-bit main frame buffer: P-buffer 0 as float after the final
     // stage's exposure, unclamped (FinalStage::read_linear), for float image files.
@@ -65,19 +66,20 @@ public:
     // any, the buffers' aspect. For the one-stage API below.
     void set_output_size(int out_w, int out_h);
 
-    // Appendix A's stages one by one (tests, figures), each on the frame of the scene's camera (the
-    // last one drawn for those without a scene).
+    // Appendix A's stages one by one (tests, figures), each on the frame of the camera handed in
+    // (the scene's): the shader keeps no frame between calls.
     void geometry_stage(const Scene& scene);
     // Listing 14: the lighting stage (with SSAO, the depth hand-off and the forward stage).
     void draw_lights(const Scene& scene, bool scissors, FrameStats& stats);
-    void post_stage(FrameStats& stats);
+    void post_stage(const Camera& camera);
     void final_stage(int out_w, int out_h);
-    // After render(): replaces the main frame buffer's image with `view` (views.cpp).
-    void draw_view(View view, int out_w, int out_h);
+    // After render() of a frame seen by `camera`: replaces the main frame buffer's image with
+    // `view` (draw_view.cpp).
+    void draw_view(View view, const Camera& camera, int out_w, int out_h);
     // Post-processing passes, for the figures (Figure 10 shows them one by one); post_stage.h.
     void blur(int src, int dst, glm::vec2 dir, bool select);
     void draw_bloom();
-    void draw_anti_alias(bool factor_only = false);
+    void draw_anti_alias(const Camera& camera, bool factor_only = false);
 
     // High dynamic range (docs/hdr.md): the exposure scale the last final pass applied (1 on the
     // fixed-function path), and P-buffer 0's luminance reduced to (mean log2, max) per block
@@ -90,8 +92,8 @@ public:
     // The depth texture's raw GL_UNSIGNED_INT codes (24-bit depth in the high bits), w x h, row 0
     // at the bottom. After geometry_stage, on the depth-texture path only (throws otherwise).
     std::vector<uint32_t> read_gbuffer_depth_codes();
-    // After geometry_stage: LightingStage::reconstructed_positions.
-    Image reconstructed_positions();
+    // After geometry_stage of a frame seen by `camera`: LightingStage::reconstructed_positions.
+    Image reconstructed_positions(const Camera& camera);
     Image read_pbuffer(int fb);
     int pbuffer_width(int fb) const { return targets_->pbuffer(fb).width(); }
     int pbuffer_height(int fb) const { return targets_->pbuffer(fb).height(); }
@@ -100,9 +102,8 @@ public:
     // The options as run: depth `automatic` resolved by choose_paths.
     const ShaderOptions& options() const { return config_.opts; }
     const Paths& paths() const { return config_.paths; }
-    // Eye-space camera of the last frame drawn.
-    glm::mat4 view_matrix() const { return camera_.view(); }
-    glm::mat4 proj_matrix() const { return camera_.projection(aspect()); }
+    // The projection a frame seen by `camera` takes (its view matrix: camera.view()).
+    glm::mat4 proj_matrix(const Camera& camera) const { return camera.projection(aspect()); }
     // The projection's aspect: the output's (set_output_size), else the buffers'.
     float aspect() const { return out_aspect_ > 0 ? out_aspect_ : float(width()) / float(height()); }
 
@@ -121,9 +122,12 @@ private:
     enum Slot { S_GEOMETRY, S_AMBIENT, S_LIGHTS, S_BLOOM, S_AA, S_FINAL, S_DEPTH_COPY, S_SSAO, S_FORWARD, S_SHADOWS, S_COUNT };
     FrameSetup frame_setup(bool scissors) const;
     FrameDef frame_of(const Camera& camera, const std::vector<Light>& lights, bool scissors) const;
-    FrameDef last_frame() const;  // camera_'s, no lights
-    void draw_lights(const FrameDef& f, const Scene& scene, FrameStats& stats);
-    void post_stage(const FrameDef& f);
+    FrameDef frame_of(const Camera& camera) const { return frame_of(camera, {}, true); }  // no lights
+    // Whether render() at out_w x out_h leaves the final pass out (set_read_back).
+    bool skips_final(int out_w, int out_h) const;
+    // `material_wrote_ambient`: the geometry stage's material pass wrote the ambient term.
+    void draw_lights(const FrameDef& f, const Scene& scene, bool material_wrote_ambient, FrameStats& stats);
+    void draw_post(const FrameDef& f);
 
     ShaderConfig config_;  // capabilities, options as run, paths chosen
     std::string shader_dir_;
@@ -138,12 +142,8 @@ private:
     std::unique_ptr<PostStage> post_;
     FinalStage final_;
     FrameTimer timer_;
-    // The camera of the last frame drawn, for the one-stage API above and view_matrix(): no stage
-    // reads it (render() hands each stage its FrameDef).
-    Camera camera_;
     float out_aspect_ = 0;  // set_output_size's width / height; 0: the buffers'
-    bool read_back_ = false;       // set_read_back
-    bool final_skipped_ = false;   // the last render() left the final pass out
+    bool read_back_ = false;  // set_read_back
 };
 
 }  // namespace dsr

@@ -65,26 +65,10 @@ void LightingStage::draw_ambient(const FrameDef& f, const Scene& scene, RenderTa
     if (ssao) ssao->modulate_ambient(f, t);
 }
 
-bool LightingStage::may_fold(const FrameDef& f, bool ssao) const {
-    if (ssao || !fold_) return false;
-    return (draws_own_ambient_ && !f.lights.empty()) || full_screen_light(f).has_value();
-}
-
-std::optional<AmbientFold> LightingStage::ambient_fold(const FrameDef& f, const Scene& scene, bool ssao) {
-    if (!may_fold(f, ssao)) return std::nullopt;
-    if (draws_own_ambient_ && !f.lights.empty()) return AmbientFold{0, true, {scene.background, scene.ambient}};
-    const std::optional<size_t> i = full_screen_light(f);
-    if (!i || !geometry_->own_pass(*i)) return std::nullopt;
-    geometry_->drop(*i);
-    return AmbientFold{*i, false, {scene.background, scene.ambient}};
-}
-
 void LightingStage::hand_off_depth(const FrameDef& f, RenderTargets& t, const AmbientTerm* ambient) {
     if (!handoff_) throw Error("the depth hand-off runs only where the paths give P-buffer 0 a depth buffer");
     handoff_->draw(f, t, ambient);
 }
-
-bool LightingStage::handoff_writes_ambient(bool ssao) const { return !ssao && handoff_ && handoff_->can_write_ambient(); }
 
 void LightingStage::draw_lighting(const FrameDef& f, const FrameDef& lights, RenderTargets& t, FrameStats& stats,
                                   const AmbientFold* fold) {
@@ -94,7 +78,6 @@ void LightingStage::draw_lighting(const FrameDef& f, const FrameDef& lights, Ren
     stats.scissor_pixels = f.scissor_pixels;
     // Whether this frame is counted: decided here for every geometry.
     LightQueries q(counting_ && count_samples_, counting_ && count_invocations_);
-    if (fold) stats.ambient_folded = true;
     if (fold && fold->by_geometry) {
         geometry_->draw_with_ambient(lights, t, q, stats, fold->colours);
     } else {

@@ -51,29 +51,30 @@ public:
     // the alpha test keeps it where the G-buffer holds no surface (diffuse alpha 0). `ssao`: the
     // AO buffer it is multiplied by, or null.
     void draw_ambient(const FrameDef& f, const Scene& scene, RenderTargets& targets, const SsaoStage* ssao);
-    // Before the depth hand-off and the ambient pass, with the G-buffer bound as textures and
-    // P-buffer 0 for rendering: the light geometry's plan for the frame's lights
-    // (LightGeometryPass::prepare); whether its lights need the scene's depth in P-buffer 0.
+    // Before the depth hand-off (the ambient pass before or after it: ambient_writer.h), with the
+    // G-buffer bound as textures and P-buffer 0 for rendering: the light geometry's plan for the
+    // frame's lights (LightGeometryPass::prepare); whether its lights need the scene's depth in
+    // P-buffer 0.
     bool prepare(const FrameDef& f, RenderTargets& targets, FrameStats& stats) {
         return geometry_->prepare(f, targets, stats);
     }
     // Whether prepare() may read back from the GL (LightGeometryPass::prepare_reads_back).
     bool prepare_reads_back(const FrameDef& f) const { return geometry_->prepare_reads_back(f); }
-    // After prepare(f): whether this frame's ambient pass folds into a light's pass: the skip on,
-    // SSAO off (it scales the ambient pass alone), a light drawn full screen, its fold program
-    // built, and the light geometry would draw that light by a pass of its own
-    // (LightGeometryPass::own_pass; the geometry's plan then leaves it out), or the geometry's
-    // first pass covers every pixel and writes the ambient itself (draws_own_ambient: screen, as
-    // LearnOpenGL's lighting pass does). When it does, draw_ambient is not called.
-    std::optional<AmbientFold> ambient_fold(const FrameDef& f, const Scene& scene, bool ssao);
-    // Before prepare(f): whether ambient_fold could fold anything this frame (the skip on, no SSAO,
-    // and a light drawn over the whole screen or a geometry that writes the ambient itself).
-    bool may_fold(const FrameDef& f, bool ssao) const;
+    // The facts the ambient decision (ambient_writer.h) takes from this stage: the light shader's
+    // fold form built (the ambient skip on, SSAO off), the geometry's first pass writing the
+    // ambient itself (paths.h draws_own_ambient: screen, as LearnOpenGL's lighting pass does), the
+    // hand-off's ambient form built.
+    bool fold_built() const { return fold_ != nullptr; }
+    bool geometry_writes_ambient() const { return draws_own_ambient_; }
+    bool handoff_writes_ambient() const { return handoff_ && handoff_->can_write_ambient(); }
+    // After prepare(f): whether f.lights[i], drawn over the whole screen, costs the geometry a pass
+    // of its own (LightGeometryPass::own_pass), and, where the fold draws it, leaving it out of the
+    // geometry's plan (LightGeometryPass::drop).
+    bool own_pass(size_t i) const { return geometry_->own_pass(i); }
+    void drop(size_t i) { geometry_->drop(i); }
     // hand_off_depth (depth_handoff.h), with the G-buffer bound as textures; with `ambient`, the
-    // hand-off's pass also writes the ambient term (only where handoff_writes_ambient(ssao)).
+    // hand-off's pass also writes the ambient term (only where handoff_writes_ambient()).
     void hand_off_depth(const FrameDef& f, RenderTargets& targets, const AmbientTerm* ambient = nullptr);
-    // Whether a frame that hands the depth off can write its ambient term there (Paths::ambient_in_handoff).
-    bool handoff_writes_ambient(bool ssao) const;
     // Listing 17: the frame's visible lights added into P-buffer 0, with the G-buffer bound as
     // textures (units 0-3); counted when counting is on and the GL can. With `fold`, that light
     // first, writing every pixel with the ambient pass folded in; then `lights` (f, or f without

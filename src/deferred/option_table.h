@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "deferred/options.h"
-#include "deferred/view.h"
+#include "deferred/view_names.h"
 
 namespace dsr {
 

@@ -79,10 +79,6 @@ void OutputSet::add_input(const std::string& path, const std::string& what) {
     for (const Output& o : outputs_) check_against_inputs(o, inputs_.back());
 }
 
-void OutputSet::add_inputs(const std::vector<std::string>& paths, const std::string& what) {
-    for (const std::string& p : paths) add_input(p, what);
-}
-
 OutputSet::Output& OutputSet::declared(const std::string& flag, const std::string& path) {
     const Place here = place_of(path);
     for (Output& o : outputs_)

@@ -29,8 +29,6 @@ public:
 
     // A file the run reads (`what` names it in messages, e.g. "the scene file"): no output may be it.
     void add_input(const std::string& path, const std::string& what);
-    // The same for each of `paths`, e.g. Scene::inputs.
-    void add_inputs(const std::vector<std::string>& paths, const std::string& what);
 
     // Declares the output `path`, given by `flag` (for messages: "-o", "--stats", "screenshot").
     // Throws on an empty path, a folder or device, an input, or another output's file.

@@ -240,7 +240,7 @@ bool Viewer::frame(const std::string* shot, bool with_panel) {
     st_.last = ds_->render(frame_scene_, w, h);
     if (st_.options.view != View::final) {
         try {
-            ds_->draw_view(st_.options.view, w, h);
+            ds_->draw_view(st_.options.view, frame_scene_.camera, w, h);
         } catch (const Error&) {
             ds_->final_stage(w, h);  // a view the frame has nothing for (shadow-map, no shadowed light visible)
         }

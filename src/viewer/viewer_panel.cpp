@@ -247,7 +247,7 @@ void draw_panel(ViewerState& st, const DeferredShader& ds, const Scene& frame_sc
 void draw_scissor_overlay(const ViewerState& st, const DeferredShader& ds, const Scene& frame_scene, int w, int h) {
     ImDrawList* dl = ImGui::GetForegroundDrawList();
     const ShaderOptions& o = ds.options();
-    for (const LightRect& lr : light_scissor_rects(frame_scene, ds.view_matrix(), ds.proj_matrix(), w, h, o.scissor,
+    for (const LightRect& lr : light_scissor_rects(frame_scene, frame_scene.camera.view(), ds.proj_matrix(frame_scene.camera), w, h, o.scissor,
                                                    o.skip.empty_lights)) {
         const glm::vec3 c = glm::clamp(frame_scene.lights[lr.light].color, glm::vec3(0.25f), glm::vec3(1));
         const ImU32 col = IM_COL32(int(c.r * 255), int(c.g * 255), int(c.b * 255), 220);

@@ -11,7 +11,7 @@
 
 namespace dsr {
 
-void DeferredShader::draw_view(View view, int out_w, int out_h) {
+void DeferredShader::draw_view(View view, const Camera& camera, int out_w, int out_h) {
     const PBuffer& g = targets_->gbuffer();
     const glm::vec2 g_extent = targets_->gbuffer_extent();
     auto show = [&](const PBuffer& b) {
@@ -38,7 +38,7 @@ void DeferredShader::draw_view(View view, int out_w, int out_h) {
             // same picture (Figure 4d); on the position paths the stored eye z mapped to window
             // depth first, as the depth hand-off does (§3.4.3).
             const bool position = is_position_path(depth);
-            const glm::vec2 planes = last_frame().planes;
+            const glm::vec2 planes = frame_of(camera).planes;
             Image d = read_gbuffer(position ? G_POSITION : PBuffer::DEPTH);
             for (size_t i = 0; i < d.rgba.size(); i += 4) {
                 const float z = d.rgba[i + 2];
@@ -55,7 +55,7 @@ void DeferredShader::draw_view(View view, int out_w, int out_h) {
             return;
         }
         case View::blur_factor:
-            draw_anti_alias(true);  // factor into P-buffer 1, no swap
+            draw_anti_alias(camera, true);  // factor into P-buffer 1, no swap
             show(targets_->pbuffer(P_AA));
             return;
         case View::bloom:

@@ -1,4 +1,4 @@
-#include "deferred/view.h"
+#include "deferred/view_names.h"
 
 #include "dsr_error.h"
 
