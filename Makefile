@@ -106,11 +106,12 @@ run: deps
 	$(BUILD)/dsr render
 	@echo "make run: the image is out/default.png; open the viewer with: $(BUILD)/dsr view"
 
-# The suite in as many shards at once as there are cores (tests/run_shards.sh).
+# The suite in as many shards at once as there are cores, then the sanitizer runs
+# (tests/run_tests.sh): a line per part, each part's log in a file under $(BUILD), and last one
+# line with how many tests passed and failed.
 test: deps
-	$(MAKE) -j$(JOBS) all
-	tests/run_shards.sh $(BUILD)/dsr_tests $(JOBS)
-	$(MAKE) -j$(JOBS) test-sanitizers
+	$(MAKE) -j$(JOBS) all $(BUILD)/asan/dsr_obj_tests $(BUILD)/asan/dsr_lsan
+	@tests/run_tests.sh $(BUILD) $(JOBS)
 
 # The OBJ/MTL and scene-file loaders again under AddressSanitizer + UBSan (a second build of
 # the loader objects and tests/test_obj.cpp without its GL tests, tinyobjloader compiled from
@@ -142,13 +143,9 @@ $(BUILD)/asan/dsr_lsan: $(APP_OBJ) $(HEADLESS_BACKEND_OBJ) $(BUILD)/libdsr_core.
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -fsanitize=leak $^ $(LIBS) -o $@
 
+# The runs and their logs: tests/run_tests.sh.
 test-sanitizers: $(BUILD)/asan/dsr_obj_tests $(BUILD)/asan/dsr_lsan
-	ASAN_OPTIONS=detect_leaks=1:fast_unwind_on_malloc=0 UBSAN_OPTIONS=print_stacktrace=1 \
-	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp $(BUILD)/asan/dsr_obj_tests --gtest_brief=1
-	@mkdir -p $(BUILD)/asan/out
-	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=1 \
-	  $(BUILD)/asan/dsr_lsan render data/mesh.scene --size 128x128 -o $(BUILD)/asan/out/mesh.png
-	@echo "test-sanitizers: loader tests clean under ASan + UBSan; mesh render leak-free under LeakSanitizer"
+	@tests/run_tests.sh --sanitizers-only $(BUILD)
 
 # `make fuzz`: the scene-file and OBJ/MTL loaders, the viewer's script parser and the command
 # line's flag parsing under libFuzzer + ASan + UBSan (clang from Debian), each for FUZZ_SECONDS
