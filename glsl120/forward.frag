@@ -10,6 +10,11 @@
 // the transparent pass, src/deferred/transparent_pass.cpp, blends with alpha = the material's
 // opacity; without it alpha is 1 as before). TWO_SIDED, VERTEX_COLOR, CUT_OUT: as glsl120/material.frag
 // (shader_table.h surface_defines), so the references draw a model's surfaces as the G-buffer holds them.
+// METAL_ROUGH_FORWARD (with METAL_ROUGH): a glTF metallic-roughness material, shaded by
+// lighting.glsl's brdf_metal_rough as the light passes shade it (docs/metal_rough.md): `specular`
+// = (metallic, roughness, occlusion strength) and speculartex the metallic-roughness map, as
+// material.frag's METAL_ROUGH_MATERIAL reads them; ambient x base x occlusion plus the emissive
+// colour (0 on additive passes) on the pass that lays the surface down.
 #include "lighting.glsl"
 #ifdef SHADOW
 // SHADOW: the pass's light (one) scaled by its shadow map's lookup (the shadowed lights of the
@@ -39,6 +44,11 @@ uniform float alpha_cutoff;     // Material::alpha_cutoff
 #endif
 #ifdef VERTEX_COLOR
 varying vec4 vcolor;
+#endif
+#ifdef METAL_ROUGH_FORWARD
+uniform sampler2D occlusiontex;  // unit 5
+uniform sampler2D emissivetex;   // unit 6
+uniform vec3 emissive;
 #endif
 // One light as five vec4s (lighting.glsl light_contribution; deferred/light_params.h).
 uniform vec4 lightpos[MAX_LIGHTS];    // eye space, w = radius
@@ -79,8 +89,17 @@ void main()
 #else
     vec3 Mdiff = texture2D(colortex, txcoord).rgb * diffuse;
 #endif
+#ifdef METAL_ROUGH_FORWARD
+    vec4 mr = texture2D(speculartex, txcoord);
+    float occlusion = 1.0 + specular.z * (texture2D(occlusiontex, txcoord).r - 1.0);  // glTF's strength mix
+    vec3 Mspec = vec3(specular.x * mr.b, specular.y * mr.g, occlusion);
+    float Mshi = -1.0;  // brdf()'s flag for glTF's BRDF
+    vec3 c = ambient * Mdiff * occlusion + emissive * texture2D(emissivetex, txcoord).rgb;
+#else
     vec3 Mspec = texture2D(speculartex, txcoord).rgb * specular;
+    float Mshi = shininess;
     vec3 c = ambient * Mdiff;  // Equation 6 (zero on additive passes)
+#endif
     vec3 v = view_vector(vpos);
     for (int i = 0; i < MAX_LIGHTS; ++i) {
         if (i >= nlights) break;
@@ -88,10 +107,10 @@ void main()
         vec3 to_light = lightcolor[i].w > 1.5 ? -lightdir[i].xyz : normalize(lightpos[i].xyz - vpos);
         c += shadow_factor(vpos, n, to_light) *
              light_contribution(lightpos[i], lightcolor[i], lightdir[i], lightspot[i], lightatt[i], vpos, v, n, Mdiff,
-                                Mspec, shininess);
+                                Mspec, Mshi);
 #else
         c += light_contribution(lightpos[i], lightcolor[i], lightdir[i], lightspot[i], lightatt[i], vpos, v, n, Mdiff,
-                                Mspec, shininess);
+                                Mspec, Mshi);
 #endif
     }
 #ifdef OPACITY

@@ -22,42 +22,63 @@ TransparentPass::TransparentPass(const std::string& shader_dir, bool listing2_li
     batch_ = std::clamp((int(comps) - 64) / 20, 1, 64);
 }
 
-Program& TransparentPass::program(bool normal_map, bool any_light, int surface) {
-    Program& p = progs_[normal_map][any_light][surface];
+namespace {
+
+// glTF's BRDF in forward.frag (METAL_ROUGH_FORWARD), lighting.glsl's brdf_metal_rough as the light
+// passes use it; the occlusion and emissive maps on units 5 and 6 (4 holds a shadow map).
+void add_metal_rough(std::vector<std::string>& defs, bool metal_rough) {
+    if (metal_rough) defs.insert(defs.end(), {"METAL_ROUGH", "METAL_ROUGH_FORWARD"});
+}
+
+void set_metal_rough_units(Program& p, bool metal_rough) {
+    if (!metal_rough) return;
+    p.set("occlusiontex", 5);
+    p.set("emissivetex", 6);
+}
+
+}  // namespace
+
+Program& TransparentPass::program(bool normal_map, bool any_light, int surface, bool metal_rough) {
+    Program& p = progs_[normal_map][any_light][surface][metal_rough];
     if (!p.id()) {
         std::vector<std::string> defs = {"MAX_LIGHTS " + std::to_string(batch_), "OPACITY"};
         if (normal_map) defs.push_back("NORMAL_MAP");
         if (listing2_literal_) defs.push_back("LISTING2_LITERAL");
         if (!any_light) defs.push_back("LIGHT_POINT_ONLY");
         for (const std::string& d : surface_defines(surface)) defs.push_back(d);
+        add_metal_rough(defs, metal_rough);
         p = Program(shader_dir_, "forward.vert", "forward.frag", defs);
         p.use();
         p.set("normaltex", 0);
         p.set("colortex", 1);
         p.set("speculartex", 2);
+        set_metal_rough_units(p, metal_rough);
     }
     return p;
 }
 
-Program& TransparentPass::shadow_program(bool normal_map, bool packed, ShadowFilter filter, int surface) {
+Program& TransparentPass::shadow_program(bool normal_map, bool packed, ShadowFilter filter, int surface, bool metal_rough) {
     if (filter != shadow_filter_) {  // the forms of another filter are of no more use
         for (auto& row : shadow_progs_)
             for (auto& forms : row)
-                for (Program& q : forms) q = Program();
+                for (auto& pair : forms)
+                    for (Program& q : pair) q = Program();
         shadow_filter_ = filter;
     }
-    Program& p = shadow_progs_[normal_map][packed][surface];
+    Program& p = shadow_progs_[normal_map][packed][surface][metal_rough];
     if (!p.id()) {
         std::vector<std::string> defs = {"MAX_LIGHTS 1", "OPACITY"};
         if (normal_map) defs.push_back("NORMAL_MAP");
         if (listing2_literal_) defs.push_back("LISTING2_LITERAL");
         for (const std::string& d : shadow_lookup_defines(packed, filter)) defs.push_back(d);
         for (const std::string& d : surface_defines(surface)) defs.push_back(d);
+        add_metal_rough(defs, metal_rough);
         p = Program(shader_dir_, "forward.vert", "forward.frag", defs);
         p.use();
         p.set("normaltex", 0);
         p.set("colortex", 1);
         p.set("speculartex", 2);
+        set_metal_rough_units(p, metal_rough);
         p.set("shadow_map", 4);
     }
     return p;
@@ -108,9 +129,16 @@ TransparentStats TransparentPass::draw(const Scene& scene, const GpuScene& gpu, 
         const DrawRange& range = gpu.object_range(o);
         const int mi = range.material;
         const GpuMaterial& m = gpu.material(mi);
-        Program& prog = program(m.normal_map, any_light, range.surface());
+        Program& prog = program(m.normal_map, any_light, range.surface(), m.metal_rough);
         gl_state().use_program(prog.id());
         set_forward_material(prog, m, scene.materials[size_t(mi)].shininess);  // as the forward renderers
+        if (m.metal_rough) {
+            glActiveTexture(GL_TEXTURE5);
+            glBindTexture(GL_TEXTURE_2D, m.occlusion_tex);
+            glActiveTexture(GL_TEXTURE6);
+            glBindTexture(GL_TEXTURE_2D, m.emissive_tex);
+            glActiveTexture(GL_TEXTURE0);
+        }
         prog.set("opacity", m.opacity);
         if (range.cut_out) prog.set("alpha_cutoff", m.alpha_cutoff);
         // Ambient (Eq. 6) and the first batch_ lights blended over the background; the rest added.
@@ -122,6 +150,7 @@ TransparentStats TransparentPass::draw(const Scene& scene, const GpuScene& gpu, 
             gl_state().apply(transparent_state(prog.id(), k == 0, range));
             prog.set("nlights", int(n));
             prog.set("ambient", k == 0 ? scene.ambient : glm::vec3(0));
+            if (m.metal_rough) prog.set("emissive", k == 0 ? m.emissive : glm::vec3(0));  // added once
             if (n) arrays.set(prog, LightArrays::kLight);
             gpu.draw(range);
             ++st.passes;
@@ -130,13 +159,14 @@ TransparentStats TransparentPass::draw(const Scene& scene, const GpuScene& gpu, 
         // Each shadowed light added by its own pass, the light's term scaled by its map's lookup.
         for (int i : shadowed) {
             const ShadowLookup& map = *shadows[size_t(i)];
-            Program& sp = shadow_program(m.normal_map, map.packed, filter, range.surface());
+            Program& sp = shadow_program(m.normal_map, map.packed, filter, range.surface(), m.metal_rough);
             gl_state().apply(transparent_state(sp.id(), false, range));
             set_forward_material(sp, m, scene.materials[size_t(mi)].shininess);
             sp.set("opacity", m.opacity);
             if (range.cut_out) sp.set("alpha_cutoff", m.alpha_cutoff);
             sp.set("nlights", 1);
             sp.set("ambient", glm::vec3(0));
+            if (m.metal_rough) sp.set("emissive", glm::vec3(0));
             set_light_params(sp, lights[size_t(i)]);  // element 0 of forward.frag's arrays
             bind_shadow_map(sp, map);
             gpu.draw(range);
@@ -145,7 +175,7 @@ TransparentStats TransparentPass::draw(const Scene& scene, const GpuScene& gpu, 
         }
         ++st.objects;
     }
-    for (int u = 2; u >= 0; --u) {
+    for (int u : {6, 5, 2, 1, 0}) {
         glActiveTexture(GL_TEXTURE0 + u);
         glBindTexture(GL_TEXTURE_2D, 0);
     }

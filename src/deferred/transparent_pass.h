@@ -55,16 +55,17 @@ public:
     int lights_per_pass() const { return batch_; }
 
 private:
-    // surface: DrawRange::surface(), the forms of shader_table.h surface_defines.
-    Program& program(bool normal_map, bool any_light, int surface);
+    // surface: DrawRange::surface(), the forms of shader_table.h surface_defines; metal_rough:
+    // glTF's BRDF (forward.frag METAL_ROUGH_FORWARD, docs/metal_rough.md).
+    Program& program(bool normal_map, bool any_light, int surface, bool metal_rough);
     // The form with one shadowed light's lookup, for maps packed or not.
-    Program& shadow_program(bool normal_map, bool packed, ShadowFilter filter, int surface);
+    Program& shadow_program(bool normal_map, bool packed, ShadowFilter filter, int surface, bool metal_rough);
 
     std::string shader_dir_;
     bool listing2_literal_;
     int batch_ = 1;
-    Program progs_[2][2][kSurfaceForms];         // [normal map][any light][surface]
-    Program shadow_progs_[2][2][kSurfaceForms];  // [normal map][packed][surface]
+    Program progs_[2][2][kSurfaceForms][2];         // [normal map][any light][surface][metal_rough]
+    Program shadow_progs_[2][2][kSurfaceForms][2];  // [normal map][packed][surface][metal_rough]
     ShadowFilter shadow_filter_ = ShadowFilter::pcf2;  // what shadow_progs_ were built with
 };
 
