@@ -46,7 +46,7 @@ std::string good_value(const dsr::Flag& f) {
         {"WxH", "64x48"}, {"NxN", "64x64"},        {"FILE", "a.png"},     {"FILE.json", "a.json"},
         {"FILE.md", "a.md"}, {"FILE.png", "a.png"}, {"DIR", "d"},          {"TEXT", "depth"},
         {"NAME", "osmesa"},  {"LIST", "no-mrt"},    {"SPEC", "32-overlap"}, {"SIDE", "back"},
-        {"R,G,B", "0.1,0.2,0.3"}};
+        {"R,G,B", "0.1,0.2,0.3"}, {"Q,V,T", "1,1000,1"}};
     if (f.arg.find('|') != std::string::npos) return f.arg.substr(0, f.arg.find('|'));  // auto|N: auto
     if (f.names.front() == "--lights" && f.arg == "LIST") return "own,32";  // bench's
     if (f.range.find("(comma-separated)") != std::string::npos) return f.range.substr(0, f.range.find(','));
