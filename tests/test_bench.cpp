@@ -16,6 +16,7 @@
 #include "analysis/analytic_reference.h"
 #include "analysis/bench_floor.h"
 #include "analysis/bench_report.h"
+#include "analysis/terminal_text.h"
 #include "analysis/bench_run.h"
 #include "analysis/bench_scenes.h"
 #include "analysis/frame_ideal.h"
@@ -95,6 +96,36 @@ bench::Row deferred_row(const std::string& scene, int lights, double ms, long lo
 
 // The tiled count skips (light, tile) pairs by bounding boxes; it must never skip a pixel the
 // definition counts. Odd sizes leave partial tiles at the right and top edges.
+// The `nth` result of goal `id` among judge_goals' (a per-count goal: 0 at the scene's own count,
+// 1 at kManyLights); null where there is none.
+const bench::GoalResult* result(const std::vector<bench::GoalResult>& results, const std::string& id, size_t nth = 0) {
+    for (const bench::GoalResult& r : results)
+        if (r.goal->id == id && nth-- == 0) return &r;
+    return nullptr;
+}
+
+// A goal's verdict and the figure it was judged on (value / scale), as judge_goals found them.
+void expect_judged(const std::vector<bench::Row>& rows, const std::string& id, size_t nth, bench::Verdict verdict,
+                   double value, double scale = 1) {
+    const std::vector<bench::GoalResult> results = bench::judge_goals(rows, "default", 3);
+    const bench::GoalResult* r = result(results, id, nth);
+    ASSERT_NE(r, nullptr) << id;
+    EXPECT_EQ(int(r->verdict), int(verdict)) << id << ": " << r->line;
+    ASSERT_TRUE(r->figure.judged) << id << ": " << r->line;
+    EXPECT_NEAR(r->figure.value, value, 1e-9) << id << ": " << r->line;
+    EXPECT_NEAR(r->figure.scale, scale, 1e-9) << id << ": " << r->line;
+}
+
+// Text as one line per paragraph: continuation lines (a newline, then four spaces or more: wrap_lines'
+// indent) joined by one space.
+std::string unwrapped(std::string t) {
+    for (size_t at = t.find("\n    "); at != std::string::npos; at = t.find("\n    ", at)) {
+        size_t end = t.find_first_not_of(' ', at + 1);
+        t.replace(at, end - at, " ");
+    }
+    return t;
+}
+
 TEST(Bench, IdealFragmentsMatchBruteForce) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -195,7 +226,7 @@ TEST(Bench, PlotDrawsPointsInTheirColour) {
     PlotSeries s;
     s.label = "points";
     s.color = {1, 0, 0};
-    s.points = {{2.0, 0.5, 4}, {300.0, 5.0, 4}, {10.0, 0.0, 4}};
+    s.points = {{2.0, 0.5, 4, ""}, {300.0, 5.0, 4, ""}, {10.0, 0.0, 4, ""}};
     p.series = {s};
     Image img = scatter_plot({p, p}, 300, 200);
     ASSERT_EQ(img.width, 600);
@@ -359,25 +390,32 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
     EXPECT_GT(analytic, 0);
 }
 
-// What `dsr bench` prints on stdout is a summary a person reads at a glance: a few lines, every
-// goal of the table as its plain sentence with a verdict, where the report went and what the exit
-// status means; the table itself is in the report (out/bench.md unless --report says otherwise).
-TEST(Bench, QuickRunPrintsAShortSummary) {
+// What `dsr bench` prints on stdout: what the run shows first, then every goal of the table as its
+// plain sentence with a verdict, the rows in words with each time's spread and image error, where
+// the report went and what the exit status means; every line within the terminal's width.
+TEST(Bench, QuickRunPrintsTheSummaryFirst) {
     const std::string d = temp_dir();
-    RunResult r = run_stdout("bench --quick --size 48x48 --lights own --frames 1 --light-geometry quad --report " + d +
+    RunResult r = run_stdout("bench --quick --size 48x48 --lights own --frames 3 --light-geometry quad --report " + d +
                              "/s.md");
     ASSERT_EQ(r.status, 0) << r.output;
     ASSERT_TRUE(exists(d + "/s.md"));
-    const long lines = std::count(r.output.begin(), r.output.end(), '\n');
-    EXPECT_LE(lines, 25) << r.output;
-    EXPECT_EQ(r.output.rfind("dsr bench: ", 0), 0u) << r.output;
-    EXPECT_NE(r.output.find(d + "/s.md"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("exit status 0"), std::string::npos) << r.output;
-    EXPECT_EQ(r.output.find("light frags"), std::string::npos) << "the table belongs in the report: " << r.output;
+    EXPECT_EQ(r.output.rfind("dsr bench --quick: ", 0), 0u) << r.output;
+    const size_t shows = r.output.find("\nWhat this run shows:\n"), goals = r.output.find("\nGoals, on the default scene:\n"),
+                 table = r.output.find("\nThe default scene at 48x48");
+    EXPECT_LT(shows, goals) << r.output;
+    EXPECT_LT(goals, table) << r.output;
+    EXPECT_NE(table, std::string::npos) << r.output;
+    EXPECT_EQ(lines_over(r.output), std::vector<std::string>{}) << r.output;
+    const std::string text = unwrapped(r.output);
+    EXPECT_NE(text.find(d + "/s.md"), std::string::npos) << r.output;
+    EXPECT_NE(text.find("Exit status 0"), std::string::npos) << r.output;
+    EXPECT_EQ(text.find("light frags"), std::string::npos) << "the fragment counts belong in the report: " << r.output;
+    EXPECT_NE(text.find("\ndeferred, no scissor "), std::string::npos) << "rows in words: " << r.output;
     for (const bench::Goal& g : bench::goal_table()) {
+        if (g.retired) continue;
         const std::string plain = g.plain;
         const std::string head = plain.substr(0, plain.find('{'));  // the words before the first figure
-        EXPECT_NE(r.output.find(head), std::string::npos) << g.id << ": " << r.output;
+        EXPECT_NE(text.find(head), std::string::npos) << g.id << ": " << r.output;
     }
     // Each goal's line carries exactly one verdict.
     int verdicts = 0;
@@ -387,50 +425,77 @@ TEST(Bench, QuickRunPrintsAShortSummary) {
     EXPECT_EQ(verdicts, int(bench::judge_goals({}, "default", 3).size())) << r.output;
 }
 
-// The summary from rows made by hand: met, NOT met and not judged each said, and the plain sentence
-// carries the goal's threshold and scene.
+// What the summary's first lines are made of, from rows made by hand: dsr's default against the
+// faster forward rows at the judged scene's largest count, the fastest fixed geometry, the largest
+// image errors, the goals' count and the frames' spread.
+TEST(Bench, ConclusionsComeFromTheRows) {
+    std::vector<bench::Row> rows = {forward_row("default", 3, bench::Renderer::forward_single, 2.0),
+                                    forward_row("default", 256, bench::Renderer::forward_single, 6.0),
+                                    forward_row("default", 256, bench::Renderer::forward_multi, 30.0),
+                                    deferred_row("default", 3, 1.0, 100, 100), deferred_row("default", 256, 3.0, 100, 100)};
+    bench::Row fm8 = forward_row("default", 256, bench::Renderer::forward_multi, 25.0);
+    fm8.float_accum = false;
+    bench::Row tiles = deferred_row("default", 256, 2.0, 100, 100);
+    tiles.light_geometry = LightGeometry::tiles;
+    bench::Row packed = deferred_row("default", 256, 2.5, 100, 100);
+    packed.depth = DepthPath::packed, packed.encoding = DepthEncoding::literal;
+    packed.err.max_abs = 9 / 255.0;
+    rows[4].err.max_abs = 2 / 255.0;
+    rows[4].frames_ms = {2.0, 2.5, 3.0, 3.5, 4.0};  // quartiles 2.5 and 3.5 around 3.0: ±1/6
+    rows.insert(rows.end(), {fm8, tiles, packed});
+    const std::vector<bench::GoalResult> goals = bench::judge_goals(rows, "default", 3);
+    bench::Conclusions c = bench::conclusions(rows, "default", goals);
+    EXPECT_EQ(c.lights, 256);
+    EXPECT_EQ(c.default_row, &rows[4]);  // quad: the run has no auto row
+    EXPECT_EQ(c.forward_single, &rows[1]);
+    EXPECT_EQ(c.forward_multi, &rows[5]);  // the faster of the two forms
+    EXPECT_EQ(c.fastest_geometry, &rows[6]);
+    EXPECT_DOUBLE_EQ(c.default_max_lsb, 3);  // the 3-light row's 3 LSB, the 256-light one's 2
+    EXPECT_DOUBLE_EQ(c.deferred_max_lsb, 9);
+    EXPECT_EQ(c.worst_deferred, &rows[7]);
+    EXPECT_NEAR(bench::time_spread(rows[4]), 1.0 / 6.0, 1e-12);
+    EXPECT_EQ(bench::time_text(rows[4]), "3.00 ±17%");
+    ASSERT_GE(c.lines.size(), 4u);
+    EXPECT_NE(c.lines[0].find("3.00 ms"), std::string::npos) << c.lines[0];
+    EXPECT_NE(c.lines[0].find("25.00 ms"), std::string::npos) << c.lines[0];
+    // An auto row is dsr's default where the run has one.
+    bench::Row a = deferred_row("default", 256, 2.2, 100, 100);
+    a.light_geometry = LightGeometry::automatic;
+    rows.push_back(a);
+    EXPECT_EQ(bench::conclusions(rows, "default", goals).default_row, &rows.back());
+    EXPECT_EQ(bench::conclusions({}, "default", {}).lines, std::vector<std::string>{});
+}
+
+// The summary on hand-made rows: every goal of judge_goals with its verdict, in its order, the
+// report named; the retired goal left out.
 TEST(Bench, SummarySaysEachGoalPlainly) {
     bench::Summary s;
     s.machine = "test";
     s.gl_renderer = "a GL", s.gl_version = "2.1";
     s.scenes = {"default"};
     s.notes = {"one note"};
-    s.goal_results = bench::judge_goals({}, "default", 3);
-    const std::string t = bench::text_summary(s, "out/bench.md", "");
-    EXPECT_NE(t.find("0 met, 0 not met, " + std::to_string(s.goal_results.size()) + " not judged"), std::string::npos) << t;
-    EXPECT_NE(t.find("  not judged  dsr's default evaluates at most 1.25 times as many pixel-light pairs as its "
-                     "lights really reach (default, 3 lights): not measured in this run\n"),
-              std::string::npos)
-        << t;
-    EXPECT_NE(t.find("and the note: out/bench.md\n"), std::string::npos) << t;
-    EXPECT_EQ(t.find("JSON"), std::string::npos) << t;
-    EXPECT_LE(std::count(t.begin(), t.end(), '\n'), 25);
-
-    // 120 evaluations for 100 ideal pairs: met; 1.0 ms against a floor of 0.5 ms: NOT met at
-    // 1920x1080 with 1024 lights, information elsewhere.
     bench::Row d = deferred_row("default", 3, 1.0, 100, 100);
     d.light_invocations = d.light_evaluations = 120;
-    d.floor_ms = 0.5, d.floor_ratio = 2.0;
     bench::Row d1080 = deferred_row("default", 1024, 1.0, 100, 100);
     d1080.w = 1920, d1080.h = 1080;
     d1080.floor_ms = 0.5, d1080.floor_ratio = 2.0;
     s.rows = {d, d1080};
     s.goal_results = bench::judge_goals(s.rows, "default", 3);
-    const std::string u = bench::text_summary(s, "r.md", "r.json");
-    EXPECT_NE(u.find("1 met, 1 not met, "), std::string::npos) << u;
-    EXPECT_NE(u.find("  met         dsr's default evaluates at most 1.25 times as many pixel-light pairs as its "
-                     "lights really reach (default, 3 lights): 120 / 100 = 1.200 (quad)\n"),
-              std::string::npos)
-        << u;
-    EXPECT_NE(u.find("  NOT met     at 1920x1080 with 1024 lights, a frame takes at most 1.5 times the least its "
-                     "work could take (default, 1024 lights): 1.00 ms / 0.50 ms = 2.00\n"),
-              std::string::npos)
-        << u;
-    EXPECT_NE(u.find("  not judged  at 1920x1080 with 1024 lights, a frame takes at most 1.5 times the least its "
-                     "work could take (default, 3 lights): judged at 1920x1080 with 1024 lights only\n"),
-              std::string::npos)
-        << u;
-    EXPECT_NE(u.find("every row as JSON: r.json\n"), std::string::npos) << u;
+    const std::string t = unwrapped(bench::text_summary(s, "r.md", "r.json"));
+    size_t at = 0;
+    for (const bench::GoalResult& g : s.goal_results) {
+        const std::string verdict = g.verdict == bench::Verdict::met       ? "  met         "
+                                    : g.verdict == bench::Verdict::not_met ? "  NOT met     "
+                                                                           : "  not judged  ";
+        const size_t found = t.find("\n" + verdict + g.plain + ": ", at);
+        ASSERT_NE(found, std::string::npos) << g.goal->id << ": " << t;
+        at = found + 1;
+    }
+    EXPECT_EQ(int(result(s.goal_results, "floor", 1)->verdict), int(bench::Verdict::not_met));
+    EXPECT_EQ(t.find("retired"), std::string::npos) << t;
+    EXPECT_NE(t.find("the note, every row"), std::string::npos) << t;
+    EXPECT_NE(t.find(": r.md\n"), std::string::npos) << t;
+    EXPECT_NE(t.find("JSON: r.json\n"), std::string::npos) << t;
 }
 
 TEST(Bench, BadFlagsAreOneClearError) {
@@ -482,24 +547,32 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
     const std::vector<std::string> g = bench::goals(rows, "default", 3);
     ASSERT_EQ(g.size(), 8u + 11u);  // + the light geometries' eleven, none measured here
     for (size_t i = 8; i < g.size(); ++i) EXPECT_NE(g[i].find("not measured in this run"), std::string::npos) << g[i];
-    EXPECT_EQ(g[0], "dsr's default light_evaluations <= 1.25 x ideal, default with 3 lights: 120 / 100 = 1.200 (quad) "
-                    "-> met");
-    EXPECT_EQ(g[1], "  (information, not a goal: quad's light_fragments / ideal = 100 / 100 = 1.000; it holds by "
-                    "construction, since the light sphere test discards every fragment whose surface point lies "
-                    "outside the sphere and the ideal counts the points inside)");
+    // The retired evaluations goal: its figure as information, never a verdict, and no goal of the summary.
+    EXPECT_EQ(g[0].rfind("  (information, retired as a goal", 0), 0u) << g[0];
+    EXPECT_NE(g[0].find(": 120 / 100 = 1.200 (quad)"), std::string::npos) << g[0];
+    EXPECT_EQ(g[0].find("-> "), std::string::npos) << g[0];
+    EXPECT_EQ(result(bench::judge_goals(rows, "default", 3), "invocations"), nullptr);
+    EXPECT_EQ(g[1].rfind("  (information, not a goal: quad's light_fragments / ideal = 100 / 100 = 1.000;", 0), 0u) << g[1];
     EXPECT_EQ(g[1].find("met"), std::string::npos);  // never judged
-    EXPECT_EQ(g[2], "  (information, quad with the depth-span test only, --no-skip light-sphere-test: "
-                    "light_fragments / ideal = 150 / 100 = 1.500; light_invocations / ideal = 300 / 100 = 3.000)");
+    EXPECT_NE(g[2].find("--no-skip light-sphere-test: light_fragments / ideal = 150 / 100 = 1.500; light_invocations / "
+                        "ideal = 300 / 100 = 3.000)"),
+              std::string::npos)
+        << g[2];
     // The floor is judged at 1920x1080 with 1024 lights only; elsewhere its figure is information.
-    EXPECT_EQ(g[3], "floor_ratio <= 1.5 at 1920x1080 with 1024 lights, default with 3 lights: 1.00 ms / 0.80 ms = "
-                    "1.25 (information: judged at 1920x1080 with 1024 lights only; this row is 64x64 with 3 lights)");
-    EXPECT_EQ(g[4],
-              "dsr's default light_evaluations <= 1.25 x ideal, default with 1024 lights: not measured in this run");
-    EXPECT_EQ(g[5], "floor_ratio <= 1.5 at 1920x1080 with 1024 lights, default with 1024 lights: not measured in this run");
+    {
+        const std::vector<bench::GoalResult> judged = bench::judge_goals(rows, "default", 3);
+        const bench::GoalResult* f = result(judged, "floor");
+        ASSERT_NE(f, nullptr);
+        EXPECT_EQ(int(f->verdict), int(bench::Verdict::not_judged));
+        EXPECT_NE(f->figure.working.find("1.00 ms / 0.80 ms = 1.25"), std::string::npos) << f->line;
+        EXPECT_NE(f->figure.working.find("this row is 64x64 with 3 lights"), std::string::npos) << f->line;
+    }
+    EXPECT_NE(g[4].find("default with 1024 lights: not measured in this run"), std::string::npos) << g[4];
+    EXPECT_EQ(int(result(bench::judge_goals(rows, "default", 3), "floor", 1)->verdict), int(bench::Verdict::not_judged));
+    EXPECT_EQ(result(bench::judge_goals(rows, "default", 3), "floor", 1)->figure.working, "not measured in this run");
     // Judged against the faster forward multi-pass row (RGBA8 here), not the float one.
-    EXPECT_EQ(g[6], "deferred >= 10x faster than the faster forward multi-pass at 256 lights, default: "
-                    "forward-multi rgba8 30.00 ms / 3.00 ms = 10.0x -> met");
-    EXPECT_EQ(g[7], "cpu ms <= 0.5 a frame at 4096 lights: not measured in this run");
+    expect_judged(rows, "speed_256", 0, bench::Verdict::met, 30.0 / 3.0);  // the float row's would be 13.3
+    EXPECT_EQ(int(result(bench::judge_goals(rows, "default", 3), "cpu")->verdict), int(bench::Verdict::not_judged));
 
     // NOT met: 1.26 x ideal at 1024 lights; at 256 only 8x the faster baseline. The floor ratio 1.4
     // at 1024 lights is information at 64x64.
@@ -508,8 +581,8 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
     rows.erase(rows.begin() + 6);  // the 3.0 ms row: the 3.75 ms one is judged
     const std::vector<std::string> h = bench::goals(rows, "default", 3);
     ASSERT_EQ(h.size(), 9u + 11u);
-    EXPECT_EQ(h[4], "dsr's default light_evaluations <= 1.25 x ideal, default with 1024 lights: 126 / 100 = 1.260 "
-                    "(quad) -> NOT met");
+    EXPECT_NE(h[4].find("default with 1024 lights: 126 / 100 = 1.260 (quad)"), std::string::npos) << h[4];
+    EXPECT_EQ(h[4].find("-> "), std::string::npos) << h[4];  // retired: information
     // Where the run has an auto row, dsr's default: its evaluations judged (tiles: a tile's every
     // light at each of its pixels, so more than its invocations), quad's invocations information.
     bench::Row a3 = with(deferred_row("default", 3, 0.8, 90, 100), 40, 0.8);
@@ -518,10 +591,10 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
     a3.auto_lights = std::array<int, 3>{0, 0, 3};
     rows.push_back(a3);
     const std::vector<std::string> a = bench::goals(rows, "default", 3);
-    EXPECT_EQ(a[0], "dsr's default light_evaluations <= 1.25 x ideal, default with 3 lights: 110 / 100 = 1.100 (auto) "
-                    "(auto's lights: 0 by quads, 0 by volumes, 3 by the tiles) -> met");
-    EXPECT_EQ(a[1], "  (information: the tutorial's quad per light, --light-geometry quad: light_invocations / ideal = "
-                    "120 / 100 = 1.200)");
+    EXPECT_NE(a[0].find(": 110 / 100 = 1.100 (auto) (auto's lights: 0 by quads, 0 by volumes, 3 by the tiles)"),
+              std::string::npos)
+        << a[0];
+    EXPECT_NE(a[1].find("--light-geometry quad: light_invocations / ideal = 120 / 100 = 1.200)"), std::string::npos) << a[1];
     // With rows of other geometries: each one's ratio, fewest first, whether or not it is auto's.
     std::vector<bench::Row> more = rows;
     bench::Row volume3 = with(deferred_row("default", 3, 0.9, 90, 100), 300, 0.8);
@@ -531,58 +604,50 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
     tiles3.light_evaluations = 105;
     more.insert(more.end(), {volume3, tiles3});
     const std::vector<std::string> m = bench::goals(more, "default", 3);
-    EXPECT_EQ(m[1], "  (information: each fixed geometry's light_evaluations / ideal, fewest first: tiles 1.050, quad "
-                    "1.200, volume 3.000)");
+    EXPECT_NE(m[1].find("fewest first: tiles 1.050, quad 1.200, volume 3.000)"), std::string::npos) << m[1];
     EXPECT_EQ(m[2], a[1]);
     rows.pop_back();
-    EXPECT_EQ(h[6], "floor_ratio <= 1.5 at 1920x1080 with 1024 lights, default with 1024 lights: 1.40 ms / 1.00 ms = "
-                    "1.40 (information: judged at 1920x1080 with 1024 lights only; this row is 64x64 with 1024 lights)");
-    EXPECT_EQ(h[7], "deferred >= 10x faster than the faster forward multi-pass at 256 lights, default: "
-                    "forward-multi rgba8 30.00 ms / 3.75 ms = 8.0x -> NOT met");
+    EXPECT_NE(h[6].find("1.40 ms / 1.00 ms = 1.40 (information: judged at 1920x1080 with 1024 lights only; this row "
+                        "is 64x64 with 1024 lights)"),
+              std::string::npos)
+        << h[6];
+    expect_judged(rows, "speed_256", 0, bench::Verdict::not_met, 30.0 / 3.75);
     // At 1920x1080: 1.4 met, 1.6 NOT met.
     bench::Row& r1024 = rows[rows.size() - 2];
     r1024.w = 1920, r1024.h = 1080;
-    EXPECT_EQ(bench::goals(rows, "default", 3)[6],
-              "floor_ratio <= 1.5 at 1920x1080 with 1024 lights, default with 1024 lights: 1.40 ms / 1.00 ms = 1.40 "
-              "-> met");
+    expect_judged(rows, "floor", 1, bench::Verdict::met, 1.40);
     r1024 = with(r1024, 126, 0.8);
-    EXPECT_EQ(bench::goals(rows, "default", 3)[6],
-              "floor_ratio <= 1.5 at 1920x1080 with 1024 lights, default with 1024 lights: 1.40 ms / 0.80 ms = 1.75 "
-              "-> NOT met");
+    expect_judged(rows, "floor", 1, bench::Verdict::not_met, 1.75);
     // dsr's default is judged where the run has it: the auto row, not the tutorial's quad.
     bench::Row a1024 = with(r1024, 126, 1.0);
     a1024.light_geometry = LightGeometry::automatic;
     rows.push_back(a1024);
-    EXPECT_EQ(bench::goals(rows, "default", 3)[7],  // after quad's invocations, information beside auto's evaluations
-              "floor_ratio <= 1.5 at 1920x1080 with 1024 lights, default with 1024 lights: 1.40 ms / 1.00 ms = 1.40 "
-              "-> met");
+    expect_judged(rows, "floor", 1, bench::Verdict::met, 1.40);  // auto's 1.40 ms / 1.00 ms, not quad's 1.75
     rows.pop_back();
     r1024.w = 1280;
-    EXPECT_EQ(bench::goals(rows, "default", 3)[6].find("-> "), std::string::npos);  // another size: information
+    EXPECT_EQ(int(result(bench::judge_goals(rows, "default", 3), "floor", 1)->verdict),
+              int(bench::Verdict::not_judged));  // another size: information
 
     // CPU ms a frame at 4096 lights, on dsr's default (auto; quad where there is no auto row).
     bench::Row q4096 = deferred_row("default", 4096, 5.0, 100, 100);
     q4096.cpu_ms = 0.4;
     rows.push_back(q4096);
-    EXPECT_EQ(bench::goals(rows, "default", 3)[8],
-              "cpu ms <= 0.5 a frame at 4096 lights, default: 0.40 ms CPU a frame (deferred texture sc, 5.00 ms a frame) "
-              "-> met");
+    expect_judged(rows, "cpu", 0, bench::Verdict::met, 0.40);
     bench::Row a4096 = q4096;
     a4096.light_geometry = LightGeometry::automatic, a4096.cpu_ms = 0.6;
     rows.push_back(a4096);
-    EXPECT_EQ(bench::goals(rows, "default", 3)[8],
-              "cpu ms <= 0.5 a frame at 4096 lights, default: 0.60 ms CPU a frame (deferred texture sc auto, 5.00 ms a "
-              "frame) -> NOT met");
+    expect_judged(rows, "cpu", 0, bench::Verdict::not_met, 0.60);  // auto's, not quad's 0.40
     // With its frames run again back to back (bench_run's rows have them): judged on those.
     rows.back().cpu_alone_ms = 0.35;
-    EXPECT_EQ(bench::goals(rows, "default", 3)[8],
-              "cpu ms <= 0.5 a frame at 4096 lights, default: 0.35 ms CPU a frame, frames back to back (0.60 ms in the "
-              "rounds among the other rows; deferred texture sc auto, 5.00 ms a frame) -> met");
+    expect_judged(rows, "cpu", 0, bench::Verdict::met, 0.35);
 
     const std::vector<std::string> none = bench::goals({}, "default", 3);
     ASSERT_EQ(none.size(), 6u + 11u);
-    EXPECT_EQ(none[4], "deferred >= 10x faster than the faster forward multi-pass at 256 lights: not measured in this run");
-    EXPECT_EQ(none[5], "cpu ms <= 0.5 a frame at 4096 lights: not measured in this run");
+    for (const bench::GoalResult& r : bench::judge_goals({}, "default", 3)) {
+        EXPECT_EQ(int(r.verdict), int(bench::Verdict::not_judged)) << r.line;
+        EXPECT_FALSE(r.figure.judged) << r.line;
+    }
+    EXPECT_NE(none[4].find(": not measured in this run"), std::string::npos) << none[4];
 }
 
 // The light geometries' goals (docs/light_geometry.md) on hand-made rows: stencil invocations against the ideal, tiles against quad on
@@ -695,8 +760,8 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     ASSERT_EQ(l.size(), 12u);
     EXPECT_EQ(l[3], g[3]);
     const std::string bound =
-        "  (information, withdrawn as a goal: best deferred against forward single-pass on 32-large: forward-single "
-        "rgba8 6.00 ms / deferred texture sc tiles 16/32 5.00 ms = 1.20x. Forward single-pass is the bound here on GL "
+        "  (information, withdrawn as a goal: best deferred against forward single-pass on 32-large: forward, a pass "
+        "per object, 8-bit sums 6.00 ms / deferred, screen tiles of 16 px, 32 lights a pass 5.00 ms = 1.20x. Forward single-pass is the bound here on GL "
         "2.x, not a rival to beat by 1.5x: over 9 boxes it shades each pixel once, with every light in one shader, and "
         "the pixels lie inside most of the lights, so no light geometry leaves out any of its work and deferred adds "
         "the G-buffer";
@@ -720,9 +785,9 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
                     "quad 9.00 ms = 3.33x (dsr's default geometry: quad, the run has no auto row; 800x600, the demo's "
                     "size) -> met");
     EXPECT_NE(m[5].find("largest 2 LSB"), std::string::npos) << m[5];
-    EXPECT_EQ(m[6], "  (information: the screen rows, LearnOpenGL's lighting pass, round each pixel's sum once where "
-                    "quad rounds each light's pass: largest 4 LSB (deferred texture sc screen, large at 32 lights, 1 "
-                    "rows))");
+    EXPECT_EQ(m[6].rfind("  (information: the screen rows", 0), 0u) << m[6];
+    EXPECT_NE(m[6].find("largest 4 LSB ("), std::string::npos) << m[6];
+    EXPECT_NE(m[6].find("large at 32 lights, 1 rows))"), std::string::npos) << m[6];
     // With an auto row, dsr's default is auto: 30 / 12 = 2.5x, NOT met; at another size, said.
     bench::Row automatic = large(geo(deferred_row("large", 32, 12.0, 500, 500), LightGeometry::automatic, 600, 0), "32-large");
     rows.push_back(automatic);
@@ -895,7 +960,7 @@ TEST(Bench, LawGoalPricesTheAttenuationLawOnTheSamePairs) {
     for (const std::string& l : bench::geometry_goals(rows, "default", 3))
         if (l.rfind("  (information, withdrawn as a goal", 0) == 0) {
             bound = true;
-            EXPECT_NE(l.find("deferred texture sc auto 12.20 ms"), std::string::npos) << l;
+            EXPECT_NE(l.find("deferred, auto light geometry 12.20 ms"), std::string::npos) << l;
             EXPECT_EQ(l.find("linear-law"), std::string::npos) << l;
         }
     EXPECT_TRUE(bound);
@@ -929,8 +994,9 @@ TEST(Bench, MissingCountsAreNullNotZero) {
     EXPECT_EQ(c[16], "-");
     EXPECT_EQ(c[17], "-");
     const std::vector<std::string> g = bench::goals({r}, "default", 3);
-    EXPECT_EQ(g[0], "dsr's default light_evaluations <= 1.25 x ideal, default with 3 lights: not measured in this run "
-                    "(the GL lacks ARB_pipeline_statistics_query)");
+    EXPECT_NE(g[0].find("default with 3 lights: not measured in this run (the GL lacks ARB_pipeline_statistics_query)"),
+              std::string::npos)
+        << g[0];
     EXPECT_EQ(g[1], "floor_ratio <= 1.5 at 1920x1080 with 1024 lights, default with 3 lights: not measured in this "
                     "run");  // no fragment line
 

@@ -66,6 +66,9 @@ struct Goal {
     Comparison comparison;
     const char* on;  // the --lights entry a `once` goal reads ("256", "1024-overlap", "32-large", "4096"); "" otherwise
     Figure (*measure)(const Goal& goal, const GoalInput& in);
+    // Null for a goal; for a retired one, why it is no goal now: its figure is still measured and
+    // printed as information (goals()), never judged, and the summary leaves it out (judge_goals()).
+    const char* retired;
 };
 
 // Every goal, in the order the report lists them.
@@ -113,7 +116,8 @@ struct GoalResult {
     std::string plain;              // the goal's plain sentence for this scene and count
 };
 
-// Every goal of the table judged on the rows, in goals()' order (its lines without the information).
+// Every goal of the table judged on the rows, in goals()' order (its lines without the information);
+// the retired ones left out.
 std::vector<GoalResult> judge_goals(const std::vector<Row>& rows, const std::string& scene, int own_lights,
                                     const std::optional<InvocationProbe>& probe = std::nullopt);
 
@@ -122,7 +126,8 @@ std::vector<GoalResult> judge_goals(const std::vector<Row>& rows, const std::str
 // run", or for the stencil goal on a GL whose invocation counter counts fragments the stencil test
 // rejects, "cannot be judged on this GL"); lines starting with two spaces are information about the
 // one before (light_fragments / ideal, which the sphere test makes hold by construction, is printed
-// as such, never as "met"). probe: the GL's invocation counter (gl/invocation_probe.h).
+// as such, never as "met"); a retired goal is such a line, "  (information, retired as a goal: ...)".
+// probe: the GL's invocation counter (gl/invocation_probe.h).
 std::vector<std::string> goals(const std::vector<Row>& rows, const std::string& scene, int own_lights,
                                const std::optional<InvocationProbe>& probe = std::nullopt);
 // The light geometries' goals alone, as goals() ends with them.

@@ -7,7 +7,9 @@
 #include <sstream>
 
 #include "analysis/number_format.h"
+#include "dsr_text.h"
 #include "analysis/plot.h"
+#include "analysis/terminal_text.h"
 
 namespace dsr::bench {
 
@@ -160,9 +162,7 @@ std::string markdown_table(const std::vector<Row>& rows) {
 
 Image plot_rows(const std::vector<Row>& rows, const std::vector<std::string>& scenes) {
     std::vector<PlotPanel> panels;
-    const std::vector<std::pair<Renderer, glm::vec3>> kinds = {{Renderer::deferred, {0.1f, 0.35f, 0.85f}},
-                                                                {Renderer::forward_single, {0.1f, 0.65f, 0.2f}},
-                                                                {Renderer::forward_multi, {0.85f, 0.2f, 0.1f}}};
+    const glm::vec3 grey(0.7f);
     for (const std::string& scene : scenes) {
         bool analytic = false;
         for (const Row& r : rows)
@@ -172,24 +172,38 @@ Image plot_rows(const std::vector<Row>& rows, const std::vector<std::string>& sc
         p.x_label = "MS PER FRAME (MEDIAN)";
         p.y_label = analytic ? "MEAN ERROR (LSB) VS ANALYTIC" : "MEAN ERROR (LSB) VS FORWARD";
         p.y_floor = 0.01;  // below a hundredth of an LSB on average: a few pixels at most, or none
-        for (auto& [kind, color] : kinds) {
-            PlotSeries s;
-            s.label = renderer_name(kind);
-            s.color = color;
+        PlotSeries def{"dsr default (auto light geometry)", {0.1f, 0.35f, 0.85f}, {}};
+        PlotSeries single{"forward single-pass (listing 3)", {0.1f, 0.65f, 0.2f}, {}};
+        PlotSeries multi{"forward multi-pass (listing 4)", {0.85f, 0.2f, 0.1f}, {}};
+        PlotSeries other{"other deferred configurations", grey, {}};
+        auto point = [&](const Row& r, bool labelled) {
+            PlotPoint pt;
+            pt.x = r.ms_median;
+            pt.y = analytic ? r.err_analytic->mean_lsb() : r.err.mean_lsb();
+            pt.radius = labelled ? 3 : 2;
+            if (labelled) pt.label = std::to_string(r.lights);  // the light count beside the dot
+            return pt;
+        };
+        std::vector<int> counts;
+        for (const Row& r : rows)
+            if (r.scene == scene && std::find(counts.begin(), counts.end(), r.lights) == counts.end()) counts.push_back(r.lights);
+        for (int n : counts) {
+            const Row* d = find_default_row(rows, scene, n);
+            const Row* fs = fastest_row(rows, scene, n, Renderer::forward_single);
+            const Row* fm = fastest_row(rows, scene, n, Renderer::forward_multi);
             for (const Row& r : rows) {
-                if (r.scene != scene || r.renderer != kind) continue;
+                if (r.scene != scene || r.lights != n) continue;
                 if (analytic && !r.err_analytic) continue;  // the linear-law rows: the trace has the scene's law
-                PlotPoint pt;
-                pt.x = r.ms_median;
-                pt.y = analytic ? r.err_analytic->mean_lsb() : r.err.mean_lsb();
-                pt.radius = 2 + r.sweep_index;  // marker size grows with the light count
-                s.points.push_back(pt);
+                if (&r == d) def.points.push_back(point(r, true));
+                else if (&r == fs) single.points.push_back(point(r, true));
+                else if (&r == fm) multi.points.push_back(point(r, true));
+                else if (r.renderer == Renderer::deferred) other.points.push_back(point(r, false));
             }
-            p.series.push_back(s);
         }
+        p.series = {other, single, multi, def};  // dsr's default drawn last, over the others
         panels.push_back(p);
     }
-    return scatter_plot(panels, 480, 400);
+    return scatter_plot(panels, 480, 420);
 }
 
 json to_json(const Summary& s) {
@@ -218,29 +232,161 @@ json to_json(const Summary& s) {
     return j;
 }
 
+double time_spread(const Row& r) {
+    std::vector<double> f = r.frames_ms;
+    if (f.size() < 2 || !(r.ms_median > 0)) return 0;
+    std::sort(f.begin(), f.end());
+    const auto quartile = [&](double q) {  // linear between the two nearest frames
+        const double at = q * double(f.size() - 1);
+        const size_t i = size_t(at);
+        return i + 1 < f.size() ? f[i] + (at - double(i)) * (f[i + 1] - f[i]) : f[i];
+    };
+    return (quartile(0.75) - quartile(0.25)) / 2 / r.ms_median;
+}
+
+std::string time_text(const Row& r) {
+    return format_number("%.2f", r.ms_median) + " ±" + format_number("%.0f", 100 * time_spread(r)) + "%";
+}
+
+std::string rows_text(const std::vector<Row>& rows) {
+    std::vector<std::string> scenes;
+    for (const Row& r : rows)
+        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+    std::string out;
+    for (const std::string& scene : scenes) {
+        std::vector<std::pair<int, std::string>> counts;  // light count, its --lights entry
+        std::vector<std::string> configs;
+        int w = 0, h = 0;
+        for (const Row& r : rows) {
+            if (r.scene != scene) continue;
+            w = r.w, h = r.h;
+            if (std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == r.lights; }) == counts.end())
+                counts.push_back({r.lights, r.lights_label});
+            const std::string words = row_words(r);
+            if (std::find(configs.begin(), configs.end(), words) == configs.end()) configs.push_back(words);
+        }
+        std::vector<std::string> header = {"configuration"};
+        std::vector<bool> right = {false};
+        for (const auto& [n, label] : counts) {
+            const std::string lights = std::to_string(n) + (n == 1 ? " light" : " lights") +
+                                       (label == "own" ? " (its own)" : "");
+            header.push_back(lights + ": ms");
+            header.push_back("max LSB");
+            right.insert(right.end(), {true, true});
+        }
+        std::vector<std::vector<std::string>> cells;
+        for (const std::string& c : configs) {
+            std::vector<std::string> line = {c};
+            for (const auto& count : counts) {
+                const Row* found = nullptr;
+                for (const Row& r : rows)
+                    if (r.scene == scene && r.lights == count.first && row_words(r) == c) found = &r;
+                line.push_back(found ? time_text(*found) : "");
+                line.push_back(found ? format_number("%.0f", found->err.max_lsb()) : "");
+            }
+            cells.push_back(line);
+        }
+        out += (out.empty() ? "" : "\n") + std::string("The ") + scene + " scene at " + std::to_string(w) + "x" +
+               std::to_string(h) + ": the median frame in ms, ± half the middle half of the frames' range; max LSB, "
+               "the image's largest difference from forward single-pass with float sums (the reference). Deferred "
+               "rows draw a quad per light where they name no other light geometry.\n" +
+               text_table(header, cells, right);
+    }
+    return wrap_lines(out);
+}
+
+Conclusions conclusions(const std::vector<Row>& rows, const std::string& scene, const std::vector<GoalResult>& goals) {
+    Conclusions c;
+    c.scene = scene;
+    for (const Row& r : rows)
+        if (r.scene == scene && find_default_row(rows, scene, r.lights)) c.lights = std::max(c.lights, r.lights);
+    c.default_row = find_default_row(rows, scene, c.lights);
+    c.forward_single = fastest_row(rows, scene, c.lights, Renderer::forward_single);
+    c.forward_multi = fastest_row(rows, scene, c.lights, Renderer::forward_multi);
+    for (const Row* r : fixed_geometry_rows(rows, scene, c.lights))
+        if (!c.fastest_geometry || r->ms_median < c.fastest_geometry->ms_median) c.fastest_geometry = r;
+    std::vector<double> spreads;
+    for (const Row& r : rows) {
+        if (r.frames_ms.size() >= 2) spreads.push_back(time_spread(r));
+        if (r.renderer != Renderer::deferred) continue;
+        if (find_default_row(rows, r.scene, r.lights) == &r) c.default_max_lsb = std::max(c.default_max_lsb, r.err.max_lsb());
+        if (r.err.max_lsb() > c.deferred_max_lsb) c.deferred_max_lsb = r.err.max_lsb(), c.worst_deferred = &r;
+    }
+    if (!spreads.empty()) {
+        std::sort(spreads.begin(), spreads.end());
+        c.spread = spreads[spreads.size() / 2];
+    }
+    const Row* d = c.default_row;
+    const std::string at = " at " + std::to_string(c.lights) + " lights on the " + scene + " scene";
+    if (d) {
+        std::string l = "Speed: dsr's default (" + row_words(*d) + ") draws a frame in " + format_number("%.2f", d->ms_median) +
+                        " ms" + at;
+        std::vector<std::string> fw;
+        for (const Row* f : {c.forward_single, c.forward_multi})
+            if (f)
+                fw.push_back(format_number("%.2f", f->ms_median) + " ms with " +
+                             (f->renderer == Renderer::forward_single ? "a pass per object" : "a pass per light") + " (" +
+                             format_number("%.1f", f->ms_median / d->ms_median) + "x as long)");
+        if (!fw.empty()) l += "; forward shading takes " + joined(fw, " and ");
+        c.lines.push_back(l + ".");
+    }
+    if (c.fastest_geometry && d)
+        c.lines.push_back("Light geometry: the fastest fixed one" + at + " is " +
+                          light_geometry_name(c.fastest_geometry->light_geometry) + " (" +
+                          format_number("%.2f", c.fastest_geometry->ms_median) + " ms)" +
+                          (d->light_geometry == LightGeometry::automatic
+                               ? "; auto, which picks a path per light by its predicted time, takes " +
+                                     format_number("%.2f", d->ms_median) + " ms."
+                               : std::string("; the run has no auto row.")));
+    if (c.default_max_lsb >= 0)
+        c.lines.push_back("Image: dsr's default differs from the forward reference by at most " +
+                          format_number("%.0f", c.default_max_lsb) + " LSB in every row" +
+                          (c.worst_deferred ? "; the largest difference of any deferred configuration is " +
+                                                  format_number("%.0f", c.deferred_max_lsb) + " LSB (" +
+                                                  row_words(*c.worst_deferred) + ", the " + c.worst_deferred->scene +
+                                                  " scene at " + std::to_string(c.worst_deferred->lights) + " lights)"
+                                            : std::string()) +
+                          ".");
+    int met = 0, not_met = 0, not_judged = 0;
+    for (const GoalResult& g : goals)
+        ++(g.verdict == Verdict::met ? met : g.verdict == Verdict::not_met ? not_met : not_judged);
+    if (!goals.empty())
+        c.lines.push_back("Goals: " + std::to_string(met) + " met, " + std::to_string(not_met) + " not met, " +
+                          std::to_string(not_judged) + " not judged" +
+                          (not_judged ? " (most need rows only the full `dsr bench` measures: 1024 lights, "
+                                        "1024-overlap, 32-large, 1920x1080)"
+                                      : std::string()) +
+                          ".");
+    if (c.spread >= 0)
+        c.lines.push_back("Timing: the middle half of a row's frames lies within ±" + format_number("%.0f", 100 * c.spread) +
+                          "% of its median (the median row); a difference between two rows smaller than that is noise.");
+    return c;
+}
+
 std::string text_summary(const Summary& s, const std::string& report_path, const std::string& json_path) {
     const Config& cfg = s.config;
-    int met = 0, not_met = 0, not_judged = 0;
-    for (const GoalResult& g : s.goal_results)
-        ++(g.verdict == Verdict::met ? met : g.verdict == Verdict::not_met ? not_met : not_judged);
+    const std::string scene = s.scenes.empty() ? std::string() : s.scenes[0];
     std::ostringstream o;
-    o << "dsr bench: " << s.rows.size() << " rows in " << format_number("%.0f", s.seconds) << " s at " << cfg.w << "x"
-      << cfg.h << " on " << s.gl_renderer << ", OpenGL " << s.gl_version << "\n"
-      << "goals, on the " << (s.scenes.empty() ? std::string() : s.scenes[0]) << " scene: " << met << " met, "
-      << not_met << " not met, " << not_judged << " not judged\n";
+    o << "dsr bench" << (cfg.quick ? " --quick" : "") << ": " << s.rows.size() << " rows in "
+      << format_number("%.0f", s.seconds) << " s at " << cfg.w << "x" << cfg.h << ", " << cfg.frames
+      << " timed frames a row, on " << s.gl_renderer << ", OpenGL " << s.gl_version << "\n\n";
+    o << "What this run shows:\n";
+    for (const std::string& l : conclusions(s.rows, scene, s.goal_results).lines) o << "- " << l << "\n";
+    o << "\nGoals, on the " << scene << " scene:\n";
     for (const GoalResult& g : s.goal_results) {
         const char* verdict = g.verdict == Verdict::met ? "met       " : g.verdict == Verdict::not_met ? "NOT met   " : "not judged";
         const Figure& f = g.figure;
         o << "  " << verdict << "  " << g.plain << ": " << (f.judged || f.brief.empty() ? f.working : f.brief)
           << (f.judged ? f.after : std::string()) << "\n";
     }
+    o << "\n" << rows_text(s.rows) << "\n";
     if (!report_path.empty())
-        o << "the full table (" << s.rows.size() << " rows), each goal's working"
-          << (s.notes.empty() ? std::string() : s.notes.size() == 1 ? " and the note" : " and the " + std::to_string(s.notes.size()) + " notes") << ": "
-          << report_path << "\n";
-    if (!json_path.empty()) o << "every row as JSON: " << json_path << "\n";
-    o << "exit status 0: the run completed (goals not met are findings, not errors)\n";
-    return o.str();
+        o << "The report (each goal's working"
+          << (s.notes.empty() ? std::string() : s.notes.size() == 1 ? ", the note" : ", the " + std::to_string(s.notes.size()) + " notes")
+          << ", every row's fragments, floor and CPU time, the plot): " << report_path << "\n";
+    if (!json_path.empty()) o << "Every row as JSON: " << json_path << "\n";
+    o << "Exit status 0: the run completed (goals not met are findings, not errors).\n";
+    return wrap_lines(o.str());
 }
 
 std::string light_geometry_markdown(const std::vector<Row>& rows) {
@@ -297,8 +443,8 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
     const Config& cfg = s.config;
     std::ostringstream md;
     md << "# Benchmarks\n\n"
-       << "Written by `make bench` (`build/dsr bench --json docs/benchmarks.json --report docs/benchmarks.md`); "
-          "do not edit by hand. Raw numbers: `benchmarks.json`.\n\n"
+       << "Written by `make bench` (`build/dsr bench --json docs/benchmarks.json --report docs/benchmarks/report.md`); "
+          "do not edit by hand. Raw numbers: `docs/benchmarks.json`.\n\n"
        << "- Machine: " << s.machine << "\n"
        << "- GL renderer: " << s.gl_renderer << ", OpenGL " << s.gl_version << " (" << s.gl_vendor << ")\n"
        << "- Size " << cfg.w << "x" << cfg.h << large_size(s.rows, cfg) << "; each row: warm-up frames until " << cfg.warmup
@@ -334,10 +480,11 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
     md << "\n## Run time against error\n\n![run time against error](" << plot_name << ")\n\n"
        << "One panel per scene, both axes logarithmic: x is the median frame time in ms, y the mean "
           "absolute error in 8-bit LSB (RGB), against the forward reference for the default scene and "
-          "against the analytic reference (interior pixels) for the analytic scene. Blue: deferred (every "
-          "row: depth path, encoding, scissor, skips); green: forward single-pass; red: forward multi-pass (float and RGBA8 accumulation alike). "
-          "Marker size grows with the light count (" << cfg.lights_text << "; `own` is the scene's own lights). A ring on the bottom axis is a mean error below 0.01 LSB (exactly 0 for forward single-pass, "
-          "which *is* the forward reference).\n\n"
+          "against the analytic reference (interior pixels) for the analytic scene. Blue: dsr's default (auto "
+          "light geometry); green: forward single-pass, red: forward multi-pass (each the faster of its float and "
+          "RGBA8 forms); each of these dots labelled with its light count (" << cfg.lights_text << "; `own` is the "
+          "scene's own lights). Grey: every other deferred row. A ring on the bottom axis is a mean error below "
+          "0.01 LSB (exactly 0 for forward single-pass, which *is* the forward reference).\n\n"
        << "## How the floor is made\n\n"
           "Measured in the same run, on the same context and at the same size as the rows "
           "(`src/analysis/bench_floor.h`), once per scene variant and G-buffer layout:\n\n"

@@ -559,6 +559,43 @@ std::string config_text(const Row& r) {
     return s;
 }
 
+std::string row_words(const Row& r) {
+    if (r.renderer != Renderer::deferred) {
+        std::string s = r.renderer == Renderer::forward_single ? "forward, a pass per object" : "forward, a pass per light and object";
+        if (r.float_accum) s += *r.float_accum ? ", float sums" : ", 8-bit sums";
+        return s;
+    }
+    std::string s = "deferred";
+    switch (r.light_geometry) {
+        case LightGeometry::quad: break;  // the tutorial's, and the configuration sweep's
+        case LightGeometry::automatic: s += ", auto light geometry"; break;
+        case LightGeometry::volume: s += ", light volumes"; break;
+        case LightGeometry::stencil: s += ", stencil light volumes"; break;
+        case LightGeometry::screen: s += ", every light at every pixel"; break;
+        case LightGeometry::tiles:
+            s += ", screen tiles";
+            if (r.tile_size && r.tile_lights)
+                s += " of " + std::to_string(*r.tile_size) + " px, " + std::to_string(*r.tile_lights) + " lights a pass";
+            break;
+        default: s += std::string(", ") + light_geometry_name(r.light_geometry);
+    }
+    if (r.depth == DepthPath::packed) s += std::string(", packed depth (") + encoding_name(r.encoding) + ")";
+    else if (r.depth == DepthPath::position16) s += ", positions in half floats";
+    else if (r.depth == DepthPath::position32) s += ", positions in floats";
+    else if (r.depth != DepthPath::texture) s += std::string(", depth ") + depth_path_name(r.depth);
+    if (!r.scissor) s += ", no scissor";
+    if (r.gbuffer_half) s += ", half-float G-buffer";
+    if (r.accum_format == AccumFormat::half) s += ", half-float light sums";
+    if (r.accum_format == AccumFormat::float32) s += ", float light sums";
+    std::vector<std::string> off = skips_off(r.skip);
+    for (size_t i = 0; i < off.size(); ++i) {
+        std::replace(off[i].begin(), off[i].end(), '_', ' ');
+        s += (i ? ", " : off.size() == 1 ? ", skip off: " : ", skips off: ") + off[i];
+    }
+    if (r.linear_law) s += ", the tutorial's linear law";
+    return s;
+}
+
 bool analytic_capable(const Scene& s) {
     for (const Material& m : s.materials)
         if (m.diffuse_map >= 0 || m.normal_map >= 0 || m.specular_map >= 0) return false;
@@ -656,11 +693,11 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
     for (auto& run : runs) {
         const bool linear = run->row.linear_law;  // against the twin's own reference and quad row
         finish_row(cfg_, v, *run, ideal, parts, linear ? linear_ref : runs[0]->image, linear ? linear_quad : quad);
-        const Row& r = run->row;
-        say(printf_line("bench [%d/%d] %s, %d lights: %-46s %9.2f ms (%d frames)", index + 1, total, r.scene.c_str(),
-                        r.lights, config_text(r).c_str(), r.ms_median, r.frames));
-        rows_.push_back(r);
+        rows_.push_back(run->row);
     }
+    // One line a variant: its rows are printed together at the end (bench_report.h rows_text).
+    say(printf_line("bench [%d/%d] %s scene, %d lights: %zu rows measured", index + 1, total, name.c_str(),
+                    runs.empty() ? light_count : runs[0]->row.lights, runs.size()));
 }
 
 }  // namespace dsr::bench

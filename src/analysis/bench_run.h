@@ -144,6 +144,13 @@ std::optional<double> evaluations_ratio(const Row& r);
 // "deferred packed/log sc half no-empty_lights", ...
 std::string config_text(const Row& r);
 
+// The row's configuration in plain words, as the terminal and the goals' figures name it: the
+// renderer, for deferred rows the light geometry (none named: the tutorial's quad per light) and
+// every setting that differs from the default configuration (depth texture, scissor on, every skip
+// on, 8-bit G-buffer and light sums): "deferred, no scissor", "deferred, auto light geometry",
+// "forward, a pass per light and object, float sums".
+std::string row_words(const Row& r);
+
 // True when every material is constant (no maps), so the analytic reference applies.
 bool analytic_capable(const Scene& s);
 

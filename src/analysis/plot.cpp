@@ -105,7 +105,9 @@ Image scatter_plot(const std::vector<PlotPanel>& panels, int panel_w, int panel_
         const PlotPanel& panel = panels[pi];
         const int ox = int(pi) * panel_w;
         // Plot area inside the panel: room for tick labels left and below, title above.
-        const int left = ox + 62, right = ox + panel_w - 16, top = 40, bottom = panel_h - 44 - 12 * 3;
+        // Below the axis: its label, then the legend, a line per series (room for 3 at least).
+        const int legend = int(std::max<size_t>(panel.series.size(), 3));
+        const int left = ox + 62, right = ox + panel_w - 16, top = 40, bottom = panel_h - 44 - 12 * legend;
         double xmin = std::numeric_limits<double>::infinity(), xmax = 0, ymin = xmin, ymax = 0;
         for (const PlotSeries& s : panel.series)
             for (const PlotPoint& p : s.points) {
@@ -148,8 +150,11 @@ Image scatter_plot(const std::vector<PlotPanel>& panels, int panel_w, int panel_
         for (const PlotSeries& s : panel.series)
             for (const PlotPoint& p : s.points) {
                 if (!(p.x > 0)) continue;
-                if (p.y > 0 && p.y >= panel.y_floor) marker(img, px(p.x), py(p.y), p.radius, s.color, false);
-                else marker(img, px(p.x), bottom, p.radius, s.color, true);
+                const bool ring = !(p.y > 0 && p.y >= panel.y_floor);
+                const int x = px(p.x), y = ring ? bottom : py(p.y);
+                marker(img, x, y, p.radius, s.color, ring);
+                // Above and right of the dot, in the series' colour darkened so thin strokes read.
+                if (!p.label.empty()) draw_text(img, x + p.radius + 2, y - p.radius - 8, p.label, s.color * 0.7f);
             }
         // Legend below the axis label: one line per series.
         int ly = bottom + 36;

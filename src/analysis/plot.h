@@ -14,6 +14,7 @@ namespace dsr {
 struct PlotPoint {
     double x = 0, y = 0;
     int radius = 3;  // marker radius in pixels
+    std::string label;  // drawn beside the marker (the font's characters); empty: none
 };
 
 struct PlotSeries {

@@ -8,6 +8,7 @@
 
 #include "analysis/number_format.h"
 #include "analysis/plot.h"
+#include "analysis/terminal_text.h"
 #include "dsr_error.h"
 
 namespace dsr {
@@ -65,6 +66,24 @@ std::string grid_table(const Grid& g, const std::string& title, std::string (*ce
     return o.str();
 }
 
+// The case table for a terminal: a row per case, the columns in words.
+std::string stress_text_table(const std::vector<StressResult>& results) {
+    std::vector<std::vector<std::string>> rows;
+    for (const StressResult& r : results) {
+        rows.push_back({r.name, format_number("%.0e", r.far_near), std::to_string(r.nan_pixels),
+                        std::to_string(r.nan_positions), std::to_string(r.gl_errors),
+                        r.scissor_contains_sphere ? "yes" : "NO",
+                        std::to_string(r.lights_drawn) + "/" + std::to_string(r.lights_total),
+                        std::to_string(r.lost_pixels), zerr(r.z, r.z.max), zerr(r.z, r.z.mean), zerr(r.z_cpu, r.z_cpu.max),
+                        lsb(r.max_lsb), lsb(r.mean_lsb), std::to_string(r.lsb_over_2), format_number("%.0f", r.ms),
+                        r.passed() ? "pass" : r.limit ? "fails (limit case)" : "FAIL"});
+    }
+    return text_table({"case", "far/near", "NaN pixels", "NaN positions", "GL errors", "scissor holds the sphere",
+                       "lights drawn", "pixels lost", "max rel. z error", "mean rel. z error", "CPU twin max rel. z",
+                       "max LSB", "mean LSB", "pixels over 2 LSB", "ms", "result"},
+                      rows, {false, true, true, true, true, true, true, true, true, true, true, true, true, true, true, false});
+}
+
 }  // namespace
 
 std::string stress_accuracy_tables(const std::vector<StressResult>& results) {
@@ -90,25 +109,16 @@ std::string stress_case_table(const std::vector<StressResult>& results, bool mar
         o << "| case | far/near | NaN px | NaN pos | GL err | scissor ok | lights drawn | lost px | max rel z | "
              "mean rel z | CPU twin max | max LSB | mean LSB | px > 2 LSB | result |\n"
              "|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
-    else
-        o << "case                         far/near nanpx nanpos gl scissor lights  lost  max-rel-z mean-rel-z  "
-             "cpu-max-z max-LSB mean-LSB >2LSB     ms result\n";
+    else  // a text table in words, fitted to the terminal (terminal_text.h)
+        return stress_text_table(results);
     for (const StressResult& r : results) {
         const bool ok = r.passed();
-        if (markdown)
-            std::snprintf(buf, sizeof buf,
-                          "| %s | %.0e | %lld | %lld | %d | %s | %d/%d | %lld | %s | %s | %s | %s | %s | %lld | %s |\n",
-                          r.name.c_str(), r.far_near, r.nan_pixels, r.nan_positions, r.gl_errors,
-                          r.scissor_contains_sphere ? "yes" : "**no**", r.lights_drawn, r.lights_total, r.lost_pixels,
-                          zerr(r.z, r.z.max).c_str(), zerr(r.z, r.z.mean).c_str(), zerr(r.z_cpu, r.z_cpu.max).c_str(),
-                          lsb(r.max_lsb).c_str(), lsb(r.mean_lsb).c_str(), r.lsb_over_2, ok ? "pass" : r.limit ? "fails (limit)" : "**FAIL**");
-        else
-            std::snprintf(buf, sizeof buf,
-                          "%-28s %8.0e %5lld %6lld %2d %7s %3d/%-3d %5lld %10s %10s %10s %7s %8s %5lld %6.0f %s\n",
-                          r.name.c_str(), r.far_near, r.nan_pixels, r.nan_positions, r.gl_errors,
-                          r.scissor_contains_sphere ? "yes" : "NO", r.lights_drawn, r.lights_total, r.lost_pixels,
-                          zerr(r.z, r.z.max).c_str(), zerr(r.z, r.z.mean).c_str(), zerr(r.z_cpu, r.z_cpu.max).c_str(),
-                          lsb(r.max_lsb).c_str(), lsb(r.mean_lsb).c_str(), r.lsb_over_2, r.ms, ok ? "pass" : r.limit ? "fails(limit)" : "FAIL");
+        std::snprintf(buf, sizeof buf,
+                      "| %s | %.0e | %lld | %lld | %d | %s | %d/%d | %lld | %s | %s | %s | %s | %s | %lld | %s |\n",
+                      r.name.c_str(), r.far_near, r.nan_pixels, r.nan_positions, r.gl_errors,
+                      r.scissor_contains_sphere ? "yes" : "**no**", r.lights_drawn, r.lights_total, r.lost_pixels,
+                      zerr(r.z, r.z.max).c_str(), zerr(r.z, r.z.mean).c_str(), zerr(r.z_cpu, r.z_cpu.max).c_str(),
+                      lsb(r.max_lsb).c_str(), lsb(r.mean_lsb).c_str(), r.lsb_over_2, ok ? "pass" : r.limit ? "fails (limit)" : "**FAIL**");
         o << buf;
     }
     return o.str();
@@ -196,7 +206,7 @@ Image stress_accuracy_plot(const std::vector<StressResult>& results) {
                       : name.rfind("position", 0) == 0 ? "STORED " + name
                                                        : "PACKED " + name;
             s.color = colour.at(name);
-            for (auto& [ratio, r] : it->second) s.points.push_back({ratio, max ? r->z.max : r->z.mean, 4});
+            for (auto& [ratio, r] : it->second) s.points.push_back({ratio, max ? r->z.max : r->z.mean, 4, ""});
             p.series.push_back(s);
         }
         return p;

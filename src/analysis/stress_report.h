@@ -12,7 +12,8 @@
 
 namespace dsr {
 
-// One row per case: the text table `dsr stress` prints, or the markdown table of the report.
+// One row per case: the text table `dsr stress` prints (columns in words, fitted to the terminal
+// by terminal_text.h), or the markdown table of the report.
 std::string stress_case_table(const std::vector<StressResult>& results, bool markdown);
 
 // The depth-accuracy tables (a row per depth path, a column per far/near) of the ratio cases;

@@ -15,6 +15,7 @@
 #include "analysis/bench_report.h"
 #include "analysis/large_mesh.h"
 #include "analysis/bench_run.h"
+#include "analysis/terminal_text.h"
 #include "app/command_table.h"
 #include "app/commands.h"
 #include "app/files.h"
@@ -111,11 +112,13 @@ int cmd_bench(const std::vector<std::string>& argv) {
     sum.machine = bench::machine_name();
     sum.gl_renderer = caps.renderer, sum.gl_version = caps.version, sum.gl_vendor = caps.vendor;
     sum.config = cfg;
-    std::fprintf(stderr,
-                 "bench: %s; GL %s (%s); %dx%d, per row warm-up frames until %d in a row build no program and explore no "
-                 "path (at most %d), then %d timed frames%s\n",
-                 sum.machine.c_str(), caps.renderer.c_str(), caps.version.c_str(), cfg.w, cfg.h, cfg.warmup,
-                 cfg.warmup + cfg.compile_warmup, cfg.frames, bench::large_frames_note(cfg).c_str());
+    char start[1024];
+    std::snprintf(start, sizeof start,
+                  "bench: %s; GL %s (%s); %dx%d, per row warm-up frames until %d in a row build no program and explore "
+                  "no path (at most %d), then %d timed frames%s\n",
+                  sum.machine.c_str(), caps.renderer.c_str(), caps.version.c_str(), cfg.w, cfg.h, cfg.warmup,
+                  cfg.warmup + cfg.compile_warmup, cfg.frames, bench::large_frames_note(cfg).c_str());
+    std::fputs(wrap_lines(start).c_str(), stderr);  // every line within the terminal's width (terminal_text.h)
 
     // Whether the invocation counter can judge the stencil goal (gl/invocation_probe.h).
     sum.invocation_probe = probe_invocation_counter(resource_dir("glsl120"));
@@ -124,7 +127,7 @@ int cmd_bench(const std::vector<std::string>& argv) {
                      sum.invocation_probe->invocations, sum.invocation_probe->samples, sum.invocation_probe->pixels);
     const double t0 = now_ms();
     bench::Runner runner(cfg, caps, resource_dir("glsl120"));
-    runner.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+    runner.progress = [](const std::string& line) { std::fputs(wrap_lines(line + "\n").c_str(), stderr); };
     const bool has_own = std::find(cfg.lights.begin(), cfg.lights.end(), -1) != cfg.lights.end();
     if (!has_own && own_only.back())
         std::fprintf(stderr, "bench: --lights has no 'own': the large-mesh scene is left out\n");

@@ -103,7 +103,7 @@ std::string markdown_flag_row(const Flag& f) {
 bool is_help_flag(const std::string& arg) { return arg == "--help" || arg == "-h"; }
 
 std::string command_help(const Command& c) {
-    std::string s = synopsis(c, "usage: dsr ") + c.summary + "\n\noptions:\n";
+    std::string s = synopsis(c, "usage: dsr ") + wrap(c.summary, 0, 0) + "\n\noptions:\n";
     for (const Operand& o : c.operands) s += entry(o.name, o.help);
     for (const Flag& f : c.flags) {
         s += entry(flag_head(f), f.help + qualifiers(f.range, f.def));
@@ -123,7 +123,7 @@ std::string top_help() {
     for (const Command& c : command_table()) {
         s += "  " + c.name;
         for (const Operand& o : c.operands) s += " " + operand_word(o);
-        s += std::string(c.flags.empty() && !c.renderer ? "" : " [options]") + "\n      " + c.summary + "\n";
+        s += std::string(c.flags.empty() && !c.renderer ? "" : " [options]") + "\n      " + wrap(c.summary, 6, 6) + "\n";
     }
     return s + "dsr help --markdown: every command's options as markdown (docs/cli.md)\n";
 }

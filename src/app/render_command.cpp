@@ -13,6 +13,7 @@
 #include "app/commands.h"
 #include "analysis/frame_ideal.h"
 #include "app/files.h"
+#include "analysis/terminal_text.h"
 #include "app/command_table.h"
 #include "app/stage.h"
 #include "deferred/deferred_shader.h"
@@ -238,9 +239,13 @@ int cmd_render(const std::vector<std::string>& argv) {
     if (!stats_path.empty())
         outputs.put_text("--stats", stats_path, j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     outputs.commit();
-    std::printf("wrote %s (%dx%d, view %s, depth %s, %d/%d lights drawn, %lld light fragments, frame %.2f ms median of %d)\n",
-                out.c_str(), out_w, out_h, view_name(view), j["depth_path"].get<std::string>().c_str(), last.lights_drawn, last.lights_total,
-                last.light_fragments, med(&StageTimes::frame), frames);
+    // Two lines, each within the terminal's width (a long output path wrapped: terminal_text.h).
+    char line[4096];
+    std::snprintf(line, sizeof line,
+                  "wrote %s (%dx%d, view %s, depth %s)\n  %d/%d lights drawn, %lld light fragments, frame %.2f ms median of %d\n",
+                  out.c_str(), out_w, out_h, view_name(view), j["depth_path"].get<std::string>().c_str(), last.lights_drawn,
+                  last.lights_total, last.light_fragments, med(&StageTimes::frame), frames);
+    std::fputs(wrap_lines(line).c_str(), stdout);
     return 0;
 }
 

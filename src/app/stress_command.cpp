@@ -11,6 +11,7 @@
 #include "analysis/stress_report.h"
 #include "analysis/stress_run.h"
 #include "analysis/stress_shadow_report.h"
+#include "analysis/terminal_text.h"
 #include "app/command_table.h"
 #include "app/commands.h"
 #include "app/files.h"
@@ -80,15 +81,19 @@ int cmd_stress(const std::vector<std::string>& argv) {
         failed += r.counts_as_failure();
         std::fprintf(stderr, "[%3zu/%zu] %-30s %6.0f ms %s\n", i + 1, cases.size(), r.name.c_str(), r.ms,
                      r.passed() ? "pass" : r.limit ? "fails (limit case, not counted)" : "FAIL");
-        for (const std::string& f : r.failures()) std::fprintf(stderr, "          %s\n", f.c_str());
+        for (const std::string& f : r.failures()) std::fputs(wrap_lines("          " + f + "\n").c_str(), stderr);
     }
     const double seconds = (now_ms() - t0) / 1000.0;
 
+    // stdout fitted to the terminal (terminal_text.h); the report keeps the markdown.
     std::printf("%s", stress_case_table(results, false).c_str());
     const std::string acc = stress_accuracy_tables(results);
-    if (!acc.empty()) std::printf("\n%s", acc.c_str());
-    std::printf("\n%zu cases, %d failed (and %d limit cases past the required range fail, not counted), %.1f s on %s\n",
-                results.size(), failed, stress_limit_failures(results), seconds, runner.renderer().c_str());
+    if (!acc.empty()) std::printf("\n%s", markdown_for_terminal(acc).c_str());
+    char total[512];
+    std::snprintf(total, sizeof total,
+                  "\n%zu cases, %d failed (and %d limit cases past the required range fail, not counted), %.1f s on %s\n",
+                  results.size(), failed, stress_limit_failures(results), seconds, runner.renderer().c_str());
+    std::fputs(wrap_lines(total).c_str(), stdout);
 
     const std::string command = std::string("dsr stress") + (quick ? " --quick" : "") +
                                 (only.empty() ? "" : " --only " + only) +
@@ -101,7 +106,7 @@ int cmd_stress(const std::vector<std::string>& argv) {
     std::vector<StressResult> main_results, shadow_results;
     for (const StressResult& r : results) (r.shadow ? shadow_results : main_results).push_back(r);
     const std::string sweep = shadow_sweep_tables(shadow_results);
-    if (!sweep.empty()) std::printf("\n%s", sweep.c_str());
+    if (!sweep.empty()) std::printf("\n%s", markdown_for_terminal(sweep).c_str());
     if (!report_path.empty()) {
         std::string doc = read_report(report_path, main_cases, shadow_cases);
         if (main_cases) doc = splice_report_block(doc, report_path, stress_report_block(main_results, quick, runner.renderer()));
