@@ -262,8 +262,11 @@ Command bench_command(BenchSettings& s) {
                              "without --quick, a generated 1-million-triangle mesh)")},
               one_scene(s.scene), {}, nullptr,
               "--tile-size, --tile-lights, --tile-plan and --tile-depth set the tiles rows, as render takes them.\n\n"
-              "stdout holds a short summary: each goal as a sentence with its figures and met, NOT met or\n"
-              "not judged, and where the report and the JSON went; progress goes to stderr.\n\n"
+              "stdout: what the run shows first (dsr's default against forward, the fastest light geometry,\n"
+              "the image's largest error, the goals' count, the frames' spread), then each goal as a sentence\n"
+              "with its figures and met, NOT met or not judged, then every row in words with its median ms,\n"
+              "its spread and the image's max LSB, and where the report and the JSON went; progress goes to\n"
+              "stderr. Every line fits 120 columns.\n\n"
               "exit status: 0 when the run completed, whatever the goals (a goal not met is a finding, not an\n"
               "error); non-zero only on an error (a bad flag or scene, a GL failure, an output that cannot be\n"
               "written), with one line on stderr saying which.\n"};
