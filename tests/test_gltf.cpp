@@ -698,6 +698,14 @@ TEST(Gltf, BadFilesOneLineWithThePointer) {
         {"required draco", [] { return with([](json& d) { d["extensionsRequired"] = {"KHR_draco_mesh_compression"}; }); },
          "t/m.gltf: /extensionsRequired/0: the file requires 'KHR_draco_mesh_compression', which dsr does not read"},
         {"glTF 1.0", [] { return with([](json& d) { d["asset"]["version"] = "1.0"; }); }, "t/m.gltf: glTF 1.0 is not read; dsr reads glTF 2.0"},
+        {"light range 0",
+         [] {
+             return with([](json& d) {
+                 d["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"range", 0}}};
+                 d["nodes"][0]["extensions"]["KHR_lights_punctual"]["light"] = 0;
+             });
+         },
+         "t/m.gltf: /extensions/KHR_lights_punctual/lights/0/range: expected a number in [1e-12, 1e12], got 0"},
         {"glTF 1.0 dictionaries", [] { return string(R"({"meshes": {"m": {}}, "nodes": {}})"); }, "t/m.gltf: glTF 1.0 is not read; dsr reads glTF 2.0"},
         {"bad base64", [] { return with([](json& d) { string u = d["buffers"][0]["uri"]; u[40] = '!'; d["buffers"][0]["uri"] = u; }); },
          "t/m.gltf: /buffers/0/uri: expected base64 data, got '!' at character 41"},
