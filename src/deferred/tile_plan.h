@@ -122,8 +122,8 @@ TilePlan plan_tiles(const std::vector<ScissorRect>& rects, int width, int height
                     const std::vector<bool>* shadowed = nullptr, int max_shadowed = 0);
 
 // plan_tiles a batch at a time, so that a renderer can draw a batch while it plans the next (on a
-// GPU the plan is CPU time the GPU would otherwise wait through; docs/tiles.md has the figures). The same batches and draws as plan_tiles. depth, when given,
-// must outlive the planner. kept, when given, is each rectangle's tiles as tiles_kept (below) gave
+// GPU the plan is CPU time the GPU would otherwise wait through; docs/gpu_frame.md has the
+// figures). The same batches and draws as plan_tiles. depth, when given, must outlive the planner. kept, when given, is each rectangle's tiles as tiles_kept (below) gave
 // them for the same rects, size and depth: the planner takes them instead of culling again (auto
 // has culled every light once to price it: it never culls a light twice).
 class TilePlanner {
