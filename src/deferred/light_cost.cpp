@@ -27,46 +27,38 @@ const char* light_path_name(LightPath p) {
 LightCostModel default_light_costs(bool software_rasterizer) {
     LightCostModel m;
     if (software_rasterizer) {
-        // llvmpipe, 2 cores, 512x512 and 800x600: the light stage's ms of each geometry on the
-        // bench scenes fitted to the terms (quad: 357 lights over 1.1 Mpx took 42 ms, 32 lights
-        // over 14.7 Mpx 345 ms, both on a loaded machine; the ratios are what the choice uses).
+        // llvmpipe: the light stage's ms of each geometry on the bench scenes fitted to the terms;
+        // the ratios are what the choice uses (docs/light_cost.md, "A CPU rasteriser").
         m.quad_draw_ms = 0.045, m.quad_mpx_ms = 21;
-        // Against the depth: 1024 lights at 960x540, quads forced, 23.2 -> 17.7 ms.
+        // Against the depth: the pixels behind the light rejected before the shader runs.
         m.quad_depth_mpx_ms = 16;
-        // Volumes in batches (LightVolumeBatch), fitted to `render --light-geometry volume` on own,
-        // 256, 1024, 1024-overlap at 512x512 and 32-large at 800x600 (within 30% on each; a draw
-        // a light, before the batches, was 0.09 and 12).
+        // Volumes in batches (LightVolumeBatch), fitted to `render --light-geometry volume` on the
+        // bench scenes.
         m.volume_draw_ms = 0.049, m.volume_mpx_ms = 6.1;
-        // The hand-off by a pass (--depth-handoff pass, or no blit), volumes at 512x512: 1.15-1.24
-        // ms; writing the ambient term too 2.15-2.47, where the ambient pass it replaces took
-        // 1.09-1.43.
+        // The hand-off by a pass (--depth-handoff pass, or no blit); writing the ambient term too,
+        // priced less the ambient pass it replaces (handoff_ms).
         m.handoff_mpx_ms = 0.5, m.handoff_pass_mpx_ms = 4.6;
         m.handoff_ambient_mpx_ms = 9, m.ambient_mpx_ms = 5;
-        // The spans read back and reduced on the CPU (tile_spans.h): 0.52-0.54 ms at 512x512,
-        // 0.83-0.99 at 800x600 (the two passes before them: 0.95-1.26 and 1.44-1.64).
+        // The spans read back and reduced on the CPU (tile_spans.h), with the two passes before them.
         m.spans_mpx_ms = 2;
         m.tile_pass_mpx_ms = 20, m.tile_light_mpx_ms = 13.5;
-        // A path drawn at all: its programs and state, and on llvmpipe the scene it flushes (a
-        // mix of 351 lights in tiles and 6 as volumes at 512x512 was slower than tiles alone).
+        // A path drawn at all: its programs and state, and on llvmpipe the scene it flushes (so a
+        // few lights by a second path can cost more than they save).
         m.path_ms = 0.4;
         m.shadow_mpx_ms = 13.5;  // estimated, not fitted: about a light term in the tiles loop
     } else {
-        // An NVIDIA H200 through EGL at 1920x1080, each path forced (tests/gpu_bench.sh part auto,
-        // docs/gpu.md): batched quads cost the CPU almost nothing a light (4096 lights, 8.5 Mpx of
-        // rectangles: 0.78 ms); the tiles' spans are a read-back the GPU drains for.
+        // An NVIDIA GPU through EGL, each path forced (tests/gpu_bench.sh part auto; docs/light_cost.md,
+        // "A GPU"): batched quads cost the CPU almost nothing a light; the tiles' spans are a
+        // read-back the GPU drains for.
         m.quad_draw_ms = 0.0001, m.quad_mpx_ms = 0.075;
-        // Against the depth: 1024 lights (502 drawn, 8.8 Mpx of rectangles) 0.704 -> 0.568 ms, 4096
-        // (1915, 8.5 Mpx) 0.776 -> 0.567: 0.015 and 0.025 ms less per Mpx, the mean taken; the
-        // hand-off it needs took 0.149 ms at 1920x1080.
+        // Against the depth: quad_mpx_ms less the mean of what two light counts saved per Mpx; the
+        // hand-off it needs is priced apart (handoff_mpx_ms).
         m.quad_depth_mpx_ms = 0.055;
-        // Volumes in batches (LightVolumeBatch), an H100: 502 lights over 8.8 Mpx of rectangles
-        // 0.613 ms, 1915 over 8.5 Mpx 0.795 (a draw a light, before the batches: 0.0009 and 0.07).
+        // Volumes in batches (LightVolumeBatch).
         m.volume_draw_ms = 0.00014, m.volume_mpx_ms = 0.062;
-        // The hand-off's pass writing the ambient term, an H100 at 1920x1080: 0.269 ms (4096 lights
-        // and the own lights by volumes, docs/gpu/bench_58e6b44/), where the ambient pass it replaces
-        // took 0.284-0.292 (the fold part's renders): it costs the frame nothing more. The pass
-        // without the term (a GPU takes it only with SSAO and no blit) is not measured: priced as
-        // the pass with it.
+        // The hand-off's pass writing the ambient term costs no more than the ambient pass it
+        // replaces, so it costs the frame nothing more. The pass without the term (a GPU takes it
+        // only with SSAO and no blit) is not measured: priced as the pass with it.
         m.handoff_mpx_ms = 0.072, m.handoff_pass_mpx_ms = 0.13;
         m.handoff_ambient_mpx_ms = 0.13, m.ambient_mpx_ms = 0.139;
         m.spans_mpx_ms = 0.35;

@@ -55,14 +55,13 @@ struct LightCostModel {
     double spans_worth = 4;
     // A path not yet measured (LightCostCalibration::samples below kExploreSamples) is tried in a
     // frame whose plan by it is predicted within this factor of the best (exploration_plan): else
-    // a path the constants overprice is never drawn, so never measured, and stays overpriced. 2: the measured scales of
-    // llvmpipe's tiles on the bench scenes lie at 0.3-0.7 (the default scene's three lights were
-    // priced 1.8x their volumes, and drawn 0.8x as fast).
+    // a path the constants overprice is never drawn, so never measured, and stays overpriced. 2:
+    // wide enough for the overpricing the bench scenes show (docs/light_cost.md, "explore_within").
     double explore_within = 2;
 };
 
-// Measured with `dsr render --frames N --stats` per geometry (docs/light_geometry.md, "auto"):
-// software: llvmpipe on 2 cores; else: an NVIDIA H200 through EGL.
+// Measured with `dsr render --frames N --stats` per geometry, on a CPU rasteriser (software) or a
+// GPU; where and on what: docs/light_cost.md.
 LightCostModel default_light_costs(bool software_rasterizer);
 // The constants, one per line (dsr info).
 std::string describe(const LightCostModel& m);
