@@ -163,11 +163,10 @@ struct ShaderOptions {
     bool depth_bounds = false;      // EXT_depth_bounds_test on the quad passes (refused where missing)
     // tiles: pixels per side and lights per pass (the shader's constant loop bound); 0 is auto,
     // resolved by choose_paths (Paths::tile_size, tile_lights) from the GL: on a CPU rasteriser 16
-    // and 32 (llvmpipe at 256x256: as fast as 8 pixels on 1024-overlap, faster on 32-large, and
-    // 32 pixels let 3x more tile-light pairs through the depth culling), else 32 and 8 (the H200:
-    // 7.16 against 9.13 ms on 1024-overlap at 1920x1080, 6.77 against 8.44 on 32-large;
-    // docs/tiles.md, "Settings"). With the tiles' vertex fetch (Paths::tile_fetch_vertex) the lights a
-    // pass are as many as its flat varyings hold, 16 at most.
+    // and 32 (smaller tiles gain nothing there, larger ones let more tile-light pairs through the
+    // depth culling), else 32 and 8, each the faster where measured (docs/tiles.md, "Settings").
+    // With the tiles' vertex fetch (Paths::tile_fetch_vertex) the lights a pass are as many as its
+    // flat varyings hold, 16 at most.
     int tile_size = 0;
     int tile_lights = 0;
     RenderTarget render_target = RenderTarget::automatic;

@@ -103,12 +103,11 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
     p.tile_size = opts.tile_size ? opts.tile_size : caps.software_rasterizer ? 16 : 32;
     // A CPU rasteriser runs the fragment shader on lanes of 8 pixels and reads an array at an
     // index it takes from a varying lane by lane, element by element: in the tiles' light shader
-    // that read, its loop and the loop's masked last terms were a third of the light stage
-    // (llvmpipe, 32-large at 800x600). Read once a tile by the vertex shader and handed on flat,
+    // that read, its loop and the loop's masked last terms are a large share of the light stage
+    // (docs/light_loop_cpu.md). Read once a tile by the vertex shader and handed on flat,
     // the lights cost the fragment shader a constant read, and each count of lights gets a program
-    // of its own with the lights' terms in a row (light_geometry_tiles.cpp). A GPU gained too (an
-    // H100 at 1920x1080: 1024-overlap's frame 5.2-5.6 against 6.2-6.4 ms, 32-large's 3.9-4.0
-    // against 4.3-4.7; docs/tiles.md).
+    // of its own with the lights' terms in a row (light_geometry_tiles.cpp). A GPU gains too
+    // (docs/tiles.md; docs/gpu_frame.md, "The tiles' light stage: shading").
     p.tile_vertex_lights = caps.glsl130 ? std::min(16, caps.max_varying_components / 8) : 0;
     const bool vertex_fetch = p.tile_vertex_lights > 0 && opts.tile_plan == TileGrouping::lists;
     p.tile_fetch_vertex = opts.tile_fetch == TileFetch::vertex ||
@@ -120,9 +119,8 @@ Paths choose_paths(const Caps& caps, const ShaderOptions& opts) {
                                                                       : 8;
     // llvmpipe shades a 4x4 pixel block once for each triangle that covers part of it, so a tile's
     // quad pays for the blocks along its diagonal twice; a point is one square primitive (llvmpipe
-    // rasterises points itself, as squares). The tiles' light stage with points: 5% lower on
-    // 32-large at 800x600 on llvmpipe, 4% on 1024-overlap at 1920x1080 on an H100
-    // (docs/tiles.md).
+    // rasterises points itself, as squares). Points are the faster on llvmpipe and on a GPU alike
+    // (docs/tiles.md, "Tiles as points").
     p.tile_points = opts.tile_shape != TileShape::quads && float(p.tile_size) <= caps.max_point_size;
     if (opts.light_geometry == LightGeometry::stencil) {
         const char* missing = !caps.stencil ? "a stencil buffer"

@@ -5,8 +5,8 @@
 // behind its surfaces. The read-back waits for the geometry pass, which the light passes wait for
 // anyway; on a GPU it is a pipeline drain, measured with the rest of the light stage (ms.lights).
 // On a CPU rasteriser with the depth texture, the G-buffer's depth and normal targets are read back
-// instead and each tile's span taken on the CPU (tile_spans.h): llvmpipe spent about 1.4 ms on the
-// passes at 800x600, of which the read-backs and the CPU's loop take about half.
+// instead and each tile's span taken on the CPU (tile_spans.h): there the read-backs and the
+// CPU's loop cost less than the passes (docs/tiles.md, "Depth culling of the tiles").
 #pragma once
 #include <memory>
 #include <vector>

@@ -28,8 +28,8 @@ private:
 };
 
 // A frame's batches each in a StreamBuffer of its own, kept between frames: refilling the buffer
-// that the previous batch's draws still read made llvmpipe finish them first (the tiles' plan went
-// from 0.4 to 3 ms a frame).
+// that the previous batch's draws still read makes llvmpipe finish them first, stalling the plan
+// of the next batch (docs/tiles.md, "The plan").
 class StreamBuffers {
 public:
     // Before the frame's first upload.
