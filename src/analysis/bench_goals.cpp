@@ -203,7 +203,7 @@ Figure stencil(const Goal& g, const GoalInput& in) {
 // out of it (its light stage less (b) per pixel of each of its passes, over lights x pixels). An
 // estimate, not a bound: the light shader's own set-up at a pixel (position, normal, view vector)
 // costs more than (b), and a loop over fewer lights a pixel pays it over fewer evaluations
-// (32-large on llvmpipe: the screen shader with its light loop removed took 13 ns a pixel, (b) 5.7).
+// (docs/benchmarks.md, "How the floor is made").
 struct IdealFrame {
     std::string per_eval;  // how the cost per evaluation was found, for the line
     double fixed_ms = 0, pass_floor_ms = 0, pairs_ms = 0;

@@ -26,8 +26,8 @@ std::array<Plane, 6> frustum_planes(const glm::mat4& view_proj);
 bool sphere_outside(const std::array<Plane, 6>& planes, glm::vec3 center, float radius);
 
 // sphere_outside over many spheres against one frustum: the planes widened to double once, not at
-// every sphere (make_frame at 4096 lights: 6-8% of its time). Double, so that the near and far
-// planes' distances keep what the float matrix holds.
+// every sphere, where the widening is a visible share of make_frame at thousands of lights. Double,
+// so that the near and far planes' distances keep what the float matrix holds.
 class FrustumTest {
 public:
     explicit FrustumTest(const std::array<Plane, 6>& planes);

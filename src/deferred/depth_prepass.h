@@ -19,11 +19,8 @@ namespace dsr {
 class DepthPrepassChoice {
 public:
     // Up to this many shaded fragments per covered pixel the material pass's extra shading costs
-    // less than the pre-pass. Measured on llvmpipe at 512x512 (geometry stage ms, without / with the
-    // pre-pass): the data scenes at 1.14-1.22 gave 6.4 / 7.7 (lights), 14.4 / 14.9 (default), 5.2 /
-    // 5.0 (32-large); full-screen normal-mapped layers at 1.70 gave 17.6 / 11.7, at 3.24 32.6 /
-    // 14.5: a layer shaded cost ~37 ns a fragment, one in the pre-pass ~6, so the pre-pass pays from
-    // about 1 / (1 - 6/37) = 1.2 on.
+    // less than the pre-pass: the pre-pass pays from about 1 / (1 - pre-pass fragment / shaded
+    // fragment) on, with those costs measured on llvmpipe (docs/guide.md, "The depth pre-pass").
     static constexpr double kThreshold = 1.25;
     static constexpr int kRemeasure = 32;
 

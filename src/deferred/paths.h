@@ -75,9 +75,9 @@ struct Paths {
     // place of the ambient pass and of the blit (SkipOptions::ambient_pass; not with SSAO, which
     // scales the ambient pass alone). On a GPU this takes the ambient target's place: there a
     // full-screen pass costs what the fourth target adds to the material pass, and the pass
-    // replaces the blit too (an H100 at 1024 lights: material 1.372 -> 1.082 ms, hand-off 0.150 ->
-    // 0.269). On a CPU rasteriser the target costs less than a pass, and the hand-off takes the
-    // ambient term only where it is a pass anyway (docs/light_geometry.md).
+    // replaces the blit too (docs/gpu_frame.md, "The fixed passes"). On a CPU rasteriser the target
+    // costs less than a pass, and the hand-off takes the ambient term only where it is a pass
+    // anyway (docs/light_geometry.md).
     bool ambient_in_handoff = false;
     // Non-empty: this GL cannot run these options, and why, in one line.
     std::string refused;

@@ -52,9 +52,9 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
     }
     // P-buffer 0 is RGBA8: several lights summed in one pass are each rounded as their own pass
     // would be, as this GL rounds into RGBA8, measured once (gl/rounding_probe.h): llvmpipe rounds
-    // t x 255 to nearest, an exact tie to even; the H200 truncates t to 12 bits first, which rounds
-    // up later than the half by as much as 0.06 of a step, and over the dozens of lights a pixel of
-    // 1024-overlap gets the difference reached 16 LSB. The ambient fold likewise rounds the ambient
+    // t x 255 to nearest, an exact tie to even; a GPU may truncate t to 12 bits first, which rounds
+    // up later than the half, and over the dozens of lights a pixel may get, the difference adds up
+    // to many LSB (docs/gpu.md, "Images on a GPU"). The ambient fold likewise rounds the ambient
     // term and the light's as the ambient pass and the light's own pass would.
     // The material pass that writes the ambient term rounds the diffuse colour as the G-buffer's
     // RGBA8 target stores it, whatever P-buffer 0's format.
@@ -324,7 +324,8 @@ const std::vector<ShaderRow>& shader_rows() {
         // Behind the stencil test the in-shader rejections are redundant (the stencil marks surfaces
         // inside the volume) and harmful: a shader that may discard, in a pass that writes the
         // stencil (zeroing it for the next light), makes the GPU test the stencil after the shader
-        // instead of before it (the H200 ran the shader for 2.40x the ideal count with them).
+        // instead of before it, running the shader at pixels the stencil would reject
+        // (docs/gpu_frame.md, "Choices these costs decide").
         // Without them a pixel just outside the sphere adds att = 0.
         {"light_stencil", "light.vert", "light.frag", "light pass behind the stencil mask", uses_stencil,
          [](C c) { return with(light_defines(c, false), {"VOLUME"}); }},

@@ -60,8 +60,8 @@ double FrameTimer::end_frame(std::vector<double>& stage_ms) {
     if (open_ >= 0) end();
     // The frame ends when the GPU has finished it, waited for by glFinish as the wall-clock stages,
     // the forward renderer and the bench's floor wait. Waiting on the first unfinished query
-    // instead made the H200's frames 0.2-0.27 ms longer (2.38-2.49 against 2.17-2.28 ms at 1024
-    // and 4096 lights; docs/gpu.md): the time the CPU took to notice, not the GPU's.
+    // instead makes the frames longer by the time the CPU takes to notice, not the GPU's
+    // (docs/gpu_frame.md, "Choices these costs decide").
     if (!used_.empty()) glFinish();
     const double frame_ms = now_ms() - frame_t0_;
     for (auto& [slot, q] : used_) {  // finished: no wait

@@ -169,9 +169,9 @@ float predicted_threshold(int bits, int k) {
         float t = (float(k) + f) / 255.0f;  // as the probe's glColor4f got it
         if (bits > 0) t = std::floor(t * std::ldexp(1.0f, bits)) / std::ldexp(1.0f, bits);
         const double x = double(t) * 255.0;
-        // Round to nearest; an exact tie to even without truncation (llvmpipe), down after it (the
-        // H200: k 127, where floor(t x 4096) / 4096 x 255 is 127.5 exactly, turns up a grid step
-        // later, at f = 0.5625).
+        // Round to nearest; an exact tie to even without truncation (llvmpipe), down after it (at
+        // 12 bits, k 127, where floor(t x 4096) / 4096 x 255 is 127.5 exactly, turns up a grid step
+        // later; docs/gpu.md, "Images on a GPU").
         const double frac = x - std::floor(x);
         const bool up = frac > 0.5 || (frac == 0.5 && bits == 0 && std::fmod(std::floor(x), 2.0) == 1.0);
         if (std::floor(x) + (up ? 1 : 0) >= double(k + 1)) return f;

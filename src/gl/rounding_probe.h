@@ -46,7 +46,7 @@ float unorm8_round_offset(const Unorm8Rounding& r);
 // The conversion model that reproduces every measured threshold (to the sweep's step):
 //   0   round to nearest: byte = round(t * 255) (llvmpipe)
 //   n   t first truncated to n fractional bits, then rounded: byte = round(floor(t * 2^n) / 2^n * 255)
-//       (the H200: n = 12, from thresholds 0.5605 at k 0 down to 0.5265 at k 200)
+//       (n = 12 on the GPU of docs/gpu.md, "Images on a GPU", which shows its thresholds)
 //   -1  none of n = 8..16 fits but for at most 8 thresholds (or nothing was measured)
 // The thresholds each model predicts come from the same float arithmetic the probe's points had.
 int unorm8_truncate_bits(const Unorm8Rounding& r);

@@ -188,9 +188,9 @@ private:
     }
 
     // Triangles whose edges are very long against the camera's distance to them lose their
-    // edges and shading in the rasteriser's float clipping and interpolation (a 1e6 plane seen
-    // from 1 unit above is up to 178 LSB off on llvmpipe, 1e5 within 1 LSB): legal, so one
-    // warning, naming the first line that has such triangles, from the scene's camera.
+    // edges and shading in the rasteriser's float clipping and interpolation (docs/scene-format.md,
+    // "Precision warning", shows how far): legal, so one warning, naming the first line that has
+    // such triangles, from the scene's camera.
     void precision_warnings() {
         const glm::dvec3 eye(scene_.camera.pos);
         const double near_plane = scene_.camera.near_plane;
