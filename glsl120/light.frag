@@ -62,11 +62,11 @@ void main()
     // The pixel centre's view ray (Listing 19's corner rays, which are affine in window
     // coordinates, as a map of gl_FragCoord): what interpolating them across the drawn primitive
     // gives in exact arithmetic, but the same float result whatever draws the pixel. Interpolated
-    // across each light's rectangle, tile or mesh, the reconstructed points differed in their last
-    // bits between light geometries, and on the H200 the 8-bit rounding of ~20 lights a pixel
-    // turned that into 4 LSB between the geometries' images (1024-overlap). The texture
+    // across each light's rectangle, tile or mesh, the reconstructed points differ in their last
+    // bits between light geometries, and a GPU's 8-bit rounding of many lights a pixel turns that
+    // into LSB between the geometries' images (docs/gpu.md, "Images on a GPU"). The texture
     // coordinates may be interpolated: at a pixel centre they pick the same nearest texel either
-    // way, and on llvmpipe computing them too made quad's light passes ~5% slower.
+    // way, and computing them too costs llvmpipe (docs/light_loop_cpu.md).
 #if defined(VOLUME) || defined(BATCH)
     vec2 texcoord = gl_FragCoord.xy * uv_scale;
 #endif

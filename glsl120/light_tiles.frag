@@ -77,11 +77,10 @@ void main()
     bool any = false;
 #ifdef ID_VECS
     // Two slots a float, decoded once per pair: one iteration per light (decoding each slot in its
-    // own iteration) made the light stage 1.6x slower on llvmpipe (1024-overlap, 32 lights a pass).
-    // The pairs pass through q0..q3, shifted one float an iteration, so each is read from q0.x:
-    // indexing the varying array with the loop counter (ids[k / 4][k % 4]) cost llvmpipe an indexed
-    // load per iteration (the light stage 5-8% slower on 1024-overlap and 32-large). 65535 is an
-    // empty pair (hi = 255).
+    // own iteration) is far slower on llvmpipe. The pairs pass through q0..q3, shifted one float an
+    // iteration, so each is read from q0.x: indexing the varying array with the loop counter
+    // (ids[k / 4][k % 4]) costs llvmpipe an indexed load per iteration (docs/light_loop_cpu.md,
+    // "Smaller choices in the shaders"). 65535 is an empty pair (hi = 255).
     vec4 q0 = ids[0];
 #if ID_VECS > 1
     vec4 q1 = ids[1];
@@ -99,15 +98,13 @@ void main()
     vec4 q3 = vec4(65535.0);
 #endif
     // A discarded lane (the background) leaves the loop at once: llvmpipe (Mesa 22.3) runs a lane
-    // group on past a discard, so the loop went on until its last slot for groups no pixel of which
-    // is lit (every pixel discarded after its G-buffer reads: the light stage 25.5 ms on
-    // 1024-overlap at 640x360, 7.4 with the loop left; as built 25.0).
+    // group on past a discard, so the loop would go on until its last slot for groups no pixel of
+    // which is lit (docs/light_loop_cpu.md, "How llvmpipe runs a fragment shader").
     // The loop is a do-while whose test, at the end of an iteration, looks at the next pair: a CPU
     // rasteriser runs an `if` or a `break` by masking lanes, not by jumping, and leaves a loop only
     // at the end of an iteration, so a for loop's iteration that finds the empty pair still ran
-    // both shade() calls with no lane on (every list of an even length paid two wasted terms). The
-    // light stage 30.40 against 28.43 ms, lower in 5 of 6 alternations (llvmpipe, 32-large at
-    // 800x600); the same image.
+    // both shade() calls with no lane on (every list of an even length paid two wasted terms);
+    // docs/light_loop_cpu.md, "How llvmpipe runs a fragment shader".
     float pair = len <= 0.1 ? 65535.0 : floor(q0.x + 0.5);
     int k = 0;
     do {

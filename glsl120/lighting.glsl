@@ -5,11 +5,10 @@
 // light, not normalised, dist = length(l)); the ambient term is the fixed-function pass (Eq. 6).
 // v is view_vector(p), taken once per pixel by the caller: a shader that loops over lights
 // (forward.frag, light_tiles.frag) would otherwise normalise the same vector for every light
-// (llvmpipe does not hoist it: 1024-overlap's tiles light stage took 7% longer, forward single-pass
-// on 32-large 10%). VIEW_PER_LIGHT takes it from p per light instead, as before: with v passed
-// in, the NVIDIA compiler ran forward single-pass's general-light loop (32-large) 45% slower (H200
-// at 1080p: 3.96 against 5.74 ms; docs/gpu.md, run 10), so the forward renderer asks for it on
-// GPUs where its lights need the general shader.
+// (llvmpipe does not hoist it; docs/light_loop_cpu.md, "Smaller choices in the shaders").
+// VIEW_PER_LIGHT takes it from p per light instead: with v passed in, the NVIDIA compiler runs
+// forward single-pass's general-light loop slower (docs/gpu.md, "Other stages on a GPU"), so the
+// forward renderer asks for it on GPUs where its lights need the general shader.
 #if defined(LIGHT_POINT_ONLY) || defined(LIGHT_POINT_INVERSE)
 #define POINT_LIGHTS
 #endif
@@ -78,7 +77,7 @@ vec3 brdf(vec3 Scolor, vec3 l, float dist, vec3 p, vec3 v, vec3 n, vec3 Mdiff, v
 #else
     l = dist > 0.0 ? l / dist : n;
 #ifdef VIEW_PER_LIGHT
-    v = -normalize(p);  // here, after l, where it always was: first in brdf, 4.21-4.27 ms (run 10)
+    v = -normalize(p);  // here, after l: first in brdf it ran slower (docs/gpu/run10/)
 #endif
     vec3 hv = l + v;
     float hl = length(hv);
@@ -135,9 +134,9 @@ vec3 light_contribution(vec4 Lpos, vec4 Lcolor, vec4 Ldir, vec4 Lspot, vec4 Latt
     // With LIGHT_SPHERE_TEST the caller has left out every point with dot(l, l) >= radius^2
     // (light.frag, tile_light.glsl): the law's cut-off at the radius but for the square root's
     // last bit, so the cut-off's comparison and select go too. Without them, and with the
-    // polynomial in Horner's form (inverse_law, the general form's too), 32-large's quad
-    // light stage on llvmpipe went from 180 to 166 ms (medians of six alternations; the same
-    // image), where the law had cost about 10% over the linear law's division, subtraction and max.
+    // polynomial in Horner's form (inverse_law, the general form's too), the law costs little
+    // more than the linear law's division, subtraction and max (docs/light_loop_cpu.md, "Smaller
+    // choices in the shaders").
     vec3 l = Lpos.xyz - p;
     float dist = length(l);
     float f = inverse_law(Latt, dist);
@@ -147,8 +146,8 @@ vec3 light_contribution(vec4 Lpos, vec4 Lcolor, vec4 Ldir, vec4 Lspot, vec4 Latt
     return f * brdf(Lcolor.rgb, l, dist, p, v, n, Mdiff, Mspec, Mshi);
 #else
     // Selects, not branches: the type and law are uniform, but a software rasteriser pays for
-    // control flow; every factor is computed and the light's own one chosen (measured: branches
-    // made the default scene's light passes about 30% slower on llvmpipe).
+    // control flow; every factor is computed and the light's own one chosen
+    // (docs/light_loop_cpu.md, "Smaller choices in the shaders").
     bool directional = Lcolor.w > 1.5;
     vec3 l = directional ? -Ldir.xyz : Lpos.xyz - p;   // from p towards the light
     float dist = length(l);                            // 1 for a directional light

@@ -4,8 +4,8 @@
 // lights, light.frag's ambient fold). To nearest with an exact tie to the even byte
 // (QUANTIZE_TIES_EVEN, llvmpipe; floor(v + 0.5) alone took every tie up, and where a pixel's terms
 // held two even ties, 1024-overlap at 384x384, it was 2 LSB off quad); QUANTIZE_TRUNCATE 2^n where
-// the GL truncates to n bits first and rounds ties down (the H200: 4096.0); where no model fits,
-// floor(t x 255 + quantize_round), 1 - the median threshold.
+// the GL truncates to n bits first and rounds ties down (docs/gpu.md, "Images on a GPU"); where no
+// model fits, floor(t x 255 + quantize_round), 1 - the median threshold.
 #ifdef QUANTIZE_8BIT
 uniform float quantize_round;  // the fallback's offset where no model fits
 
@@ -13,14 +13,14 @@ uniform float quantize_round;  // the fallback's offset where no model fits
 vec3 quantize8_byte(vec3 t)
 {
 #ifdef QUANTIZE_TRUNCATE
-    // This GL's colour to 2^-n first, then to nearest with a tie down (the H200: 4096.0).
+    // This GL's colour to 2^-n first, then to nearest with a tie down.
     t = floor(t * QUANTIZE_TRUNCATE) / QUANTIZE_TRUNCATE;
     return ceil(t * 255.0 - 0.5);
 #elif defined(QUANTIZE_TIES_EVEN)
     // round(t x 255), a tie to even (llvmpipe), from h = t x 255 / 2 (exact halving), its floor m
     // and g = h - m (exact): 2m + [g > 1/4] + [g >= 3/4], a tie (g = 1/4 or 3/4) going to the even
-    // byte. floor(t x 255 + 0.5) less the tie's odd step (mod, equal) took 2.6 ms more of the tiles'
-    // light stage (llvmpipe, 32-large at 800x600: 23.09 against 20.51 ms).
+    // byte. Cheaper on llvmpipe than floor(t x 255 + 0.5) less the tie's odd step (mod, equal;
+    // docs/light_loop_cpu.md, "Smaller choices in the shaders").
     vec3 h = t * 127.5;
     vec3 m = floor(h);
     vec3 g = h - m;

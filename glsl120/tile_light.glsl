@@ -13,16 +13,16 @@ bool tile_light_term(vec4 lp, vec4 lc, vec4 ld, vec4 ls, vec4 la, vec3 pos, vec3
 #endif
     // The depth test only where the sphere test is off: a point outside the depth span is outside
     // the sphere too (|dz| > r gives dot(d, d) >= r * r, rounding being monotonic), and the span's
-    // test before the sphere's took 1-2% more of the stage (llvmpipe, 32-large at 800x600).
+    // test before the sphere's only adds work (docs/light_loop_cpu.md, "The tests in the shader").
 #if defined(LIGHT_DEPTH_TEST) && !defined(LIGHT_SPHERE_TEST)
     if (type < 1.5 && abs(pos.z - lp.z) > lp.w)
         return false;
 #endif
 #ifdef LIGHT_SPHERE_TEST
     // The vector from pos to the light, as light_contribution takes it (l = Lpos.xyz - p), so the
-    // compiler computes it and dot(l, l) once for both: the test's pos - light (its negation, the
-    // same squares) cost the tiles' light stage 0.2-1.5 ms more in 6 of 7 alternations (llvmpipe,
-    // 32-large at 800x600, about 20 ms).
+    // compiler computes it and dot(l, l) once for both, where the test's pos - light (its negation,
+    // the same squares) would be computed apart (docs/light_loop_cpu.md, "Smaller choices in the
+    // shaders").
     vec3 l = lp.xyz - pos;
     if (type < 1.5 && dot(l, l) >= lp.w * lp.w)
         return false;
