@@ -39,7 +39,8 @@ LightCostModel default_light_costs(bool software_rasterizer) {
         // priced less the ambient pass it replaces (handoff_ms).
         m.handoff_mpx_ms = 0.5, m.handoff_pass_mpx_ms = 4.6;
         m.handoff_ambient_mpx_ms = 9, m.ambient_mpx_ms = 5;
-        // The spans read back and reduced on the CPU (tile_spans.h), with the two passes before them.
+        // The spans read back and reduced on the CPU (tile_spans.h), with the two passes before
+        // them.
         m.spans_mpx_ms = 2;
         m.tile_pass_mpx_ms = 20, m.tile_light_mpx_ms = 13.5;
         // A path drawn at all: its programs and state, and on llvmpipe the scene it flushes (so a
@@ -47,9 +48,9 @@ LightCostModel default_light_costs(bool software_rasterizer) {
         m.path_ms = 0.4;
         m.shadow_mpx_ms = 13.5;  // estimated, not fitted: about a light term in the tiles loop
     } else {
-        // An NVIDIA GPU through EGL, each path forced (tests/gpu_bench.sh part auto; docs/light_cost.md,
-        // "A GPU"): batched quads cost the CPU almost nothing a light; the tiles' spans are a
-        // read-back the GPU drains for.
+        // An NVIDIA GPU through EGL, each path forced (tests/gpu_bench.sh part auto;
+        // docs/light_cost.md, "A GPU"): batched quads cost the CPU almost nothing a light; the
+        // tiles' spans are a read-back the GPU drains for.
         m.quad_draw_ms = 0.0001, m.quad_mpx_ms = 0.075;
         // Against the depth: quad_mpx_ms less the mean of what two light counts saved per Mpx; the
         // hand-off it needs is priced apart (handoff_mpx_ms).
