@@ -1069,7 +1069,7 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
         "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic", "light_invocations",
         "invocations_ratio", "light_evaluations", "evaluations_ratio", "ideal_source", "floor_fill_ms", "floor_light_ns",
         "floor_post_ms", "floor_output_ms", "floor_ms",
-        "floor_ratio", "light_passes", "auto_lights", "depth_copy_ms", "lights_ms", "lights_frames_ms", "max_lsb_vs_quad"};
+        "floor_ratio", "light_passes", "auto_lights", "depth_copy_ms", "lights_ms", "lights_frames_ms", "max_lsb_vs_quad", "frame"};
     std::vector<std::string> got;
     for (auto it = f.begin(); it != f.end(); ++it) got.push_back(it.key());
     EXPECT_EQ(got, keys);
@@ -1080,6 +1080,7 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     EXPECT_TRUE(f["max_lsb_analytic"].is_null());
     EXPECT_TRUE(f["goal_rounds_ms_median"].is_null());
     EXPECT_TRUE(f["goal_rounds_lights_ms_median"].is_null());
+    EXPECT_TRUE(f["frame"].is_null()) << "a forward row has no frame stats (FrameStatsJson tests the object)";
     EXPECT_EQ(f["passes"], 1);
     EXPECT_EQ(f["size"], nlohmann::ordered_json::array({64, 64}));
 
@@ -1268,17 +1269,17 @@ TEST(Bench, LightInvocationsCountWhatEntersTheShader) {
     all_off.scissor = false;
     all_off.skip.light_depth_test = all_off.skip.light_sphere_test = false;
     const RenderResult a = render_scene(s, n, n, all_off);
-    ASSERT_EQ(a.stats.lights_drawn, 1);
-    ASSERT_TRUE(a.stats.light_invocations.has_value()) << "this GL lacks ARB_pipeline_statistics_query";
-    ASSERT_TRUE(a.stats.counted_light_fragments().has_value());
-    EXPECT_EQ(*a.stats.counted_light_fragments(), n * n);
+    ASSERT_EQ(a.stats.lights.drawn, 1);
+    ASSERT_TRUE(a.stats.lights.invocations.has_value()) << "this GL lacks ARB_pipeline_statistics_query";
+    ASSERT_TRUE(a.stats.lights.counted_fragments().has_value());
+    EXPECT_EQ(*a.stats.lights.counted_fragments(), n * n);
     EXPECT_EQ(block_lanes({0, 0, n, n}, n, n), n * n + 16 * 16);
     const bool llvmpipe = a.renderer.find("llvmpipe") != std::string::npos;
     if (llvmpipe) {
-        EXPECT_EQ(*a.stats.light_invocations, n * n + 16 * 16);
+        EXPECT_EQ(*a.stats.lights.invocations, n * n + 16 * 16);
     } else {  // a GL that shades 2x2 quads or single pixels: between the pixels and the 4x4 lanes
-        EXPECT_GE(*a.stats.light_invocations, n * n);
-        EXPECT_LE(*a.stats.light_invocations, n * n + 16 * 16);
+        EXPECT_GE(*a.stats.lights.invocations, n * n);
+        EXPECT_LE(*a.stats.lights.invocations, n * n + 16 * 16);
     }
 
     ShaderOptions defaults;  // scissor on, every skip on, the tutorial's quad
@@ -1289,23 +1290,23 @@ TEST(Bench, LightInvocationsCountWhatEntersTheShader) {
                                         s.camera.near_plane, n, n);
     ASSERT_FALSE(r.empty());
     ASSERT_LT(r.area(), n * n / 4);  // a real rectangle, well inside the frame
-    EXPECT_EQ(b.stats.scissor_pixels, r.area());
-    ASSERT_TRUE(b.stats.light_invocations.has_value());
+    EXPECT_EQ(b.stats.lights.scissor_pixels, r.area());
+    ASSERT_TRUE(b.stats.lights.invocations.has_value());
     if (llvmpipe) {
-        EXPECT_EQ(*b.stats.light_invocations, block_lanes(r, n, n)) << r.x0 << " " << r.y0 << " " << r.x1 << " " << r.y1;
+        EXPECT_EQ(*b.stats.lights.invocations, block_lanes(r, n, n)) << r.x0 << " " << r.y0 << " " << r.x1 << " " << r.y1;
     }
-    EXPECT_GE(*b.stats.light_invocations, r.area());
-    EXPECT_GT(b.stats.light_fragments, 0);
-    EXPECT_LT(b.stats.light_fragments, r.area());  // the sphere test discarded some of them
+    EXPECT_GE(*b.stats.lights.invocations, r.area());
+    EXPECT_GT(b.stats.lights.fragments, 0);
+    EXPECT_LT(b.stats.lights.fragments, r.area());  // the sphere test discarded some of them
     std::printf("[ stats    ] rectangle %lld pixels, %lld invocations, %lld passed\n", r.area(),
-                *b.stats.light_invocations, b.stats.light_fragments);
+                *b.stats.lights.invocations, b.stats.lights.fragments);
 
     const RenderResult c = render_scene(s, n, n, defaults, {"no-pipeline-stats"});
-    EXPECT_FALSE(c.stats.light_invocations.has_value());
-    EXPECT_EQ(c.stats.counted_light_fragments(), b.stats.counted_light_fragments());
+    EXPECT_FALSE(c.stats.lights.invocations.has_value());
+    EXPECT_EQ(c.stats.lights.counted_fragments(), b.stats.lights.counted_fragments());
     const RenderResult d = render_scene(s, n, n, defaults, {"no-occlusion-query"});
-    EXPECT_FALSE(d.stats.counted_light_fragments().has_value());
-    EXPECT_EQ(d.stats.light_invocations, b.stats.light_invocations);
+    EXPECT_FALSE(d.stats.lights.counted_fragments().has_value());
+    EXPECT_EQ(d.stats.lights.invocations, b.stats.lights.invocations);
 }
 
 // One ideal count (ideal_fragments.h ideal_count) for `dsr bench`, `render --stats` and the

@@ -70,8 +70,8 @@ void check_every_combination(const Scene& s, const ShaderOptions& opts) {
         // packed codec and the copied depth (no-fbo) rebuild positions that differ in the last
         // bits, so a pixel whose surface point lies on a light's sphere to within float rounding
         // may fall on either side: at 640x480 one fragment in 194459 did. At most 1 in 10^5.
-        const long long tol = std::max(1LL, full.stats.light_fragments / 100000);
-        EXPECT_LE(std::llabs(r.stats.light_fragments - full.stats.light_fragments), tol) << label;
+        const long long tol = std::max(1LL, full.stats.lights.fragments / 100000);
+        EXPECT_LE(std::llabs(r.stats.lights.fragments - full.stats.lights.fragments), tol) << label;
         // Tolerance: the depth paths differ by rounding (1 LSB), the copy path by up to 3; the pow2
         // path's bloom add keeps to the content's edge texels (post_stage.cpp, draw_quad_clamped).
         EXPECT_LE(d.max_lsb(), 8.0) << label;

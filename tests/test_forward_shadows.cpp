@@ -90,8 +90,8 @@ TEST(ForwardShadows, MatchDeferredOnTheShadowScene) {
         const RenderResult def = render_scene(s, n, n, o, p.caps_off);
         for (ForwardMode m : {ForwardMode::single, ForwardMode::multi}) {
             const ForwardResult fwd = render_forward(s, n, n, forward_mode(m), false, p.caps_off);
-            EXPECT_EQ(fwd.stats.shadow_maps, def.stats.shadow_maps) << p.name;
-            EXPECT_EQ(fwd.stats.shadow_triangles, def.stats.shadow_triangles) << p.name;
+            EXPECT_EQ(fwd.stats.shadow_maps, def.stats.shadows.maps) << p.name;
+            EXPECT_EQ(fwd.stats.shadow_triangles, def.stats.shadows.triangles) << p.name;
             expect_close(std::string("forward_") + mode_name(m) + "_vs_deferred_shadow_scene" +
                              (p.caps_off.empty() ? "" : "_packed"),
                          m, s, n, o, p.caps_off, 3);

@@ -194,7 +194,7 @@ TEST_P(Forward, TransparentPaneBlendsAsItsOpacitySaysAndOpaqueSurfacesHideIt) {
     EXPECT_FALSE(q.paths.forward_stage) << "an opaque pane needs no forward stage";
     ASSERT_TRUE(t.paths.forward_stage);
     EXPECT_EQ(t.paths.depth_handoff, c.expect);
-    EXPECT_EQ(t.stats.transparent_objects, 1);
+    EXPECT_EQ(t.stats.forward.transparent_objects, 1);
     EXPECT_GT(t.stats.ms.forward, 0.0);
     const std::vector<char> pane = differs_grown(q.image, w.image);
     long long inside = 0, outside_off = 0, blend_off = 0;
@@ -245,7 +245,7 @@ TEST_P(Forward, OverlappingPanesBlendBackToFront) {
     const RenderResult f = render_scene(far_only, kN, kN, o, c.caps);
     const RenderResult n = render_scene(near_only, kN, kN, o, c.caps);
     const RenderResult t = render_scene(both, kN, kN, o, c.caps);
-    EXPECT_EQ(t.stats.transparent_objects, 2);
+    EXPECT_EQ(t.stats.forward.transparent_objects, 2);
     // A point inside both panes' interiors: the near pane's centre lies over the far pane.
     const glm::ivec2 p = pixel_of(base, near_at);
     for (int ch = 0; ch < 3; ++ch) {
@@ -274,7 +274,7 @@ TEST_P(Forward, LightMarkersShowInFrontOfSurfacesAndHideBehindThem) {
     const RenderResult a = render_scene(s, kN, kN, off, c.caps);
     const RenderResult b = render_scene(s, kN, kN, on, c.caps);
     EXPECT_TRUE(b.paths.forward_stage);
-    EXPECT_EQ(b.stats.light_markers, 2);
+    EXPECT_EQ(b.stats.forward.light_markers, 2);
     const glm::ivec2 ps = pixel_of(s, shown), ph = pixel_of(s, hidden);
     const int want[3] = {255, 64, 26};  // the light's colour, 8-bit
     for (int ch = 0; ch < 3; ++ch) {
@@ -309,7 +309,7 @@ TEST_P(Forward, BoxMarkersAreCubesOfTheirWorldSize) {
     on.show_lights = true;
     const RenderResult a = render_scene(s, kN, kN, off, c.caps);
     const RenderResult b = render_scene(s, kN, kN, on, c.caps);
-    EXPECT_EQ(b.stats.light_markers, 1);
+    EXPECT_EQ(b.stats.forward.light_markers, 1);
     const glm::ivec2 ps = pixel_of(s, shown);
     const int want[3] = {255, 64, 26};
     for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(lsb(b.image, ps.x, ps.y, ch), want[ch], 1) << "channel " << ch;
@@ -373,7 +373,7 @@ TEST(ForwardScene, EveryLightGeometryHandsOffAndBlendsTheSame) {
         const RenderResult r = render_scene(s, kN, kN, og);
         EXPECT_EQ(r.paths.light_geometry, g);
         EXPECT_EQ(r.paths.depth_handoff, g == LightGeometry::stencil ? DepthHandoff::pass : DepthHandoff::blit);
-        EXPECT_EQ(r.stats.transparent_objects, 1);
+        EXPECT_EQ(r.stats.forward.transparent_objects, 1);
         const ImageDiff d = compare_logged(std::string("forward_behind_") + light_geometry_name(g), r.image, q.image, 1.0 / 255);
         EXPECT_LE(d.max_lsb(), 1.0) << light_geometry_name(g);
     }

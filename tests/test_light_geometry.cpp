@@ -64,16 +64,16 @@ TEST(LightGeometry, AllGeometriesMatchQuadOnTheDefaultScene) {
     for (DepthPath d : {DepthPath::texture, DepthPath::packed}) {
         const std::string path = d == DepthPath::texture ? "texture" : "packed";
         const RenderResult quad = render_scene(s, W, H, with_geometry(LightGeometry::quad, d));
-        ASSERT_TRUE(quad.stats.light_invocations) << "needs ARB_pipeline_statistics_query";
+        ASSERT_TRUE(quad.stats.lights.invocations) << "needs ARB_pipeline_statistics_query";
         for (LightGeometry g : {LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles}) {
             const RenderResult r = render_scene(s, W, H, with_geometry(g, d));
             EXPECT_EQ(r.paths.light_geometry, g);
             expect_same(std::string("geometry_") + light_geometry_name(g) + "_" + path, r, quad);
-            EXPECT_GT(r.stats.light_fragments, 0);
-            EXPECT_EQ(r.stats.lights_drawn, quad.stats.lights_drawn);
+            EXPECT_GT(r.stats.lights.fragments, 0);
+            EXPECT_EQ(r.stats.lights.drawn, quad.stats.lights.drawn);
             std::printf("[ counts   ] %s %s: light_invocations %lld, light_fragments %lld, passes %d\n", path.c_str(),
-                        light_geometry_name(g), *r.stats.light_invocations, r.stats.light_fragments,
-                        r.stats.light_passes);
+                        light_geometry_name(g), *r.stats.lights.invocations, r.stats.lights.fragments,
+                        r.stats.lights.passes);
         }
     }
 }
@@ -86,11 +86,11 @@ TEST(LightGeometry, VolumesGoInBatches) {
     const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
     const RenderResult vol = render_scene(s, kW, kH, with_geometry(LightGeometry::volume));
     expect_same("volumes_in_batches", vol, quad);
-    const int meshes = vol.stats.lights_drawn - vol.stats.lights_as_quads;
-    std::printf("[ counts   ] 256 lights: %d drawn, %d as meshes, %d passes\n", vol.stats.lights_drawn, meshes,
-                vol.stats.light_passes);
+    const int meshes = vol.stats.lights.drawn - vol.stats.lights.as_quads;
+    std::printf("[ counts   ] 256 lights: %d drawn, %d as meshes, %d passes\n", vol.stats.lights.drawn, meshes,
+                vol.stats.lights.passes);
     EXPECT_GT(meshes, 50);
-    EXPECT_LE(vol.stats.light_passes, vol.stats.lights_as_quads + 4);
+    EXPECT_LE(vol.stats.lights.passes, vol.stats.lights.as_quads + 4);
 }
 
 // LearnOpenGL's 32 lights share their attenuation constants: the tiles draw their batch by the form
@@ -111,9 +111,9 @@ TEST(LightGeometry, TilesReadSharedAttenuationOnce) {
                                      (fetch == TileFetch::vertex ? "_vertex" : "_fragment");
             expect_same(name, tiles, quad);
             if (differ)
-                EXPECT_EQ(tiles.stats.att_shared_batches, 0) << name;
+                EXPECT_EQ(tiles.stats.tiles.att_shared_batches, 0) << name;
             else
-                EXPECT_GE(tiles.stats.att_shared_batches, 1) << name;
+                EXPECT_GE(tiles.stats.tiles.att_shared_batches, 1) << name;
         }
     }
 }
@@ -126,8 +126,8 @@ TEST(LightGeometry, TilesReadSharedAttenuationOnce) {
 TEST(LightGeometry, EvaluationsCountTheLightsEachFragmentShades) {
     const Scene s = with_generated_lights(default_scene(), 256);
     const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
-    ASSERT_TRUE(quad.stats.light_invocations && quad.stats.light_evaluations) << "needs ARB_pipeline_statistics_query";
-    EXPECT_EQ(*quad.stats.light_evaluations, *quad.stats.light_invocations);
+    ASSERT_TRUE(quad.stats.lights.invocations && quad.stats.lights.evaluations) << "needs ARB_pipeline_statistics_query";
+    EXPECT_EQ(*quad.stats.lights.evaluations, *quad.stats.lights.invocations);
     for (TileFetch fetch : {TileFetch::vertex, TileFetch::fragment}) {
         ShaderOptions o = with_geometry(LightGeometry::tiles);
         o.tile_fetch = fetch;
@@ -136,15 +136,15 @@ TEST(LightGeometry, EvaluationsCountTheLightsEachFragmentShades) {
         const long long ts = tiles.paths.tile_size;
         std::printf("[ counts   ] tiles (%s fetch): %lld invocations, %lld evaluations, %lld tile-light pairs x "
                     "%lld px\n",
-                    fetch == TileFetch::vertex ? "vertex" : "fragment", *tiles.stats.light_invocations,
-                    *tiles.stats.light_evaluations, tiles.stats.tile_light_pairs, ts * ts);
-        EXPECT_GT(tiles.stats.tile_light_pairs, tiles.stats.light_passes);  // lists longer than one light
-        EXPECT_EQ(*tiles.stats.light_evaluations, tiles.stats.tile_light_pairs * ts * ts);
+                    fetch == TileFetch::vertex ? "vertex" : "fragment", *tiles.stats.lights.invocations,
+                    *tiles.stats.lights.evaluations, tiles.stats.tiles.light_pairs, ts * ts);
+        EXPECT_GT(tiles.stats.tiles.light_pairs, tiles.stats.lights.passes);  // lists longer than one light
+        EXPECT_EQ(*tiles.stats.lights.evaluations, tiles.stats.tiles.light_pairs * ts * ts);
     }
     const Scene demo = large_lights_scene(32);
     const RenderResult screen = render_scene(demo, kW, kH, with_geometry(LightGeometry::screen));
-    ASSERT_EQ(screen.stats.light_passes, 1);  // 32 lights: one batch
-    EXPECT_EQ(*screen.stats.light_evaluations, *screen.stats.light_invocations * screen.stats.lights_drawn);
+    ASSERT_EQ(screen.stats.lights.passes, 1);  // 32 lights: one batch
+    EXPECT_EQ(*screen.stats.lights.evaluations, *screen.stats.lights.invocations * screen.stats.lights.drawn);
 }
 
 // The batch's buffers (copies of the sphere's mesh, about 310 KB at a batch of 128) are built on
@@ -172,7 +172,7 @@ TEST(LightGeometry, VolumeBatchBuildsItsBuffersOnFirstDraw) {
     EXPECT_FALSE(batch.uploaded());  // nothing to draw: still nothing built
     batch.draw(f, lights, q, stats);
     EXPECT_TRUE(batch.uploaded());
-    EXPECT_EQ(stats.light_passes, 1);
+    EXPECT_EQ(stats.lights.passes, 1);
 }
 
 // What reaches the light shader's pixels falls from quad (the scissor rectangle) to volume (the
@@ -193,21 +193,21 @@ TEST(LightGeometry, InvocationsFallFromQuadToStencil) {
     const RenderResult st = render_scene(s, kW, kH, no_tests(LightGeometry::stencil));
     // The ideal: the same frame with the sphere test on passes exactly the points inside a sphere.
     const RenderResult ideal = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
-    const long long n_ideal = ideal.stats.light_fragments;
+    const long long n_ideal = ideal.stats.lights.fragments;
     std::printf("[ counts   ] samples through, tests off: quad %lld, volume %lld, stencil %lld; inside: %lld\n",
-                quad.stats.light_fragments, vol.stats.light_fragments, st.stats.light_fragments, n_ideal);
-    EXPECT_EQ(quad.stats.light_fragments, quad.stats.scissor_pixels);
-    EXPECT_LT(vol.stats.light_fragments, quad.stats.light_fragments * 3 / 4);
-    EXPECT_LT(st.stats.light_fragments, vol.stats.light_fragments);
-    EXPECT_GE(st.stats.light_fragments, n_ideal);
+                quad.stats.lights.fragments, vol.stats.lights.fragments, st.stats.lights.fragments, n_ideal);
+    EXPECT_EQ(quad.stats.lights.fragments, quad.stats.lights.scissor_pixels);
+    EXPECT_LT(vol.stats.lights.fragments, quad.stats.lights.fragments * 3 / 4);
+    EXPECT_LT(st.stats.lights.fragments, vol.stats.lights.fragments);
+    EXPECT_GE(st.stats.lights.fragments, n_ideal);
     // The stencil marks the points inside the mesh, which is a little larger than the sphere
     // (12 segments: 1.05x at 256x256); the quad's rectangles let through 2.6x.
-    EXPECT_LE(st.stats.light_fragments, n_ideal + n_ideal / 10);
-    ASSERT_TRUE(quad.stats.light_invocations && st.stats.light_invocations);
-    const long long iq = *quad.stats.light_invocations, is = *st.stats.light_invocations;
-    const bool per_block = iq % 16 == 0 && is % 16 == 0 && *vol.stats.light_invocations % 16 == 0;
+    EXPECT_LE(st.stats.lights.fragments, n_ideal + n_ideal / 10);
+    ASSERT_TRUE(quad.stats.lights.invocations && st.stats.lights.invocations);
+    const long long iq = *quad.stats.lights.invocations, is = *st.stats.lights.invocations;
+    const bool per_block = iq % 16 == 0 && is % 16 == 0 && *vol.stats.lights.invocations % 16 == 0;
     std::printf("[ counts   ] light_invocations: quad %lld, volume %lld, stencil %lld%s\n", iq,
-                *vol.stats.light_invocations, is, per_block ? " (4x4-block counter: not asserted)" : "");
+                *vol.stats.lights.invocations, is, per_block ? " (4x4-block counter: not asserted)" : "");
     if (!per_block) {
         EXPECT_LT(is, iq);
     }
@@ -217,11 +217,11 @@ TEST(LightGeometry, CameraInsideALightVolumeIsLit) {
     const Scene s = camera_inside_scene();
     const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
     // The light is really around the camera: its scissor is the whole viewport.
-    EXPECT_EQ(quad.stats.scissor_pixels >= (long long)kW * kH, true);
+    EXPECT_EQ(quad.stats.lights.scissor_pixels >= (long long)kW * kH, true);
     for (LightGeometry g : {LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles}) {
         const RenderResult r = render_scene(s, kW, kH, with_geometry(g));
         expect_same(std::string("inside_") + light_geometry_name(g), r, quad);
-        EXPECT_GT(r.stats.light_fragments, (long long)kW * kH / 4) << light_geometry_name(g);
+        EXPECT_GT(r.stats.lights.fragments, (long long)kW * kH / 4) << light_geometry_name(g);
     }
     // Lit at all: brighter than the same view with no lights.
     Scene dark = s;
@@ -284,7 +284,7 @@ TEST(LightGeometry, AllGeometriesMatchQuadWithSpotAndDirectionalLights) {
         const RenderResult r = render_scene(s, kW, kH, unfolded(g));
         expect_same(std::string("lights_") + light_geometry_name(g), r, quad);
         if (g != LightGeometry::tiles) {
-            EXPECT_GT(r.stats.lights_as_quads, 0) << "the directional light: a full-screen quad";
+            EXPECT_GT(r.stats.lights.as_quads, 0) << "the directional light: a full-screen quad";
         }
     }
 }
@@ -314,7 +314,7 @@ TEST(LightGeometry, TilesOfOneLightPerPassMatchQuad) {
         expect_same("tiles_16x8_" + name, eight, quad);
         // One draw a layer; the vertex fetch draws a layer's tiles by their count of lights.
         if (fetch == TileFetch::fragment) {
-            EXPECT_LT(eight.stats.light_passes, one.stats.light_passes);
+            EXPECT_LT(eight.stats.lights.passes, one.stats.lights.passes);
         }
     }
 }
@@ -360,14 +360,14 @@ TEST(LightGeometry, TilesVertexFetchMatchesQuad) {
         ASSERT_TRUE(r.paths.tile_fetch_vertex) << k.name;
         expect_same("tiles_vertex_" + k.name, r, quad);
         if (k.fetch == Fetch::no_vertex)
-            EXPECT_EQ(r.stats.tile_vertex_batches, 0) << k.name;
+            EXPECT_EQ(r.stats.tiles.vertex_batches, 0) << k.name;
         else
-            EXPECT_GE(r.stats.tile_vertex_batches, 1) << k.name;
+            EXPECT_GE(r.stats.tiles.vertex_batches, 1) << k.name;
         if (k.fetch == Fetch::both) {
             // The lights a batch holds (ShaderConfig::tile_batch), so the frame's batch count.
             auto ctx = create_context(ContextDesc{"osmesa", 64, 64});
             const int batch = shader_config(probe_caps(), o).tile_batch;
-            EXPECT_LT(r.stats.tile_vertex_batches, (r.stats.lights_drawn + batch - 1) / batch) << k.name;
+            EXPECT_LT(r.stats.tiles.vertex_batches, (r.stats.lights.drawn + batch - 1) / batch) << k.name;
         }
     }
 }
@@ -404,9 +404,9 @@ TEST(LightGeometry, TilesOverSeveralBatchesMatchQuad) {
     const RenderResult quad = render_scene(s, kW, kH, with_geometry(LightGeometry::quad));
     const RenderResult tiles = render_scene(s, kW, kH, with_geometry(LightGeometry::tiles));
     expect_same("tiles_512", tiles, quad);
-    ASSERT_GT(tiles.stats.lights_drawn, 128);  // more than one batch
-    EXPECT_GT(tiles.stats.tile_light_pairs, 0);
-    EXPECT_LT(tiles.stats.light_passes, quad.stats.light_passes / 4);
+    ASSERT_GT(tiles.stats.lights.drawn, 128);  // more than one batch
+    EXPECT_GT(tiles.stats.tiles.light_pairs, 0);
+    EXPECT_LT(tiles.stats.lights.passes, quad.stats.lights.passes / 4);
     // The groups plan: one draw per tile_lights lights, each over the union of its lights' tiles; with depth
     // culling, lights that meet no tile's surfaces take no place in a group.
     ShaderOptions g = with_geometry(LightGeometry::tiles);
@@ -414,17 +414,17 @@ TEST(LightGeometry, TilesOverSeveralBatchesMatchQuad) {
     g.tile_depth = false;
     const RenderResult groups = render_scene(s, kW, kH, g);
     expect_same("tiles_groups_512", groups, quad);
-    EXPECT_FALSE(groups.stats.tile_depth);
+    EXPECT_FALSE(groups.stats.tiles.depth);
     const int per_pass = groups.paths.tile_lights;  // auto, resolved for this GL
     // (less a light over the whole screen that went with the ambient pass folded into it, a pass of its own)
-    const int grouped = groups.stats.lights_drawn - int(groups.stats.ambient_folded);
-    EXPECT_EQ(groups.stats.light_passes - int(groups.stats.ambient_folded), (grouped + per_pass - 1) / per_pass);
+    const int grouped = groups.stats.lights.drawn - int(groups.stats.passes.ambient_folded());
+    EXPECT_EQ(groups.stats.lights.passes - int(groups.stats.passes.ambient_folded()), (grouped + per_pass - 1) / per_pass);
     g.tile_depth = true;
     const RenderResult culled = render_scene(s, kW, kH, g);
     expect_same("tiles_groups_depth_512", culled, quad);
-    ASSERT_TRUE(culled.stats.tile_depth);
-    EXPECT_LE(culled.stats.light_passes, groups.stats.light_passes);
-    EXPECT_LT(culled.stats.tile_light_pairs, groups.stats.tile_light_pairs);
+    ASSERT_TRUE(culled.stats.tiles.depth);
+    EXPECT_LE(culled.stats.lights.passes, groups.stats.lights.passes);
+    EXPECT_LT(culled.stats.tiles.light_pairs, groups.stats.tiles.light_pairs);
 }
 
 // The tiles shader rounds each light's term as the GL rounds a pass's colour into RGBA8, exact
@@ -457,10 +457,10 @@ TEST(LightGeometry, TilesDepthCullingOnThePositionPaths) {
         const RenderResult all = render_scene(s, kW, kH, o);
         o.tile_depth = true;
         const RenderResult culled = render_scene(s, kW, kH, o);
-        ASSERT_TRUE(culled.stats.tile_depth) << path;
+        ASSERT_TRUE(culled.stats.tiles.depth) << path;
         expect_same("tiles_depth_" + path, culled, quad);
         expect_same("tiles_nodepth_" + path, all, quad);
-        EXPECT_LT(culled.stats.tile_light_pairs, all.stats.tile_light_pairs) << path;
+        EXPECT_LT(culled.stats.tiles.light_pairs, all.stats.tiles.light_pairs) << path;
     }
 }
 
@@ -496,15 +496,15 @@ TEST(LightGeometry, ScreenIsQuadWithinAFewLsb) {
         EXPECT_EQ(screen.paths.light_geometry, LightGeometry::screen);
         const ImageDiff d = compare_logged(c.name, screen.image, quad.image, c.max_lsb / 255.0);
         std::printf("[ screen   ] %s: %d lights, %d draws, max %.0f LSB, mean %.4f LSB\n", c.name,
-                    screen.stats.lights_drawn, screen.stats.light_passes, d.max_lsb(), d.mean_lsb());
+                    screen.stats.lights.drawn, screen.stats.lights.passes, d.max_lsb(), d.mean_lsb());
         EXPECT_LE(d.max_lsb() - 1e-3, c.max_lsb) << c.name;
         EXPECT_LT(d.mean_lsb(), c.mean_lsb) << c.name;
-        EXPECT_EQ(screen.stats.lights_drawn, quad.stats.lights_drawn) << c.name;
-        EXPECT_GE(screen.stats.light_passes, 1);
-        EXPECT_LE(screen.stats.light_passes, (screen.stats.lights_drawn + 127) / 128 + 1) << c.name;
-        EXPECT_EQ(screen.stats.light_fragments, (long long)screen.stats.light_passes * kW * kH) << c.name;
+        EXPECT_EQ(screen.stats.lights.drawn, quad.stats.lights.drawn) << c.name;
+        EXPECT_GE(screen.stats.lights.passes, 1);
+        EXPECT_LE(screen.stats.lights.passes, (screen.stats.lights.drawn + 127) / 128 + 1) << c.name;
+        EXPECT_EQ(screen.stats.lights.fragments, (long long)screen.stats.lights.passes * kW * kH) << c.name;
         const bool shared = std::string(c.name) == "screen_large";
-        EXPECT_EQ(screen.stats.att_shared_batches, shared ? screen.stats.light_passes : 0) << c.name;
+        EXPECT_EQ(screen.stats.tiles.att_shared_batches, shared ? screen.stats.lights.passes : 0) << c.name;
     }
 }
 
@@ -527,15 +527,15 @@ TEST(LightGeometry, AutoIsQuadToTheByteWhateverItChooses) {
             const RenderResult quad = render_scene(c.scene, kW, kH, with_geometry(LightGeometry::quad));
             const RenderResult a = render_scene(c.scene, kW, kH, auto_with_scales(scale));
             expect_same(std::string("auto_") + c.name + (*scale ? std::string("_") + scale : ""), a, quad);
-            ASSERT_TRUE(a.stats.auto_geometry);
+            ASSERT_TRUE(a.stats.auto_geometry.on);
             // (a light over the whole screen may have gone with the ambient pass folded into it)
-            EXPECT_EQ(a.stats.auto_lights[0] + a.stats.auto_lights[1] + a.stats.auto_lights[2] + int(a.stats.ambient_folded),
-                      a.stats.lights_drawn)
+            EXPECT_EQ(a.stats.auto_geometry.lights[at(LightPath::quad)] + a.stats.auto_geometry.lights[at(LightPath::volume)] + a.stats.auto_geometry.lights[at(LightPath::tiles)] + int(a.stats.passes.ambient_folded()),
+                      a.stats.lights.drawn)
                 << c.name << " " << scale;
-            for (int p = 0; p < 3; ++p) used[p] += a.stats.auto_lights[p];
+            for (int p = 0; p < 3; ++p) used[p] += a.stats.auto_geometry.lights[p];
             std::printf("[ auto     ] %s, scales '%s': quad %d, volume %d, tiles %d of %d lights, %d passes\n", c.name,
-                        scale, a.stats.auto_lights[0], a.stats.auto_lights[1], a.stats.auto_lights[2],
-                        a.stats.lights_drawn, a.stats.light_passes);
+                        scale, a.stats.auto_geometry.lights[at(LightPath::quad)], a.stats.auto_geometry.lights[at(LightPath::volume)], a.stats.auto_geometry.lights[at(LightPath::tiles)],
+                        a.stats.lights.drawn, a.stats.lights.passes);
         }
     }
     for (int p = 0; p < 3; ++p) EXPECT_GT(used[p], 0) << "path " << p << " never taken";
@@ -558,15 +558,15 @@ TEST(LightGeometry, AutoPricesTheHandoffAsTheFrameDrawsIt) {
     ASSERT_GT(std::abs(pass - net), 1e-3);
     ShaderOptions a = with_geometry(LightGeometry::automatic), q = with_geometry(LightGeometry::quad);
     const Scene s = default_scene();
-    EXPECT_DOUBLE_EQ(render_scene(s, kW, kH, a).stats.auto_handoff_ms, blit);
-    EXPECT_DOUBLE_EQ(render_scene(s, kW, kH, a, {"no-framebuffer-blit"}).stats.auto_handoff_ms, pass);
+    EXPECT_DOUBLE_EQ(render_scene(s, kW, kH, a).stats.auto_geometry.handoff_ms, blit);
+    EXPECT_DOUBLE_EQ(render_scene(s, kW, kH, a, {"no-framebuffer-blit"}).stats.auto_geometry.handoff_ms, pass);
     a.depth_handoff = q.depth_handoff = DepthHandoff::pass;
-    EXPECT_DOUBLE_EQ(render_scene(s, kW, kH, a).stats.auto_handoff_ms, pass);
+    EXPECT_DOUBLE_EQ(render_scene(s, kW, kH, a).stats.auto_geometry.handoff_ms, pass);
     a.skip.ambient_target = q.skip.ambient_target = false;
     const RenderResult r = render_scene(s, kW, kH, a);
-    EXPECT_DOUBLE_EQ(r.stats.auto_handoff_ms, net);
+    EXPECT_DOUBLE_EQ(r.stats.auto_geometry.handoff_ms, net);
     expect_same("auto_handoff_writes_ambient", r, render_scene(s, kW, kH, q));
-    EXPECT_DOUBLE_EQ(render_scene(with_directional(s), kW, kH, a).stats.auto_handoff_ms, pass);
+    EXPECT_DOUBLE_EQ(render_scene(with_directional(s), kW, kH, a).stats.auto_geometry.handoff_ms, pass);
 }
 
 // auto's quads drawn against the handed-off depth (LightQuadBatch scene_depth) light the pixels
@@ -581,10 +581,10 @@ TEST(LightGeometry, AutoQuadsAgainstTheDepthOnEveryDepthPath) {
             const RenderResult a = render_scene(s, kW, kH, auto_with_scales("1,1000,1000", d), off);
             const std::string name = std::string("auto_quads_depth_") + depth_path_name(d) + (blit ? "" : "_copy");
             expect_same(name, a, quad);
-            EXPECT_EQ(a.stats.auto_lights[0], a.stats.lights_drawn) << name;
-            EXPECT_GT(a.stats.lights_drawn, 50) << name;
+            EXPECT_EQ(a.stats.auto_geometry.lights[at(LightPath::quad)], a.stats.lights.drawn) << name;
+            EXPECT_GT(a.stats.lights.drawn, 50) << name;
             EXPECT_GT(a.stats.ms.depth_copy, 0) << name << ": no hand-off, so the quads were not drawn against the depth";
-            EXPECT_TRUE(a.stats.auto_quad_depth) << name;
+            EXPECT_TRUE(a.stats.auto_geometry.quad_depth) << name;
         }
     // With the shaders' depth test off (--no-skip light-depth-test) a quad lights what its shader
     // finds behind the light too, so GL must not reject it: no test, no hand-off, quad's image.
@@ -592,7 +592,7 @@ TEST(LightGeometry, AutoQuadsAgainstTheDepthOnEveryDepthPath) {
     q.skip.light_depth_test = a.skip.light_depth_test = false;
     const RenderResult quad = render_scene(s, kW, kH, q), untested = render_scene(s, kW, kH, a);
     expect_same("auto_quads_no_light_depth_test", untested, quad);
-    EXPECT_FALSE(untested.stats.auto_quad_depth);
+    EXPECT_FALSE(untested.stats.auto_geometry.quad_depth);
     EXPECT_EQ(untested.stats.ms.depth_copy, 0);
 }
 
@@ -616,7 +616,7 @@ std::vector<Image> auto_frames_against_quad(const std::vector<Scene>& frames, co
     std::vector<Image> images;
     for (size_t frame = 0; frame < frames.size(); ++frame) {
         const FrameStats st = ds.render(frames[frame], kW, kH);
-        EXPECT_TRUE(st.auto_geometry) << name << " frame " << frame;
+        EXPECT_TRUE(st.auto_geometry.on) << name << " frame " << frame;
         check(int(frame), st);
         RenderResult r;
         r.stats = st;
@@ -635,11 +635,11 @@ TEST(LightGeometry, AutoKeepsAnAllTilesChoiceUnpriced) {
     long long pairs = -1;
     const std::vector<Scene> frames(10, bench_scene(default_scene(), LightSpec{1024, LightSet::overlap}));
     auto_frames_against_quad(frames, "1000,1000,1", "auto_kept_frame", [&](int frame, const FrameStats& st) {
-        EXPECT_EQ(st.auto_lights[2] + int(st.ambient_folded), st.lights_drawn) << "frame " << frame;
-        EXPECT_TRUE(st.auto_spans) << "frame " << frame;
-        if (pairs < 0) pairs = st.tile_light_pairs;
-        EXPECT_EQ(st.tile_light_pairs, pairs) << "frame " << frame;
-        EXPECT_EQ(st.auto_kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
+        EXPECT_EQ(st.auto_geometry.lights[at(LightPath::tiles)] + int(st.passes.ambient_folded()), st.lights.drawn) << "frame " << frame;
+        EXPECT_TRUE(st.auto_geometry.spans) << "frame " << frame;
+        if (pairs < 0) pairs = st.tiles.light_pairs;
+        EXPECT_EQ(st.tiles.light_pairs, pairs) << "frame " << frame;
+        EXPECT_EQ(st.auto_geometry.kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
     });
 }
 
@@ -651,14 +651,14 @@ TEST(LightGeometry, AutoKeepsAnAllQuadsChoiceUnpriced) {
     bool depth = false;
     const std::vector<Scene> frames(10, bench_scene(default_scene(), LightSpec{256, LightSet::spread}));
     auto_frames_against_quad(frames, "1,1000,1000", "auto_kept_quads_frame", [&](int frame, const FrameStats& st) {
-        EXPECT_GT(st.lights_drawn, 50) << "frame " << frame;
-        EXPECT_EQ(st.auto_lights[0] + int(st.ambient_folded), st.lights_drawn) << "frame " << frame;
+        EXPECT_GT(st.lights.drawn, 50) << "frame " << frame;
+        EXPECT_EQ(st.auto_geometry.lights[at(LightPath::quad)] + int(st.passes.ambient_folded()), st.lights.drawn) << "frame " << frame;
         if (frame % 8) {
-            EXPECT_FALSE(st.auto_spans) << "frame " << frame << ": a kept quads frame measures no spans";
+            EXPECT_FALSE(st.auto_geometry.spans) << "frame " << frame << ": a kept quads frame measures no spans";
         }
-        EXPECT_EQ(st.auto_kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
-        if (frame == 0) depth = st.auto_quad_depth;
-        EXPECT_EQ(st.auto_quad_depth, depth) << "frame " << frame << ": the priced frame's choice of the depth kept";
+        EXPECT_EQ(st.auto_geometry.kept, frame % 8 != 0) << "frame " << frame << ": one frame in 8 priced";
+        if (frame == 0) depth = st.auto_geometry.quad_depth;
+        EXPECT_EQ(st.auto_geometry.quad_depth, depth) << "frame " << frame << ": the priced frame's choice of the depth kept";
         EXPECT_EQ(st.ms.depth_copy > 0, depth) << "frame " << frame << ": the hand-off where the quads test the depth";
     });
 }
@@ -689,9 +689,9 @@ TEST(LightGeometry, AutoKeptChoicesFollowAMovingCamera) {
         }
         int kept = 0;
         const std::vector<Image> quad = auto_frames_against_quad(frames, c.scales, name, [&](int frame, const FrameStats& st) {
-            kept += st.auto_kept;
-            if (st.auto_kept) {
-                EXPECT_EQ(st.auto_lights[c.path] + int(st.ambient_folded), st.lights_drawn) << name << " frame " << frame;
+            kept += st.auto_geometry.kept;
+            if (st.auto_geometry.kept) {
+                EXPECT_EQ(st.auto_geometry.lights[c.path] + int(st.passes.ambient_folded()), st.lights.drawn) << name << " frame " << frame;
             }
         });
         EXPECT_NE(quad.front().rgba, quad.back().rgba) << name << ": the camera did not move the image";
@@ -710,17 +710,17 @@ TEST(LightGeometry, AutoExploresAPathItHasNotMeasured) {
     int explored[3] = {0, 0, 0};
     FrameStats last;
     auto_frames_against_quad(frames, "", "auto_explore_frame", [&](int frame, const FrameStats& st) {
-        if (st.auto_explored >= 0) {
-            ++explored[st.auto_explored];
-            EXPECT_GT(st.auto_lights[st.auto_explored], 0) << "frame " << frame << ": explored a path it did not draw";
+        if (st.auto_geometry.explored) {
+            ++explored[at(*st.auto_geometry.explored)];
+            EXPECT_GT(st.auto_geometry.lights[at(*st.auto_geometry.explored)], 0) << "frame " << frame << ": explored a path it did not draw";
         }
         last = st;
     });
     std::printf("[ explore  ] frames exploring quad %d, volume %d, tiles %d; scales %.3f %.3f %.3f\n", explored[0],
-                explored[1], explored[2], last.auto_scale[0], last.auto_scale[1], last.auto_scale[2]);
+                explored[1], explored[2], last.auto_geometry.scale[at(LightPath::quad)], last.auto_geometry.scale[at(LightPath::volume)], last.auto_geometry.scale[at(LightPath::tiles)]);
     EXPECT_GE(explored[2], 2) << "the tiles were not tried in two frames at least (a compile, a timed draw)";
     for (int p = 0; p < 3; ++p) EXPECT_LE(explored[p], 4) << "path " << p << " explored past its frames";
-    EXPECT_NE(last.auto_scale[2], 1.0) << "the tiles were tried but never measured";
+    EXPECT_NE(last.auto_geometry.scale[at(LightPath::tiles)], 1.0) << "the tiles were tried but never measured";
 }
 
 // The calibration (light_cost.h LightCostCalibration) reaches every path a frame draws and the
@@ -741,10 +741,10 @@ TEST(LightGeometry, AutoCalibratesEveryPathItDraws) {
         ds.set_scene(s);
         FrameStats st;
         for (int frame = 0; frame < 12; ++frame) st = ds.render(s, kSize, kSize);
-        ASSERT_GT(st.auto_lights[0], 0);
-        ASSERT_GT(st.auto_lights[2], 0) << "the case needs both paths drawn";
-        EXPECT_NE(st.auto_scale[0], 1.0) << "the quad path, drawn after the tiles, was never timed";
-        std::printf("[ calib    ] quad after tiles: quad scale %.3f\n", st.auto_scale[0]);
+        ASSERT_GT(st.auto_geometry.lights[at(LightPath::quad)], 0);
+        ASSERT_GT(st.auto_geometry.lights[at(LightPath::tiles)], 0) << "the case needs both paths drawn";
+        EXPECT_NE(st.auto_geometry.scale[at(LightPath::quad)], 1.0) << "the quad path, drawn after the tiles, was never timed";
+        std::printf("[ calib    ] quad after tiles: quad scale %.3f\n", st.auto_geometry.scale[at(LightPath::quad)]);
     }
     // 1024-overlap, every light by the tiles: one priced frame in eight, the rest kept; a kept frame
     // is timed and predicted anew from the priced frame's prices at the current scale.
@@ -754,11 +754,11 @@ TEST(LightGeometry, AutoCalibratesEveryPathItDraws) {
         ds.set_scene(s);
         std::vector<FrameStats> st;
         for (int frame = 0; frame < 8; ++frame) st.push_back(ds.render(s, kW, kH));
-        ASSERT_EQ(st[0].auto_lights[2], st[0].lights_drawn - int(st[0].ambient_folded));
-        EXPECT_NE(st[7].auto_scale[2], 1.0) << "no kept frame was timed";
-        EXPECT_NE(st[7].auto_predicted_ms, st[0].auto_predicted_ms) << "a kept frame reported the priced frame's prediction";
-        std::printf("[ calib    ] tiles kept: scale %.3f, predicted %.2f ms (priced frame %.2f)\n", st[7].auto_scale[2],
-                    st[7].auto_predicted_ms, st[0].auto_predicted_ms);
+        ASSERT_EQ(st[0].auto_geometry.lights[at(LightPath::tiles)], st[0].lights.drawn - int(st[0].passes.ambient_folded()));
+        EXPECT_NE(st[7].auto_geometry.scale[at(LightPath::tiles)], 1.0) << "no kept frame was timed";
+        EXPECT_NE(st[7].auto_geometry.predicted_ms, st[0].auto_geometry.predicted_ms) << "a kept frame reported the priced frame's prediction";
+        std::printf("[ calib    ] tiles kept: scale %.3f, predicted %.2f ms (priced frame %.2f)\n", st[7].auto_geometry.scale[at(LightPath::tiles)],
+                    st[7].auto_geometry.predicted_ms, st[0].auto_geometry.predicted_ms);
     }
 }
 
@@ -789,19 +789,19 @@ TEST(LightGeometry, AutoPricesTheTilesAgainOnceADearerPathIsMeasured) {
     int first_volumes = -1;  // the first frame that chose volumes without exploring them
     for (int f = 0; f < kFrames; ++f) {
         const FrameStats& x = st[size_t(f)];
-        paths += std::to_string(x.auto_lights[0]) + "/" + std::to_string(x.auto_lights[1]) + "/" +
-                 std::to_string(x.auto_lights[2]) + (x.auto_explored >= 0 ? "e" : "") + (x.auto_spans ? "s " : " ");
-        if (first_volumes < 0 && x.auto_explored < 0 && x.auto_lights[1] > 0) first_volumes = f;
+        paths += std::to_string(x.auto_geometry.lights[at(LightPath::quad)]) + "/" + std::to_string(x.auto_geometry.lights[at(LightPath::volume)]) + "/" +
+                 std::to_string(x.auto_geometry.lights[at(LightPath::tiles)]) + (x.auto_geometry.explored ? "e" : "") + (x.auto_geometry.spans ? "s " : " ");
+        if (first_volumes < 0 && !x.auto_geometry.explored && x.auto_geometry.lights[at(LightPath::volume)] > 0) first_volumes = f;
     }
     std::printf("[ tiles    ] quad/volume/tiles by frame (e explored, s spans): %s; scales %.2f %.2f %.2f\n",
-                paths.c_str(), st.back().auto_scale[0], st.back().auto_scale[1], st.back().auto_scale[2]);
+                paths.c_str(), st.back().auto_geometry.scale[at(LightPath::quad)], st.back().auto_geometry.scale[at(LightPath::volume)], st.back().auto_geometry.scale[at(LightPath::tiles)]);
     for (int f = first_volumes + 1; first_volumes >= 0 && f <= first_volumes + 2 && f < kFrames; ++f) {
-        if (!st[size_t(f)].auto_kept) {
-            EXPECT_TRUE(st[size_t(f)].auto_spans) << "frame " << f << " did not price the tiles: " << paths;
+        if (!st[size_t(f)].auto_geometry.kept) {
+            EXPECT_TRUE(st[size_t(f)].auto_geometry.spans) << "frame " << f << " did not price the tiles: " << paths;
         }
     }
-    if (st.back().auto_scale[1] >= 3 * st.back().auto_scale[2]) {
-        EXPECT_EQ(st.back().auto_lights[2], st.back().lights_drawn) << paths;
+    if (st.back().auto_geometry.scale[at(LightPath::volume)] >= 3 * st.back().auto_geometry.scale[at(LightPath::tiles)]) {
+        EXPECT_EQ(st.back().auto_geometry.lights[at(LightPath::tiles)], st.back().lights.drawn) << paths;
     }
 }
 

@@ -98,8 +98,8 @@ TEST(LightTypes, DirectionalMatchesTheAnalyticPlane) {
     const double want[3] = {0.1 * 0.5 + 0.5 * 0.9 * cosn, 0.1 * 0.6 + 0.6 * 0.8 * cosn, 0.1 * 0.7 + 0.7 * 0.7 * cosn};
     auto def = render_scene(s, kN, kN, ShaderOptions{});
     auto fwd = render_forward(s, kN, kN, forward_mode(ForwardMode::multi));
-    EXPECT_EQ(def.stats.lights_drawn, 1);
-    EXPECT_EQ(def.stats.scissor_pixels, (long long)kN * kN);
+    EXPECT_EQ(def.stats.lights.drawn, 1);
+    EXPECT_EQ(def.stats.lights.scissor_pixels, (long long)kN * kN);
     int plane = 0;
     for (int j = 0; j < kN; ++j)
         for (int i = 0; i < kN; ++i) {
@@ -174,7 +174,7 @@ TEST(LightTypes, DeferredMatchesForwardOnTheLightsScene) {
     const ImageDiff a = compare_images_masked(fwd.image, tr.image, mask, 2 * kLsb);
     std::printf("[ stats    ] forward vs analytic (interior): max %.2f LSB, mean %.3f\n", a.max_lsb(), a.mean_lsb());
     if (d.max_lsb() > 8) write_failure_images("lights_deferred_vs_forward", def.image, fwd.image);
-    EXPECT_EQ(def.stats.lights_total, 5);
+    EXPECT_EQ(def.stats.lights.total, 5);
     EXPECT_LE(d.mean_lsb(), 0.3);
     EXPECT_LE(d.failing_fraction(), 0.003);
     EXPECT_LE(d.max_lsb(), 8.0);

@@ -402,7 +402,7 @@ TEST(MetalRough, ForwardStageShadesTheSameBrdf) {
         Scene s = opaque;
         for (size_t m = 1; m < s.materials.size(); ++m) s.materials[m].opacity = std::nextafter(1.0f, 0.0f);
         const RenderResult r = render_scene(s, kSize, kSize, options(LightGeometry::automatic, DepthPath::texture));
-        EXPECT_GT(r.stats.transparent_objects, 0) << "drawn by the forward stage";
+        EXPECT_GT(r.stats.forward.transparent_objects, 0) << "drawn by the forward stage";
         const ImageDiff d = logged(std::string(scene_name) + ", transparent spheres (forward stage) vs rounded trace", r.image,
                                    rounded(tr.image), mask, 2 * kLsb);
         EXPECT_LE(d.max_lsb(), 2.0 + 1e-3) << scene_name;

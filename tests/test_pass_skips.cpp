@@ -97,14 +97,14 @@ TEST(PassSkips, DepthPrepassSkippedSameImage) {
         for (DepthPath p : {DepthPath::texture, DepthPath::packed}) {
             const Frames skip = render_frames(s, with_depth(p), 3, true, caps);
             const Frames full = render_frames(s, no_skip(&SkipOptions::depth_prepass, with_depth(p)), 3, true, caps);
-            ASSERT_TRUE(skip.stats[1].depth_complexity);
+            ASSERT_TRUE(skip.stats[1].passes.depth_complexity);
             std::printf("[ prepass  ] %s %s: depth complexity %.3f\n", mrt ? "mrt" : "no-mrt", depth_path_name(p),
-                        *skip.stats[1].depth_complexity);
-            EXPECT_TRUE(skip.stats[0].depth_prepass_ran) << "the first frame measures";
-            EXPECT_FALSE(skip.stats[1].depth_prepass_ran);
-            EXPECT_FALSE(skip.stats[2].depth_prepass_ran);
-            EXPECT_TRUE(full.stats[2].depth_prepass_ran);
-            EXPECT_FALSE(full.stats[2].depth_complexity) << "not measured with the skip off";
+                        *skip.stats[1].passes.depth_complexity);
+            EXPECT_TRUE(skip.stats[0].passes.depth_prepass) << "the first frame measures";
+            EXPECT_FALSE(skip.stats[1].passes.depth_prepass);
+            EXPECT_FALSE(skip.stats[2].passes.depth_prepass);
+            EXPECT_TRUE(full.stats[2].passes.depth_prepass);
+            EXPECT_FALSE(full.stats[2].passes.depth_complexity) << "not measured with the skip off";
             const ImageDiff d = compare_logged("depth pre-pass skipped vs run", skip.image, full.image, 0);
             EXPECT_EQ(d.max_abs, 0.0);
         }
@@ -114,11 +114,11 @@ TEST(PassSkips, DepthPrepassSkippedSameImage) {
 // Heavy overdraw keeps the pre-pass: ten discs, each drawn over the last.
 TEST(PassSkips, DepthPrepassKeptUnderOverdraw) {
     const Frames f = render_frames(stacked_scene(), ShaderOptions{}, 3);
-    ASSERT_TRUE(f.stats[1].depth_complexity);
-    std::printf("[ prepass  ] stacked discs: depth complexity %.3f\n", *f.stats[1].depth_complexity);
-    EXPECT_GT(*f.stats[1].depth_complexity, DepthPrepassChoice::kThreshold);
-    EXPECT_TRUE(f.stats[1].depth_prepass_ran);
-    EXPECT_TRUE(f.stats[2].depth_prepass_ran);
+    ASSERT_TRUE(f.stats[1].passes.depth_complexity);
+    std::printf("[ prepass  ] stacked discs: depth complexity %.3f\n", *f.stats[1].passes.depth_complexity);
+    EXPECT_GT(*f.stats[1].passes.depth_complexity, DepthPrepassChoice::kThreshold);
+    EXPECT_TRUE(f.stats[1].passes.depth_prepass);
+    EXPECT_TRUE(f.stats[2].passes.depth_prepass);
 }
 
 // A headless render read back at the buffers' size reads P-buffer 0 directly: the same bytes as
@@ -130,15 +130,15 @@ TEST(PassSkips, FinalPassSkippedSameImage) {
         const Frames skip = render_frames(s, ShaderOptions{}, 1, true, caps);
         const Frames full = render_frames(s, no_skip(&SkipOptions::final_pass), 1, true, caps);
         const Frames window = render_frames(s, ShaderOptions{}, 1, false, caps);  // a viewer: the final pass runs
-        EXPECT_FALSE(skip.stats[0].final_pass_ran) << off;
+        EXPECT_FALSE(skip.stats[0].passes.final) << off;
         EXPECT_EQ(skip.stats[0].ms.final, 0.0);
-        EXPECT_TRUE(full.stats[0].final_pass_ran) << off;
-        EXPECT_TRUE(window.stats[0].final_pass_ran) << off;
+        EXPECT_TRUE(full.stats[0].passes.final) << off;
+        EXPECT_TRUE(window.stats[0].passes.final) << off;
         EXPECT_EQ(compare_logged("final pass skipped vs run", skip.image, full.image, 0).max_abs, 0.0) << off;
         EXPECT_EQ(compare_images(window.image, full.image, 0).max_abs, 0.0) << off;
     }
     const Frames scaled = render_frames(s, ShaderOptions{}, 1, true, {}, 160, 120);
-    EXPECT_TRUE(scaled.stats[0].final_pass_ran) << "another output size needs the final pass's scaling";
+    EXPECT_TRUE(scaled.stats[0].passes.final) << "another output size needs the final pass's scaling";
     EXPECT_EQ(scaled.image.width, 160);
 }
 
@@ -157,9 +157,9 @@ TEST(PassSkips, AmbientFoldedSameImage) {
             o.light_geometry = LightGeometry::quad;  // a pass per light: the fold's pass replaces its light's
             const Frames fold = render_frames(s, o, 1, true, caps);
             const Frames full = render_frames(s, no_skip(&SkipOptions::ambient_pass, o), 1, true, caps);
-            EXPECT_EQ(fold.stats[0].ambient_folded, !*off) << off;
-            EXPECT_FALSE(full.stats[0].ambient_folded);
-            EXPECT_EQ(fold.stats[0].light_passes, full.stats[0].light_passes);
+            EXPECT_EQ(fold.stats[0].passes.ambient_folded(), !*off) << off;
+            EXPECT_FALSE(full.stats[0].passes.ambient_folded());
+            EXPECT_EQ(fold.stats[0].lights.passes, full.stats[0].lights.passes);
             const std::string name = std::string("ambient folded vs not") + (scissor ? "" : ", no scissor") + (*off ? ", no-fbo" : "");
             const ImageDiff d = compare_logged(name, fold.image, full.image, 1.0 / 255.0);
             EXPECT_EQ(d.max_abs, 0.0) << name;
@@ -174,23 +174,23 @@ TEST(PassSkips, AmbientFoldedSameImage) {
         const Scene demo = large_lights_scene(8);
         const Frames fold = render_frames(demo, o, 1);
         const Frames full = render_frames(demo, no_skip(&SkipOptions::ambient_pass, o), 1);
-        EXPECT_TRUE(fold.stats[0].ambient_folded);
+        EXPECT_TRUE(fold.stats[0].passes.ambient_folded());
         EXPECT_EQ(compare_logged("ambient folded vs not, attenuation law", fold.image, full.image, 1.0 / 255.0).max_abs,
                   0.0);
     }
     // Without a full-screen light there is nothing to fold into.
-    EXPECT_FALSE(render_frames(default_scene(), no_target(), 1).stats[0].ambient_folded);
+    EXPECT_FALSE(render_frames(default_scene(), no_target(), 1).stats[0].passes.ambient_folded());
     ShaderOptions ssao;
     ssao.ssao.on = true;
-    EXPECT_FALSE(render_frames(s, ssao, 1).stats[0].ambient_folded) << "SSAO scales the ambient pass alone";
+    EXPECT_FALSE(render_frames(s, ssao, 1).stats[0].passes.ambient_folded()) << "SSAO scales the ambient pass alone";
     // Into half floats the fold would round once where the passes round twice (1.12 LSB off on
     // data/mesh.scene): it is made into RGBA8 (the rounding emulated) and 32-bit floats only.
     ShaderOptions half = no_target();
     half.light_geometry = LightGeometry::quad;
     half.hdr.accum = AccumFormat::half;
-    EXPECT_FALSE(render_frames(s, half, 1).stats[0].ambient_folded);
+    EXPECT_FALSE(render_frames(s, half, 1).stats[0].passes.ambient_folded());
     half.hdr.accum = AccumFormat::float32;
-    EXPECT_TRUE(render_frames(s, half, 1).stats[0].ambient_folded);
+    EXPECT_TRUE(render_frames(s, half, 1).stats[0].passes.ambient_folded());
 }
 
 // The material pass writes Listing 15's ambient term into P-buffer 0, a render target after the
@@ -210,21 +210,21 @@ TEST(PassSkips, AmbientWrittenByTheMaterialPass) {
                 const Frames full = render_frames(s, tutorial, 1);
                 const std::string name = std::string("ambient target, ") + accum_format_name(a) + ", " +
                                          light_geometry_name(g);
-                EXPECT_TRUE(target.stats[0].ambient_in_material) << name;
-                EXPECT_FALSE(target.stats[0].ambient_folded) << name;
+                EXPECT_TRUE(target.stats[0].passes.ambient_in_material()) << name;
+                EXPECT_FALSE(target.stats[0].passes.ambient_folded()) << name;
                 EXPECT_EQ(target.stats[0].ms.ambient, 0.0) << name;
-                EXPECT_FALSE(full.stats[0].ambient_in_material) << name;
+                EXPECT_FALSE(full.stats[0].passes.ambient_in_material()) << name;
                 EXPECT_EQ(compare_logged(name, target.image, full.image, 0).max_abs, 0.0) << name;
             }
         }
     }
     // Where the GL or the options leave no room for it, the ambient pass (or the fold) runs.
-    EXPECT_FALSE(render_frames(default_scene(), ShaderOptions{}, 1, true, {"no-mrt"}).stats[0].ambient_in_material);
+    EXPECT_FALSE(render_frames(default_scene(), ShaderOptions{}, 1, true, {"no-mrt"}).stats[0].passes.ambient_in_material());
     ShaderOptions ssao, screen;
     ssao.ssao.on = true;
     screen.light_geometry = LightGeometry::screen;
-    EXPECT_FALSE(render_frames(default_scene(), ssao, 1).stats[0].ambient_in_material) << "SSAO";
-    EXPECT_FALSE(render_frames(default_scene(), screen, 1).stats[0].ambient_in_material) << "screen";
+    EXPECT_FALSE(render_frames(default_scene(), ssao, 1).stats[0].passes.ambient_in_material()) << "SSAO";
+    EXPECT_FALSE(render_frames(default_scene(), screen, 1).stats[0].passes.ambient_in_material()) << "screen";
 }
 
 // Where the material pass does not write the ambient term and a frame hands the depth off, the
@@ -260,10 +260,10 @@ TEST(PassSkips, AmbientWrittenByTheHandoff) {
         const Frames tutorial = render_frames(s, no_skip(&SkipOptions::ambient_pass, o), 1, true, caps);
         const std::string name = std::string("ambient in the hand-off, ") + light_geometry_name(c.geometry) + ", " +
                                  depth_path_name(c.depth) + ", " + accum_format_name(c.accum) + (*c.caps ? ", " : "") + c.caps;
-        EXPECT_TRUE(handoff.stats[0].ambient_in_handoff) << name;
-        EXPECT_FALSE(handoff.stats[0].ambient_in_material) << name;
+        EXPECT_TRUE(handoff.stats[0].passes.ambient_in_handoff()) << name;
+        EXPECT_FALSE(handoff.stats[0].passes.ambient_in_material()) << name;
         EXPECT_EQ(handoff.stats[0].ms.ambient, 0.0) << name;
-        EXPECT_FALSE(tutorial.stats[0].ambient_in_handoff) << name;
+        EXPECT_FALSE(tutorial.stats[0].passes.ambient_in_handoff()) << name;
         EXPECT_GT(tutorial.stats[0].ms.ambient, 0.0) << name;
         EXPECT_EQ(compare_logged(name, handoff.image, tutorial.image, 0).max_abs, 0.0) << name;
     }
@@ -284,12 +284,12 @@ TEST(PassSkips, AmbientWrittenByTheHandoffOnAGpusPaths) {
             const Frames gpu = render_frames(s, o, 2, true, {}, kSize, kSize, true);
             const Frames tutorial = render_frames(s, tutorial_opts, 2, true, {}, kSize, kSize, true);
             const std::string name = std::string("a GPU's paths, ") + light_geometry_name(g) + ", " + depth_path_name(d);
-            EXPECT_FALSE(gpu.stats[1].ambient_in_material) << name;
+            EXPECT_FALSE(gpu.stats[1].passes.ambient_in_material()) << name;
             if (g == LightGeometry::volume) {
-                EXPECT_TRUE(gpu.stats[1].ambient_in_handoff) << name;
+                EXPECT_TRUE(gpu.stats[1].passes.ambient_in_handoff()) << name;
             }
-            EXPECT_FALSE(tutorial.stats[1].ambient_in_handoff) << name;
-            EXPECT_FALSE(tutorial.stats[1].ambient_in_material) << name;
+            EXPECT_FALSE(tutorial.stats[1].passes.ambient_in_handoff()) << name;
+            EXPECT_FALSE(tutorial.stats[1].passes.ambient_in_material()) << name;
             EXPECT_EQ(compare_logged(name, gpu.image, tutorial.image, 0).max_abs, 0.0) << name;
         }
     }
@@ -302,20 +302,20 @@ TEST(PassSkips, AmbientInTheHandoffNotWhereItIsNotWanted) {
     ShaderOptions volume;
     volume.light_geometry = LightGeometry::volume;
     volume.depth_handoff = DepthHandoff::pass;
-    EXPECT_FALSE(render_frames(s, volume, 1).stats[0].ambient_in_handoff);
+    EXPECT_FALSE(render_frames(s, volume, 1).stats[0].passes.ambient_in_handoff());
     ShaderOptions blit = no_target(volume);
     blit.depth_handoff = DepthHandoff::automatic;
     const bool software = [] {
         auto ctx = create_context(ContextDesc{"osmesa", kSize, kSize});
         return probe_caps({}).software_rasterizer;
     }();
-    EXPECT_EQ(render_frames(s, blit, 1).stats[0].ambient_in_handoff, !software);
+    EXPECT_EQ(render_frames(s, blit, 1).stats[0].passes.ambient_in_handoff(), !software);
     ShaderOptions ssao = no_target(volume);
     ssao.ssao.on = true;
-    EXPECT_FALSE(render_frames(s, ssao, 1).stats[0].ambient_in_handoff) << "SSAO scales the ambient pass alone";
+    EXPECT_FALSE(render_frames(s, ssao, 1).stats[0].passes.ambient_in_handoff()) << "SSAO scales the ambient pass alone";
     ShaderOptions quad = no_target();
     quad.light_geometry = LightGeometry::quad;
-    EXPECT_FALSE(render_frames(s, quad, 1).stats[0].ambient_in_handoff);
+    EXPECT_FALSE(render_frames(s, quad, 1).stats[0].passes.ambient_in_handoff());
 }
 
 // The fold only where the light geometry would draw the full-screen light by a pass of its own:
@@ -335,10 +335,10 @@ TEST(PassSkips, AmbientFoldsOnlyIntoAPassOfItsOwn) {
         const std::string name = light_geometry_name(g);
         const FrameStats& st = r.stats[1];
         if (g != LightGeometry::automatic) {
-            EXPECT_EQ(st.ambient_folded, g == LightGeometry::screen) << name;
-            EXPECT_EQ(st.light_passes, render_frames(s, no_skip(&SkipOptions::ambient_pass, o), 2).stats[1].light_passes) << name;
+            EXPECT_EQ(st.passes.ambient_folded(), g == LightGeometry::screen) << name;
+            EXPECT_EQ(st.lights.passes, render_frames(s, no_skip(&SkipOptions::ambient_pass, o), 2).stats[1].lights.passes) << name;
         } else {
-            EXPECT_EQ(st.auto_lights[0] + st.auto_lights[1] + st.auto_lights[2] + int(st.ambient_folded), st.lights_drawn);
+            EXPECT_EQ(st.auto_geometry.lights[at(LightPath::quad)] + st.auto_geometry.lights[at(LightPath::volume)] + st.auto_geometry.lights[at(LightPath::tiles)] + int(st.passes.ambient_folded()), st.lights.drawn);
         }
         const double lsb = g == LightGeometry::screen ? 6.0 / 255.0 : 1.0 / 255.0;
         EXPECT_LE(compare_logged("ambient fold, " + name, r.image, ref.image, lsb).max_abs, lsb) << name;

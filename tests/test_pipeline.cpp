@@ -25,8 +25,8 @@ TEST(Pipeline, DepthPathsAgreeOnDefaultScene) {
     EXPECT_LE(d.max_lsb(), 4.0);
     EXPECT_LE(d.failing_fraction(), 0.001);
     // The sphere test's boundary sees each path's rounding of the position: a handful of pixels.
-    EXPECT_NEAR(double(tex.stats.light_fragments), double(packed.stats.light_fragments),
-                1e-3 * tex.stats.light_fragments);
+    EXPECT_NEAR(double(tex.stats.lights.fragments), double(packed.stats.lights.fragments),
+                1e-3 * tex.stats.lights.fragments);
 }
 
 // Listings 11/18 as written lose bytes in an 8-bit target (docs/errata.md): the literal
@@ -69,11 +69,11 @@ TEST(Pipeline, ScissorChangesFragmentsNotImage) {
     auto b = render_scene(s, kSize, kSize, off);
     ImageDiff d = compare_logged("scissor on vs off", a.image, b.image, kLsb);
     std::printf("[ stats    ] light_fragments on %lld, off %lld; scissor_pixels on %lld, off %lld\n",
-                a.stats.light_fragments, b.stats.light_fragments, a.stats.scissor_pixels, b.stats.scissor_pixels);
+                a.stats.lights.fragments, b.stats.lights.fragments, a.stats.lights.scissor_pixels, b.stats.lights.scissor_pixels);
     EXPECT_LE(d.max_lsb(), 1.0);
-    EXPECT_LT(a.stats.light_fragments, b.stats.light_fragments);
-    EXPECT_EQ(b.stats.light_fragments, (long long)b.stats.lights_drawn * kSize * kSize);
-    EXPECT_EQ(a.stats.light_fragments, a.stats.scissor_pixels);  // no fragment is lost inside a rectangle
+    EXPECT_LT(a.stats.lights.fragments, b.stats.lights.fragments);
+    EXPECT_EQ(b.stats.lights.fragments, (long long)b.stats.lights.drawn * kSize * kSize);
+    EXPECT_EQ(a.stats.lights.fragments, a.stats.lights.scissor_pixels);  // no fragment is lost inside a rectangle
 }
 
 // Beyond the tutorial: the per-light depth test rejects surfaces outside the light's depth
@@ -89,10 +89,10 @@ TEST(Pipeline, LightDepthTestChangesFragmentsNotImage) {
         auto a = render_scene(s, kSize, kSize, with);
         auto b = render_scene(s, kSize, kSize, without);
         ImageDiff d = compare_logged("light depth test on vs off", a.image, b.image, kLsb);
-        std::printf("[ stats    ] light_fragments with the test %lld, without %lld\n", a.stats.light_fragments,
-                    b.stats.light_fragments);
+        std::printf("[ stats    ] light_fragments with the test %lld, without %lld\n", a.stats.lights.fragments,
+                    b.stats.lights.fragments);
         EXPECT_EQ(d.max_abs, 0.0);
-        EXPECT_LT(a.stats.light_fragments, b.stats.light_fragments * 3 / 4);
+        EXPECT_LT(a.stats.lights.fragments, b.stats.lights.fragments * 3 / 4);
     }
 }
 
@@ -104,10 +104,10 @@ TEST(Pipeline, LightSphereTestChangesFragmentsNotImage) {
     without.skip.light_sphere_test = false;
     auto a = render_scene(s, kSize, kSize, with);
     auto b = render_scene(s, kSize, kSize, without);
-    std::printf("[ stats    ] light_fragments with the sphere test %lld, without %lld\n", a.stats.light_fragments,
-                b.stats.light_fragments);
+    std::printf("[ stats    ] light_fragments with the sphere test %lld, without %lld\n", a.stats.lights.fragments,
+                b.stats.lights.fragments);
     EXPECT_EQ(compare_images(a.image, b.image, 0).max_abs, 0.0);
-    EXPECT_LT(a.stats.light_fragments, b.stats.light_fragments);
+    EXPECT_LT(a.stats.lights.fragments, b.stats.lights.fragments);
 }
 
 // Zero-colour lights and lights whose rectangle is empty are skipped; without the skip they
@@ -122,7 +122,7 @@ TEST(Pipeline, EmptyLightSkipChangesWorkNotImage) {
     auto a = render_scene(s, 128, 128, with);
     auto b = render_scene(s, 128, 128, without);
     EXPECT_EQ(compare_images(a.image, b.image, 0).max_abs, 0.0);
-    EXPECT_EQ(a.stats.lights_drawn + 1, b.stats.lights_drawn);
+    EXPECT_EQ(a.stats.lights.drawn + 1, b.stats.lights.drawn);
 }
 
 // Shader variants per material only remove work: the image without them differs only by the
@@ -149,9 +149,9 @@ TEST(Pipeline, LightOutsideFrustumIsCulled) {
     behind.radius = 1.0f;
     s.lights.push_back(behind);
     auto more = render_scene(s, 128, 128, ShaderOptions{});
-    EXPECT_EQ(more.stats.lights_total, base.stats.lights_total + 1);
-    EXPECT_EQ(more.stats.lights_culled, base.stats.lights_culled + 1);
-    EXPECT_EQ(more.stats.light_fragments, base.stats.light_fragments);
+    EXPECT_EQ(more.stats.lights.total, base.stats.lights.total + 1);
+    EXPECT_EQ(more.stats.lights.culled, base.stats.lights.culled + 1);
+    EXPECT_EQ(more.stats.lights.fragments, base.stats.lights.fragments);
     EXPECT_EQ(compare_images(more.image, base.image, 0).max_abs, 0.0);
 }
 

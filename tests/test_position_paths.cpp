@@ -31,7 +31,7 @@ TEST(PipelinePosition, PositionPathsMatchDepthTextureWithinTwoLsb) {
         const ImageDiff diff = compare_logged(std::string("texture vs ") + depth_path_name(d), pos.image, tex.image, 2 * kLsb);
         if (diff.max_lsb() > 2) write_failure_images(depth_path_name(d), pos.image, tex.image);
         EXPECT_LE(diff.max_lsb(), 2.0);
-        EXPECT_GT(pos.stats.light_fragments, 0);
+        EXPECT_GT(pos.stats.lights.fragments, 0);
     }
 }
 
@@ -41,7 +41,7 @@ TEST(PipelinePosition, ExtFramebufferObjectAloneMakesEveryTargetFloat) {
     const RenderResult r = render_scene(s, 64, 64, with_depth(DepthPath::position32), {"no-arb-fbo"});
     EXPECT_EQ(r.paths.gbuffer_formats, std::vector<TargetFormat>(4, TargetFormat::rgba32f));
     EXPECT_EQ(r.paths.gbuffer_bytes_per_pixel, 68);
-    EXPECT_GT(r.stats.light_fragments, 0);
+    EXPECT_GT(r.stats.lights.fragments, 0);
 }
 
 // Forcing float targets off refuses both paths with one line naming what is missing.

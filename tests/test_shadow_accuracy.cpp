@@ -65,11 +65,11 @@ const char* light_name(const Light& l) {
 // Skips (with the reason) while the renderer draws no shadow maps for a scene that asks for them.
 bool renderer_has_shadows(const Scene& s) {
     const RenderResult r = render_scene(s, 64, 64, shadowed_options(s, true, depth_paths()[0]));
-    return r.stats.shadow_maps > 0;
+    return r.stats.shadows.maps > 0;
 }
 #define SKIP_WITHOUT_SHADOW_MAPS(scene)                                                                  \
     if (!renderer_has_shadows(scene))                                                                    \
-    GTEST_SKIP() << "the renderer draws no shadow maps yet (FrameStats::shadow_maps is 0 for a scene " \
+    GTEST_SKIP() << "the renderer draws no shadow maps yet (ShadowCounts::maps is 0 for a scene " \
                     "with shadowed lights); this test runs once it does"
 
 struct LightResult {
@@ -173,8 +173,8 @@ TEST(ShadowAccuracy, NoAcneAwayFromTheEdges) {
         const ImageDiff d = compare_images_masked(r.image, tr.image, where, 2.0 / 255);
         std::printf("[ shadow   ] %s: %lld pixels away from the edges, %lld darker than the trace by more than 8 LSB "
                     "(most %.2f LSB darker); against the trace there: max %.2f, mean %.3f LSB; %d maps, %lld triangles\n",
-                    path.name, a.pixels, a.darker, a.max_darker_lsb, d.max_lsb(), d.mean_lsb(), r.stats.shadow_maps,
-                    r.stats.shadow_triangles);
+                    path.name, a.pixels, a.darker, a.max_darker_lsb, d.max_lsb(), d.mean_lsb(), r.stats.shadows.maps,
+                    r.stats.shadows.triangles);
         if (a.darker) write_failure_images(std::string("shadow_acne") + (path.caps_off.empty() ? "" : "_packed"), r.image, tr.image);
         EXPECT_GT(a.pixels, kSize * kSize / 2);
         EXPECT_EQ(a.darker, 0) << path.name;

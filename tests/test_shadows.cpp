@@ -57,7 +57,7 @@ TEST(Shadows, TheBoxShadowsThePlaneUnderEveryLightType) {
         EXPECT_NEAR(lsb_at(r.image, s, under), ambient, 1.5f) << int(t);
         for (glm::vec3 p : {glm::vec3(2.5f, 0, 1.5f), glm::vec3(-2.2f, 0, 2), glm::vec3(1, 0, 3)})
             EXPECT_NEAR(lsb_at(r.image, s, p), lsb_at(lit, s, p), 1.0f) << int(t) << " at " << p.x << " " << p.z;
-        EXPECT_EQ(r.stats.shadow_maps, t == Light::Type::point ? 6 : 1);
+        EXPECT_EQ(r.stats.shadows.maps, t == Light::Type::point ? 6 : 1);
     }
 }
 
@@ -65,8 +65,8 @@ TEST(Shadows, TheBoxShadowsThePlaneUnderEveryLightType) {
 // plane (2 triangles) and the box (12), not the far sphere.
 TEST(Shadows, OnlyTheObjectsInTheLightsVolumeAreDrawn) {
     const RenderResult r = render_scene(box_scene(Light::Type::spot), kSize, kSize, shadowed());
-    EXPECT_EQ(r.stats.shadow_maps, 1);
-    EXPECT_EQ(r.stats.shadow_triangles, 14);
+    EXPECT_EQ(r.stats.shadows.maps, 1);
+    EXPECT_EQ(r.stats.shadows.triangles, 14);
 }
 
 // The packed RGB8 maps (no depth textures) compare in the shader what ARB_shadow compares in the
@@ -109,10 +109,10 @@ TEST(Shadows, WithoutFramebufferObjectsTheMapsAreCopiedInPieces) {
             EXPECT_EQ(r.paths.render_target, "copy") << what;
             EXPECT_EQ(max_lsb(r.image, copied.image), 0.0f) << what;
             EXPECT_LE(max_lsb(r.image, fbo.image), 1.0f) << what;
-            EXPECT_EQ(r.stats.shadow_maps, fbo.stats.shadow_maps) << what;
+            EXPECT_EQ(r.stats.shadows.maps, fbo.stats.shadows.maps) << what;
             // The spot's view spans every piece: its 14 triangles are drawn 9 times.
             if (t == Light::Type::spot) {
-                EXPECT_EQ(r.stats.shadow_triangles, 9 * fbo.stats.shadow_triangles) << what;
+                EXPECT_EQ(r.stats.shadows.triangles, 9 * fbo.stats.shadows.triangles) << what;
             }
             if (max_lsb(r.image, copied.image) > 0)
                 write_failure_images("shadows_no_fbo_" + std::to_string(int(t)) + (packed ? "_packed" : ""), r.image, copied.image);
@@ -157,7 +157,7 @@ TEST(Shadows, BatchedGeometriesShadeShadowedLightsInTheirBatches) {
             const RenderResult r = render_scene(s, kSize, kSize, shadowed(g), caps);
             EXPECT_EQ(max_lsb(ref, r.image), 0.0f) << light_geometry_name(g) << (packed ? " packed" : "");
             if (g == LightGeometry::tiles) {
-                EXPECT_LE(r.stats.light_passes, 3) << "a quad a shadowed light?";
+                EXPECT_LE(r.stats.lights.passes, 3) << "a quad a shadowed light?";
             }
         }
         const RenderResult screen = render_scene(s, kSize, kSize, shadowed(LightGeometry::screen), caps);
@@ -165,8 +165,8 @@ TEST(Shadows, BatchedGeometriesShadeShadowedLightsInTheirBatches) {
         // 12 lights, 10 shadowed: two batches (cut before the 9th shadowed). The unshadowed light
         // whose sphere holds the camera is one of a batch's, not the ambient fold's pass of its own;
         // the first batch writes the ambient term itself.
-        EXPECT_EQ(screen.stats.light_passes, 2);
-        EXPECT_TRUE(screen.stats.ambient_folded);
+        EXPECT_EQ(screen.stats.lights.passes, 2);
+        EXPECT_TRUE(screen.stats.passes.ambient_folded());
     }
 }
 
@@ -184,7 +184,7 @@ TEST(Shadows, BatchesReadTheirMapsFromOneAtlas) {
         const RenderResult quad = render_scene(s, kSize, kSize, shadowed(), caps);
         for (LightGeometry g : {LightGeometry::tiles, LightGeometry::screen}) {
             const RenderResult r = render_scene(s, kSize, kSize, shadowed(g), caps);
-            EXPECT_GT(r.stats.shadow_atlas_texels, 0) << what;
+            EXPECT_GT(r.stats.shadows.atlas_texels, 0) << what;
             if (g == LightGeometry::tiles) {
                 EXPECT_EQ(max_lsb(quad.image, r.image), 0.0f) << what;
             }
@@ -192,7 +192,7 @@ TEST(Shadows, BatchesReadTheirMapsFromOneAtlas) {
         std::vector<std::string> no_fbo = caps;
         no_fbo.push_back("no-fbo");
         const RenderResult chain = render_scene(s, kSize, kSize, shadowed(LightGeometry::tiles), no_fbo);
-        EXPECT_EQ(chain.stats.shadow_atlas_texels, 0) << what;
+        EXPECT_EQ(chain.stats.shadows.atlas_texels, 0) << what;
         EXPECT_EQ(max_lsb(render_scene(s, kSize, kSize, shadowed(), no_fbo).image, chain.image), 0.0f) << what;
         for (bool reuse : {true, false}) {
             auto ctx = create_context(ContextDesc{"osmesa", kSize, kSize});
@@ -200,14 +200,14 @@ TEST(Shadows, BatchesReadTheirMapsFromOneAtlas) {
             o.shadows.reuse = reuse;
             DeferredShader ds(probe_caps(caps), kSize, kSize, o, resource_dir("glsl120"));
             ds.set_scene(s);
-            const long long all = ds.render(s, kSize, kSize).shadow_atlas_texels;
+            const long long all = ds.render(s, kSize, kSize).shadows.atlas_texels;
             EXPECT_GT(all, 0) << what;
             const Image first = read_pixels(kSize, kSize);
-            EXPECT_EQ(ds.render(s, kSize, kSize).shadow_atlas_texels, reuse ? 0 : all) << what;
+            EXPECT_EQ(ds.render(s, kSize, kSize).shadows.atlas_texels, reuse ? 0 : all) << what;
             EXPECT_EQ(read_pixels(kSize, kSize).rgba, first.rgba) << what;
             Scene moved = s;
             moved.lights[1].pos.x += 0.25f;  // a spot: its 128 x 128 map
-            EXPECT_EQ(ds.render(moved, kSize, kSize).shadow_atlas_texels, reuse ? 128 * 128 : all) << what;
+            EXPECT_EQ(ds.render(moved, kSize, kSize).shadows.atlas_texels, reuse ? 128 * 128 : all) << what;
         }
     }
 }
@@ -223,7 +223,7 @@ TEST(Shadows, OffIgnoresTheScene) {
     const RenderResult a = render_scene(s, kSize, kSize, off);
     const RenderResult b = render_scene(none, kSize, kSize, off);
     EXPECT_EQ(a.image.rgba, b.image.rgba);
-    EXPECT_EQ(a.stats.shadow_maps, 0);
+    EXPECT_EQ(a.stats.shadows.maps, 0);
 }
 
 // A still frame keeps the last frame's map (nothing drawn, the same image); --shadow-reuse off
@@ -236,15 +236,15 @@ TEST(Shadows, StillFramesReuseTheMaps) {
         o.shadows.reuse = reuse;
         DeferredShader ds(probe_caps(), kSize, kSize, o, resource_dir("glsl120"));
         ds.set_scene(s);
-        EXPECT_EQ(ds.render(s, kSize, kSize).shadow_maps, 1);
+        EXPECT_EQ(ds.render(s, kSize, kSize).shadows.maps, 1);
         const Image first = read_pixels(kSize, kSize);
         const FrameStats again = ds.render(s, kSize, kSize);
-        EXPECT_EQ(again.shadow_maps, reuse ? 0 : 1);
-        EXPECT_EQ(again.shadow_triangles, reuse ? 0 : 14);
+        EXPECT_EQ(again.shadows.maps, reuse ? 0 : 1);
+        EXPECT_EQ(again.shadows.triangles, reuse ? 0 : 14);
         EXPECT_EQ(read_pixels(kSize, kSize).rgba, first.rgba);
         Scene moved = s;
         moved.lights[0].pos.x += 0.25f;
-        EXPECT_EQ(ds.render(moved, kSize, kSize).shadow_maps, 1);
+        EXPECT_EQ(ds.render(moved, kSize, kSize).shadows.maps, 1);
     }
 }
 
@@ -271,7 +271,7 @@ TEST(Shadows, TransparentSurfacesReceiveThem) {
     o.forward_surfaces = true;
     const RenderResult lit = render_scene(unshadowed, kSize, kSize, o);
     const RenderResult r = render_scene(s, kSize, kSize, o);
-    EXPECT_EQ(r.stats.transparent_passes, 2);  // the ambient pass, then the shadowed light's
+    EXPECT_EQ(r.stats.forward.transparent_passes, 2);  // the ambient pass, then the shadowed light's
     EXPECT_LT(lsb_at(r.image, s, {0, 0.2f, 0}), lsb_at(lit.image, s, {0, 0.2f, 0}) - 20);
     EXPECT_NEAR(lsb_at(r.image, s, {2.5f, 0.2f, 0}), lsb_at(lit.image, s, {2.5f, 0.2f, 0}), 1.0f);
 }

@@ -29,9 +29,9 @@ TEST(TileTimeline, ReportsTheIntervalsBetweenItsStamps) {
     const Caps caps = probe_caps();
     if (!caps.timer_query || !gl_entry.QueryCounter) GTEST_SKIP() << "no timer queries";
     TileTimeline t(true);
-    FrameStats first;
+    TileStats first;
     t.end_frame(first);  // nothing marked: nothing reported
-    EXPECT_EQ(first.tile_gpu_shade_ms, -1);
+    EXPECT_EQ(first.gpu_shade_ms, -1);
     // A frame whose spans were measured but whose lights did not go through the tiles (auto): its
     // set is left unfinished, and the next spans start it again.
     mark_then_wait(t, TileTimeline::spans_begin, 1);
@@ -43,31 +43,31 @@ TEST(TileTimeline, ReportsTheIntervalsBetweenItsStamps) {
     mark_then_wait(t, TileTimeline::draws_begin, 60);
     t.mark(TileTimeline::draws_end);
     glFinish();
-    FrameStats st;
+    TileStats st;
     t.end_frame(st);
-    EXPECT_GE(st.tile_gpu_spans_ms, 4.0);
-    EXPECT_LT(st.tile_gpu_spans_ms, 25.0);
-    EXPECT_GE(st.tile_gpu_wait_ms, 29.0);
-    EXPECT_LT(st.tile_gpu_wait_ms, 75.0) << "the wait ran to the last draw's end";
-    EXPECT_GE(st.tile_gpu_shade_ms, 59.0);
-    EXPECT_LT(st.tile_gpu_shade_ms, 120.0);
+    EXPECT_GE(st.gpu_spans_ms, 4.0);
+    EXPECT_LT(st.gpu_spans_ms, 25.0);
+    EXPECT_GE(st.gpu_wait_ms, 29.0);
+    EXPECT_LT(st.gpu_wait_ms, 75.0) << "the wait ran to the last draw's end";
+    EXPECT_GE(st.gpu_shade_ms, 59.0);
+    EXPECT_LT(st.gpu_shade_ms, 120.0);
     // Without spans (no depth culling): the draws alone.
     mark_then_wait(t, TileTimeline::draws_begin, 3);
     t.mark(TileTimeline::draws_end);
     glFinish();
-    FrameStats no_spans;
+    TileStats no_spans;
     t.end_frame(no_spans);
-    EXPECT_EQ(no_spans.tile_gpu_spans_ms, -1);
-    EXPECT_EQ(no_spans.tile_gpu_wait_ms, -1);
-    EXPECT_GE(no_spans.tile_gpu_shade_ms, 2.0);
-    EXPECT_LT(no_spans.tile_gpu_shade_ms, 20.0);
+    EXPECT_EQ(no_spans.gpu_spans_ms, -1);
+    EXPECT_EQ(no_spans.gpu_wait_ms, -1);
+    EXPECT_GE(no_spans.gpu_shade_ms, 2.0);
+    EXPECT_LT(no_spans.gpu_shade_ms, 20.0);
     // Off: no queries, nothing reported.
     TileTimeline off(false);
     off.mark(TileTimeline::draws_begin);
     off.mark(TileTimeline::draws_end);
-    FrameStats none;
+    TileStats none;
     off.end_frame(none);
-    EXPECT_EQ(none.tile_gpu_shade_ms, -1);
+    EXPECT_EQ(none.gpu_shade_ms, -1);
 }
 
 }  // namespace

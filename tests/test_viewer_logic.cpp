@@ -249,8 +249,8 @@ TEST(ScissorOverlay, RectanglesAreThoseTheLightPassDrew) {
             EXPECT_GE(r.rect.x0, 0);
             EXPECT_LE(r.rect.x1, w);
         }
-        EXPECT_GT(st.lights_drawn, 0);
-        EXPECT_EQ(int(rects.size()), st.lights_drawn) << "scissor " << scissors;
-        EXPECT_EQ(area, st.scissor_pixels) << "scissor " << scissors;
+        EXPECT_GT(st.lights.drawn, 0);
+        EXPECT_EQ(int(rects.size()), st.lights.drawn) << "scissor " << scissors;
+        EXPECT_EQ(area, st.lights.scissor_pixels) << "scissor " << scissors;
     }
 }

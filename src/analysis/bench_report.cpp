@@ -1,6 +1,7 @@
 // The benchmark's tables, JSON, plot and report (bench_report.h); the goals are bench_goals.cpp's.
 #include "analysis/bench_report.h"
 #include "analysis/bench_skips.h"
+#include "analysis/frame_stats_json.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,6 +95,7 @@ json row_json(const Row& r) {
     j["lights_ms"] = opt(r.lights_ms);
     j["lights_frames_ms"] = r.renderer == Renderer::deferred ? json(r.lights_frames_ms) : json(nullptr);
     j["max_lsb_vs_quad"] = r.err_quad ? json(r.err_quad->max_lsb()) : json(nullptr);
+    j["frame"] = r.frame ? frame_stats_json(*r.frame) : json(nullptr);  // the counted frame (docs/stats.md)
     return j;
 }
 

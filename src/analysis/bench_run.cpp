@@ -363,7 +363,7 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
             const double ms = run->frame(*run->scene, v.w, v.h);
             run->row.warmup_frames_ms.push_back(ms);
             // A slow frame is its own warm-up.
-            return WarmupFrame{Program::built() != built, run->ds && run->last.auto_explored >= 0, ms > kSlowFrameMs};
+            return WarmupFrame{Program::built() != built, run->ds && run->last.auto_geometry.explored.has_value(), ms > kSlowFrameMs};
         });
         run->row.frames = frames_for(run->row.warmup_frames_ms.front(), v.frames);
         // The medians are the timed frames': the warm-up's (the first with the shaders' compiles)
@@ -477,14 +477,15 @@ void finish_row(const Config& cfg, const Variant& v, RowRun& run, const IdealCou
     r.cpu_ms = median(run.samples.cpu_ms);
     r.cpu_frames_ms = run.samples.cpu_ms;
     if (run.ds) {
-        r.light_fragments = run.last.counted_light_fragments();
-        r.light_invocations = run.last.light_invocations;
-        r.light_evaluations = run.last.light_evaluations;
-        r.scissor_pixels = run.last.scissor_pixels;
-        r.lights_drawn = run.last.lights_drawn;
-        r.light_passes = run.last.light_passes;
-        if (run.last.auto_geometry)
-            r.auto_lights = std::array<int, 3>{run.last.auto_lights[0], run.last.auto_lights[1], run.last.auto_lights[2]};
+        const FrameStats& st = run.last;
+        r.frame = st;
+        r.light_fragments = st.lights.counted_fragments();
+        r.light_invocations = st.lights.invocations;
+        r.light_evaluations = st.lights.evaluations;
+        r.scissor_pixels = st.lights.scissor_pixels;
+        r.lights_drawn = st.lights.drawn;
+        r.light_passes = st.lights.passes;
+        if (st.auto_geometry.on) r.auto_lights = st.auto_geometry.lights;
         r.depth_copy_ms = median(run.samples.depth_copy_ms);
         r.lights_ms = median(run.samples.lights_ms);
         r.lights_frames_ms = run.samples.lights_ms;

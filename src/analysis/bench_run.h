@@ -17,6 +17,7 @@
 
 #include "analysis/bench_scenes.h"
 #include "analysis/image_metrics.h"
+#include "deferred/frame_stats.h"
 #include "deferred/options.h"
 #include "gl/caps.h"
 #include "scene/scene.h"
@@ -120,7 +121,10 @@ struct Row {
     std::optional<ImageDiff> err_analytic;  // vs the analytic reference, interior pixels
     std::optional<ImageDiff> err_quad;      // deferred rows: vs the default quad row's image
     std::optional<int> light_passes;        // deferred rows: light-shader draws per frame
-    // auto's rows: how many lights it sent by quads, volumes and the tiles (FrameStats::auto_lights) in
+    // Deferred rows: the counted frame's stats whole, JSON `frame` (analysis/frame_stats_json.h,
+    // the schema `render --stats` writes); the counts above are copied from it.
+    std::optional<FrameStats> frame;
+    // auto's rows: how many lights it sent by quads, volumes and the tiles (AutoStats::lights) in
     // the counted frame after the timed ones. JSON `auto_lights` {quad, volume, tiles}, null elsewhere.
     std::optional<std::array<int, 3>> auto_lights;
     std::optional<double> depth_copy_ms;    // deferred rows: the depth hand-off's median ms (0: not run)
@@ -186,7 +190,7 @@ constexpr int kGoalRoundsFactor = 3;
 std::vector<size_t> goal_rounds_rows(const std::vector<Row>& rows, const std::string& scene, int lights);
 
 // A row's warm-up: frames until `warmup` in a row have built no shader program and drawn no light
-// by a path auto was exploring (FrameStats::auto_explored), at most warmup + compile_warmup, or
+// by a path auto was exploring (AutoStats::explored), at most warmup + compile_warmup, or
 // until a slow frame (its own warm-up); returns the frames run. The timed frames are then the
 // renderer's steady state, whatever it learns first: auto measures a path it has not drawn by
 // drawing it (exploration_plan) and builds a path's programs when it first takes it (the tiles'

@@ -1,6 +1,6 @@
 // The ideal light-pass fragment count of a frame: for each light, the pixels whose surface
 // point lies inside the light's volume, summed over lights. What a light pass with a perfect
-// per-pixel test would shade; `dsr bench` sets FrameStats::light_fragments (occlusion queries)
+// per-pixel test would shade; `dsr bench` sets LightCounts::fragments (occlusion queries)
 // against it (docs/benchmarks.md, "ideal"). One count (ideal_count) for every caller. Pure math,
 // no GL.
 #pragma once

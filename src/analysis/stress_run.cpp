@@ -137,10 +137,10 @@ StressResult StressRunner::run(const StressCase& c) {
         if (!ds) ds = std::make_unique<DeferredShader>(probe_caps(c.caps_off), w, h, opts, shader_dir_);
         ds->set_scene(c.scene);
         const FrameStats st = ds->render(c.scene, w, h);
-        r.shadow_maps = st.shadow_maps;
-        r.lights_drawn = st.lights_drawn;
-        r.lights_total = st.lights_total;
-        r.light_fragments = st.light_fragments;
+        r.shadow_maps = st.shadows.maps;
+        r.lights_drawn = st.lights.drawn;
+        r.lights_total = st.lights.total;
+        r.light_fragments = st.lights.fragments;
         r.gl_errors += drain_gl_errors();
         final_img = read_pixels(w, h);
         p0 = ds->read_pbuffer(0);

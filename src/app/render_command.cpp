@@ -12,6 +12,7 @@
 #include "analysis/bench_scenes.h"
 #include "app/commands.h"
 #include "analysis/frame_ideal.h"
+#include "analysis/frame_stats_json.h"
 #include "app/files.h"
 #include "analysis/terminal_text.h"
 #include "app/command_table.h"
@@ -99,26 +100,8 @@ int cmd_render(const std::vector<std::string>& argv) {
                        : view == View::final ? ds.read_output(out_w, out_h)
                                              : read_pixels(out_w, out_h));
 
-    const FrameStats& last = counted;
-    auto med = [&](double StageTimes::*field) {
-        std::vector<double> v;
-        for (auto& s : all) v.push_back(s.ms.*field);
-        return median(v);
-    };
-    // The same for a FrameStats field: the timed frames', not the counted frame's (its queries
-    // around every light draw slow it).
-    auto med_stat = [&](double FrameStats::*field) {
-        std::vector<double> v;
-        for (auto& s : all) v.push_back(s.*field);
-        return median(v);
-    };
-    // The same over the frames that measured it (>= 0), null where none did.
-    auto med_measured = [&](double FrameStats::*field) {
-        std::vector<double> v;
-        for (auto& s : all)
-            if (s.*field >= 0) v.push_back(s.*field);
-        return v.empty() ? nlohmann::json(nullptr) : nlohmann::json(median(v));
-    };
+    // The counted frame's counts with the timed frames' medians for its times (frame_stats_json.h).
+    const FrameStats last = reported_frame(all, counted);
     nlohmann::ordered_json j;
     j["scene"] = scene_path;
     j["warnings"] = scene.warnings.size();  // what the readers substituted or ignored (stderr has each)
@@ -141,46 +124,32 @@ int cmd_render(const std::vector<std::string>& argv) {
                   {"light_depth_test", skip.light_depth_test}, {"light_sphere_test", skip.light_sphere_test},
                   {"depth_prepass", skip.depth_prepass},
                   {"ambient_target", skip.ambient_target}, {"ambient", skip.ambient_pass}, {"final", skip.final_pass}};
-    // What the pass skips did in the counted frame (the last): whether the depth pre-pass and the
-    // final pass ran, whether the ambient pass was folded into a light's, and the depth complexity
-    // (fragments shaded without the pre-pass per pixel covered) the pre-pass choice read.
-    j["passes"] = {{"depth_prepass", last.depth_prepass_ran}, {"ambient_in_material", last.ambient_in_material},
-                   {"ambient_folded", last.ambient_folded}, {"ambient_in_handoff", last.ambient_in_handoff},
-                   {"final", last.final_pass_ran},
-                   {"depth_complexity", last.depth_complexity ? nlohmann::json(*last.depth_complexity) : nlohmann::json(nullptr)}};
     j["scissor"] = opts.scissor;
     j["gbuffer"] = opts.gbuffer_half ? "half" : "rgba8";
     j["bloom"] = post.bloom;
     j["aa"] = post.aa;
-    j["timing"] = timing_name(last.timing);  // what the per-stage ms below were measured with
     j["gl_state_cache"] = gl_state().cache();
-    j["lights_total"] = last.lights_total;
-    j["lights_culled"] = last.lights_culled;
-    j["lights_drawn"] = last.lights_drawn;
-    // null where the GL cannot count them (no occlusion queries / no ARB_pipeline_statistics_query)
-    const std::optional<long long> frags = last.counted_light_fragments();
-    j["light_fragments"] = frags ? nlohmann::json(*frags) : nlohmann::json(nullptr);
-    j["light_invocations"] = last.light_invocations ? nlohmann::json(*last.light_invocations) : nlohmann::json(nullptr);
-    j["light_evaluations"] = last.light_evaluations ? nlohmann::json(*last.light_evaluations) : nlohmann::json(nullptr);
-    j["scissor_pixels"] = last.scissor_pixels;
+    // The frame's stats (docs/stats.md): the lights' counts, the passes run, the forward and shadow
+    // stages' counts, `tiles` and `auto` where the geometry draws them, `timing` and `ms`.
+    j.update(frame_stats_json(last));
     j["light_geometry"] = light_geometry_name(paths.light_geometry);  // as run: stencil may fall back to volume
     j["light_geometry_asked"] = light_geometry_name(opts.light_geometry);
     if (!paths.light_geometry_note.empty()) j["light_geometry_note"] = paths.light_geometry_note;
     if (paths.light_geometry == LightGeometry::stencil) j["stencil_faces"] = stencil_faces_name(paths.stencil_faces);
-    if (draws_tiles(paths.light_geometry))
-        j["tiles"] = {{"size", paths.tile_size}, {"lights_per_pass", paths.tile_lights}, {"shape", paths.tile_points ? "points" : "quads"}, {"fetch", paths.tile_fetch_vertex ? "vertex" : "fragment"}, {"vertex_fetch_batches", last.tile_vertex_batches}, {"tile_light_pairs", last.tile_light_pairs}, {"shared_attenuation_batches", last.att_shared_batches}, {"depth_culling", last.tile_depth}, {"depth_ms", med_stat(&FrameStats::tile_depth_ms)}, {"plan_ms", med_stat(&FrameStats::tile_plan_ms)}, {"gpu_spans_ms", med_measured(&FrameStats::tile_gpu_spans_ms)}, {"gpu_wait_ms", med_measured(&FrameStats::tile_gpu_wait_ms)}, {"gpu_shade_ms", med_measured(&FrameStats::tile_gpu_shade_ms)}};
-    // What the cost model chose (light_cost.h), against the light stage as measured: both medians
-    // of the timed frames.
-    if (last.auto_geometry)
-        j["auto"] = {{"lights", {{"quad", last.auto_lights[0]}, {"volume", last.auto_lights[1]}, {"tiles", last.auto_lights[2]}}},
-                     {"depth_spans", last.auto_spans},
-                     {"quads_against_depth", last.auto_quad_depth},
-                     {"handoff_ms", last.auto_handoff_ms},
-                     {"kept_frames", std::count_if(all.begin(), all.end(), [](const FrameStats& s) { return s.auto_kept; })},
-                     {"explored_frames", std::count_if(all.begin(), all.end(), [](const FrameStats& s) { return s.auto_explored >= 0; })},
-                     {"predicted_lights_ms", med_stat(&FrameStats::auto_predicted_ms)},
-                     {"measured_lights_ms", med(&StageTimes::lights)},
-                     {"scale", {{"quad", last.auto_scale[0]}, {"volume", last.auto_scale[1]}, {"tiles", last.auto_scale[2]}}}};
+    if (draws_tiles(paths.light_geometry)) {  // the settings as run, beside the frame's counts
+        j["tiles"]["size"] = paths.tile_size;
+        j["tiles"]["lights_per_pass"] = paths.tile_lights;
+        j["tiles"]["shape"] = paths.tile_points ? "points" : "quads";
+        j["tiles"]["fetch"] = paths.tile_fetch_vertex ? "vertex" : "fragment";
+    }
+    // What the cost model chose (light_cost.h) against the light stage as measured (both medians
+    // of the timed frames), and how many timed frames kept a choice or explored a path.
+    if (last.auto_geometry.on) {
+        j["auto"]["measured_lights_ms"] = last.ms.lights;
+        j["auto"]["kept_frames"] = std::count_if(all.begin(), all.end(), [](const FrameStats& s) { return s.auto_geometry.kept; });
+        j["auto"]["explored_frames"] =
+            std::count_if(all.begin(), all.end(), [](const FrameStats& s) { return s.auto_geometry.explored.has_value(); });
+    }
     // High dynamic range (docs/hdr.md): the accumulation format, the operator and the exposure,
     // with the scale the counted frame's final pass applied (2^stops, or --exposure auto's).
     j["hdr"] = {{"accum", accum_format_name(opts.hdr.accum)}, {"tonemap", tone_map_name(opts.hdr.tonemap)},
@@ -188,22 +157,14 @@ int cmd_render(const std::vector<std::string>& argv) {
                 {"exposure_scale", ds.exposure_scale()}, {"output_srgb", opts.hdr.output_srgb},
                 {"float_image", linear}};  // the image file holds P-buffer 0's values past 1
     j["depth_bounds"] = paths.depth_bounds;
-    j["light_passes"] = last.light_passes;
     // The depth hand-off as run (docs/forward.md) (null: nothing needed it) and the forward stage's work.
     j["depth_handoff"] = paths.accum_depth ? nlohmann::json(depth_handoff_name(paths.depth_handoff)) : nlohmann::json(nullptr);
     j["forward_stage"] = paths.forward_stage;
-    j["light_markers"] = last.light_markers;
-    j["transparent_objects"] = last.transparent_objects;
-    j["transparent_passes"] = last.transparent_passes;
-    j["lights_as_quads"] = last.lights_as_quads;
     // The shadow stage (docs/shadows.md): maps drawn in the counted frame (a point light's six
     // faces count six) and the triangles drawn into them (without framebuffer objects once per
     // piece of the main frame buffer that draws them); the filter and the maps' format.
     j["shadows"] = opts.shadow_lights;
     j["shadow_filter"] = shadow_filter_name(opts.shadows.filter);
-    j["shadow_maps"] = last.shadow_maps;
-    j["shadow_triangles"] = last.shadow_triangles;
-    j["shadow_atlas_texels"] = last.shadow_atlas_texels;
     j["shadow_map_format"] = !opts.shadow_lights ? nlohmann::json(nullptr)
                              : !shadow_maps_packed(caps) ? nlohmann::json("depth-texture")
                                                          : nlohmann::json("packed-rgb8");
@@ -218,13 +179,6 @@ int cmd_render(const std::vector<std::string>& argv) {
                                                               {"centre", v3(b.centre)}, {"radius", b.radius}}
                                              : nlohmann::json(nullptr);
     }
-    j["ms"] = {{"geometry", med(&StageTimes::geometry)}, {"ambient", med(&StageTimes::ambient)},
-               {"lights", med(&StageTimes::lights)},     {"bloom", med(&StageTimes::bloom)},
-               {"aa", med(&StageTimes::aa)},             {"final", med(&StageTimes::final)},
-               {"depth_copy", med(&StageTimes::depth_copy)}, {"ssao", med(&StageTimes::ssao)},
-               {"forward", med(&StageTimes::forward)}, {"shadows", med(&StageTimes::shadows)},
-               {"cpu", med(&StageTimes::cpu)}, {"cpu_make_frame", med(&StageTimes::cpu_make_frame)},
-               {"cpu_lights", med(&StageTimes::cpu_lights)}, {"frame", med(&StageTimes::frame)}};
     const size_t triangles = scene.triangle_count();
     struct rusage usage {};
     getrusage(RUSAGE_SELF, &usage);
@@ -243,8 +197,8 @@ int cmd_render(const std::vector<std::string>& argv) {
     char line[4096];
     std::snprintf(line, sizeof line,
                   "wrote %s (%dx%d, view %s, depth %s)\n  %d/%d lights drawn, %lld light fragments, frame %.2f ms median of %d\n",
-                  out.c_str(), out_w, out_h, view_name(view), j["depth_path"].get<std::string>().c_str(), last.lights_drawn,
-                  last.lights_total, last.light_fragments, med(&StageTimes::frame), frames);
+                  out.c_str(), out_w, out_h, view_name(view), j["depth_path"].get<std::string>().c_str(), last.lights.drawn,
+                  last.lights.total, last.lights.fragments, last.ms.frame, frames);
     std::fputs(wrap_lines(line).c_str(), stdout);
     return 0;
 }

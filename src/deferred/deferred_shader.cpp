@@ -120,6 +120,7 @@ bool DeferredShader::skips_final(int out_w, int out_h) const {
 FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     if (!gpu_) throw Error("DeferredShader::render before set_scene");
     FrameStats st;
+    st.tiles.on = draws_tiles(config_.paths.light_geometry);
     const double cpu0 = thread_cpu_ms();
     timer_.begin_frame(S_COUNT);
     set_output_size(out_w, out_h);
@@ -137,7 +138,7 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     // 0. the shadow maps of the frame's shadowed lights, handed to the light passes in the frame.
     if (shadows_) {
         cull_lights();
-        if (f.shadowed_lights > 0) timed(timer_, S_SHADOWS, [&] { f.shadows = shadows_->draw(f, scene, *gpu_, st); });
+        if (f.shadowed_lights > 0) timed(timer_, S_SHADOWS, [&] { f.shadows = shadows_->draw(f, scene, *gpu_, st.shadows); });
     }
     // 1. geometry stage, which also writes the ambient pass's colours into P-buffer 0 where it can
     // (Paths::ambient_target): the lighting stage then draws no ambient pass.
@@ -156,8 +157,8 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     // 4. final stage, unless the caller reads P-buffer 0 itself at its own size (read_output): then
     // the fixed-function copy into the main frame buffer would give it the same bytes. Not with a
     // float P-buffer 0, nor where the final pass maps or encodes (docs/hdr.md).
-    st.final_pass_ran = !skips_final(out_w, out_h);
-    if (st.final_pass_ran) timed(timer_, S_FINAL, [&] { final_.draw(*targets_, out_w, out_h); });
+    st.passes.final = !skips_final(out_w, out_h);
+    if (st.passes.final) timed(timer_, S_FINAL, [&] { final_.draw(*targets_, out_w, out_h); });
     std::vector<double> ms;
     st.ms.cpu = thread_cpu_ms() - cpu0;
     st.ms.frame = timer_.end_frame(ms);
@@ -222,9 +223,7 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, bool mat
     plan.hands_off =
         hands_off_depth(config_.paths.accum_depth, lights_need_depth, config_.paths.forward_stage, config_.paths.depth_bounds);
     const AmbientWriter writer = decide_ambient(facts, plan);
-    st.ambient_in_material = writer == AmbientWriter::material_pass;
-    st.ambient_folded = writer == AmbientWriter::light_fold || writer == AmbientWriter::geometry_first_batch;
-    st.ambient_in_handoff = writer == AmbientWriter::handoff;
+    st.passes.ambient = writer;
     // After the plan: where the plan reads back, the read-back waits for the G-buffer alone and the
     // GPU draws the ambient pass while the CPU plans the light draws (docs/gpu_frame.md, "The
     // ambient pass after the plan"); or where a fold
@@ -261,7 +260,7 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, bool mat
     if (config_.paths.forward_stage) {
         timer_.end();
         timer_.begin(S_FORWARD);
-        forward_->draw(f, scene, *gpu_, st);
+        forward_->draw(f, scene, *gpu_, st.forward);
         check_gl_stage("forward stage");
     }
     fb_unbind_render(P_ACCUM);
@@ -282,7 +281,7 @@ void DeferredShader::geometry_stage(const Scene& scene) {
 
 void DeferredShader::draw_lights(const Scene& scene, bool scissors, FrameStats& stats) {
     FrameDef f = frame_of(scene.camera, scene.lights, scissors);
-    if (shadows_ && f.shadowed_lights > 0) f.shadows = shadows_->draw(f, scene, *gpu_, stats);
+    if (shadows_ && f.shadowed_lights > 0) f.shadows = shadows_->draw(f, scene, *gpu_, stats.shadows);
     draw_lights(f, scene, false, stats);  // geometry_stage() leaves P-buffer 0 alone: the ambient pass runs
 }
 

@@ -21,7 +21,7 @@ void ForwardStage::set_scene(const Scene& scene, const GpuScene& gpu) {
         transparent_ = std::make_unique<TransparentPass>(shader_dir_, listing2_literal_);
 }
 
-void ForwardStage::draw(const FrameDef& f, const Scene& scene, GpuScene& gpu, FrameStats& stats) {
+void ForwardStage::draw(const FrameDef& f, const Scene& scene, GpuScene& gpu, ForwardCounts& stats) {
     gl_state().set_camera(f.proj);  // each draw loads its own modelview
     if (show_lights_) draw_light_markers(f, scene, stats);
     if (transparent_ && !gpu.transparent_objects().empty()) {
@@ -50,7 +50,7 @@ void ForwardStage::draw(const FrameDef& f, const Scene& scene, GpuScene& gpu, Fr
 // One sphere mesh, scaled and moved per light by the modelview, or the scene's `markers box`: a
 // cube of a fixed world size, as LearnOpenGL's demo draws its light boxes. Client-side arrays (a
 // few hundred vertices), fixed function: the colour is the light's, unlit.
-void ForwardStage::draw_light_markers(const FrameDef& f, const Scene& scene, FrameStats& stats) {
+void ForwardStage::draw_light_markers(const FrameDef& f, const Scene& scene, ForwardCounts& stats) {
     const bool boxes = scene.marker_shape == Scene::MarkerShape::box;
     Mesh& mesh = boxes ? marker_box_ : marker_mesh_;
     if (mesh.indices.empty()) mesh = boxes ? make_box(glm::vec3(2.0f), 0) : make_sphere(1.0f, 0, 16, 8);

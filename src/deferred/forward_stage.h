@@ -30,10 +30,10 @@ public:
     // The scene's bounds, and its transparent pass where it has transparent objects.
     void set_scene(const Scene& scene, const GpuScene& gpu);
     // Into the bound P-buffer 0, its depth handed off.
-    void draw(const FrameDef& f, const Scene& scene, GpuScene& gpu, FrameStats& stats);
+    void draw(const FrameDef& f, const Scene& scene, GpuScene& gpu, ForwardCounts& stats);
 
 private:
-    void draw_light_markers(const FrameDef& f, const Scene& scene, FrameStats& stats);
+    void draw_light_markers(const FrameDef& f, const Scene& scene, ForwardCounts& stats);
     std::string shader_dir_;
     bool listing2_literal_, show_lights_;
     ShadowFilter shadow_filter_;  // the transparent surfaces' shadow lookups (ShadowOptions::filter)

@@ -54,8 +54,8 @@ void GeometryStage::draw(const FrameDef& f, GpuScene& gpu, RenderTargets& t, Fra
     if (ambient && !t.ambient_target()) throw Error("geometry stage: this GL takes no ambient target beside the G-buffer");
     collect_counts();
     const bool prepass = !skip_prepass_ || choice_.run_next();
-    stats.depth_prepass_ran = prepass;
-    if (skip_prepass_) stats.depth_complexity = choice_.complexity();
+    stats.passes.depth_prepass = prepass;
+    if (skip_prepass_) stats.passes.depth_complexity = choice_.complexity();
     t.mrt_bind_render();  // Listing 7 line 3
     gl_state().set_camera(f.proj, f.view);  // set_perspective_camera() (line 5)
     // Each draw loads its object's modelview, view * model composed in double (camera-relative).

@@ -66,7 +66,7 @@ public:
         for (const LightDraw& l : f.lights)
             if (l.shadow >= 0) {
                 quads_.draw(f, l, q);
-                ++stats.light_passes;
+                ++stats.lights.passes;
             }
     }
 

@@ -29,8 +29,8 @@ public:
     // Adds every light of f.lights into P-buffer 0, which is bound for rendering, with the
     // G-buffer's normal, diffuse, specular and depth targets on units 0-3 and, where the paths
     // need it (Paths::accum_depth), the scene's depth handed to its depth buffer. Each draw of the
-    // light shader sits between q.begin() and q.end(); the passes go into stats (light_passes,
-    // lights_as_quads, the tiles' plan). States every piece of GL state it needs, camera included.
+    // light shader sits between q.begin() and q.end(); the passes go into stats (lights.passes,
+    // lights.as_quads, the tiles' plan). States every piece of GL state it needs, camera included.
     virtual void draw(const FrameDef& f, RenderTargets& targets, LightQueries& q, FrameStats& stats) = 0;
     // Once a frame before the depth hand-off, with the G-buffer bound as textures (units 0-3) and
     // P-buffer 0 for rendering: whether this frame's lights need the scene's depth in P-buffer 0

@@ -93,8 +93,8 @@ public:
         choose_quads_depth(screen_px);
         frame_.planned = true;
         frame_.priced = true;
-        stats.auto_kept = false;
-        stats.auto_explored = frame_.exploring ? int(*frame_.exploring) : -1;
+        stats.auto_geometry.kept = false;
+        stats.auto_geometry.explored = frame_.exploring;
         const std::array<double, kLightPaths>& predicted = frame_.plan.predicted_ms;
         frame_.predicted_ms = predicted[at(LightPath::quad)] + predicted[at(LightPath::volume)] + predicted[at(LightPath::tiles)];
         if (const std::optional<LightPath> kept =
@@ -129,7 +129,7 @@ public:
         }
         frame_.planned = false;
         const LightPathPlan& plan = frame_.plan;
-        for (const LightPath p : kAllLightPaths) stats.auto_lights[at(p)] = plan.count[at(p)];  // less a light drop() took
+        for (const LightPath p : kAllLightPaths) stats.auto_geometry.lights[at(p)] = plan.count[at(p)];  // less a light drop() took
         std::array<std::vector<const LightDraw*>, kLightPaths> by_path;
         for (const LightPath p : kAllLightPaths) by_path[at(p)].reserve(size_t(plan.count[at(p)]));
         std::array<double, kLightPaths> raw = {0, 0, 0};  // the model's ms for each path's lights, unscaled
@@ -246,8 +246,8 @@ private:
         frame_.planned = true;
         frame_.priced = false;
         frame_.exploring.reset();
-        stats.auto_kept = true;
-        stats.auto_explored = -1;
+        stats.auto_geometry.kept = true;
+        stats.auto_geometry.explored.reset();
         frame_.predicted_ms = kept_.raw_ms * calib_.scale()[at(p)] + kept_.once_ms;
         report(stats, p == LightPath::tiles, double(f.width) * double(f.height));
         return frame_.quads_test_depth;
@@ -265,11 +265,11 @@ private:
 
     // The plan's figures for --stats; the lights on each path are counted in draw(), after any drop().
     void report(FrameStats& stats, bool spans, double screen_px) const {
-        stats.auto_geometry = true;
-        stats.auto_spans = spans;
-        stats.auto_handoff_ms = handoff_ms(model_, screen_px);
-        for (const LightPath p : kAllLightPaths) stats.auto_scale[at(p)] = calib_.scale()[at(p)];
-        stats.auto_predicted_ms = frame_.predicted_ms;
+        stats.auto_geometry.on = true;
+        stats.auto_geometry.spans = spans;
+        stats.auto_geometry.handoff_ms = handoff_ms(model_, screen_px);
+        for (const LightPath p : kAllLightPaths) stats.auto_geometry.scale[at(p)] = calib_.scale()[at(p)];
+        stats.auto_geometry.predicted_ms = frame_.predicted_ms;
     }
 
     // Path p's passes, timed where the policy says, its scale updated from what they took.
@@ -303,13 +303,13 @@ private:
         for (const LightDraw* l : lights)
             if (l->shadow < 0) batched.push_back(l);
         quads_.draw(f, batched, q, stats, frame_.quads_test_depth);
-        stats.auto_quad_depth = frame_.quads_test_depth && !batched.empty();
+        stats.auto_geometry.quad_depth = frame_.quads_test_depth && !batched.empty();
         if (batched.size() == lights.size()) return;
         shadow_quads_.begin(f);
         for (const LightDraw* l : lights)
             if (l->shadow >= 0) {
                 shadow_quads_.draw(f, *l, q);
-                ++stats.light_passes;
+                ++stats.lights.passes;
             }
     }
 

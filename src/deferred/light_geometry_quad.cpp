@@ -18,7 +18,7 @@ public:
         quads_.begin(f);
         for (const LightDraw& l : f.lights) {
             quads_.draw(f, l, q);
-            ++stats.light_passes;
+            ++stats.lights.passes;
         }
     }
 

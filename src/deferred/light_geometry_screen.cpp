@@ -91,7 +91,7 @@ private:
             draw_rect(f, 0, 0, float(f.width), float(f.height), false);
             q.end();
             shadows_.unbind();
-            ++stats.light_passes;
+            ++stats.lights.passes;
         }
     }
 

@@ -56,7 +56,7 @@ struct TileRange {
     double mean_lights;
 };
 
-// Wall-clock milliseconds of f(): the tiles' two timings (FrameStats::tile_depth_ms, tile_plan_ms).
+// Wall-clock milliseconds of f(): the tiles' two timings (TileStats::depth_ms, plan_ms).
 template <class F>
 double wall_ms(F&& f) {
     const double t = now_ms();
@@ -113,7 +113,7 @@ public:
         prepared_ = false;
         TileDepth depth;
         const TileDepth* cull = nullptr;
-        stats.tile_plan_ms += wall_ms([&] { cull = tile_boxes(f, spans, depth); });
+        stats.tiles.plan_ms += wall_ms([&] { cull = tile_boxes(f, spans, depth); });
         draw_lights(f, cull, q, stats, nullptr);
     }
 
@@ -126,7 +126,7 @@ public:
         // keeps its contents: the spans need framebuffer objects).
         std::vector<DepthSpan> spans;
         if (depth_)
-            stats.tile_depth_ms += wall_ms([&] {
+            stats.tiles.depth_ms += wall_ms([&] {
                 targets.fb_unbind_render(P_ACCUM);
                 timeline_.mark(TileTimeline::spans_begin);
                 spans = depth_->spans(f, targets.gbuffer(), &timeline_);
@@ -157,7 +157,7 @@ public:
     void draw_lights(const FrameDef& f, const TileDepth* cull, LightQueries& q, FrameStats& stats,
                      const std::vector<std::vector<int>>* kept) override {
         double plan_ms = 0;
-        stats.tile_depth = cull != nullptr;
+        stats.tiles.depth = cull != nullptr;
         shadows_.begin_frame();
         std::vector<ScissorRect> rects(f.lights.size());
         for (size_t i = 0; i < f.lights.size(); ++i) rects[i] = f.lights[i].rect;
@@ -170,7 +170,7 @@ public:
 
         begin_draws(f);
         buffers_.begin_frame();
-        stats.tile_light_pairs = 0;
+        stats.tiles.light_pairs = 0;
         if (groups_) {
             TilePlan plan;
             plan_ms += wall_ms([&] { plan = plan_tile_groups(rects, f.width, f.height, tile_size_, tile_lights_, cull, cut, shadow_slots_); });
@@ -179,7 +179,7 @@ public:
                 if (&d == &plan.draws.front()) timeline_.mark(TileTimeline::draws_begin);
                 draw_batch(f, plan.batches[size_t(d.batch)], q, stats);
             }
-            stats.tile_light_pairs = plan.tile_light_pairs;
+            stats.tiles.light_pairs = plan.tile_light_pairs;
         } else {
             // Batch by batch (tile_plan.h TilePlanner): the GL shades a batch while the CPU plans the
             // next; the flush after each hands the batch over instead of holding it until the
@@ -194,7 +194,7 @@ public:
                 const FlatForm flat = flat_form(f, batch);
                 plan_ms += wall_ms([&] {
                     draws_.clear();
-                    stats.tile_light_pairs += planner->plan_batch(b, draws_);
+                    stats.tiles.light_pairs += planner->plan_batch(b, draws_);
                     upload(draws_.data(), draws_.size(), flat.form >= 0);
                 });
                 if (b == 0) timeline_.mark(TileTimeline::draws_begin);
@@ -207,8 +207,8 @@ public:
         }
         end_draws();
         timeline_.mark(TileTimeline::draws_end);
-        timeline_.end_frame(stats);
-        stats.tile_plan_ms += plan_ms;
+        timeline_.end_frame(stats.tiles);
+        stats.tiles.plan_ms += plan_ms;
     }
 
 private:
@@ -391,8 +391,8 @@ private:
                    FrameStats& stats) {
         arrays_.clear();
         for (int i : batch) arrays_.add(f.lights[size_t(i)].params);
-        if (form.att) ++stats.att_shared_batches;
-        ++stats.tile_vertex_batches;
+        if (form.att) ++stats.tiles.att_shared_batches;
+        ++stats.tiles.vertex_batches;
         vertex_arrays(flat_stride_, flat_vecs_);
         int bound = 0;
         for (const TileRange& r : ranges_) {
@@ -414,7 +414,7 @@ private:
         q.begin(lights);
         glDrawArrays(r.mode, GLint(r.first), GLsizei(r.count));
         q.end();
-        ++stats.light_passes;
+        ++stats.lights.passes;
     }
 
     // The form's program for `lights` lights: the table's for tile_lights, the others built on

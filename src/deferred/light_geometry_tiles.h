@@ -17,7 +17,7 @@ public:
     virtual int tile_size() const = 0;
     virtual int lights_per_pass() const = 0;
     // The depth spans of every tile (empty without depth culling), with P-buffer 0 bound for
-    // rendering before and after; timed into stats.tile_depth_ms.
+    // rendering before and after; timed into stats.tiles.depth_ms.
     virtual std::vector<DepthSpan> depth_spans(const FrameDef& f, RenderTargets& targets, FrameStats& stats) = 0;
     // The tiles' boxes and f's lights' bounds into `depth`; null (and nothing written) without spans.
     virtual const TileDepth* tile_boxes(const FrameDef& f, const std::vector<DepthSpan>& spans, TileDepth& depth) const = 0;

@@ -46,8 +46,8 @@ void LightMeshes::draw_quads_past_far(const FrameDef& f, LightQuads& quads, Ligh
     for (const LightDraw& l : f.lights)
         if (past_far(f, l)) {
             quads.draw(f, l, q);
-            ++stats.light_passes;
-            ++stats.lights_as_quads;
+            ++stats.lights.passes;
+            ++stats.lights.as_quads;
         }
 }
 
@@ -74,7 +74,7 @@ void LightMeshes::shade(const LightDraw& l, Program& prog, LightQueries& q, Fram
     q.begin();
     draw(l);
     q.end();
-    ++stats.light_passes;
+    ++stats.lights.passes;
 }
 
 namespace {
@@ -170,7 +170,7 @@ void LightVolumeBatch::draw(const FrameDef& f, const std::vector<const LightDraw
         q.begin();
         glDrawElements(GL_TRIANGLES, GLsizei(n * mesh_->indices.size()), GL_UNSIGNED_INT, nullptr);
         q.end();
-        ++stats.light_passes;
+        ++stats.lights.passes;
     });
     glDisableClientState(GL_TEXTURE_COORD_ARRAY);
     glClientActiveTexture(GL_TEXTURE0);

@@ -18,7 +18,7 @@ public:
     // screen, no mesh) and volumes whose mesh reaches past the far plane, where its back faces
     // would be clipped away.
     bool past_far(const FrameDef& f, const LightDraw& l) const;
-    // Those lights, first: each its counted quad (stats.lights_as_quads).
+    // Those lights, first: each its counted quad (stats.lights.as_quads).
     void draw_quads_past_far(const FrameDef& f, LightQuads& quads, LightQueries& q, FrameStats& stats) const;
     // The frame's perspective camera for the meshes; before the first draw.
     void begin(const FrameDef& f) const;

@@ -118,7 +118,7 @@ Program& ShadowSlots::prepare(LightPrograms& progs, FrameStats& stats) {
     if (!layout_.fits()) return progs.shadow();  // larger than the GL's textures: the chain
     if (next_ == atlases_.size()) atlases_.push_back(std::make_unique<ShadowAtlas>(packed_));
     atlas_ = atlases_[next_++].get();
-    stats.shadow_atlas_texels += atlas_->update(layout_, maps_, kShadowUnit);
+    stats.shadows.atlas_texels += atlas_->update(layout_, maps_, kShadowUnit);
     return progs.shadow_atlas();
 }
 
@@ -315,7 +315,7 @@ void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>
         q.begin();
         glDrawArrays(GL_QUADS, 0, GLsizei(4 * n));
         q.end();
-        ++stats.light_passes;
+        ++stats.lights.passes;
     });
     StreamBuffer::unbind();  // later client-array draws read client memory again
     glDisableClientState(GL_TEXTURE_COORD_ARRAY);

@@ -75,7 +75,7 @@ public:
     float add(const FrameDef& f, const LightDraw& l);
     int size() const { return int(maps_.size()); }
     // The program that draws the batch (size() > 0): progs' atlas form with the maps in this
-    // batch position's atlas (copied where it did not hold them: stats.shadow_atlas_texels), or
+    // batch position's atlas (copied where it did not hold them: stats.shadows.atlas_texels), or
     // its chain form.
     Program& prepare(LightPrograms& progs, FrameStats& stats);
     void set(Program& prog);  // prog in use, the one prepare() gave
@@ -155,7 +155,7 @@ struct BatchForm {
 
 // load_batch, and where its program is progs' attenuation-law point form and the batch's lights
 // share their constants, shared_form(): that form built with ATT_SHARED (counted in
-// stats.att_shared_batches). The one choice of the tiles' and screen's batches.
+// stats.tiles.att_shared_batches). The one choice of the tiles' and screen's batches.
 template <class SharedForm>
 BatchForm load_batch_form(const FrameDef& f, const std::vector<int>& batch, LightArrays& arrays, ShadowSlots& shadows,
                           LightPrograms& progs, FrameStats& stats, SharedForm&& shared_form) {
@@ -163,7 +163,7 @@ BatchForm load_batch_form(const FrameDef& f, const std::vector<int>& batch, Ligh
     if (&p != &progs[LightShader::point_inverse]) return BatchForm{p, std::nullopt};
     const std::optional<glm::vec3> att = shared_attenuation(f, batch);
     if (!att) return BatchForm{p, std::nullopt};
-    ++stats.att_shared_batches;
+    ++stats.tiles.att_shared_batches;
     return BatchForm{shared_form(), att};
 }
 

@@ -43,14 +43,14 @@ public:
         if (invocations_) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
         if (samples_) glEndQuery(GL_SAMPLES_PASSED);
     }
-    // Sums the results into stats (light_fragments; light_invocations and light_evaluations where
+    // Sums the results into stats (lights.fragments; lights.invocations and lights.evaluations where
     // counted).
     void collect(FrameStats& stats) {
-        stats.fragments_counted = samples_;
+        stats.lights.fragments_counted = samples_;
         for (GLuint q : q_) {
             GLuint n = 0;
             glGetQueryObjectuiv(q, GL_QUERY_RESULT, &n);
-            stats.light_fragments += n;
+            stats.lights.fragments += n;
         }
         if (invocations_) {
             long long total = 0;
@@ -61,8 +61,8 @@ public:
                 total += n;
                 evaluations += double(n) * lights_[i];
             }
-            stats.light_invocations = total;
-            stats.light_evaluations = (long long)std::llround(evaluations);
+            stats.lights.invocations = total;
+            stats.lights.evaluations = (long long)std::llround(evaluations);
         }
     }
 

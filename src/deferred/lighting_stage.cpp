@@ -72,10 +72,10 @@ void LightingStage::hand_off_depth(const FrameDef& f, RenderTargets& t, const Am
 
 void LightingStage::draw_lighting(const FrameDef& f, const FrameDef& lights, RenderTargets& t, FrameStats& stats,
                                   const AmbientFold* fold) {
-    stats.lights_total = f.lights_total;
-    stats.lights_culled = f.lights_culled;
-    stats.lights_drawn = int(f.lights.size());
-    stats.scissor_pixels = f.scissor_pixels;
+    stats.lights.total = f.lights_total;
+    stats.lights.culled = f.lights_culled;
+    stats.lights.drawn = int(f.lights.size());
+    stats.lights.scissor_pixels = f.scissor_pixels;
     // Whether this frame is counted: decided here for every geometry.
     LightQueries q(counting_ && count_samples_, counting_ && count_invocations_);
     if (fold && fold->by_geometry) {
@@ -83,7 +83,7 @@ void LightingStage::draw_lighting(const FrameDef& f, const FrameDef& lights, Ren
     } else {
         if (fold) {
             draw_fold(f, *fold, q);
-            ++stats.light_passes;
+            ++stats.lights.passes;
         }
         geometry_->draw(lights, t, q, stats);
     }

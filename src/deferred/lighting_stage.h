@@ -42,7 +42,7 @@ public:
     void resize(int width, int height);
     // The depth hand-off again, for paths chosen again (DeferredShader::set_scene).
     void set_handoff(const ShaderConfig& c, ProgramSet& programs);
-    // Counting (FrameStats light_fragments, light_invocations): two queries around every light
+    // Counting (LightCounts fragments, invocations): two queries around every light
     // draw. On by default; the bench turns it off for its timed frames (on a GPU at 1024 lights the
     // queries were most of the CPU's frame) and counts in one more frame after them.
     void set_counting(bool on) { counting_ = on; }

@@ -129,7 +129,7 @@ void ShadowStage::allocate(Map& m, int width, int height) {
                     (packed_ ? " (RGB8 and a depth renderbuffer)" : " (a depth texture)") + ": framebuffer incomplete");
 }
 
-std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scene, GpuScene& gpu, FrameStats& stats) {
+std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scene, GpuScene& gpu, ShadowCounts& stats) {
     std::vector<ShadowLookup> out(size_t(f.shadowed_lights));
     last_.clear();
     if (f.shadowed_lights == 0) return out;
@@ -205,7 +205,7 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
                         }
                     }
                     gpu.draw(rg);
-                    stats.shadow_triangles += rg.count / 3;
+                    stats.triangles += rg.count / 3;
                 }
             };
             if (!main_buffer_) {
@@ -230,7 +230,7 @@ std::vector<ShadowLookup> ShadowStage::draw(const FrameDef& f, const Scene& scen
                                                  if (pieces_overlap(view_rect(layout, v), p)) draw_view(v, p.x, p.y);
                                          });
             }
-            stats.shadow_maps += int(layout.views.size());
+            stats.maps += int(layout.views.size());
             m.generation = next_generation();
         }
         ShadowLookup& k = out[size_t(l.shadow)];

@@ -39,8 +39,8 @@ public:
     // The scene's object bounds for the culling; forgets every map.
     void set_scene(const Scene& scene);
     // The maps of f's shadowed lights (f.shadowed_lights of them, in LightDraw::shadow order),
-    // drawn or reused; counts shadow_maps and shadow_triangles into stats.
-    std::vector<ShadowLookup> draw(const FrameDef& f, const Scene& scene, GpuScene& gpu, FrameStats& stats);
+    // drawn or reused; counts maps and triangles into stats.
+    std::vector<ShadowLookup> draw(const FrameDef& f, const Scene& scene, GpuScene& gpu, ShadowCounts& stats);
     // A map as grey, white far: the texture's texels (row 0 at the bottom), for --view shadow-map.
     Image read_map(const ShadowLookup& m) const;
     bool packed() const { return packed_; }

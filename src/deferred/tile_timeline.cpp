@@ -18,7 +18,7 @@ void TileTimeline::mark(Mark m) {
     s.q[size_t(m)] = stamps_.stamp();
 }
 
-void TileTimeline::end_frame(FrameStats& stats) {
+void TileTimeline::end_frame(TileStats& stats) {
     if (!on_ || !open_) return;
     sets_[size_t(current_)].pending = true;
     open_ = false;
@@ -32,9 +32,9 @@ void TileTimeline::end_frame(FrameStats& stats) {
         for (int m = 0; m < kMarks; ++m)
             if (s.q[size_t(m)]) ms[size_t(m)] = GpuStamps::ms(s.q[size_t(m)]);
         const bool spans = s.q[spans_begin] && s.q[spans_end];
-        stats.tile_gpu_spans_ms = spans ? ms[spans_end] - ms[spans_begin] : -1;
-        stats.tile_gpu_wait_ms = spans ? ms[draws_begin] - ms[spans_end] : -1;
-        stats.tile_gpu_shade_ms = ms[draws_end] - ms[draws_begin];
+        stats.gpu_spans_ms = spans ? ms[spans_end] - ms[spans_begin] : -1;
+        stats.gpu_wait_ms = spans ? ms[draws_begin] - ms[spans_end] : -1;
+        stats.gpu_shade_ms = ms[draws_end] - ms[draws_begin];
         for (int older = age; older < kSets; ++older) sets_[size_t((current_ - older + kSets) % kSets)].pending = false;
         return;
     }

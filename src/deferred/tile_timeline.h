@@ -1,4 +1,4 @@
-// The tiles geometry's light stage as the GPU ran it (FrameStats::tile_gpu_*; `--stats`
+// The tiles geometry's light stage as the GPU ran it (TileStats::gpu_*; `--stats`
 // tiles.gpu_*): four GL timestamps a frame (ARB_timer_query's glQueryCounter), at the start of the
 // depth spans' passes, at their end (before the read-back), before the first light draw and after
 // the last. The GPU stamps each when it reaches it, so the second interval is what the GPU spent
@@ -27,7 +27,7 @@ public:
     void mark(Mark m);
     // After the draws: this frame's set is finished, and the intervals of the latest finished set
     // the GPU has done with go into stats (left at -1 where none is ready).
-    void end_frame(FrameStats& stats);
+    void end_frame(TileStats& stats);
 
 private:
     static constexpr int kSets = 4;  // frames in flight at most; an older set not read is dropped

@@ -189,10 +189,10 @@ void ForwardRenderer::draw_shadow_maps(const Scene& scene, ForwardStats& st) {
     setup.shadows = true;
     const FrameDef f = make_frame(scene.camera, scene.lights, setup);
     if (f.shadowed_lights == 0) return;
-    FrameStats fs;
+    ShadowCounts fs;
     maps_ = shadow_stage_->draw(f, scene, *gpu_, fs);
-    st.shadow_maps = fs.shadow_maps;
-    st.shadow_triangles = fs.shadow_triangles;
+    st.shadow_maps = fs.maps;
+    st.shadow_triangles = fs.triangles;
     light_map_.assign(scene.lights.size(), nullptr);
     for (const LightDraw& l : f.lights)
         if (l.shadow >= 0) light_map_[l.index] = &maps_[size_t(l.shadow)];

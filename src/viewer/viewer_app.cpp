@@ -199,7 +199,7 @@ void Viewer::screenshot(const std::string& path, int w, int h) {
     char line[512];
     std::snprintf(line, sizeof line, " (%dx%d, view %s, scissor %s, panel %s, %d/%d lights drawn, scissor_pixels %lld)",
                   w, h, view_name(st_.options.view), st_.options.shader.scissor ? "on" : "off",
-                  st_.panel ? "on" : "off", s.lights_drawn, s.lights_total, s.scissor_pixels);
+                  st_.panel ? "on" : "off", s.lights.drawn, s.lights.total, s.lights.scissor_pixels);
     auto flag = shot_flags_.find(path);
     if (flag == shot_flags_.end()) {
         write_image(path, img);

@@ -178,15 +178,15 @@ void draw_panel(ViewerState& st, const DeferredShader& ds, const Scene& frame_sc
         }
         ImGui::TextWrapped("loop: the last frame's, with the panel and the swap");
         const FrameStats& s = st.last;
-        ImGui::TextWrapped("lights %d: %d drawn, %d culled", s.lights_total, s.lights_drawn, s.lights_culled);
-        ImGui::TextWrapped("light_fragments   %s", count_text(s.counted_light_fragments()).c_str());
-        ImGui::TextWrapped("light_invocations %s", count_text(s.light_invocations).c_str());
-        ImGui::TextWrapped("light_evaluations %s", count_text(s.light_evaluations).c_str());
+        ImGui::TextWrapped("lights %d: %d drawn, %d culled", s.lights.total, s.lights.drawn, s.lights.culled);
+        ImGui::TextWrapped("light_fragments   %s", count_text(s.lights.counted_fragments()).c_str());
+        ImGui::TextWrapped("light_invocations %s", count_text(s.lights.invocations).c_str());
+        ImGui::TextWrapped("light_evaluations %s", count_text(s.lights.evaluations).c_str());
         ImGui::TextWrapped("ideal             %s%s", count_text(st.ideal).c_str(),
                     st.ideal ? "  (once a second)" : "  (depth-texture path only)");
-        if (st.ideal && *st.ideal > 0 && s.light_evaluations)
-            ImGui::TextWrapped("evaluations / ideal %.3f", double(*s.light_evaluations) / double(*st.ideal));
-        ImGui::TextWrapped("scissor_pixels    %lld", s.scissor_pixels);
+        if (st.ideal && *st.ideal > 0 && s.lights.evaluations)
+            ImGui::TextWrapped("evaluations / ideal %.3f", double(*s.lights.evaluations) / double(*st.ideal));
+        ImGui::TextWrapped("scissor_pixels    %lld", s.lights.scissor_pixels);
 
         std::vector<float> frame_ms, lights_ms;
         for (const FrameSample& f : st.history) {
