@@ -350,10 +350,10 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
     for (auto& [l, fb] : floors.bench)
         for (int i = 0; i < cfg.warmup; ++i) fb->fill_frame(v.scene);
     // The warm-up and the timed frames do not count: the counting queries around every light draw
-    // are the measurement's cost, not the renderer's (on the H200 at 1024 lights most of the CPU's
-    // frame). Off from the warm-up on: llvmpipe compiles a shader's code for the state it is drawn
-    // in, an occlusion query's count included, so a warm-up with the queries on left the compiles
-    // without them to the first timed frame (32-large's tiles row: 1131-1198 ms, the rest 19-25).
+    // are the measurement's cost, not the renderer's (most of the CPU's frame on a GPU). Off from
+    // the warm-up on: llvmpipe compiles a shader's code for the state it is drawn in, an occlusion
+    // query's count included, so a warm-up with the queries on would leave the compiles without
+    // them to the first timed frame (docs/benchmarks.md, "How the rows are timed").
     for (auto& run : runs)
         if (run->ds) run->ds->set_counting(false);
     // Each row's warm-up (warm_up): until its frames stop building programs and exploring.
@@ -384,8 +384,8 @@ void time_frames(const Config& cfg, const Variant& v, Runs& runs, Floors& floors
             for (auto& [l, fb] : floors.bench) floors.fill_ms[l].push_back(fb->fill_frame(v.scene));
     }
     // The CPU goal's frames: dsr's default row's frames again, back to back. In the rounds a frame
-    // runs after the other rows' (24 of them at 4096 lights on an H100 host: 0.76 ms of CPU a
-    // frame there against 0.34-0.41 in renders of the same frame).
+    // runs after the other rows' and finds the caches holding their data, which costs it CPU time a
+    // render of the same frame does not pay (docs/benchmarks.md, "How the rows are timed").
     std::vector<Row> rows;
     for (auto& run : runs) rows.push_back(run->row);
     if (const Row* d = rows.empty() ? nullptr : find_default_row(rows, v.name, rows.front().lights)) {

@@ -104,8 +104,7 @@ struct Row {
     // again after the rounds, those rows alone, kGoalRoundsFactor x as many rounds (goal_rounds_rows):
     // their frames and light stages round by round and the medians (null and empty on the other
     // rows). In the rounds of every row such a verdict between two rows drawing the same passes
-    // flipped with the rounds' noise (auto against the tiles on 1024-overlap: 0.88 in one run,
-    // 1.12 and 1.24 in others).
+    // flips with the rounds' noise (docs/benchmarks.md, "How the rows are timed").
     std::optional<double> goal_rounds_ms, goal_rounds_lights_ms;
     std::vector<double> goal_rounds_frames_ms, goal_rounds_lights_frames_ms;
     // light_fragments: samples that passed the light passes (occlusion queries); light_invocations:
@@ -162,9 +161,9 @@ bool analytic_capable(const Scene& s);
 // kDemoWidth x kDemoHeight unless --size was given; every other variant at the sweep's w x h.
 std::pair<int, int> variant_size(const Config& cfg, LightSet set);
 // The timed frames of a variant: the sweep's, or kLargeFrameFactor times as many on N-large where
-// --frames was not given. Its frames are short (20-30 ms on llvmpipe, but for quad's and the
-// screen's rows), and its goals (demo, law, auto) compare rows within 5-10% of each other, where
-// ten frames of a noisy machine decide the verdict more than the renderers do.
+// --frames was not given. Its frames are short (but for quad's and the screen's rows), and its
+// goals (demo, law, auto) compare close rows, where ten frames of a noisy machine decide the
+// verdict more than the renderers do (docs/benchmarks.md, "How the rows are timed").
 constexpr int kLargeFrameFactor = 3;
 int variant_frames(const Config& cfg, LightSet set);
 // " (N-large M)" where the sweep has an N-large variant timed with M frames other than cfg.frames, else "".
@@ -174,8 +173,8 @@ std::pair<int, int> context_size(const Config& cfg);
 
 // The order in which round `round` of the timed frames takes a variant's rows (indices 0..rows-1):
 // a permutation of its own each round, the same in every run. In one fixed order a GPU's row that
-// followed a long one (quad without the scissor, 45 ms at 1024 lights) paid 0.1-0.5 ms more a frame,
-// most of it CPU time after the long wait, every round (an H100 at 1920x1080).
+// follows a long one pays more a frame, most of it CPU time after the long wait, every round
+// (docs/benchmarks.md, "How the rows are timed").
 std::vector<size_t> round_order(size_t rows, int round);
 
 // The goals' own rounds (Row::goal_rounds_ms): the indices of the rows of `scene` with `lights`
@@ -194,11 +193,10 @@ std::vector<size_t> goal_rounds_rows(const std::vector<Row>& rows, const std::st
 // until a slow frame (its own warm-up); returns the frames run. The timed frames are then the
 // renderer's steady state, whatever it learns first: auto measures a path it has not drawn by
 // drawing it (exploration_plan) and builds a path's programs when it first takes it (the tiles'
-// per-count ones: 3 ms each to link on llvmpipe, more to compile at their first draw). With two
-// frames of warm-up, 256 lights at 512x512 built 13 programs in the first frame and 2 in the
-// third, 39-56 ms against 13; on 32-large auto explored volumes in its first frames, then built
-// the tiles' programs in its first timed frame (122 ms against 20-30). The same rule for every
-// row: a fixed geometry explores nothing. The JSON's warmup_frames and warmup_frames_ms show it.
+// per-count ones, linked and compiled at their first draw). A fixed count of warm-up frames left
+// such builds and explorations among the timed frames (docs/benchmarks.md, "How the rows are
+// timed"). The same rule for every row: a fixed geometry explores nothing. The JSON's
+// warmup_frames and warmup_frames_ms show it.
 struct WarmupFrame {
     bool built = false;      // the frame built a program
     bool exploring = false;  // auto drew lights by a path to measure it

@@ -8,9 +8,9 @@
 // is, not per light as quad's passes are: its image is within a few LSB of quad's, not equal.
 // The demo's loop runs to a constant (`const int NR_LIGHTS = 32`), and so does this one: each
 // batch is drawn by programs compiled for its light count (LIGHTS n, on first use, kept), as the
-// demo's shader is compiled for its lights. A loop to BATCH that breaks at a uniform count, as
-// before, made the row 17% slower than the demo's own loop form on llvmpipe (32-large at 800x600:
-// 62.3 against 52.0 ms), a handicap the peer's algorithm does not have.
+// demo's shader is compiled for its lights. A loop to BATCH that breaks at a uniform count is
+// slower than the demo's own loop form on llvmpipe (docs/light_loop_cpu.md, "Smaller choices in
+// the shaders"), a handicap the peer's algorithm does not have.
 // Shadowed lights ride in the batches too, up to ShaderConfig::shadow_slots a batch (a batch is cut
 // where one more would enter), their maps in the batch's atlas on unit 4, or without framebuffer
 // objects on units 4.. (light_screen.frag SHADOW; ShadowSlots).
@@ -111,9 +111,9 @@ private:
 
     // The point-inverse form for n lights with ATT_SHARED (light_screen.frag), compiled on first
     // use: the demo's lights share one set of constants, and reading them from the array at each
-    // light's index cost this row 20% of its light stage on llvmpipe (32-large at 800x600: 99 against
-    // 77 ms with the constants in one uniform), a handicap the demo's shader does not have on a
-    // GPU. programs_for(f, n) came first this frame.
+    // light's index costs llvmpipe a load per lane (docs/light_loop_cpu.md, "Smaller choices in the
+    // shaders"), a handicap the demo's shader does not have on a GPU. programs_for(f, n) came first
+    // this frame.
     Program& att_shared_program(const FrameDef& f, int n) {
         Compiled& c = by_count_[n];
         if (!c.att_shared.id()) {

@@ -14,9 +14,8 @@
 // A frame is: cull (the depth spans and the tiles' boxes), then per batch plan, upload and draw.
 // A batch of point lights with the attenuation law that all have the same constants (LearnOpenGL's
 // lights do) is drawn by the form that reads them once, as a uniform (light_tiles.frag
-// ATT_SHARED): a CPU rasteriser reads an array at an index from the vertices lane by lane, and
-// the shared form took 32-large's light stage on llvmpipe 0.25-0.9 ms lower (of about 20 ms, six
-// alternations).
+// ATT_SHARED): a CPU rasteriser reads an array at an index from the vertices lane by lane, so the
+// shared form is the faster there (docs/light_loop_cpu.md, "Smaller choices in the shaders").
 // With the vertex fetch (Paths::tile_fetch_vertex, --tile-fetch), a batch of point lights of the
 // linear law or of one attenuation is drawn by light_tiles_flat.vert/.frag instead: a tile's
 // vertices carry its slots one a float, the vertex shader reads its lights out of the arrays once
@@ -315,8 +314,7 @@ private:
     }
 
     // verts_ sized for the draws' vertices of `stride` floats. A member, so its storage is reused:
-    // a fresh multi-megabyte vector each frame cost page faults (at 1920x1080 on llvmpipe, building
-    // these vertices took 1.5-2.9 ms a frame that way).
+    // a fresh multi-megabyte vector each frame costs page faults (docs/tiles.md, "The plan").
     void begin_vertices(const TileDraw* draws, size_t n_draws, int stride) {
         const int ts = tile_size_;
         size_t verts = 0;

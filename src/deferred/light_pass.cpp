@@ -307,8 +307,8 @@ void LightQuadBatch::draw(const FrameDef& f, const std::vector<const LightDraw*>
         }
         gl_state().apply(s);
         arrays_.set(prog, LightArrays::kBatch);
-        // Each batch's vertices in a buffer object of its own: on the H200 at 4096 lights the
-        // driver's copies of client arrays took 0.09 ms of CPU a frame, the uploads 0.03-0.06.
+        // Each batch's vertices in a buffer object of its own: the driver's copies of client arrays
+        // cost the CPU more than the uploads (docs/gpu_frame.md, "Choices these costs decide").
         buffers_.upload_next(verts_.data(), verts_.size() * sizeof(float));
         glVertexPointer(3, GL_FLOAT, 4 * sizeof(float), nullptr);
         glTexCoordPointer(1, GL_FLOAT, 4 * sizeof(float), reinterpret_cast<const void*>(3 * sizeof(float)));
