@@ -309,6 +309,19 @@ TEST(MetalRough, EmissiveAddedOnce) {
     EXPECT_LE(d.max_lsb(), 1.0 + 1e-3);
 }
 
+// Each line after head refused, its one error line starting with the message given.
+template <size_t N>
+void expect_refused(const std::string& head, const std::pair<const char*, const char*> (&bad)[N]) {
+    for (const auto& [line, message] : bad) {
+        try {
+            parse_scene("t.scene", head + line);
+            ADD_FAILURE() << "accepted: " << line;
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()).find(message), 0u) << e.what();
+        }
+    }
+}
+
 // The scene file's material line: both models, and one-line errors naming file:line.
 TEST(MetalRough, SceneFileMaterialLine) {
     const std::string head = "camera pos 0 0 5 target 0 0 0 up 0 1 0 fov 60 near 0.1 far 100\n";
@@ -331,16 +344,8 @@ TEST(MetalRough, SceneFileMaterialLine) {
         {"material m base 1 1 1 metallic 1 roughness 1 shininess 3\n", "t.scene:2: expected one of base"},
         {"material m base 1 1 1 metallic 1 roughness 1 emissive 1 -1 0\n", "t.scene:2: expected emissive component >= 0"},
     };
-    for (const auto& [line, message] : bad) {
-        try {
-            parse_scene("t.scene", head + line);
-            ADD_FAILURE() << "accepted: " << line;
-        } catch (const Error& e) {
-            EXPECT_EQ(std::string(e.what()).find(message), 0u) << e.what();
-        }
-    }
+    expect_refused(head, bad);
 }
-
 
 // The scene file's physical light words: `intensity I candela|lux`, `range R`, a spot's
 // `inner DEGREES`; one-line errors naming file:line.
@@ -373,14 +378,7 @@ TEST(MetalRough, SceneFilePhysicalLights) {
          "t.scene:2: expected exponent or intensity, not both"},
         {"light directional dir 0 -1 0 color 1 1 1 intensity 5 lux range 2\n", "t.scene:2: expected one of dir"},
     };
-    for (const auto& [line, message] : bad) {
-        try {
-            parse_scene("t.scene", head + line);
-            ADD_FAILURE() << "accepted: " << line;
-        } catch (const Error& e) {
-            EXPECT_EQ(std::string(e.what()).find(message), 0u) << e.what();
-        }
-    }
+    expect_refused(head, bad);
 }
 
 // The forward stage (transparent surfaces, docs/forward.md) shades a metallic-roughness material
