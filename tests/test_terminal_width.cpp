@@ -4,6 +4,8 @@
 // hand in every form the sweep makes.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <algorithm>
 #include <map>
 #include <sstream>
@@ -107,6 +109,22 @@ TEST(TerminalWidth, RenderAndCompareFit) {
     EXPECT_NE(r.output.find("median of 1"), std::string::npos) << r.output;
     RunResult c = run("compare " + d + "/a.png " + d + "/b.png");
     EXPECT_EQ(over(c.output), "");
+}
+
+// A model's warnings name its path, however long: printed wrapped, every word kept.
+TEST(TerminalWidth, ModelWarningsFit) {
+    const std::string d = temp_dir() + "/" + std::string(90, 'm');
+    ASSERT_EQ(mkdir(d.c_str(), 0755), 0);
+    std::FILE* f = std::fopen((d + "/tri.obj").c_str(), "w");
+    ASSERT_TRUE(f);
+    std::fputs("v 0 0 0\nv 1 0 0\nv 0 1 0\nunknownstatement 1 2 3\nf 1 2 3\n", f);
+    std::fclose(f);
+    RunResult r = run("render --size 32x32 " + d + "/tri.obj -o " + d + "/tri.png");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(over(r.output), "");
+    const size_t w = r.output.find("warning:");
+    ASSERT_NE(w, std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("unknownstatement", w), std::string::npos) << "the warning's words kept: " << r.output;
 }
 
 TEST(TerminalWidth, StressQuickFits) {

@@ -7,7 +7,9 @@
 #include "app/commands.h"
 #include "app/help_text.h"
 #include "app/stage.h"
+#include "analysis/terminal_text.h"
 #include "dsr_error.h"
+#include "scene/scene.h"
 #include "scene/user_file.h"
 
 namespace {
@@ -28,6 +30,8 @@ const Run kRuns[] = {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // A model's warnings name its path: fitted to the terminal like the rest of the output.
+    dsr::set_warning_printer([](const std::string& w) { std::fprintf(stderr, "%s\n", dsr::wrap_lines("warning: " + w).c_str()); });
     const std::string first = argc < 2 ? "" : argv[1];
     if (argc < 2 || dsr::is_help_flag(first) || first == "help") {
         // `dsr help COMMAND`: that command's usage; `dsr help --markdown`: docs/cli.md.

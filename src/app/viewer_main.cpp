@@ -7,7 +7,9 @@
 
 #include "app/command_table.h"
 #include "app/help_text.h"
+#include "analysis/terminal_text.h"
 #include "dsr_error.h"
+#include "scene/scene.h"
 #include "scene/user_file.h"
 #include "gl/check.h"
 #include "gl/state.h"
@@ -27,6 +29,8 @@ int cmd_view(const std::vector<std::string>& argv) {
 }  // namespace dsr
 
 int main(int argc, char** argv) {
+    // A model's warnings name its path: fitted to the terminal like the rest of the output.
+    dsr::set_warning_printer([](const std::string& w) { std::fprintf(stderr, "%s\n", dsr::wrap_lines("warning: " + w).c_str()); });
     const std::vector<std::string> args(argv + 1, argv + argc);
     for (const std::string& a : args)
         if (dsr::is_help_flag(a)) {

@@ -260,9 +260,12 @@ struct LoadOptions {
 // Parses a scene file (format in docs/scene-format.md); a path ending .obj, .gltf or .glb is a
 // model, framed by model_scene (scene/framing.h). Throws dsr::Error whose message is
 // "FILE:LINE: expected ..., got ..." for any mistake; textures are loaded here.
-// Warnings (what the readers ignored or substituted) are in Scene::warnings and printed to
-// stderr, one line each; with options.strict the first is thrown instead.
+// Warnings (what the readers ignored or substituted) are in Scene::warnings and printed through
+// the warning printer, each once; with options.strict the first is thrown instead.
 Scene load_scene(const std::string& path, const LoadOptions& options = {});
+// Where load_scene prints a warning: by default "warning: TEXT" to stderr on one line; a program
+// fits them to its terminal (app/main.cpp: wrapped at 120 columns). Set once, before loading.
+void set_warning_printer(void (*print)(const std::string& warning));
 // The same from text in memory: `path` names it in messages and resolves relative files;
 // warnings are only collected.
 Scene parse_scene(const std::string& path, const std::string& text);

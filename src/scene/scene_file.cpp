@@ -747,6 +747,11 @@ Sniffed sniff(const std::string& path) {
 
 }  // namespace
 
+namespace {
+void print_warning_line(const std::string& w) { std::fprintf(stderr, "warning: %s\n", w.c_str()); }
+void (*warning_printer)(const std::string&) = print_warning_line;
+}  // namespace
+
 Scene load_scene(const std::string& path, const LoadOptions& options) {
     Scene s;
     if (is_model_path(path)) {
@@ -761,9 +766,11 @@ Scene load_scene(const std::string& path, const LoadOptions& options) {
         if (options.ambient) s.ambient = *options.ambient;
     }
     if (options.strict && !s.warnings.empty()) throw Error(s.warnings.front() + " (--strict: a warning is an error)");
-    for (const std::string& w : s.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    for (const std::string& w : s.warnings) warning_printer(w);
     return s;
 }
+
+void set_warning_printer(void (*print)(const std::string& warning)) { warning_printer = print; }
 
 Scene parse_scene(const std::string& path, const std::string& text) { return Parser(path).run_text(text); }
 
