@@ -2,6 +2,7 @@
 #include "analysis/terminal_text.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 
 namespace dsr {
@@ -205,6 +206,10 @@ std::vector<std::string> lines_over(const std::string& text, size_t width) {
     for (const std::string& line : split_lines(text))
         if (columns(line) > width) over.push_back(line);
     return over;
+}
+
+void print_wrapped_warning(const std::string& warning) {
+    std::fprintf(stderr, "%s\n", wrap_lines("warning: " + warning).c_str());
 }
 
 }  // namespace dsr

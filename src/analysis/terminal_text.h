@@ -29,6 +29,10 @@ std::string text_table(const std::vector<std::string>& header, const std::vector
 // other line as wrap_lines.
 std::string markdown_for_terminal(const std::string& markdown, size_t width = kTerminalWidth);
 
+// A loader's warning to stderr as "warning: TEXT", wrapped like the rest of the output: the
+// warning printer both programs install (scene.h set_warning_printer).
+void print_wrapped_warning(const std::string& warning);
+
 // The lines of `text` longer than `width` columns (counted in UTF-8 characters), for tests.
 std::vector<std::string> lines_over(const std::string& text, size_t width = kTerminalWidth);
 

@@ -31,7 +31,7 @@ const Run kRuns[] = {
 
 int main(int argc, char** argv) {
     // A model's warnings name its path: fitted to the terminal like the rest of the output.
-    dsr::set_warning_printer([](const std::string& w) { std::fprintf(stderr, "%s\n", dsr::wrap_lines("warning: " + w).c_str()); });
+    dsr::set_warning_printer(dsr::print_wrapped_warning);
     const std::string first = argc < 2 ? "" : argv[1];
     if (argc < 2 || dsr::is_help_flag(first) || first == "help") {
         // `dsr help COMMAND`: that command's usage; `dsr help --markdown`: docs/cli.md.

@@ -30,7 +30,7 @@ int cmd_view(const std::vector<std::string>& argv) {
 
 int main(int argc, char** argv) {
     // A model's warnings name its path: fitted to the terminal like the rest of the output.
-    dsr::set_warning_printer([](const std::string& w) { std::fprintf(stderr, "%s\n", dsr::wrap_lines("warning: " + w).c_str()); });
+    dsr::set_warning_printer(dsr::print_wrapped_warning);
     const std::vector<std::string> args(argv + 1, argv + argc);
     for (const std::string& a : args)
         if (dsr::is_help_flag(a)) {
