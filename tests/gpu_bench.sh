@@ -2,17 +2,20 @@
 # dsr on a real GPU (docs/gpu.md). Two steps, because the GPU machine has no network, no GL
 # headers and no OpenImageIO:
 #
-#   tests/gpu_bench.sh fetch [REV]   here: the Debian .debs the build needs into .gpu/debs and a
-#                                    clean copy of REV (default HEAD) into .gpu/src (.gpu/ is
-#                                    git-ignored; about 6 MB in all)
+#   tests/gpu_bench.sh fetch [REV [DIR]]  here: the Debian .debs the build needs into .gpu/debs and
+#                                    a clean copy of REV (default HEAD) into DIR (default .gpu/src;
+#                                    .gpu/ is git-ignored; about 6 MB in all)
 #   tests/gpu_bench.sh run OUTDIR    there (carry .gpu): unpack the GL loaders into / and the
 #                                    headers into .gpu/root, build dsr with the EGL backend only
 #                                    and the libpng image backend, then run info, renders and the
 #                                    GPU bench, writing every result into OUTDIR
 #                                    (GPU_BENCH_SMOKE=1: build, info and one small render only;
+#                                    GPU_BENCH_SRC, GPU_BENCH_BUILD: the source copy and the build
+#                                    folder, default .gpu/src and .gpu/build;
 #                                    GPU_BENCH_SIZES, _FRAMES, _LIGHTS: the bench's sweep;
 #                                    GPU_BENCH_PARTS: some of renders geometry targets ssao
-#                                    forward tiles auto groups fold shadows hdr bench, default all)
+#                                    forward tiles auto goals groups fold shadows hdr bench, default
+#                                    all; GPU_BENCH_ROUNDS: goals' alternations)
 #
 # The build links the system's libEGL/libOpenGL (glvnd, the NVIDIA driver behind them), never
 # libOSMesa; it is the same renderer objects as the headless build.
@@ -24,12 +27,13 @@ step=${1:-}
 case "$step" in
 fetch)
     rev=${2:-HEAD}
+    dest=${3:-.gpu/src}
     mkdir -p .gpu/debs
     (cd .gpu/debs && apt-get download libgl-dev libegl-dev libglx-dev libpng-dev libglm-dev nlohmann-json3-dev \
         libtinyobjloader-dev libtinyobjloader2rc10 libtinygltf-dev zlib1g-dev libegl1 libglvnd0 libopengl0 libgl1 libglx0)
-    rm -rf .gpu/src && mkdir -p .gpu/src
-    git archive "$rev" | tar -x -C .gpu/src
-    git rev-parse "$rev" > .gpu/src/REVISION
+    rm -rf "$dest" && mkdir -p "$dest"
+    git archive "$rev" | tar -x -C "$dest"
+    git rev-parse "$rev" > "$dest/REVISION"
     du -sh .gpu
     ;;
 run)
@@ -44,7 +48,7 @@ run)
     sys=.gpu/root
     rm -rf $sys && mkdir -p $sys
     for f in .gpu/debs/*.deb; do dpkg -x "$f" $sys; done
-    src=.gpu/src
+    src=${GPU_BENCH_SRC:-.gpu/src}  # another fetched copy (e.g. a baseline revision) to build and run
     echo "gpu_bench: source $(cat $src/REVISION 2>/dev/null || echo 'working tree')"
     nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader || true
     lib=/usr/lib/x86_64-linux-gnu
@@ -52,7 +56,7 @@ run)
     for j in /usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json /usr/share/glvnd/egl_vendor.d/10_nvidia.json; do
         if [ -f "$j" ] && [ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}" ]; then export __EGL_VENDOR_LIBRARY_FILENAMES=$j; fi
     done
-    build=$root/.gpu/build
+    build=$root/${GPU_BENCH_BUILD:-.gpu/build}
     mkdir -p $build/obj
     # A response file, so the quoted DSR_SOURCE_DIR survives xargs and sh.
     flags=$build/flags
@@ -192,8 +196,32 @@ run)
             --report "$out/gpu_bench_auto_large.md" | tee "$out/gpu_bench_auto_large.txt"
         for l in own 1024 4096 1024-overlap 32-large; do
             for sc in "1,1,1" "1,1000,1000" "1000,1,1000" "1000,1000,1"; do
-                DSR_LIGHT_COST_SCALE=$sc $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --lights $l \
+                $dsr render --light-cost-scale $sc --context egl --size 1920x1080 --no-bloom --no-aa --lights $l \
                     --frames 30 --stats "$out/auto_${l}_${sc//,/_}.json" -o "$out/auto_${l}.png"
+            done
+        done
+    fi
+    # The goals of docs/gpu.md in one place: LearnOpenGL's demo with its light boxes (--show-lights)
+    # as a user times it, dsr's default against `--light-geometry screen`, plain renders alternated
+    # (GPU_BENCH_ROUNDS times each, 30 frames, ms.frame in each --stats file), at 1920x1080 and the
+    # demo's 800x600; then the CPU of every bench scene by geometry (ms.cpu, tiles' steps).
+    if part goals; then
+        mkdir -p "$out/goals"
+        for s in 1920x1080 800x600; do
+            for r in $(seq ${GPU_BENCH_ROUNDS:-3}); do
+                for g in auto screen; do
+                    $dsr render $src/data/default.scene --context egl --size $s --no-bloom --no-aa --lights 32-large \
+                        --show-lights --light-geometry $g --frames 30 --stats "$out/goals/demo_${s}_${g}_$r.json" \
+                        -o "$out/goals/demo_${s}_$g.png"
+                done
+            done
+            echo "demo $s, auto vs screen: $($dsr compare "$out/goals/demo_${s}_screen.png" "$out/goals/demo_${s}_auto.png" 2>&1 | tail -1)" \
+                | tee -a "$out/goals/compare.txt"
+        done
+        for l in own 256 1024 4096 1024-overlap 32-large; do
+            for g in auto quad volume tiles; do
+                $dsr render $src/data/default.scene --context egl --size 1920x1080 --no-bloom --no-aa --lights $l \
+                    --light-geometry $g --frames 30 --stats "$out/goals/cpu_${l}_$g.json" -o "$out/goals/cpu_${l}_$g.png"
             done
         done
     fi
