@@ -4,7 +4,7 @@
 #
 #   tests/gpu_bench.sh fetch [REV [DIR]]  here: the Debian .debs the build needs into .gpu/debs and
 #                                    a clean copy of REV (default HEAD) into DIR (default .gpu/src;
-#                                    .gpu/ is git-ignored; about 6 MB in all)
+#                                    .gpu/ is git-ignored; about 7 MB in all)
 #   tests/gpu_bench.sh run OUTDIR    there (carry .gpu): unpack the GL loaders into / and the
 #                                    headers into .gpu/root, build dsr with the EGL backend only
 #                                    and the libpng image backend, then run info, renders and the
@@ -33,6 +33,7 @@ fetch)
         libtinyobjloader-dev libtinyobjloader2rc10 libtinygltf-dev zlib1g-dev libegl1 libglvnd0 libopengl0 libgl1 libglx0)
     rm -rf "$dest" && mkdir -p "$dest"
     git archive "$rev" | tar -x -C "$dest"
+    rm -rf "$dest/docs"  # the run needs src, glsl120, data and tests only; docs/gpu's logs are large
     git rev-parse "$rev" > "$dest/REVISION"
     du -sh .gpu
     ;;
