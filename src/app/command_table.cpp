@@ -60,12 +60,13 @@ std::function<void(Args&, const std::string&)> one_scene(std::string& field) { r
 
 Flag context_flag(ContextSettings& c) {
     return text_flag({"--context"}, "NAME", c.backend,
-                     "GL context backend: osmesa (headless Mesa) or egl (an EGL pbuffer: a GPU, or Mesa)",
+                     "GL context backend: osmesa (headless Mesa), egl (an EGL pbuffer: a GPU, or Mesa) or egl-gles2 "
+                     "(the same on OpenGL ES 2.0, docs/gles2.md)",
                      "$DSR_CONTEXT, else osmesa");
 }
 
 Flag egl_device_flag(ContextSettings& c) {
-    return int_flag("--egl-device", "N", 0, 15, c.egl_device, "with --context egl: the EGL device", "$DSR_EGL_DEVICE, else 0");
+    return int_flag("--egl-device", "N", 0, 15, c.egl_device, "with --context egl or egl-gles2: the EGL device", "$DSR_EGL_DEVICE, else 0");
 }
 
 Flag caps_flag(std::string& field) {

@@ -100,6 +100,12 @@ int cmd_info(const std::vector<std::string>& argv) {
     }
     appendf(out, "  --textures srgb %s\n", caps.texture_srgb ? "EXT_texture_sRGB: colour maps decoded when sampled"
                                                            : "no EXT_texture_sRGB: colour maps decoded on upload into RGBA16");
+    if (caps.es) {
+        // The probes and the programs below draw with what this dialect has not been given yet.
+        appendf(out, "  OpenGL ES 2.0: the rounding probe, the timing check and the programs are not built here yet (docs/gles2.md)\n");
+        std::fputs(wrap_lines(out).c_str(), stdout);
+        return 0;
+    }
     if (caps.fbo) out += describe(probe_unorm8_rounding());
     const TimingCheck& t = choose_timing(caps, ctx->width(), ctx->height());
     appendf(out, "  timing         %s (%s", timing_name(t.source), t.reason.c_str());

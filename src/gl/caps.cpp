@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <sstream>
 
 #include "dsr_error.h"
@@ -28,6 +29,65 @@ static std::string gl_string(GLenum e) {
     return s ? s : "";
 }
 
+namespace {
+
+// OpenGL ES 2.0's capabilities, each mapped onto the desktop flag whose path it stands in for
+// (docs/gles2.md has the table). Only ES 2.0 and extensions count, never a newer ES version's
+// core: Mesa gives ES 3.2 for an ES 2.0 request.
+void probe_es_caps(Caps& c, const std::function<bool(const char*)>& off) {
+    c.es = true;
+    // "OpenGL ES 2.0 Mesa ..." and "OpenGL ES GLSL ES 1.0.16".
+    std::sscanf(c.version.c_str(), "OpenGL ES %d.%d", &c.gl_major, &c.gl_minor);
+    std::sscanf(c.glsl_version.c_str(), "OpenGL ES GLSL ES %d.%d", &c.glsl_major, &c.glsl_minor);
+    // GLSL ES 1.00 runs the glsl120/ sources through its prelude; nothing of 1.30 (flat varyings).
+    c.glsl120 = c.gl_major >= 2 && !off("no-glsl");
+    c.glsl130 = false;
+    GLint varyings = 0;
+    glGetIntegerv(GL_MAX_VARYING_VECTORS, &varyings);
+    c.max_varying_components = varyings * 4;
+    // EXT_draw_buffers, or NVIDIA's NV_draw_buffers (its attachments beyond the first need
+    // NV_fbo_color_attachments); the same GL_MAX_DRAW_BUFFERS enum.
+    if (has_extension("GL_EXT_draw_buffers")) c.es_draw_buffers = "GL_EXT_draw_buffers";
+    else if (has_extension("GL_NV_draw_buffers") && has_extension("GL_NV_fbo_color_attachments"))
+        c.es_draw_buffers = "GL_NV_draw_buffers";
+    c.draw_buffers = !c.es_draw_buffers.empty() && gl_entry.DrawBuffersARB && !off("no-mrt");
+    GLint mdb = 1;
+    if (c.draw_buffers) glGetIntegerv(GL_MAX_DRAW_BUFFERS_ARB, &mdb);
+    c.max_draw_buffers = c.draw_buffers ? mdb : 1;
+    if (c.max_draw_buffers < 2) c.draw_buffers = false;
+    c.depth_texture = (has_extension("GL_OES_depth_texture") || has_extension("GL_ANGLE_depth_texture")) &&
+                      !off("no-depth-texture");
+    // EXT_shadow_samplers would give shadow2DEXT; without it the maps are packed and compared in
+    // the shader, as without ARB_shadow.
+    c.shadow = c.depth_texture && has_extension("GL_EXT_shadow_samplers") && !off("no-shadow");
+    c.fbo = !off("no-fbo");  // framebuffer objects are core in ES 2.0
+    c.fbo_mixed_formats = c.fbo && !off("no-arb-fbo");  // ES 2.0 asks no one format of a framebuffer's targets
+    // ES 2.0 core samples non-power-of-two textures only without mipmaps and with clamping; the
+    // material maps need both, so npot is OES_texture_npot's.
+    c.npot = has_extension("GL_OES_texture_npot") && !off("no-npot");
+    // Float targets: ES 2.0 renders into none. OES_texture_float / OES_texture_half_float with
+    // EXT_color_buffer_half_float give half-float targets of unsized formats, which dsr's float
+    // paths (sized RGBA16F/RGBA32F) do not take yet: both stay off, and those paths refuse.
+    c.texture_float = false;
+    c.half_float = false;
+    c.texture_srgb = has_extension("GL_EXT_sRGB") && !off("no-srgb-texture");
+    c.occlusion_query = false;  // EXT_occlusion_query_boolean: any sample passed, not how many
+    c.pipeline_statistics = false;
+    c.timer_query = false;  // EXT_disjoint_timer_query is not loaded: wall-clock timing
+    GLint stencil_bits = 0;
+    glGetIntegerv(GL_STENCIL_BITS, &stencil_bits);
+    c.stencil = stencil_bits >= 8 && !off("no-stencil");
+    c.packed_depth_stencil = has_extension("GL_OES_packed_depth_stencil") && !off("no-packed-depth-stencil");
+    c.stencil_separate = !off("no-stencil-separate") && !off("no-stencil-two-side");  // core in ES 2.0
+    c.stencil_two_side_ext = false;
+    c.depth_bounds = false;
+    c.framebuffer_blit = c.fbo && gl_entry.BlitFramebufferEXT && !off("no-framebuffer-blit");  // NV_/ANGLE_framebuffer_blit
+    c.frag_depth = has_extension("GL_EXT_frag_depth");
+    c.pbuffer_surfaces = false;
+}
+
+}  // namespace
+
 Caps probe_caps(const std::vector<std::string>& force_off) {
     const std::string unknown = check_cap_names(force_off);
     if (!unknown.empty()) throw Error(unknown);
@@ -46,6 +106,12 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
     c.max_point_size = point_range[1];
     c.version = gl_string(GL_VERSION);
     c.glsl_version = gl_string(GL_SHADING_LANGUAGE_VERSION);
+    if (current_gl_is_es()) {
+        probe_es_caps(c, off);
+        c.forced_off = force_off;
+        while (glGetError() != GL_NO_ERROR) {}
+        return c;
+    }
     std::sscanf(c.version.c_str(), "%d.%d", &c.gl_major, &c.gl_minor);
     std::sscanf(c.glsl_version.c_str(), "%d.%d", &c.glsl_major, &c.glsl_minor);
     auto at_least = [](int ma, int mi, int wa, int wi) { return ma > wa || (ma == wa && mi >= wi); };
@@ -107,7 +173,54 @@ Caps probe_caps(const std::vector<std::string>& force_off) {
     return c;
 }
 
+namespace {
+
+// describe() on OpenGL ES 2.0: each capability with the ES extension it is read from and the
+// desktop path it maps onto.
+std::string describe_es(const Caps& c) {
+    std::ostringstream o;
+    auto yn = [](bool b) { return b ? "yes" : "no "; };
+    auto ext = [](const char* e) { return has_extension(e) ? std::string(e + 3) : std::string("no ") + (e + 3); };
+    o << "GL_VENDOR      " << c.vendor << "\n"
+      << "GL_RENDERER    " << c.renderer << "\n"
+      << "GL_VERSION     " << c.version << " (read as OpenGL ES 2.0 and its extensions)\n"
+      << "GLSL           " << c.glsl_version << "\n"
+      << "capabilities on OpenGL ES 2.0 (the ES extension -> the desktop path it takes):\n"
+      << "  " << yn(c.glsl120) << " GLSL ES 1.00             (the glsl120/ sources through the ES prelude), "
+      << c.max_varying_components << " varying components\n"
+      << "  " << yn(c.draw_buffers) << " multiple render targets  ("
+      << (c.es_draw_buffers.empty() ? "no EXT_draw_buffers, no NV_draw_buffers" : c.es_draw_buffers.substr(3))
+      << " -> mrt), max " << c.max_draw_buffers << "\n"
+      << "  " << yn(c.depth_texture) << " depth textures           (" << ext("GL_OES_depth_texture") << " -> --depth texture)\n"
+      << "  " << yn(c.shadow) << " depth comparison         (" << ext("GL_EXT_shadow_samplers") << " -> shadow2D; else packed maps)\n"
+      << "  " << yn(c.fbo) << " render to texture        (framebuffer objects, core in ES 2.0 -> fbo)\n"
+      << "  " << yn(c.npot) << " non-power-of-two         (" << ext("GL_OES_texture_npot") << " -> npot; else pow2)\n"
+      << "  " << yn(c.texture_float) << " float targets            (" << ext("GL_OES_texture_float") << ", "
+      << ext("GL_OES_texture_half_float") << ", " << ext("GL_EXT_color_buffer_half_float")
+      << ": unsized half-float targets, not taken: float paths refuse)\n"
+      << "  " << yn(c.texture_srgb) << " sRGB textures            (" << ext("GL_EXT_sRGB") << ")\n"
+      << "  " << yn(c.occlusion_query) << " occlusion queries        (" << ext("GL_EXT_occlusion_query_boolean")
+      << ": yes/no only, light_fragments not counted)\n"
+      << "  " << yn(c.timer_query) << " timer queries            (wall clock)\n"
+      << "  " << yn(c.stencil) << " stencil buffer           (8 bits in the main frame buffer)\n"
+      << "  " << yn(c.packed_depth_stencil) << " depth-stencil targets    (" << ext("GL_OES_packed_depth_stencil") << ")\n"
+      << "  " << yn(c.stencil_separate) << " two-sided stencil        (glStencilOpSeparate, core in ES 2.0)\n"
+      << "  " << yn(c.framebuffer_blit) << " framebuffer blit         (" << ext("GL_NV_framebuffer_blit") << ", "
+      << ext("GL_ANGLE_framebuffer_blit") << ")\n"
+      << "  " << yn(c.frag_depth) << " gl_FragDepth             (" << ext("GL_EXT_frag_depth") << ")\n"
+      << "  " << yn(c.software_rasterizer) << " CPU rasteriser           (llvmpipe, softpipe or swrast)\n";
+    if (!c.forced_off.empty()) {
+        o << "forced off:";
+        for (auto& f : c.forced_off) o << " " << f;
+        o << "\n";
+    }
+    return o.str();
+}
+
+}  // namespace
+
 std::string describe(const Caps& c) {
+    if (c.es) return describe_es(c);
     std::ostringstream o;
     auto yn = [](bool b) { return b ? "yes" : "no "; };
     o << "GL_VENDOR      " << c.vendor << "\n"

@@ -12,6 +12,14 @@ namespace dsr {
 struct Caps {
     std::string vendor, renderer, version, glsl_version;
     int gl_major = 0, gl_minor = 0, glsl_major = 0, glsl_minor = 0;
+    // OpenGL ES 2.0 (docs/gles2.md): every flag below is read from ES 2.0 and its extensions, each
+    // mapped onto the desktop capability whose path it stands in for; the shaders are the
+    // glsl120/ sources through the GLSL ES 1.00 prelude (gl/glsl_dialect.h).
+    bool es = false;
+    // ES only: the extension the G-buffer's targets come from (GL_EXT_draw_buffers or
+    // GL_NV_draw_buffers; empty: one target), and gl_FragDepth (EXT_frag_depth; desktop GLSL has it).
+    std::string es_draw_buffers;
+    bool frag_depth = true;
     bool glsl120 = false;            // GLSL 1.20 (OpenGL 2.1): every shader is #version 120
     // GLSL 1.30 (OpenGL 3.0): flat varyings and roundEven, for the tiles' vertex fetch
     // (light_tiles_flat.vert/.frag, Paths::tile_fetch_vertex); every other shader stays 1.20.

@@ -67,6 +67,14 @@ typedef void(APIENTRYP DSR_PFNGLMULTITEXCOORD3FPROC)(GLenum target, GLfloat s, G
     X(PFNGLUNIFORM3FVPROC, Uniform3fv)                               \
     X(PFNGLUNIFORM4FPROC, Uniform4f)                                 \
     X(PFNGLUNIFORM4FVPROC, Uniform4fv)                               \
+    X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)                   \
+    X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                   \
+    /* GL 2.0 generic vertex attributes (OpenGL ES 2.0 has no others) */ \
+    X(PFNGLBINDATTRIBLOCATIONPROC, BindAttribLocation)               \
+    X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)             \
+    X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray)     \
+    X(PFNGLDISABLEVERTEXATTRIBARRAYPROC, DisableVertexAttribArray)   \
+    X(PFNGLVERTEXATTRIB4FPROC, VertexAttrib4f)                       \
     /* ARB_draw_buffers */                                           \
     X(PFNGLDRAWBUFFERSARBPROC, DrawBuffersARB)                       \
     /* EXT_framebuffer_object */                                     \
@@ -108,9 +116,14 @@ extern GLEntryPoints gl_entry;
 // Address of a GL entry point by its name ("glUseProgram"); null when absent.
 using GLProcAddress = std::function<void*(const char* name)>;
 
+// Whether the current context is OpenGL ES (its GL_VERSION starts "OpenGL ES").
+bool current_gl_is_es();
+
 // Fills gl_entry through proc_address, which answers for the current context; `source` names
 // that context in the error (its backend, "osmesa"). When a required entry point is missing,
-// throws one dsr::Error naming every missing one and leaves gl_entry as it was.
+// throws one dsr::Error naming every missing one and leaves gl_entry as it was. On OpenGL ES 2.0
+// each slot is filled by its ES name (glGenFramebuffers, glDrawBuffersEXT or glDrawBuffersNV,
+// ...); the slots ES 2.0 lacks (the fixed-function texture coordinates, counting queries) stay null.
 void load_gl_entry_points(const GLProcAddress& proc_address, const std::string& source);
 
 // Every entry in the table, for tests and `dsr info`: its GL name, whether it is required and

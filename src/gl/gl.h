@@ -49,6 +49,13 @@
 #define glUniform3fv ::dsr::gl_entry.Uniform3fv
 #define glUniform4f ::dsr::gl_entry.Uniform4f
 #define glUniform4fv ::dsr::gl_entry.Uniform4fv
+#define glUniformMatrix3fv ::dsr::gl_entry.UniformMatrix3fv
+#define glUniformMatrix4fv ::dsr::gl_entry.UniformMatrix4fv
+#define glBindAttribLocation ::dsr::gl_entry.BindAttribLocation
+#define glVertexAttribPointer ::dsr::gl_entry.VertexAttribPointer
+#define glEnableVertexAttribArray ::dsr::gl_entry.EnableVertexAttribArray
+#define glDisableVertexAttribArray ::dsr::gl_entry.DisableVertexAttribArray
+#define glVertexAttrib4f ::dsr::gl_entry.VertexAttrib4f
 #define glDrawBuffersARB ::dsr::gl_entry.DrawBuffersARB
 #define glGenFramebuffersEXT ::dsr::gl_entry.GenFramebuffersEXT
 #define glBindFramebufferEXT ::dsr::gl_entry.BindFramebufferEXT

@@ -6,6 +6,8 @@
 #include <utility>
 
 #include "dsr_error.h"
+#include "gl/caps.h"
+#include "gl/glsl_dialect.h"
 
 namespace dsr {
 
@@ -65,15 +67,31 @@ static GLuint compile(GLenum type, const std::string& src, const std::string& la
     return s;
 }
 
+// The current context's shader dialect (glsl_dialect.h): desktop GLSL, or GLSL ES 1.00 with the
+// extensions this OpenGL ES offers.
+static GlslDialect current_dialect() {
+    GlslDialect d;
+    d.es = current_gl_is_es();
+    if (!d.es) return d;
+    if (has_extension("GL_EXT_draw_buffers")) d.draw_buffers = "GL_EXT_draw_buffers";
+    else if (has_extension("GL_NV_draw_buffers")) d.draw_buffers = "GL_NV_draw_buffers";
+    d.frag_depth = has_extension("GL_EXT_frag_depth");
+    d.shadow_samplers = has_extension("GL_EXT_shadow_samplers");
+    return d;
+}
+
 Program::Program(const std::string& dir, const std::string& vert, const std::string& frag,
                  const std::vector<std::string>& defines) {
     name_ = vert + "+" + frag;
     for (auto& d : defines) name_ += " " + d;
     ++built_;
-    GLuint vs = compile(GL_VERTEX_SHADER, with_defines(load_shader_source(dir, vert), defines), vert);
+    const GlslDialect dialect = current_dialect();
+    GLuint vs = compile(GL_VERTEX_SHADER,
+                        glsl_in_dialect(with_defines(load_shader_source(dir, vert), defines), dialect, true, vert), vert);
     GLuint fs;
     try {
-        fs = compile(GL_FRAGMENT_SHADER, with_defines(load_shader_source(dir, frag), defines), frag);
+        fs = compile(GL_FRAGMENT_SHADER,
+                     glsl_in_dialect(with_defines(load_shader_source(dir, frag), defines), dialect, false, frag), frag);
     } catch (...) {
         glDeleteShader(vs);
         throw;
@@ -81,6 +99,9 @@ Program::Program(const std::string& dir, const std::string& vert, const std::str
     id_ = glCreateProgram();
     glAttachShader(id_, vs);
     glAttachShader(id_, fs);
+    // The prelude's attributes at fixed locations, so the drawing code feeds them without asking.
+    if (dialect.es)
+        for (const EsAttribute& a : es_attributes()) glBindAttribLocation(id_, a.location, a.glsl);
     glLinkProgram(id_);
     glDeleteShader(vs);
     glDeleteShader(fs);

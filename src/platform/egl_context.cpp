@@ -1,7 +1,8 @@
-// An EGL context: a desktop OpenGL compatibility context asking for 2.1 with a pbuffer surface
-// as the main frame buffer, on the EGL device platform (EGL_EXT_platform_device: the first
-// device, or --egl-device N), else Mesa's surfaceless platform, else the default display. On
-// an NVIDIA GPU this gives GL 4.6 compatibility; on Mesa here, llvmpipe (so CI tests it).
+// An EGL context: a desktop OpenGL compatibility context asking for 2.1 (`egl`), or an OpenGL ES
+// 2.0 context (`egl-gles2`, docs/gles2.md), with a pbuffer surface as the main frame buffer, on
+// the EGL device platform (EGL_EXT_platform_device: the first device, or --egl-device N), else
+// Mesa's surfaceless platform, else the default display. On an NVIDIA GPU desktop GL gives GL 4.6
+// compatibility; on Mesa here, llvmpipe (so CI tests both).
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
@@ -80,35 +81,48 @@ EGLDisplay open_display(int device, std::string& platform) {
 // surfaces of one config, made current with the one context.
 class EGLGLContext : public GLContext, public OffscreenSurfaces {
 public:
-    EGLGLContext(int w, int h, int device) : w_(w), h_(h) {
+    // gles2: an OpenGL ES 2.0 context instead of desktop OpenGL.
+    EGLGLContext(int w, int h, int device, bool gles2) : w_(w), h_(h), gles2_(gles2) {
         dpy_ = open_display(device, platform_);
         if (dpy_ == EGL_NO_DISPLAY) fail("no display");
         EGLint major = 0, minor = 0;
         if (!eglInitialize(dpy_, &major, &minor)) fail("cannot initialise the display (" + platform_ + ")");
         version_ = std::to_string(major) + "." + std::to_string(minor);
-        if (!eglBindAPI(EGL_OPENGL_API)) fail("desktop OpenGL is not offered (eglBindAPI)");
+        const char* api = gles2 ? "OpenGL ES 2.0" : "desktop OpenGL";
+        if (!eglBindAPI(gles2 ? EGL_OPENGL_ES_API : EGL_OPENGL_API))
+            fail(std::string(api) + " is not offered (eglBindAPI)");
         // RGBA8 with a 24-bit depth and 8-bit stencil main buffer, as the OSMesa context has.
-        const EGLint config_attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+        const EGLint config_attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE,
+                                         gles2 ? EGL_OPENGL_ES2_BIT : EGL_OPENGL_BIT,
                                          EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
                                          EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8, EGL_NONE};
         EGLConfig& config = config_;
         EGLint n = 0;
         if (!eglChooseConfig(dpy_, config_attribs, &config, 1, &n) || n < 1)
-            fail("no RGBA8 pbuffer config with 24-bit depth and 8-bit stencil for desktop OpenGL");
+            fail(std::string("no RGBA8 pbuffer config with 24-bit depth and 8-bit stencil for ") + api);
         const EGLint surface_attribs[] = {EGL_WIDTH, w, EGL_HEIGHT, h, EGL_NONE};
         surface_ = eglCreatePbufferSurface(dpy_, config, surface_attribs);
         if (surface_ == EGL_NO_SURFACE) fail("cannot create a " + std::to_string(w) + "x" + std::to_string(h) + " pbuffer");
-        // The oldest profile the tutorial needs: compatibility 2.1 (a newer compatibility
-        // version is a superset and fine).
-        const EGLint ctx_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 2, EGL_CONTEXT_MINOR_VERSION, 1,
-                                      EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
-                                      EGL_NONE};
-        ctx_ = eglCreateContext(dpy_, config, EGL_NO_CONTEXT, ctx_attribs);
-        if (ctx_ == EGL_NO_CONTEXT) ctx_ = eglCreateContext(dpy_, config, EGL_NO_CONTEXT, nullptr);
-        if (ctx_ == EGL_NO_CONTEXT) fail("cannot create a desktop OpenGL context");
+        if (gles2) {
+            // ES 2.0 asked for; Mesa gives its newest ES (a superset), and dsr reads only ES 2.0 and
+            // its extensions from it (gl/caps.h).
+            const EGLint es_attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
+            ctx_ = eglCreateContext(dpy_, config, EGL_NO_CONTEXT, es_attribs);
+        } else {
+            // The oldest profile the tutorial needs: compatibility 2.1 (a newer compatibility
+            // version is a superset and fine).
+            const EGLint ctx_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 2, EGL_CONTEXT_MINOR_VERSION, 1,
+                                          EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
+                                          EGL_NONE};
+            ctx_ = eglCreateContext(dpy_, config, EGL_NO_CONTEXT, ctx_attribs);
+            if (ctx_ == EGL_NO_CONTEXT) ctx_ = eglCreateContext(dpy_, config, EGL_NO_CONTEXT, nullptr);
+        }
+        if (ctx_ == EGL_NO_CONTEXT) fail(std::string("cannot create an ") + api + " context");
         make_current();
         const char* vendor = eglQueryString(dpy_, EGL_VENDOR);
         vendor_ = vendor ? vendor : "";
+        // An ES context offers no P-buffer surfaces: --render-target pbuffer is a desktop path.
+        if (gles2) return;
         // Render-to-texture pbuffers (eglBindTexImage): configs that offer them for desktop GL.
         const EGLint rtt_attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
                                       EGL_BIND_TO_TEXTURE_RGBA, EGL_TRUE, EGL_NONE};
@@ -129,9 +143,9 @@ public:
     }
     int width() const override { return w_; }
     int height() const override { return h_; }
-    std::string backend() const override { return "egl"; }
+    std::string backend() const override { return gles2_ ? "egl-gles2" : "egl"; }
     std::string description() const override {
-        return "EGL " + version_ + " (" + vendor_ + "), " + platform_ + ", pbuffer " + std::to_string(w_) + "x" +
+        return "EGL " + version_ + " (" + vendor_ + "), " + (gles2_ ? "OpenGL ES 2.0 context, " : "") + platform_ + ", pbuffer " + std::to_string(w_) + "x" +
                std::to_string(h_);
     }
     void* proc_address(const char* name) const override { return reinterpret_cast<void*>(eglGetProcAddress(name)); }
@@ -157,6 +171,7 @@ public:
 
 private:
     int w_, h_;
+    bool gles2_;
     EGLConfig config_ = nullptr;
     std::string bind_tex_note_;
     EGLDisplay dpy_ = EGL_NO_DISPLAY;
@@ -167,10 +182,10 @@ private:
 
 }  // namespace
 
-std::unique_ptr<GLContext> create_egl_context(int width, int height, int device) {
+std::unique_ptr<GLContext> create_egl_context(int width, int height, int device, bool gles2) {
     if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
         throw Error("EGL: bad main buffer size " + std::to_string(width) + "x" + std::to_string(height));
-    return std::make_unique<EGLGLContext>(width, height, device);
+    return std::make_unique<EGLGLContext>(width, height, device, gles2);
 }
 
 }  // namespace dsr

@@ -6,14 +6,15 @@
 
 namespace dsr {
 
-std::unique_ptr<GLContext> create_egl_context(int width, int height, int device);  // egl_context.cpp
+// gles2: an OpenGL ES 2.0 context (`egl-gles2`) instead of desktop OpenGL.
+std::unique_ptr<GLContext> create_egl_context(int width, int height, int device, bool gles2);  // egl_context.cpp
 #ifndef DSR_NO_OSMESA
 std::unique_ptr<GLContext> create_osmesa_context(int width, int height);  // osmesa_context.cpp
-std::vector<std::string> context_backends() { return {"osmesa", "egl"}; }
+std::vector<std::string> context_backends() { return {"osmesa", "egl", "egl-gles2"}; }
 #else
 // A build for a machine without Mesa (tests/gpu_bench.sh): EGL only, linked against the
 // system's libOpenGL/libEGL (glvnd) instead of libOSMesa.
-std::vector<std::string> context_backends() { return {"egl"}; }
+std::vector<std::string> context_backends() { return {"egl", "egl-gles2"}; }
 #endif
 
 std::string default_context_backend() { return context_backends().front(); }
@@ -23,8 +24,8 @@ std::unique_ptr<GLContext> create_context(const ContextDesc& d) {
 #ifndef DSR_NO_OSMESA
     if (d.backend == "osmesa") ctx = create_osmesa_context(d.width, d.height);
 #endif
-    if (d.backend == "egl") {
-        ctx = create_egl_context(d.width, d.height, d.egl_device < 0 ? 0 : d.egl_device);
+    if (d.backend == "egl" || d.backend == "egl-gles2") {
+        ctx = create_egl_context(d.width, d.height, d.egl_device < 0 ? 0 : d.egl_device, d.backend == "egl-gles2");
     }
     if (ctx) {
         // Reloaded with every context: another backend's entry points may differ.
