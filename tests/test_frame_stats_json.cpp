@@ -39,6 +39,12 @@ std::vector<std::pair<std::string, std::function<void(FrameStats&)>>> field_chan
         {"tiles.depth", [](S s) { s.tiles.depth = true; }},
         {"tiles.depth_ms", [](S s) { s.tiles.depth_ms = 0.5; }},
         {"tiles.plan_ms", [](S s) { s.tiles.plan_ms = 0.25; }},
+        {"tiles.spans_cpu_ms", [](S s) { s.tiles.spans_cpu_ms = 0.125; }},
+        {"tiles.wait_cpu_ms", [](S s) { s.tiles.wait_cpu_ms = 0.375; }},
+        {"tiles.cull_cpu_ms", [](S s) { s.tiles.cull_cpu_ms = 0.0625; }},
+        {"tiles.plan_cpu_ms", [](S s) { s.tiles.plan_cpu_ms = 0.1875; }},
+        {"tiles.upload_cpu_ms", [](S s) { s.tiles.upload_cpu_ms = 0.3125; }},
+        {"tiles.wait_ms", [](S s) { s.tiles.wait_ms = 0.75; }},
         {"tiles.gpu_spans_ms", [](S s) { s.tiles.gpu_spans_ms = 1.5; }},
         {"tiles.gpu_wait_ms", [](S s) { s.tiles.gpu_wait_ms = 2.5; }},
         {"tiles.gpu_shade_ms", [](S s) { s.tiles.gpu_shade_ms = 3.5; }},
@@ -144,7 +150,10 @@ TEST(FrameStatsJson, EachPartWritesItsKeys) {
                                  {"ambient_in_handoff", false}, {"ambient_writer", "light-fold"}, {"final", false},
                                  {"depth_complexity", 1.75}}));
     EXPECT_EQ(j["tiles"], json({{"vertex_fetch_batches", 6}, {"tile_light_pairs", 77}, {"shared_attenuation_batches", 4},
-                                {"depth_culling", true}, {"depth_ms", 0.5}, {"plan_ms", 0.25}, {"gpu_spans_ms", 1.5},
+                                {"depth_culling", true}, {"depth_ms", 0.5}, {"plan_ms", 0.25},
+                                {"cpu_ms", {{"spans", 0.125}, {"wait", 0.375}, {"cull", 0.0625}, {"plan", 0.1875},
+                                            {"upload", 0.3125}}},
+                                {"wait_ms", 0.75}, {"gpu_spans_ms", 1.5},
                                 {"gpu_wait_ms", 2.5}, {"gpu_shade_ms", 3.5}}));
     EXPECT_EQ(j["auto"]["lights"], json({{"quad", 1}, {"volume", 2}, {"tiles", 3}}));
     EXPECT_EQ(j["auto"]["scale"], json({{"quad", 1.25}, {"volume", 0.75}, {"tiles", 2.0}}));
@@ -178,12 +187,16 @@ TEST(FrameStatsJson, ReportedFrameTakesTheTimedFramesMedians) {
     a.ms.lights = 1, b.ms.lights = 5, c.ms.lights = 3, counted.ms.lights = 100;
     a.tiles.gpu_shade_ms = -1, b.tiles.gpu_shade_ms = 4, c.tiles.gpu_shade_ms = 6;
     a.auto_geometry.predicted_ms = 2, b.auto_geometry.predicted_ms = 2, c.auto_geometry.predicted_ms = 9;
+    a.tiles.plan_cpu_ms = 0.5, b.tiles.plan_cpu_ms = 0.1, c.tiles.plan_cpu_ms = 0.2, counted.tiles.plan_cpu_ms = 7;
+    a.tiles.wait_ms = 3, b.tiles.wait_ms = 1, c.tiles.wait_ms = 2, counted.tiles.wait_ms = 9;
     counted.lights.drawn = 12;
     const FrameStats r = reported_frame({a, b, c}, counted);
     EXPECT_EQ(r.ms.lights, 3);
     EXPECT_EQ(r.tiles.gpu_shade_ms, 5) << "the median of the frames that measured it";
     EXPECT_EQ(r.tiles.gpu_spans_ms, -1) << "none measured it";
     EXPECT_EQ(r.auto_geometry.predicted_ms, 2);
+    EXPECT_EQ(r.tiles.plan_cpu_ms, 0.2) << "the tiles' CPU by step, medians too";
+    EXPECT_EQ(r.tiles.wait_ms, 2);
     EXPECT_EQ(r.lights.drawn, 12);
 }
 

@@ -41,7 +41,10 @@ json to_json(const LightCounts& c) {
 json to_json(const TileStats& t) {
     return {{"vertex_fetch_batches", t.vertex_batches}, {"tile_light_pairs", t.light_pairs},
             {"shared_attenuation_batches", t.att_shared_batches}, {"depth_culling", t.depth},
-            {"depth_ms", t.depth_ms}, {"plan_ms", t.plan_ms}, {"gpu_spans_ms", measured(t.gpu_spans_ms)},
+            {"depth_ms", t.depth_ms}, {"plan_ms", t.plan_ms},
+            {"cpu_ms", {{"spans", t.spans_cpu_ms}, {"wait", t.wait_cpu_ms}, {"cull", t.cull_cpu_ms},
+                        {"plan", t.plan_cpu_ms}, {"upload", t.upload_cpu_ms}}},
+            {"wait_ms", t.wait_ms}, {"gpu_spans_ms", measured(t.gpu_spans_ms)},
             {"gpu_wait_ms", measured(t.gpu_wait_ms)}, {"gpu_shade_ms", measured(t.gpu_shade_ms)}};
 }
 
@@ -115,8 +118,10 @@ FrameStats reported_frame(const std::vector<FrameStats>& timed, const FrameStats
                                   &StageTimes::depth_copy, &StageTimes::forward, &StageTimes::shadows, &StageTimes::cpu,
                                   &StageTimes::cpu_make_frame, &StageTimes::cpu_lights})
         m.*f = med([&](const FrameStats& s) { return s.ms.*f; });
-    r.tiles.depth_ms = med([](const FrameStats& s) { return s.tiles.depth_ms; });
-    r.tiles.plan_ms = med([](const FrameStats& s) { return s.tiles.plan_ms; });
+    for (double TileStats::*f : {&TileStats::depth_ms, &TileStats::plan_ms, &TileStats::spans_cpu_ms, &TileStats::wait_cpu_ms,
+                                 &TileStats::cull_cpu_ms, &TileStats::plan_cpu_ms, &TileStats::upload_cpu_ms,
+                                 &TileStats::wait_ms})
+        r.tiles.*f = med([&](const FrameStats& s) { return s.tiles.*f; });
     r.tiles.gpu_spans_ms = med_measured([](const FrameStats& s) { return s.tiles.gpu_spans_ms; });
     r.tiles.gpu_wait_ms = med_measured([](const FrameStats& s) { return s.tiles.gpu_wait_ms; });
     r.tiles.gpu_shade_ms = med_measured([](const FrameStats& s) { return s.tiles.gpu_shade_ms; });

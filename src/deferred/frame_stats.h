@@ -73,6 +73,14 @@ struct TileStats {
     // Wall clock inside the light stage: the depth spans' two passes and read-back (which waits
     // for the G-buffer: on a GPU, a pipeline drain), and the plan with its vertices' upload.
     double depth_ms = 0, plan_ms = 0;
+    // The tiles' CPU time by step (thread_cpu_ms, a frame): what the rendering thread spent
+    // issuing the depth spans and taking them in (the wait apart), waiting for the GPU to reach
+    // the spans' read-back (a driver that spins while it waits spends CPU time; one that sleeps
+    // does not), culling (the tiles' boxes and the tiles each light keeps: tile_boxes,
+    // tiles_kept), planning (TilePlanner) and uploading (the batches' vertices built and handed
+    // to the GL). wait_ms: the same wait on the wall clock.
+    double spans_cpu_ms = 0, wait_cpu_ms = 0, cull_cpu_ms = 0, plan_cpu_ms = 0, upload_cpu_ms = 0;
+    double wait_ms = 0;
     // On a GPU (tile_timeline.h), ms of an earlier frame's light stage as the GPU ran it: the
     // spans' passes, the spans' end to the first light draw (read-back, plan and the ambient pass
     // drawn meanwhile), the light draws. -1: not measured (a CPU rasteriser, no timer queries,

@@ -21,6 +21,7 @@
 #include "deferred/light_mesh.h"
 #include "deferred/light_pass.h"
 #include "deferred/path_timer.h"
+#include "dsr_clock.h"
 
 namespace dsr {
 
@@ -183,11 +184,12 @@ private:
         priced.tiles = !culling || spans_worth_measuring(frame_.plan.predicted_total_ms, screen_px, model_);
         if (priced.tiles && culling) priced.tiles = policy_.measure_spans();
         if (!priced.tiles) return priced;
-        if (culling) {
-            priced.spans = true;
-            frame_.cull = tiles_->tile_boxes(f, tiles_->depth_spans(f, targets, stats), frame_.depth);
-        }
+        const std::vector<DepthSpan> spans = culling ? tiles_->depth_spans(f, targets, stats) : std::vector<DepthSpan>{};
+        priced.spans = culling;
+        const double cpu0 = thread_cpu_ms();  // the tiles' culling (TileStats::cull_cpu_ms)
+        if (culling) frame_.cull = tiles_->tile_boxes(f, spans, frame_.depth);
         tile_cover(rects, f.width, f.height, tiles_->tile_size(), frame_.cull, features, frame_.grid);
+        stats.tiles.cull_cpu_ms += thread_cpu_ms() - cpu0;
         frame_.raw = price_lights(features, frame_.grid, model_);
         frame_.plan = choose_light_paths(frame_.raw, screen_px, model_, scale, {true, volumes_ok_, true}, true, depth_saving);
         if (priced.spans) frame_.plan.predicted_ms[at(LightPath::tiles)] += spans_ms(screen_px);
@@ -236,8 +238,14 @@ private:
         const LightPath p = policy_.keep_frame();
         frame_.features.assign(f.lights.size(), LightFeature{});
         frame_.depth = TileDepth{};
-        frame_.cull =
-            p == LightPath::tiles ? tiles_->tile_boxes(f, tiles_->depth_spans(f, targets, stats), frame_.depth) : nullptr;
+        if (p == LightPath::tiles) {
+            const std::vector<DepthSpan> spans = tiles_->depth_spans(f, targets, stats);
+            const double cpu0 = thread_cpu_ms();
+            frame_.cull = tiles_->tile_boxes(f, spans, frame_.depth);
+            stats.tiles.cull_cpu_ms += thread_cpu_ms() - cpu0;
+        } else {
+            frame_.cull = nullptr;
+        }
         frame_.plan.path.assign(f.lights.size(), p);
         frame_.plan.count = {0, 0, 0};
         frame_.plan.count[at(p)] = int(f.lights.size());

@@ -55,12 +55,20 @@ struct TileRange {
     double mean_lights;
 };
 
-// Wall-clock milliseconds of f(): the tiles' two timings (TileStats::depth_ms, plan_ms).
+// Wall-clock milliseconds of f(): the tiles' two wall timings (TileStats::depth_ms, plan_ms).
 template <class F>
 double wall_ms(F&& f) {
     const double t = now_ms();
     f();
     return now_ms() - t;
+}
+
+// The rendering thread's CPU milliseconds in f(): the tiles' steps (TileStats::*_cpu_ms).
+template <class F>
+double cpu_ms(F&& f) {
+    const double t = thread_cpu_ms();
+    f();
+    return thread_cpu_ms() - t;
 }
 
 class TilesGeometry final : public TilesPass {
@@ -112,7 +120,7 @@ public:
         prepared_ = false;
         TileDepth depth;
         const TileDepth* cull = nullptr;
-        stats.tiles.plan_ms += wall_ms([&] { cull = tile_boxes(f, spans, depth); });
+        stats.tiles.plan_ms += wall_ms([&] { stats.tiles.cull_cpu_ms += cpu_ms([&] { cull = tile_boxes(f, spans, depth); }); });
         draw_lights(f, cull, q, stats, nullptr);
     }
 
@@ -124,13 +132,17 @@ public:
         // The spans' passes draw into buffers of their own: P-buffer 0 unbound around them (it
         // keeps its contents: the spans need framebuffer objects).
         std::vector<DepthSpan> spans;
-        if (depth_)
+        if (!depth_) return spans;
+        const double waited = stats.tiles.wait_cpu_ms;
+        const double cpu = cpu_ms([&] {
             stats.tiles.depth_ms += wall_ms([&] {
                 targets.fb_unbind_render(P_ACCUM);
                 timeline_.mark(TileTimeline::spans_begin);
-                spans = depth_->spans(f, targets.gbuffer(), &timeline_);
+                spans = depth_->spans(f, targets.gbuffer(), &timeline_, &stats.tiles);
                 targets.fb_bind_render(P_ACCUM);
             });
+        });
+        stats.tiles.spans_cpu_ms += cpu - (stats.tiles.wait_cpu_ms - waited);  // the wait apart
         return spans;
     }
 
@@ -172,9 +184,12 @@ public:
         stats.tiles.light_pairs = 0;
         if (groups_) {
             TilePlan plan;
-            plan_ms += wall_ms([&] { plan = plan_tile_groups(rects, f.width, f.height, tile_size_, tile_lights_, cull, cut, shadow_slots_); });
+            plan_ms += wall_ms([&] {
+                stats.tiles.plan_cpu_ms += cpu_ms(
+                    [&] { plan = plan_tile_groups(rects, f.width, f.height, tile_size_, tile_lights_, cull, cut, shadow_slots_); });
+            });
             for (const TileDraw& d : plan.draws) {
-                plan_ms += wall_ms([&] { upload(&d, 1, false); });
+                plan_ms += wall_ms([&] { stats.tiles.upload_cpu_ms += cpu_ms([&] { upload(&d, 1, false); }); });
                 if (&d == &plan.draws.front()) timeline_.mark(TileTimeline::draws_begin);
                 draw_batch(f, plan.batches[size_t(d.batch)], q, stats);
             }
@@ -183,18 +198,28 @@ public:
             // Batch by batch (tile_plan.h TilePlanner): the GL shades a batch while the CPU plans the
             // next; the flush after each hands the batch over instead of holding it until the
             // buffer fills.
+            // Each light's tiles culled once, apart from the plan (or as auto culled them to price
+            // them), so that the planner only lists and merges.
+            std::vector<std::vector<int>> own_kept;
+            if (!kept)
+                plan_ms += wall_ms([&] {
+                    stats.tiles.cull_cpu_ms +=
+                        cpu_ms([&] { own_kept = tiles_kept(rects, f.width, f.height, tile_size_, cull); });
+                });
             std::unique_ptr<TilePlanner> planner;
             plan_ms += wall_ms([&] {
-                planner = std::make_unique<TilePlanner>(rects, f.width, f.height, tile_size_, tile_lights_, batch_, cull, kept,
-                                                        cut, shadow_slots_);
+                stats.tiles.plan_cpu_ms += cpu_ms([&] {
+                    planner = std::make_unique<TilePlanner>(rects, f.width, f.height, tile_size_, tile_lights_, batch_, nullptr,
+                                                            kept ? kept : &own_kept, cut, shadow_slots_);
+                });
             });
             for (int b = 0; b < int(planner->batches().size()); ++b) {
                 const std::vector<int>& batch = planner->batches()[size_t(b)];
                 const FlatForm flat = flat_form(f, batch);
                 plan_ms += wall_ms([&] {
                     draws_.clear();
-                    stats.tiles.light_pairs += planner->plan_batch(b, draws_);
-                    upload(draws_.data(), draws_.size(), flat.form >= 0);
+                    stats.tiles.plan_cpu_ms += cpu_ms([&] { stats.tiles.light_pairs += planner->plan_batch(b, draws_); });
+                    stats.tiles.upload_cpu_ms += cpu_ms([&] { upload(draws_.data(), draws_.size(), flat.form >= 0); });
                 });
                 if (b == 0) timeline_.mark(TileTimeline::draws_begin);
                 if (flat.form >= 0)

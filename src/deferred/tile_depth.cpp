@@ -6,11 +6,26 @@
 #include "deferred/render_targets.h"
 #include "deferred/screen_quad.h"
 #include "deferred/tile_spans.h"
+#include "dsr_clock.h"
 #include "dsr_error.h"
 #include "gl/check.h"
 #include "gl/state.h"
 
 namespace dsr {
+
+namespace {
+
+// Waits for the GPU to finish what the read-back reads, timed into stats (where given): the
+// read-back after it then copies and does not wait, so the wait and the copy are told apart.
+void wait_for_gpu(TileStats* stats) {
+    const double wall = now_ms(), cpu = thread_cpu_ms();
+    glFinish();
+    if (!stats) return;
+    stats->wait_ms += now_ms() - wall;
+    stats->wait_cpu_ms += thread_cpu_ms() - cpu;
+}
+
+}  // namespace
 
 TileDepthPass::TileDepthPass(const ShaderConfig& c, ProgramSet& programs, int width, int height)
     : tile_size_(c.opts.tile_size), pow2_(!c.caps.npot), readback_(tile_spans_by_readback(c)) {
@@ -36,8 +51,9 @@ void TileDepthPass::resize(int w, int h) {
     tiles_ = std::make_unique<PBuffer>("tile depth", d);
 }
 
-std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f, const PBuffer& gbuffer, TileTimeline* timeline) {
-    if (readback_) return spans_by_readback(f, gbuffer);
+std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f, const PBuffer& gbuffer, TileTimeline* timeline,
+                                            TileStats* stats) {
+    if (readback_) return spans_by_readback(f, gbuffer, stats);
     const int tx = tiles_->width(), ty = tiles_->height(), rows = rows_->height();
     RenderState s = fixed_function_2d();  // spans written, not blended
     // Pass 1: each tile column's span over each window row.
@@ -67,6 +83,7 @@ std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f, const PBuffer& gb
     std::vector<float> px(size_t(tx) * ty * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     if (timeline) timeline->mark(TileTimeline::spans_end);
+    wait_for_gpu(stats);
     glReadPixels(0, 0, tx, ty, GL_RGBA, GL_FLOAT, px.data());
     rows_->unbind_texture(0, 4);
     tiles_->unbind_render();
@@ -77,7 +94,7 @@ std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f, const PBuffer& gb
     return out;
 }
 
-std::vector<DepthSpan> TileDepthPass::spans_by_readback(const FrameDef& f, const PBuffer& gbuffer) {
+std::vector<DepthSpan> TileDepthPass::spans_by_readback(const FrameDef& f, const PBuffer& gbuffer, TileStats* stats) {
     // Texel (x, y) is window pixel (x, y): the G-buffer is the frame's size (padded to powers of
     // two at most, which the stride takes).
     if (gbuffer.width() != f.width || gbuffer.height() != f.height)
@@ -86,6 +103,7 @@ std::vector<DepthSpan> TileDepthPass::spans_by_readback(const FrameDef& f, const
     const int tw = gbuffer.texture_width(), th = gbuffer.texture_height();
     depth_.resize(size_t(tw) * size_t(th));
     normal_.resize(size_t(tw) * size_t(th) * 4);
+    wait_for_gpu(stats);
     // On unit 4, not one of the G-buffer's 0..3, and unbound again.
     glActiveTexture(GL_TEXTURE4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);

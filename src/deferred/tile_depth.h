@@ -32,10 +32,13 @@ public:
     // read the G-buffer's normal and depth targets on units 0 and 3 (P-buffer 0 must not be bound);
     // or, where readback_, the two targets read back and the spans made on the CPU.
     // timeline: its spans_end stamped before the read-back (tile_timeline.h), where given.
-    std::vector<DepthSpan> spans(const FrameDef& f, const PBuffer& gbuffer, TileTimeline* timeline = nullptr);
+    // stats: the wait for the GPU to reach the read-back, timed apart from it (wait_ms,
+    // wait_cpu_ms), where given.
+    std::vector<DepthSpan> spans(const FrameDef& f, const PBuffer& gbuffer, TileTimeline* timeline = nullptr,
+                                 TileStats* stats = nullptr);
 
 private:
-    std::vector<DepthSpan> spans_by_readback(const FrameDef& f, const PBuffer& gbuffer);
+    std::vector<DepthSpan> spans_by_readback(const FrameDef& f, const PBuffer& gbuffer, TileStats* stats);
     std::vector<float> depth_;          // the read-back's storage, kept between frames
     std::vector<unsigned char> normal_;
     Program rows_prog_, reduce_prog_;  // the passes' (none where readback_)
