@@ -20,13 +20,22 @@ uniform vec4 uv_clamp;  // content texels' centres: (min, max); keeps taps off p
 varying vec2 texcoord;
 
 #ifdef LISTING_KERNEL
-const vec2 delta[8] = vec2[8](vec2(-1.0, 1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0),
-                              vec2(-1.0, 0.0), vec2(1.0, 0.0), vec2(0.0, -1.0), vec2(0.0, 1.0));
+#define DELTA_0 vec2(-1.0, 1.0)
 const int FACTOR_TAPS = 4;
 #else
-const vec2 delta[8] = vec2[8](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0),
-                              vec2(-1.0, 0.0), vec2(1.0, 0.0), vec2(0.0, -1.0), vec2(0.0, 1.0));
+#define DELTA_0 vec2(-1.0, -1.0)
 const int FACTOR_TAPS = 8;  // Equation 7 sums all 8 neighbours
+#endif
+#ifdef DSR_GLSL_ES
+// GLSL ES 1.00 has no array constructors: the same table, filled at the top of main.
+vec2 delta[8];
+#define DELTA_INIT delta[0] = DELTA_0; delta[1] = vec2(1.0, -1.0); delta[2] = vec2(-1.0, 1.0); \
+    delta[3] = vec2(1.0, 1.0); delta[4] = vec2(-1.0, 0.0); delta[5] = vec2(1.0, 0.0); delta[6] = vec2(0.0, -1.0); \
+    delta[7] = vec2(0.0, 1.0);
+#else
+const vec2 delta[8] = vec2[8](DELTA_0, vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0),
+                              vec2(-1.0, 0.0), vec2(1.0, 0.0), vec2(0.0, -1.0), vec2(0.0, 1.0));
+#define DELTA_INIT
 #endif
 
 vec2 tap(vec2 uv)
@@ -41,6 +50,7 @@ float eye_z(vec2 uv)
 
 void main()
 {
+    DELTA_INIT
     float factor = 0.0;
 #ifdef SOURCE_NORMAL
     vec4 tex = texture2D(normal_map, texcoord);

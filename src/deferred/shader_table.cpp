@@ -29,15 +29,19 @@ ShaderConfig shader_config(const Caps& caps, const ShaderOptions& asked) {
     // vec4s; llvmpipe and NVIDIA give 1024), a few vec4s kept for the other uniforms, and below
     // tile_plan's empty-slot index 255.
     if (tiles || g == LightGeometry::screen || g == LightGeometry::volume) {
-        GLint comps = 0;
-        glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, &comps);
+        // OpenGL ES 2.0 counts uniforms in vec4s (its GL_MAX_..._UNIFORM_VECTORS).
+        auto components = [&c](GLenum desktop, GLenum es) {
+            GLint n = 0;
+            glGetIntegerv(c.caps.es ? es : desktop, &n);
+            return c.caps.es ? 4 * n : n;
+        };
+        const GLint comps = components(GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, GL_MAX_FRAGMENT_UNIFORM_VECTORS);
         const bool groups = tiles && c.opts.tile_plan == TileGrouping::groups;
         c.tile_batch = groups ? c.opts.tile_lights : std::clamp((comps / 4 - 8) / 5, 1, 128);
         // The batched volume meshes (auto, volume) place each copy from the batch's positions in the
         // vertex stage too: one vec4 a light there, beside the matrices.
         if (g == LightGeometry::volume || g == LightGeometry::automatic) {
-            GLint vcomps = 0;
-            glGetIntegerv(GL_MAX_VERTEX_UNIFORM_COMPONENTS, &vcomps);
+            const GLint vcomps = components(GL_MAX_VERTEX_UNIFORM_COMPONENTS, GL_MAX_VERTEX_UNIFORM_VECTORS);
             c.tile_batch = std::clamp(std::min(c.tile_batch, vcomps / 4 - 32), 1, 128);
         }
         // Shadowed lights in the batches (shadow.glsl SHADOW_SLOTS): a texture unit each after the

@@ -56,26 +56,17 @@ std::string vertex_prelude(const std::string& src) {
     return p;
 }
 
-std::string fragment_prelude(const std::string& src, const GlslDialect& d, const std::string& label) {
+// The extensions are enabled where the dialect has them, whatever branch of the source uses them:
+// a name may sit in a branch the defines leave out (the material pass's ambient target, the
+// shadow maps' depth-texture form), so a missing one is left to the compiler, and choose_paths
+// keeps a configuration off the paths that need it (docs/gles2.md).
+std::string fragment_prelude(const std::string& src, const GlslDialect& d) {
     std::string p;
-    // Any index but a literal 0 (the material pass indexes by a define) may be a target beyond the first.
-    if (std::regex_search(src, std::regex("gl_FragData\\s*\\[\\s*(?!0\\s*\\])"))) {
-        if (d.draw_buffers.empty())
-            throw Error("shader " + label + " writes gl_FragData[1..], which needs GL_EXT_draw_buffers or "
-                        "GL_NV_draw_buffers, and this OpenGL ES 2.0 has neither");
-        p += "#extension " + d.draw_buffers + " : require\n";
-    }
-    if (uses(src, "gl_FragDepth")) {
-        if (!d.frag_depth)
-            throw Error("shader " + label + " writes gl_FragDepth, which needs GL_EXT_frag_depth on OpenGL ES 2.0");
-        p += "#extension GL_EXT_frag_depth : require\n#define gl_FragDepth gl_FragDepthEXT\n";
-    }
-    if (uses(src, "shadow2D") || uses(src, "sampler2DShadow")) {
-        if (!d.shadow_samplers)
-            throw Error("shader " + label + " compares depth in the lookup (shadow2D), which needs "
-                        "GL_EXT_shadow_samplers on OpenGL ES 2.0");
-        p += "#extension GL_EXT_shadow_samplers : require\n#define shadow2D(s, c) vec4(shadow2DEXT(s, c))\n";
-    }
+    if (!d.draw_buffers.empty() && uses(src, "gl_FragData")) p += "#extension " + d.draw_buffers + " : enable\n";
+    if (d.frag_depth && uses(src, "gl_FragDepth"))
+        p += "#extension GL_EXT_frag_depth : enable\n#define gl_FragDepth gl_FragDepthEXT\n";
+    if (d.shadow_samplers && uses(src, "shadow2D"))
+        p += "#extension GL_EXT_shadow_samplers : enable\n#define shadow2D(s, c) vec4(shadow2DEXT(s, c))\n";
     // highp where the fragment stage has it (optional in ES 2.0): the depth codecs need 24 bits.
     p += "#ifdef GL_FRAGMENT_PRECISION_HIGH\nprecision highp float;\nprecision highp int;\n#else\n"
          "precision mediump float;\nprecision mediump int;\n#endif\n";
@@ -93,7 +84,7 @@ std::string glsl_in_dialect(const std::string& src, const GlslDialect& d, bool v
     // Extensions come before any other statement (GLSL ES 1.00 §3.4); the defines the loader put
     // after #version follow the prelude.
     std::string out = src.substr(0, v) + "#version 100\n";
-    out += vertex ? "precision highp float;\nprecision highp int;\n" + vertex_prelude(body) : fragment_prelude(body, d, label);
+    out += vertex ? "precision highp float;\nprecision highp int;\n" + vertex_prelude(body) : fragment_prelude(body, d);
     out += "#define DSR_GLSL_ES 1\n";
     return out + body;
 }

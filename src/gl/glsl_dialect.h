@@ -30,10 +30,9 @@ constexpr int es_texcoord_location(int unit) { return 3 + unit; }
 
 // `src` (a glsl120/ source with its includes expanded and defines inserted) in dialect `d`:
 // unchanged for desktop GLSL; for GLSL ES its #version 120 line becomes #version 100 and the
-// prelude (precision, extensions, the built-ins above). `vertex`: a vertex shader. Throws
-// dsr::Error naming `label` where the source uses what the dialect lacks and cannot stand in for
-// (gl_FragDepth without EXT_frag_depth, gl_FragData[1..] without draw buffers, shadow2D without
-// EXT_shadow_samplers).
+// prelude (precision, the extensions it has among those the source names: draw buffers for
+// gl_FragData, EXT_frag_depth for gl_FragDepth, EXT_shadow_samplers for shadow2D; the built-ins
+// above). `vertex`: a vertex shader. Throws dsr::Error naming `label` where there is no #version.
 std::string glsl_in_dialect(const std::string& src, const GlslDialect& d, bool vertex, const std::string& label);
 
 }  // namespace dsr
