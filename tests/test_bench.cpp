@@ -84,12 +84,28 @@ bench::Row deferred_row(const std::string& scene, int lights, double ms, long lo
     r.gbuffer_half = false;
     r.scissor = true;
     r.skip = skip;
-    r.light_fragments = frags;
+    r.frame.emplace();  // the counted frame: the row's light counts (bench_run.h light_fragments)
+    r.frame->lights.fragments = frags, r.frame->lights.fragments_counted = true;
+    r.frame->lights.scissor_pixels = 3 * frags;
+    r.frame->lights.drawn = lights;
     r.ideal_fragments = ideal;
-    r.scissor_pixels = 3 * frags;
-    r.lights_drawn = lights;
     r.err.max_abs = 3.0 / 255.0, r.err.mean_abs = 0.5 / 255.0, r.err.psnr_db = 55.26;
     return r;
+}
+
+// A hand-made deferred row's light counts: its counted frame's.
+LightCounts& counts(bench::Row& r) {
+    if (!r.frame) r.frame.emplace();
+    return r.frame->lights;
+}
+
+// auto's choice in a hand-made row's counted frame: lights by quads, volumes and the tiles.
+void auto_chose(bench::Row& r, int quad, int volume, int tiles) {
+    if (!r.frame) r.frame.emplace();
+    r.frame->auto_geometry.on = true;
+    r.frame->auto_geometry.lights[at(LightPath::quad)] = quad;
+    r.frame->auto_geometry.lights[at(LightPath::volume)] = volume;
+    r.frame->auto_geometry.lights[at(LightPath::tiles)] = tiles;
 }
 
 }  // namespace
@@ -277,9 +293,11 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
             EXPECT_EQ(row["light_geometry"], "auto") << row.dump();
             EXPECT_TRUE(row["skips_off"].empty()) << row.dump();
             // What auto chose: every drawn light by one of its three paths.
-            const auto& c = row["auto_lights"];
+            ASSERT_TRUE(row["frame"].contains("auto")) << row.dump();
+            const auto& c = row["frame"]["auto"]["lights"];
             ASSERT_TRUE(c.is_object()) << row.dump();
-            EXPECT_EQ(c["quad"].get<int>() + c["volume"].get<int>() + c["tiles"].get<int>(), row["lights_drawn"].get<int>())
+            EXPECT_EQ(c["quad"].get<int>() + c["volume"].get<int>() + c["tiles"].get<int>(),
+                      row["frame"]["lights_drawn"].get<int>())
                 << row.dump();
             EXPECT_EQ(row["cpu_alone_frames_ms"].size(), size_t(row["frames"].get<int>()));
             EXPECT_GT(row["cpu_alone_ms_median"].get<double>(), 0.0);
@@ -303,7 +321,7 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
             EXPECT_TRUE(row["goal_rounds_frames_ms"].empty()) << row.dump();
         }
         for (const char* k : {"renderer", "depth", "scissor", "lights", "size", "ms_median", "ms_min", "ms_max",
-                              "light_fragments", "ideal_fragments", "max_lsb", "mean_lsb", "psnr_db"})
+                              "frame", "ideal_fragments", "max_lsb", "mean_lsb", "psnr_db"})
             ASSERT_TRUE(row.contains(k)) << k;
         EXPECT_EQ(row["size"], nlohmann::json::array({64, 64}));
         EXPECT_TRUE(row["scissor"].is_boolean());
@@ -330,7 +348,10 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
             EXPECT_LE(row["cpu_lights_ms"].get<double>(), most);
             EXPECT_TRUE(row["depth"] == "texture" || row["depth"] == "packed" || row["depth"] == "position16" ||
                         row["depth"] == "position32");
-            const long long frags = row["light_fragments"], ideal = row["ideal_fragments"];
+            for (const char* k : {"light_fragments", "light_invocations", "light_evaluations", "scissor_pixels",
+                                  "lights_drawn", "light_passes"})
+                ASSERT_TRUE(row["frame"].contains(k)) << k;
+            const long long frags = row["frame"]["light_fragments"], ideal = row["ideal_fragments"];
             EXPECT_GT(ideal, 0);
             // With the depth texture nothing inside a sphere is rejected (scissor rectangles and the
             // light depth test are conservative), so the ideal count exceeds what was shaded only by
@@ -344,7 +365,7 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
                 EXPECT_GE(frags, ideal - ideal / 100) << row.dump();
             }
             // Every fragment that passed entered the shader first; the floor is measured on every row.
-            EXPECT_GE(row["light_invocations"].get<long long>(), frags) << row.dump();
+            EXPECT_GE(row["frame"]["light_invocations"].get<long long>(), frags) << row.dump();
             EXPECT_GT(row["floor_ms"].get<double>(), 0.0) << row.dump();
             EXPECT_DOUBLE_EQ(row["floor_ratio"].get<double>(),
                              row["ms_median"].get<double>() / row["floor_ms"].get<double>());
@@ -364,10 +385,11 @@ TEST(Bench, QuickRunWritesJsonAndReport) {
             ++forward;
             EXPECT_TRUE(kind == "forward-single" || kind == "forward-multi") << kind;
             EXPECT_TRUE(row["accum"] == "float" || row["accum"] == "rgba8") << row.dump();
-            EXPECT_TRUE(row["light_invocations"].is_null());
+            EXPECT_TRUE(row["frame"].is_null());  // no light passes: no light_invocations, light_fragments
+            EXPECT_TRUE(row["invocations_ratio"].is_null());
             EXPECT_TRUE(row["cpu_lights_ms"].is_null());
             EXPECT_TRUE(row["floor_ratio"].is_null());
-            EXPECT_TRUE(row["light_fragments"].is_null());
+            EXPECT_TRUE(row["fragments_ratio"].is_null());
             EXPECT_TRUE(row["ideal_fragments"].is_null());
             if (kind == "forward-single" && row["accum"] == "float") {
                 EXPECT_EQ(row["max_lsb"].get<double>(), 0.0);  // it is the reference
@@ -475,7 +497,7 @@ TEST(Bench, SummarySaysEachGoalPlainly) {
     s.scenes = {"default"};
     s.notes = {"one note"};
     bench::Row d = deferred_row("default", 3, 1.0, 100, 100);
-    d.light_invocations = d.light_evaluations = 120;
+    counts(d).invocations = counts(d).evaluations = 120;
     bench::Row d1080 = deferred_row("default", 1024, 1.0, 100, 100);
     d1080.w = 1920, d1080.h = 1080;
     d1080.floor_ms = 0.5, d1080.floor_ratio = 2.0;
@@ -523,7 +545,7 @@ TEST(Bench, ConfigTextNamesEveryChoice) {
 // and light_fragments / ideal (true by construction with the sphere test) as information only.
 TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
     auto with = [](bench::Row r, long long inv, double floor_ms) {
-        r.light_invocations = r.light_evaluations = inv;  // one light a fragment, as quad's passes
+        counts(r).invocations = counts(r).evaluations = inv;  // one light a fragment, as quad's passes
         r.floor_ms = floor_ms;
         r.floor_ratio = r.ms_median / floor_ms;
         return r;
@@ -587,8 +609,8 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
     // light at each of its pixels, so more than its invocations), quad's invocations information.
     bench::Row a3 = with(deferred_row("default", 3, 0.8, 90, 100), 40, 0.8);
     a3.light_geometry = LightGeometry::automatic;
-    a3.light_evaluations = 110;
-    a3.auto_lights = std::array<int, 3>{0, 0, 3};
+    counts(a3).evaluations = 110;
+    auto_chose(a3, 0, 0, 3);
     rows.push_back(a3);
     const std::vector<std::string> a = bench::goals(rows, "default", 3);
     EXPECT_NE(a[0].find(": 110 / 100 = 1.100 (auto) (auto's lights: 0 by quads, 0 by volumes, 3 by the tiles)"),
@@ -601,7 +623,7 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
     volume3.light_geometry = LightGeometry::volume;
     bench::Row tiles3 = with(deferred_row("default", 3, 0.9, 90, 100), 40, 0.8);
     tiles3.light_geometry = LightGeometry::tiles;
-    tiles3.light_evaluations = 105;
+    counts(tiles3).evaluations = 105;
     more.insert(more.end(), {volume3, tiles3});
     const std::vector<std::string> m = bench::goals(more, "default", 3);
     EXPECT_NE(m[1].find("fewest first: tiles 1.050, quad 1.200, volume 3.000)"), std::string::npos) << m[1];
@@ -656,7 +678,7 @@ TEST(Bench, GoalsJudgeTheDefaultConfiguration) {
 TEST(Bench, GeometryGoalsJudgeTheirRows) {
     auto geo = [](bench::Row r, LightGeometry g, long long inv, double lsb_vs_quad) {
         r.light_geometry = g;
-        r.light_invocations = inv;
+        counts(r).invocations = inv;
         ImageDiff d;
         d.max_abs = lsb_vs_quad / 255.0;
         r.err_quad = d;
@@ -698,7 +720,7 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
         screen.w = 500, screen.h = 400;
         screen.lights_ms = 52.2;
         screen.floor_light_ns = 0.5;
-        screen.light_passes = 2;
+        counts(screen).passes = 2;
         est.push_back(screen);
         est[4].lights_ms = 1.5;
         est[4].ideal_fragments = 4000000;
@@ -728,7 +750,7 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     // A GL whose invocation counter counts fragments the stencil rejects cannot judge the stencil
     // goal: neither met nor NOT met, with the occlusion-query ratio as information. A GL whose
     // counter counted none of the probe's rejected fragments is judged as before.
-    rows[1].light_fragments = 105;
+    counts(rows[1]).fragments = 105;
     InvocationProbe counts;
     counts.pixels = counts.invocations = 4096;
     const std::vector<std::string> c = bench::geometry_goals(rows, "default", 3, counts);
@@ -820,7 +842,7 @@ TEST(Bench, GeometryGoalsJudgeTheirRows) {
     bench::Row own_auto = geo(deferred_row("default", 3, 1.05, 100, 100), LightGeometry::automatic, 100, 0);
     bench::Row overlap_auto = geo(deferred_row("default-overlap", 1024, 2.5, 100, 100), LightGeometry::automatic, 100, 0);
     overlap_auto.lights_label = "1024-overlap";
-    overlap_auto.auto_lights = std::array<int, 3>{0, 0, 536};  // what it chose, said after the figure
+    auto_chose(overlap_auto, 0, 0, 536);  // what it chose, said after the figure
     rows.insert(rows.end(), {own_auto, overlap_auto});
     const std::vector<std::string> a = bench::geometry_goals(rows, "default", 3);
     ASSERT_EQ(a.size(), 13u);
@@ -974,15 +996,15 @@ TEST(Bench, LawGoalPricesTheAttenuationLawOnTheSamePairs) {
 // null, the table "-", and the goal "not measured": never a 0 that reads as a perfect count.
 TEST(Bench, MissingCountsAreNullNotZero) {
     bench::Row r = deferred_row("default", 3, 1.0, 100, 100);
-    r.light_fragments.reset();
-    r.light_invocations.reset();
-    r.light_evaluations.reset();
+    counts(r).fragments_counted = false;
+    counts(r).invocations.reset();
+    counts(r).evaluations.reset();
     const nlohmann::ordered_json j = bench::row_json(r);
-    EXPECT_TRUE(j["light_fragments"].is_null());
-    EXPECT_TRUE(j["light_invocations"].is_null());
+    EXPECT_TRUE(j["frame"]["light_fragments"].is_null());
+    EXPECT_TRUE(j["frame"]["light_invocations"].is_null());
     EXPECT_TRUE(j["fragments_ratio"].is_null());
     EXPECT_TRUE(j["invocations_ratio"].is_null());
-    EXPECT_TRUE(j["light_evaluations"].is_null());
+    EXPECT_TRUE(j["frame"]["light_evaluations"].is_null());
     EXPECT_TRUE(j["evaluations_ratio"].is_null());
     EXPECT_TRUE(j["floor_ms"].is_null());
     EXPECT_EQ(j["ideal_fragments"], 100);
@@ -1000,19 +1022,20 @@ TEST(Bench, MissingCountsAreNullNotZero) {
     EXPECT_EQ(g[1], "floor_ratio <= 1.5 at 1920x1080 with 1024 lights, default with 3 lights: not measured in this "
                     "run");  // no fragment line
 
-    r.light_invocations = 250;
-    r.light_evaluations = 500;
+    counts(r).invocations = 250;
+    counts(r).evaluations = 500;
     const nlohmann::ordered_json k = bench::row_json(r);
-    EXPECT_EQ(k["light_invocations"], 250);
+    EXPECT_EQ(k["frame"]["light_invocations"], 250);
     EXPECT_DOUBLE_EQ(k["invocations_ratio"].get<double>(), 2.5);
-    EXPECT_EQ(k["light_evaluations"], 500);
+    EXPECT_EQ(k["frame"]["light_evaluations"], 500);
     EXPECT_DOUBLE_EQ(k["evaluations_ratio"].get<double>(), 5.0);
     EXPECT_EQ(bench::table_cells(r)[15], "250");
     EXPECT_EQ(bench::table_cells(r)[16], "500");
     EXPECT_EQ(bench::table_cells(r)[17], "5.00");
     bench::Row f = forward_row("default", 3, bench::Renderer::forward_multi, 1.0);
-    f.light_invocations = 7;  // a forward row has no light passes: null whatever the field holds
-    EXPECT_TRUE(bench::row_json(f)["light_invocations"].is_null());
+    counts(f).invocations = 7;  // a forward row has no light passes: null whatever the frame holds
+    EXPECT_TRUE(bench::row_json(f)["frame"].is_null());
+    EXPECT_TRUE(bench::row_json(f)["invocations_ratio"].is_null());
     EXPECT_TRUE(bench::row_json(f)["accum"].is_null());
     f.float_accum = false;
     EXPECT_EQ(bench::row_json(f)["accum"], "rgba8");
@@ -1064,17 +1087,17 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
         "scene", "renderer", "accum", "depth", "encoding", "gbuffer", "gbuffer_bytes_per_pixel", "light_geometry", "tile_size", "tile_lights", "scissor", "skips_off", "linear_law",
         "lights", "lights_label", "size", "frames", "warmup_frames", "warmup_frames_ms", "ms_median", "ms_min", "ms_max", "frames_ms", "cpu_ms_median", "cpu_frames_ms",
         "cpu_alone_ms_median", "cpu_alone_frames_ms", "goal_rounds_ms_median", "goal_rounds_frames_ms", "goal_rounds_lights_ms_median",
-        "goal_rounds_lights_frames_ms", "cpu_make_frame_ms", "cpu_lights_ms", "light_fragments",
-        "ideal_fragments", "fragments_ratio", "scissor_pixels", "lights_drawn", "passes", "max_lsb", "mean_lsb",
-        "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic", "light_invocations",
-        "invocations_ratio", "light_evaluations", "evaluations_ratio", "ideal_source", "floor_fill_ms", "floor_light_ns",
+        "goal_rounds_lights_frames_ms", "cpu_make_frame_ms", "cpu_lights_ms",
+        "ideal_fragments", "fragments_ratio", "passes", "max_lsb", "mean_lsb",
+        "psnr_db", "max_lsb_analytic", "mean_lsb_analytic", "psnr_db_analytic",
+        "invocations_ratio", "evaluations_ratio", "ideal_source", "floor_fill_ms", "floor_light_ns",
         "floor_post_ms", "floor_output_ms", "floor_ms",
-        "floor_ratio", "light_passes", "auto_lights", "depth_copy_ms", "lights_ms", "lights_frames_ms", "max_lsb_vs_quad", "frame"};
+        "floor_ratio", "depth_copy_ms", "lights_ms", "lights_frames_ms", "max_lsb_vs_quad", "frame"};
     std::vector<std::string> got;
     for (auto it = f.begin(); it != f.end(); ++it) got.push_back(it.key());
     EXPECT_EQ(got, keys);
     EXPECT_TRUE(f["depth"].is_null());
-    EXPECT_TRUE(f["light_fragments"].is_null());
+    EXPECT_TRUE(f["fragments_ratio"].is_null());
     EXPECT_TRUE(f["ideal_fragments"].is_null());
     EXPECT_TRUE(f["psnr_db"].is_null());  // infinite: JSON has no inf
     EXPECT_TRUE(f["max_lsb_analytic"].is_null());
@@ -1089,14 +1112,17 @@ TEST(Bench, RowJsonHasEveryKeyAndNulls) {
     const nlohmann::ordered_json d = bench::row_json(r);
     EXPECT_EQ(d["depth"], "texture");
     EXPECT_TRUE(d["encoding"].is_null());
-    EXPECT_EQ(d["light_fragments"], 120);
+    EXPECT_EQ(d["frame"]["light_fragments"], 120);
+    EXPECT_EQ(d["frame"]["scissor_pixels"], 360);
+    EXPECT_EQ(d["frame"]["lights_drawn"], 2);
     EXPECT_DOUBLE_EQ(d["fragments_ratio"].get<double>(), 1.2);
     EXPECT_DOUBLE_EQ(d["max_lsb"].get<double>(), 3.0);
     EXPECT_DOUBLE_EQ(d["psnr_db_analytic"].get<double>(), 55.26);
     EXPECT_TRUE(d["passes"].is_null());
-    EXPECT_TRUE(d["auto_lights"].is_null());  // not an auto row
-    r.auto_lights = std::array<int, 3>{3, 0, 536};
-    EXPECT_EQ(bench::row_json(r)["auto_lights"], nlohmann::ordered_json({{"quad", 3}, {"volume", 0}, {"tiles", 536}}));
+    EXPECT_FALSE(d["frame"].contains("auto"));  // not an auto row
+    auto_chose(r, 3, 0, 536);
+    EXPECT_EQ(bench::row_json(r)["frame"]["auto"]["lights"],
+              nlohmann::ordered_json({{"quad", 3}, {"volume", 0}, {"tiles", 536}}));
 
     bench::Summary s;
     s.machine = "m";

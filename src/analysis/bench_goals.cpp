@@ -71,10 +71,11 @@ bool only_sphere_test_off(const Row& r) {
 
 // What auto's counted frame chose, " (auto's lights: ...)", or "" for a row of another geometry.
 std::string auto_choice(const Row& a) {
-    if (!a.auto_lights) return "";
-    const std::array<int, 3>& c = *a.auto_lights;
-    return " (auto's lights: " + std::to_string(c[0]) + " by quads, " + std::to_string(c[1]) + " by volumes, " +
-           std::to_string(c[2]) + " by the tiles)";
+    if (!a.frame || !a.frame->auto_geometry.on) return "";
+    const auto& c = a.frame->auto_geometry.lights;
+    return " (auto's lights: " + std::to_string(c[at(LightPath::quad)]) + " by quads, " +
+           std::to_string(c[at(LightPath::volume)]) + " by volumes, " + std::to_string(c[at(LightPath::tiles)]) +
+           " by the tiles)";
 }
 
 // The pixel-light pairs dsr's default (find_default_row: auto, else quad) paid for in its light
@@ -84,20 +85,20 @@ std::string auto_choice(const Row& a) {
 Figure invocations(const Goal& g, const GoalInput& in) {
     const Row* d = find_default_row(in.rows, in.scene, in.lights);
     const bool ideal = d && d->ideal_fragments && *d->ideal_fragments > 0;
-    Figure f = !ideal                  ? not_judged()
-               : !d->light_evaluations ? not_judged(std::string(kNotMeasured) +
-                                                    " (the GL lacks ARB_pipeline_statistics_query)",
-                                                kNotMeasured)
-                                       : judged(double(*d->light_evaluations), double(*d->ideal_fragments),
-                                                over(*d->light_evaluations, *d->ideal_fragments) + " (" +
-                                                    light_geometry_name(d->light_geometry) + ")" + auto_choice(*d));
+    const std::optional<long long> evals = d ? light_evaluations(*d) : std::nullopt;
+    Figure f = !ideal  ? not_judged()
+               : !evals ? not_judged(std::string(kNotMeasured) + " (the GL lacks ARB_pipeline_statistics_query)",
+                                     kNotMeasured)
+                        : judged(double(*evals), double(*d->ideal_fragments),
+                                 over(*evals, *d->ideal_fragments) + " (" + light_geometry_name(d->light_geometry) +
+                                     ")" + auto_choice(*d));
     // Every fixed geometry's ratio, fewest first: whether any way of drawing the lights meets the
     // goal on this GL (auto chooses each light's path by its time, not by its pairs).
     std::vector<std::pair<double, std::string>> each;
     for (LightGeometry g2 : kFixedGeometries)
         if (const Row* r = find_geometry_row(in.rows, in.scene, in.lights, g2))
-            if (r->light_evaluations && r->ideal_fragments && *r->ideal_fragments > 0)
-                each.emplace_back(double(*r->light_evaluations) / double(*r->ideal_fragments), light_geometry_name(g2));
+            if (const std::optional<double> ratio = evaluations_ratio(*r))
+                each.emplace_back(*ratio, light_geometry_name(g2));
     std::stable_sort(each.begin(), each.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     if (each.size() >= 2) {
         std::string list;
@@ -106,27 +107,27 @@ Figure invocations(const Goal& g, const GoalInput& in) {
     }
     const Row* q = find_geometry_row(in.rows, in.scene, in.lights, LightGeometry::quad);
     if (!q || !q->ideal_fragments || *q->ideal_fragments <= 0) return f;
-    if (q != d && q->light_invocations)
+    if (q != d && light_invocations(*q))
         f.info.push_back("(information: the tutorial's quad per light, --light-geometry quad: light_invocations / "
-                         "ideal = " + over(*q->light_invocations, *q->ideal_fragments) + ")");
-    if (q->light_fragments) {
+                         "ideal = " + over(*light_invocations(*q), *q->ideal_fragments) + ")");
+    if (const std::optional<long long> frags = light_fragments(*q)) {
         if (q->skip.light_sphere_test)
             f.info.push_back("(information, not a goal: quad's light_fragments / ideal = " +
-                             over(*q->light_fragments, *q->ideal_fragments) +
+                             over(*frags, *q->ideal_fragments) +
                              "; it holds by construction, since the light sphere test discards every fragment "
                              "whose surface point lies outside the sphere and the ideal counts the points inside)");
         else
-            f.info.push_back("(information: quad's light_fragments / ideal = " +
-                             over(*q->light_fragments, *q->ideal_fragments) + ")");
+            f.info.push_back("(information: quad's light_fragments / ideal = " + over(*frags, *q->ideal_fragments) +
+                             ")");
     }
     for (const Row& r : in.rows)
         if (r.scene == in.scene && r.lights == in.lights && r.renderer == Renderer::deferred &&
-            r.light_geometry == LightGeometry::quad && only_sphere_test_off(r) && r.light_fragments)
+            r.light_geometry == LightGeometry::quad && only_sphere_test_off(r) && light_fragments(r))
             f.info.push_back("(information, quad with the depth-span test only, --no-skip light-sphere-test: "
-                             "light_fragments / ideal = " + over(*r.light_fragments, *q->ideal_fragments) +
-                             (r.light_invocations ? "; light_invocations / ideal = " +
-                                                        over(*r.light_invocations, *q->ideal_fragments)
-                                                  : std::string()) +
+                             "light_fragments / ideal = " + over(*light_fragments(r), *q->ideal_fragments) +
+                             (light_invocations(r) ? "; light_invocations / ideal = " +
+                                                         over(*light_invocations(r), *q->ideal_fragments)
+                                                   : std::string()) +
                              ")");
     return f;
 }
@@ -181,20 +182,21 @@ Figure cpu(const Goal& g, const GoalInput& in) {
 // The stencil geometry's invocations against the ideal, where the GL's counter can tell.
 Figure stencil(const Goal& g, const GoalInput& in) {
     const Row* s = find_geometry_row(in.rows, in.scene, in.lights, LightGeometry::stencil);
-    if (!s || !s->ideal_fragments || *s->ideal_fragments <= 0 || !s->light_invocations) return not_judged();
+    const std::optional<long long> invocations = s ? light_invocations(*s) : std::nullopt;
+    if (!s || !s->ideal_fragments || *s->ideal_fragments <= 0 || !invocations) return not_judged();
+    const std::optional<long long> frags = light_fragments(*s);
     if (in.probe && in.probe->counts_rejected())
         // The counter cannot tell what the stencil let through from what it rejected.
         return not_judged("cannot be judged on this GL: its fragment-shader invocation counter counts fragments "
                           "the stencil test rejects (probe: " + std::to_string(in.probe->invocations) +
                           " invocations for " + std::to_string(in.probe->pixels) +
                           " pixels that all fail the stencil test); invocations " +
-                          over(*s->light_invocations, *s->ideal_fragments) +
-                          (s->light_fragments ? "; what passed the stencil (occlusion query) " +
-                                                    over(*s->light_fragments, *s->ideal_fragments) + " (information)"
-                                              : std::string()),
+                          over(*invocations, *s->ideal_fragments) +
+                          (frags ? "; what passed the stencil (occlusion query) " + over(*frags, *s->ideal_fragments) +
+                                       " (information)"
+                                 : std::string()),
                           "cannot be judged on this GL (see the report)");
-    return judged(double(*s->light_invocations), double(*s->ideal_fragments),
-                  over(*s->light_invocations, *s->ideal_fragments));
+    return judged(double(*invocations), double(*s->ideal_fragments), over(*invocations, *s->ideal_fragments));
 }
 
 // A row's frame with its light stage replaced by the ideal: one light pass's per-pixel floor over
@@ -216,7 +218,7 @@ std::optional<IdealFrame> ideal_frame(const Row& s, int n, const Row& d) {
     const double floor_ns = s.floor_light_ns.value_or(0.0);
     IdealFrame f;
     f.pass_floor_ms = floor_ns * px * 1e-6;
-    const int passes = std::max(1, s.light_passes.value_or(1));
+    const int passes = std::max(1, light_passes(s).value_or(1));
     const double per_eval_ns = std::max(0.0, *s.lights_ms - passes * f.pass_floor_ms) * 1e6 / (double(n) * px);
     f.fixed_ms = d.ms_median - *d.lights_ms;
     f.pairs_ms = double(*d.ideal_fragments) * per_eval_ns * 1e-6;

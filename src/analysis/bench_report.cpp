@@ -59,13 +59,13 @@ json row_json(const Row& r) {
     j["goal_rounds_lights_frames_ms"] = r.goal_rounds_lights_frames_ms;
     j["cpu_make_frame_ms"] = r.cpu_make_frame_ms ? json(*r.cpu_make_frame_ms) : json(nullptr);
     j["cpu_lights_ms"] = r.cpu_lights_ms ? json(*r.cpu_lights_ms) : json(nullptr);
-    j["light_fragments"] = deferred && r.light_fragments ? json(*r.light_fragments) : json(nullptr);
+    // The light counts are the counted frame's, under `frame`; the row holds them against the ideal.
+    const std::optional<long long> frags = deferred ? light_fragments(r) : std::nullopt;
+    const std::optional<long long> invocations = deferred ? light_invocations(r) : std::nullopt;
     j["ideal_fragments"] = deferred && r.ideal_fragments ? json(*r.ideal_fragments) : json(nullptr);
-    j["fragments_ratio"] = deferred && r.light_fragments && r.ideal_fragments && *r.ideal_fragments > 0
-                               ? json(double(*r.light_fragments) / double(*r.ideal_fragments))
+    j["fragments_ratio"] = frags && r.ideal_fragments && *r.ideal_fragments > 0
+                               ? json(double(*frags) / double(*r.ideal_fragments))
                                : json(nullptr);
-    j["scissor_pixels"] = r.scissor_pixels ? json(*r.scissor_pixels) : json(nullptr);
-    j["lights_drawn"] = r.lights_drawn ? json(*r.lights_drawn) : json(nullptr);
     j["passes"] = r.passes ? json(*r.passes) : json(nullptr);
     j["max_lsb"] = r.err.max_lsb();
     j["mean_lsb"] = r.err.mean_lsb();
@@ -74,11 +74,9 @@ json row_json(const Row& r) {
     j["mean_lsb_analytic"] = r.err_analytic ? json(r.err_analytic->mean_lsb()) : json(nullptr);
     j["psnr_db_analytic"] = r.err_analytic ? finite_or_null(r.err_analytic->psnr_db) : json(nullptr);
     auto opt = [](const auto& v) { return v ? json(*v) : json(nullptr); };
-    j["light_invocations"] = deferred ? opt(r.light_invocations) : json(nullptr);
-    j["invocations_ratio"] = deferred && r.light_invocations && r.ideal_fragments && *r.ideal_fragments > 0
-                                 ? json(double(*r.light_invocations) / double(*r.ideal_fragments))
+    j["invocations_ratio"] = invocations && r.ideal_fragments && *r.ideal_fragments > 0
+                                 ? json(double(*invocations) / double(*r.ideal_fragments))
                                  : json(nullptr);
-    j["light_evaluations"] = deferred ? opt(r.light_evaluations) : json(nullptr);
     j["evaluations_ratio"] = deferred ? opt(evaluations_ratio(r)) : json(nullptr);
     j["ideal_source"] = deferred ? opt(r.ideal_source) : json(nullptr);
     j["floor_fill_ms"] = opt(r.floor_fill_ms);
@@ -87,15 +85,12 @@ json row_json(const Row& r) {
     j["floor_output_ms"] = opt(r.floor_output_ms);
     j["floor_ms"] = opt(r.floor_ms);
     j["floor_ratio"] = opt(r.floor_ratio);
-    j["light_passes"] = opt(r.light_passes);
-    j["auto_lights"] = r.auto_lights ? json{{"quad", (*r.auto_lights)[0]}, {"volume", (*r.auto_lights)[1]},
-                                            {"tiles", (*r.auto_lights)[2]}}
-                                     : json(nullptr);
     j["depth_copy_ms"] = opt(r.depth_copy_ms);
     j["lights_ms"] = opt(r.lights_ms);
     j["lights_frames_ms"] = r.renderer == Renderer::deferred ? json(r.lights_frames_ms) : json(nullptr);
     j["max_lsb_vs_quad"] = r.err_quad ? json(r.err_quad->max_lsb()) : json(nullptr);
-    j["frame"] = r.frame ? frame_stats_json(*r.frame) : json(nullptr);  // the counted frame (docs/stats.md)
+    // The counted frame (docs/stats.md): its light counts, auto's choice; a forward row has none.
+    j["frame"] = deferred && r.frame ? frame_stats_json(*r.frame) : json(nullptr);
     return j;
 }
 
@@ -104,16 +99,17 @@ json row_json(const Row& r) {
 std::vector<std::string> table_cells(const Row& r) {
     auto ll = [](const std::optional<long long>& v) { return v ? std::to_string(*v) : std::string("-"); };
     const bool deferred = r.renderer == Renderer::deferred;
+    const std::optional<long long> frags = light_fragments(r);
     std::string ratio = "-";
-    if (deferred && r.light_fragments && r.ideal_fragments && *r.ideal_fragments > 0)
-        ratio = format_number("%.2f", double(*r.light_fragments) / double(*r.ideal_fragments));
+    if (deferred && frags && r.ideal_fragments && *r.ideal_fragments > 0)
+        ratio = format_number("%.2f", double(*frags) / double(*r.ideal_fragments));
     std::vector<std::string> c = {r.scene,
                                   std::to_string(r.lights),
                                   config_text(r),
                                   std::to_string(r.frames),
                                   format_number("%.2f", r.ms_median),
                                   format_number("%.2f", r.ms_min) + "-" + format_number("%.2f", r.ms_max),
-                                  deferred ? ll(r.light_fragments) : "-",
+                                  deferred ? ll(frags) : "-",
                                   deferred ? ll(r.ideal_fragments) : "-",
                                   ratio,
                                   format_number("%.0f", r.err.max_lsb()),
@@ -126,8 +122,8 @@ std::vector<std::string> table_cells(const Row& r) {
     } else {
         c.insert(c.end(), {"-", "-", "-"});
     }
-    c.push_back(deferred ? ll(r.light_invocations) : "-");
-    c.push_back(deferred ? ll(r.light_evaluations) : "-");
+    c.push_back(deferred ? ll(light_invocations(r)) : "-");
+    c.push_back(deferred ? ll(light_evaluations(r)) : "-");
     const std::optional<double> er = deferred ? evaluations_ratio(r) : std::nullopt;
     c.push_back(er ? format_number("%.2f", *er) : "-");
     c.push_back(r.floor_ms ? format_number("%.2f", *r.floor_ms) : "-");
@@ -418,10 +414,10 @@ std::string light_geometry_markdown(const std::vector<Row>& rows) {
         const std::optional<double> er = evaluations_ratio(r);
         md << "| " << r.scene << " | " << r.lights_label << " (" << r.lights << ") | "
            << light_geometry_name(r.light_geometry) << " | "
-           << format_number("%.2f", r.ms_median) << " | " << ll(r.light_invocations) << " | "
-           << ll(r.light_evaluations) << " | " << ll(r.ideal_fragments) << " | "
+           << format_number("%.2f", r.ms_median) << " | " << ll(light_invocations(r)) << " | "
+           << ll(light_evaluations(r)) << " | " << ll(r.ideal_fragments) << " | "
            << (er ? format_number("%.2f", *er) : std::string("-"))
-           << " | " << ll(r.light_fragments) << " | " << (r.light_passes ? std::to_string(*r.light_passes) : "-")
+           << " | " << ll(light_fragments(r)) << " | " << (light_passes(r) ? std::to_string(*light_passes(r)) : "-")
            << " | " << (r.depth_copy_ms ? format_number("%.2f", *r.depth_copy_ms) : "-") << " | "
            << (r.err_quad ? format_number("%.0f", r.err_quad->max_lsb()) : "-") << " |\n";
     }

@@ -479,13 +479,6 @@ void finish_row(const Config& cfg, const Variant& v, RowRun& run, const IdealCou
     if (run.ds) {
         const FrameStats& st = run.last;
         r.frame = st;
-        r.light_fragments = st.lights.counted_fragments();
-        r.light_invocations = st.lights.invocations;
-        r.light_evaluations = st.lights.evaluations;
-        r.scissor_pixels = st.lights.scissor_pixels;
-        r.lights_drawn = st.lights.drawn;
-        r.light_passes = st.lights.passes;
-        if (st.auto_geometry.on) r.auto_lights = st.auto_geometry.lights;
         r.depth_copy_ms = median(run.samples.depth_copy_ms);
         r.lights_ms = median(run.samples.lights_ms);
         r.lights_frames_ms = run.samples.lights_ms;
@@ -540,9 +533,24 @@ bool default_configuration(const Row& r) { return !r.linear_law && default_setti
 
 bool default_configuration_twin(const Row& r) { return r.linear_law && default_settings(r); }
 
+std::optional<long long> light_fragments(const Row& r) {
+    return r.frame ? r.frame->lights.counted_fragments() : std::nullopt;
+}
+
+std::optional<long long> light_invocations(const Row& r) {
+    return r.frame ? r.frame->lights.invocations : std::nullopt;
+}
+
+std::optional<long long> light_evaluations(const Row& r) {
+    return r.frame ? r.frame->lights.evaluations : std::nullopt;
+}
+
+std::optional<int> light_passes(const Row& r) { return r.frame ? std::optional<int>(r.frame->lights.passes) : std::nullopt; }
+
 std::optional<double> evaluations_ratio(const Row& r) {
-    if (!r.light_evaluations || !r.ideal_fragments || *r.ideal_fragments <= 0) return std::nullopt;
-    return double(*r.light_evaluations) / double(*r.ideal_fragments);
+    const std::optional<long long> e = light_evaluations(r);
+    if (!e || !r.ideal_fragments || *r.ideal_fragments <= 0) return std::nullopt;
+    return double(*e) / double(*r.ideal_fragments);
 }
 
 std::string config_text(const Row& r) {

@@ -7,7 +7,6 @@
 // into tables, JSON, a plot and a report; src/app/bench_command.cpp only parses flags, runs this,
 // and prints or writes what comes back.
 #pragma once
-#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -107,25 +106,20 @@ struct Row {
     // flips with the rounds' noise (docs/benchmarks.md, "How the rows are timed").
     std::optional<double> goal_rounds_ms, goal_rounds_lights_ms;
     std::vector<double> goal_rounds_frames_ms, goal_rounds_lights_frames_ms;
-    // light_fragments: samples that passed the light passes (occlusion queries); light_invocations:
-    // fragments that entered the light shader (ARB_pipeline_statistics_query), light_evaluations:
-    // those times the lights each evaluated (FrameStats); null where the GL lacks the query.
-    // ideal_fragments: from exact surface points (ideal_source says which).
-    std::optional<long long> light_fragments, light_invocations, light_evaluations, ideal_fragments, scissor_pixels;
+    // The ideal count of pixel-light pairs, from exact surface points (ideal_source says which),
+    // which the counted frame's light counts (light_fragments() and the rest, below) are held against.
+    std::optional<long long> ideal_fragments;
     std::optional<std::string> ideal_source;  // "analytic" (exact eye depth) | "depth24" (G-buffer depth in double)
-    std::optional<int> lights_drawn, passes;
+    std::optional<int> passes;                // forward rows: the passes drawn
     // The frame's floor (bench_floor.h), deferred rows: its parts, floor_ms and ms_median / floor_ms.
     std::optional<double> floor_fill_ms, floor_light_ns, floor_post_ms, floor_output_ms, floor_ms, floor_ratio;
     ImageDiff err;                          // vs the forward reference
     std::optional<ImageDiff> err_analytic;  // vs the analytic reference, interior pixels
     std::optional<ImageDiff> err_quad;      // deferred rows: vs the default quad row's image
-    std::optional<int> light_passes;        // deferred rows: light-shader draws per frame
-    // Deferred rows: the counted frame's stats whole, JSON `frame` (analysis/frame_stats_json.h,
-    // the schema `render --stats` writes); the counts above are copied from it.
+    // Deferred rows: the counted frame's stats whole (the frame after the timed ones), JSON `frame`
+    // (analysis/frame_stats_json.h, the schema `render --stats` writes): the one place the row keeps
+    // its light counts (light_fragments() and the rest read them) and auto's choice.
     std::optional<FrameStats> frame;
-    // auto's rows: how many lights it sent by quads, volumes and the tiles (AutoStats::lights) in
-    // the counted frame after the timed ones. JSON `auto_lights` {quad, volume, tiles}, null elsewhere.
-    std::optional<std::array<int, 3>> auto_lights;
     std::optional<double> depth_copy_ms;    // deferred rows: the depth hand-off's median ms (0: not run)
     std::optional<double> lights_ms;        // deferred rows: the light stage's median ms (FrameStats ms.lights)
     int gbuffer_bytes_per_pixel = 0;        // deferred rows: the G-buffer's colour targets + depth, from the
@@ -139,6 +133,15 @@ bool default_configuration(const Row& r);
 // A linear-law row (Row::linear_law) in the default configuration otherwise: the twin of a
 // default_configuration row, which the law goal and the twin's image check read.
 bool default_configuration_twin(const Row& r);
+
+// A deferred row's light counts, read from its counted frame (Row::frame; LightCounts): samples
+// that passed the light passes (occlusion queries), fragments that entered the light shader
+// (ARB_pipeline_statistics_query), those times the lights each evaluated, the light-shader draws.
+// Null on a row without a frame (forward rows) and where the GL did not count.
+std::optional<long long> light_fragments(const Row& r);
+std::optional<long long> light_invocations(const Row& r);
+std::optional<long long> light_evaluations(const Row& r);
+std::optional<int> light_passes(const Row& r);
 
 // light_evaluations / ideal_fragments, where both are known and the ideal is above 0.
 std::optional<double> evaluations_ratio(const Row& r);
