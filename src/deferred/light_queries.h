@@ -43,14 +43,14 @@ public:
         if (invocations_) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
         if (samples_) glEndQuery(GL_SAMPLES_PASSED);
     }
-    // Sums the results into stats (lights.fragments; lights.invocations and lights.evaluations where
-    // counted).
-    void collect(FrameStats& stats) {
-        stats.lights.fragments_counted = samples_;
+    // Sums the results into the frame's light counts (fragments; invocations and evaluations where
+    // counted): the only part of the frame's stats the queries measure.
+    void collect(LightCounts& counts) {
+        counts.fragments_counted = samples_;
         for (GLuint q : q_) {
             GLuint n = 0;
             glGetQueryObjectuiv(q, GL_QUERY_RESULT, &n);
-            stats.lights.fragments += n;
+            counts.fragments += n;
         }
         if (invocations_) {
             long long total = 0;
@@ -61,8 +61,8 @@ public:
                 total += n;
                 evaluations += double(n) * lights_[i];
             }
-            stats.lights.invocations = total;
-            stats.lights.evaluations = (long long)std::llround(evaluations);
+            counts.invocations = total;
+            counts.evaluations = (long long)std::llround(evaluations);
         }
     }
 

@@ -87,7 +87,7 @@ void LightingStage::draw_lighting(const FrameDef& f, const FrameDef& lights, Ren
         }
         geometry_->draw(lights, t, q, stats);
     }
-    q.collect(stats);
+    q.collect(stats.lights);
     // unbind_light(): nothing to restore, the next pass states what it needs.
 }
 
