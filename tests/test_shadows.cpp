@@ -90,7 +90,7 @@ TEST(Shadows, DepthPathsAndGeometriesAgree) {
 // on both depth paths. The copy render target draws the G-buffer and P-buffers the same way with
 // framebuffer-object maps: the image must be the same to the byte (a piece left uncopied, or one
 // drawn a texel off, is not). Against the framebuffer-object path the copied G-buffer alone differs,
-// by at most 1 LSB (docs/shadows.md measured data/shadow.scene at 320x240, 1200x1100, 3100x2100).
+// by at most 1 LSB (docs/shadows_no_fbo.md measured data/shadow.scene at 320x240, 1200x1100, 3100x2100).
 TEST(Shadows, WithoutFramebufferObjectsTheMapsAreCopiedInPieces) {
     for (Light::Type t : {Light::Type::spot, Light::Type::point}) {
         Scene s = box_scene(t);

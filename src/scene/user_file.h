@@ -5,7 +5,7 @@
 // position. Every error is one dsr::Error line:
 //   cannot open scene file a.scene: expected a regular file, got a FIFO
 //   a.scene:3: expected text, got a NUL byte at column 17
-// The limits are documented in docs/scene-format.md.
+// The limits are documented in docs/files.md, "Files dsr reads".
 #pragma once
 #include <sys/types.h>
 
