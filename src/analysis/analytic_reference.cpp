@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "deferred/gpu_scene.h"
@@ -395,12 +396,14 @@ double sphere_tessellation_gap(int slices, int stacks) {
     return 1 - least;
 }
 
-AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const AnalyticOptions& opts) {
-    if (width <= 0 || height <= 0) throw Error("analytic reference: bad size");
+namespace {
+
+// What the trace can follow, or an error naming what it cannot: every object with a material,
+// opaque materials only, and texture maps only with a closed form here, only on planes.
+void check_traceable(const Scene& scene, const AnalyticOptions& opts) {
     for (const Object& o : scene.objects)
         if (o.material < 0 || size_t(o.material) >= scene.materials.size())
             throw Error("analytic reference: an object has no material");
-    // Texture maps: only those with a closed form here, only on planes.
     for (size_t mi = 0; mi < scene.materials.size(); ++mi) {
         const Material& m = scene.materials[mi];
         const std::string what = "analytic reference: material '" + m.name + "' ";
@@ -421,25 +424,234 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
             if (o.material == int(mi) && !(o.shape && o.shape->kind == ShapeDesc::Kind::plane))
                 throw Error(what + "has a texture map on a mesh that is not a plane; the reference maps uv on planes only");
     }
+}
 
-    const std::vector<TracedMesh> meshes = prepare(scene, opts.triangles);
-
-    // The camera of Camera::view() / projection() in double: glm::lookAt's frame, and
-    // glm::perspective's vertical field of view with aspect = width / height.
-    const Camera& cam = scene.camera;
-    const dvec3 eye(cam.pos);
-    const dvec3 f = glm::normalize(dvec3(cam.target) - eye);
-    const dvec3 s = glm::normalize(glm::cross(f, dvec3(cam.up)));
-    const dvec3 up = glm::cross(s, f);
-    const double tan_half = std::tan(double(cam.fov_deg) * kPi / 360.0);
-    const double aspect = double(width) / double(height);
-    const double near_plane = cam.near_plane, far_plane = cam.far_plane;
+// The camera of Camera::view() / projection() in double: glm::lookAt's frame, and
+// glm::perspective's vertical field of view with aspect = width / height.
+struct TraceCamera {
+    dvec3 eye, f, s, up;
+    double tan_half = 0, aspect = 0, near_plane = 0, far_plane = 0;
+    int width = 0, height = 0;
     // The ray through pixel (x, y) in pixel units (centre of pixel i at x = i + 0.5), with a
     // forward component of 1 so that t is the eye-space depth -z, the quantity the near and far
     // planes clip.
-    auto ray = [&](double x, double y) {
+    dvec3 ray(double x, double y) const {
         return f + ((x / width * 2 - 1) * tan_half * aspect) * s + ((y / height * 2 - 1) * tan_half) * up;
-    };
+    }
+};
+
+TraceCamera trace_camera(const Camera& cam, int width, int height) {
+    TraceCamera c;
+    c.eye = dvec3(cam.pos);
+    c.f = glm::normalize(dvec3(cam.target) - c.eye);
+    c.s = glm::normalize(glm::cross(c.f, dvec3(cam.up)));
+    c.up = glm::cross(c.s, c.f);
+    c.tan_half = std::tan(double(cam.fov_deg) * kPi / 360.0);
+    c.aspect = double(width) / double(height);
+    c.near_plane = cam.near_plane, c.far_plane = cam.far_plane;
+    c.width = width, c.height = height;
+    return c;
+}
+
+// The nearest surface along the ray eye + t d at or past the near plane: exact shapes directly,
+// triangle meshes through their bounding boxes and chunks.
+Hit nearest_hit(const std::vector<TracedMesh>& meshes, const TraceCamera& cam, const dvec3& d) {
+    const dvec3 inv_d = 1.0 / d;
+    Hit hit;
+    for (size_t m = 0; m < meshes.size(); ++m) {
+        const TracedMesh& tm = meshes[m];
+        if (tm.exact) {
+            intersect_exact(tm, cam.eye, d, cam.near_plane, int(m), hit);
+            continue;
+        }
+        if (!tm.box.hit(cam.eye, inv_d, std::min(hit.t, cam.far_plane))) continue;
+        for (size_t c = 0; c < tm.chunks.size(); ++c) {
+            if (!tm.chunks[c].hit(cam.eye, inv_d, std::min(hit.t, cam.far_plane))) continue;
+            const size_t end = std::min(tm.tris.size(), (c + 1) * kChunk);
+            for (size_t k = c * kChunk; k < end; ++k) intersect(tm.tris[k], cam.eye, d, cam.near_plane, int(m), hit);
+        }
+    }
+    return hit;
+}
+
+// What the light pass reads at a surface point: its normal and material, as the G-buffer holds
+// them (rounded to 8 bits where the options say the targets are RGBA8).
+struct Surface {
+    dvec3 n, diffuse, specular;
+    double shininess = 0, metallic = 0, roughness = 0;
+    bool metal_rough = false;
+};
+
+// The surface at hit point p of pixel (i, j): the interpolated or exact normal, the closed-form
+// maps on a plane (their texel footprint raised into `max_texel_footprint`), the 8-bit rounding.
+Surface surface_at(const Scene& scene, const TracedMesh& tm, const Material& mat, const Hit& hit, const dvec3& p,
+                   const TraceCamera& cam, int i, int j, const AnalyticOptions& opts, double& max_texel_footprint) {
+    Surface s;
+    if (hit.tri) {
+        // Phong shading (§2.3): the vertex normals mixed with the hit's barycentric
+        // weights, which is what perspective-correct interpolation gives at the pixel centre.
+        const Tri& tr = *hit.tri;
+        s.n = glm::normalize((1 - hit.u - hit.v) * tr.n0 + hit.u * tr.n1 + hit.v * tr.n2);
+    } else {
+        s.n = hit.normal;
+    }
+    s.diffuse = dvec3(mat.diffuse), s.specular = dvec3(mat.specular);
+    if (mat.diffuse_map >= 0 || mat.normal_map >= 0) {
+        // A plane (check_traceable): uv from the hit, scaled by the material's tile.
+        const glm::dvec2 uv = plane_uv(tm, p) * double(mat.tile);
+        // The pixel's footprint in texels of each map (GL's rho): uv at the next pixel
+        // centres, on the same plane.
+        for (int map_index : {mat.diffuse_map, mat.normal_map}) {
+            if (map_index < 0) continue;
+            const Image& map = scene.textures[size_t(map_index)];
+            double rho = 0;
+            for (const dvec3& dn : {cam.ray(i + 1.5, j + 0.5), cam.ray(i + 0.5, j + 1.5)}) {
+                if (!(dn.y < 0)) {
+                    rho = std::numeric_limits<double>::infinity();
+                    break;
+                }
+                const glm::dvec2 un = plane_uv(tm, cam.eye + ((tm.centre.y - cam.eye.y) / dn.y) * dn) * double(mat.tile);
+                rho = std::max(rho, glm::length((un - uv) * glm::dvec2(map.width, map.height)));
+            }
+            max_texel_footprint = std::max(max_texel_footprint, rho);
+        }
+        if (mat.diffuse_map >= 0) s.diffuse *= bilinear(scene.textures[size_t(mat.diffuse_map)], uv.x, uv.y);
+        if (mat.normal_map >= 0) {
+            // The formula's normal in the plane's tangent frame (make_plane: tangent +X,
+            // binormal -Z, normal +Y), as the material pass mixes it (Listing 13).
+            const dvec3 nt = bump_normal(opts.bump_maps.at(mat.normal_map), uv.x, uv.y);
+            s.n = glm::normalize(nt.x * dvec3(1, 0, 0) + nt.y * dvec3(0, 0, -1) + nt.z * dvec3(0, 1, 0));
+        }
+    }
+    s.shininess = mat.shininess;
+    if (opts.gbuffer_normals_8bit) s.n = glm::normalize(unorm8(s.n * 0.5 + 0.5) - 0.5);
+    s.metal_rough = mat.metal_rough();
+    s.metallic = mat.metallic, s.roughness = mat.roughness;
+    if (opts.gbuffer_materials_8bit) {
+        s.diffuse = unorm8(s.diffuse);
+        s.specular = unorm8(s.specular);
+        s.shininess = std::exp2(11.0 * unorm8(double(encode_shininess(mat.shininess))));
+        s.metallic = unorm8(s.metallic);
+        s.roughness = unorm8(s.roughness);
+    }
+    return s;
+}
+
+// A light at surface point p (normal n): the unit direction towards it and its attenuation,
+// spot cone included; null where its law gives nothing there.
+struct Incident {
+    dvec3 l;
+    double att = 1.0;
+};
+std::optional<Incident> incident_light(const Light& light, const dvec3& p, const dvec3& n, const AnalyticOptions& opts) {
+    // The laws of docs/scene-format.md, written again here from their
+    // definitions rather than taken from scene/light_law.h.
+    Incident in;  // directional: no attenuation
+    if (light.type == Light::Type::directional) {
+        in.l = -glm::normalize(dvec3(light.dir));
+        return in;
+    }
+    dvec3 l = dvec3(light.pos) - p;  // towards the light (docs/errata.md #3)
+    double att = 1.0;
+    const double dist = glm::length(l);
+    const double R = light.radius;
+    if (light.physical) {
+        // KHR_lights_punctual's README, "Range Property": max(min(1 - (d/range)^4,
+        // 1), 0) / d^2, or 1 / d^2 without a range; nothing beyond the light's bound.
+        double range = light.range;
+        if (opts.perturb_light == LightTerm::range_window) range *= 1.0 + opts.perturb_light_by;
+        const double window = range > 0 ? std::max(std::min(1.0 - std::pow(dist / range, 4.0), 1.0), 0.0) : 1.0;
+        att = dist < R && dist > 0 ? window / (dist * dist) : 0.0;
+    } else if (!light.attenuation) {
+        att = std::max(0.0, 1.0 - dist / R);  // Eq. 2
+    } else {
+        att = dist < R ? 1.0 / (light.kc + dist * (light.kl + dist * double(light.kq))) : 0.0;
+    }
+    if (att <= 0) return std::nullopt;
+    l = dist > 0 ? l / dist : n;
+    if (light.type == Light::Type::spot && light.physical) {
+        // The README's "Inner and Outer Cone Angles": lightAngleScale =
+        // 1 / max(0.001, cos inner - cos outer), lightAngleOffset = -cos outer *
+        // scale, saturate(cd * scale + offset) squared, cd the cosine from the axis.
+        const double ci = std::cos(glm::radians(double(light.inner_deg)));
+        const double co = std::cos(glm::radians(double(light.angle_deg)));
+        const double scale = 1.0 / std::max(0.001, ci - co), offset = -co * scale;
+        const double cd = glm::dot(-l, glm::normalize(dvec3(light.dir)));
+        const double a = std::clamp(cd * scale + offset, 0.0, 1.0);
+        const double power = opts.perturb_light == LightTerm::spot_falloff ? 2.0 * (1.0 + opts.perturb_light_by) : 2.0;
+        att *= std::pow(a, power);
+        if (att <= 0) return std::nullopt;
+    } else if (light.type == Light::Type::spot) {
+        // GL_SPOT_CUTOFF: nothing at or beyond the half-angle; inside, the
+        // exponent's cos^E times a smoothstep over the outer fifth of the angle.
+        const double theta = std::acos(std::clamp(glm::dot(-l, glm::normalize(dvec3(light.dir))), -1.0, 1.0));
+        const double a = glm::radians(double(light.angle_deg));
+        if (!(theta < a)) return std::nullopt;
+        const double co = std::cos(a), ci = std::cos(0.8 * a), ct = std::cos(theta);
+        const double t = std::clamp((ct - co) / (ci - co), 0.0, 1.0);
+        att *= t * t * (3 - 2 * t) * (light.exponent > 0 ? std::pow(ct, double(light.exponent)) : 1.0);
+    }
+    in.l = l;
+    in.att = att;
+    return in;
+}
+
+// Where the trace shades one pixel: the point, the direction to the viewer, the pixel's index
+// and the scale its shadow rays' epsilon follows (shadow_ray_blocked).
+struct ShadePoint {
+    dvec3 p, v;
+    size_t pixel = 0;
+    double shadow_scale = 0;
+};
+
+// The pixel's colour before analytic_output: Equation 6's ambient (metallic-roughness: and the
+// emissive colour), then each light's term (Equations 1-5, or glTF's BRDF); a light whose shadow
+// ray is blocked adds nothing and is marked in `occluded`.
+dvec3 shade(const Scene& scene, const std::vector<TracedMesh>& meshes, const Material& mat, const Surface& s,
+            const ShadePoint& at, const std::vector<bool>& shadow_rays, const AnalyticOptions& opts,
+            std::vector<std::vector<uint8_t>>& occluded) {
+    // With passes_8bit every pass's contribution is rounded before the sum (blending
+    // into an RGBA8 target); the clamp to [0, 1] comes last either way.
+    auto pass = [&](const dvec3& x) { return opts.passes_8bit ? unorm8(x) : x; };
+    const dvec3& n = s.n;
+    // Eq. 6; metallic-roughness: occlusion (1 without a map) and the emissive colour.
+    dvec3 c = pass(s.metal_rough ? s.diffuse * dvec3(scene.ambient) + dvec3(mat.emissive) : s.diffuse * dvec3(scene.ambient));
+    for (size_t li = 0; li < scene.lights.size(); ++li) {
+        const Light& light = scene.lights[li];
+        const std::optional<Incident> in = incident_light(light, at.p, n, opts);
+        if (!in) continue;
+        const dvec3& l = in->l;
+        if (shadow_rays[li]) {
+            const double t_max = light.type == Light::Type::directional ? std::numeric_limits<double>::infinity()
+                                                                        : glm::length(dvec3(light.pos) - at.p);
+            if (shadow_ray_blocked(meshes, at.p, l, t_max, at.shadow_scale)) {
+                occluded[li][at.pixel] = 1;
+                continue;  // an occluded light adds nothing, its specular term included
+            }
+        }
+        if (s.metal_rough) {  // glTF's BRDF in place of Equations 3-4 (Equation 1's attenuation kept)
+            c += pass(in->att * dvec3(light.color) *
+                      metal_rough_brdf(n, l, at.v, s.diffuse, s.metallic, s.roughness, opts.perturb, opts.perturb_by));
+            continue;
+        }
+        const dvec3 hv = l + at.v;
+        const double hl = glm::length(hv);
+        const dvec3 h = hl > 1e-12 ? hv / hl : n;  // Eq. 5
+        const dvec3 S(light.color);
+        const dvec3 Idiff = std::max(0.0, glm::dot(l, n)) * s.diffuse * S;                         // Eq. 3
+        const dvec3 Ispec = std::pow(std::max(0.0, glm::dot(h, n)), s.shininess) * s.specular * S;  // Eq. 4
+        c += pass(in->att * (Idiff + Ispec));                                                      // Eq. 1
+    }
+    return c;
+}
+
+}  // namespace
+
+AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const AnalyticOptions& opts) {
+    if (width <= 0 || height <= 0) throw Error("analytic reference: bad size");
+    check_traceable(scene, opts);
+    const std::vector<TracedMesh> meshes = prepare(scene, opts.triangles);
+    const TraceCamera cam = trace_camera(scene.camera, width, height);
 
     AnalyticTrace out;
     out.image.width = width;
@@ -458,160 +670,26 @@ AnalyticTrace analytic_trace(const Scene& scene, int width, int height, const An
 
     for (int j = 0; j < height; ++j) {
         for (int i = 0; i < width; ++i) {
-            const dvec3 d = ray(i + 0.5, j + 0.5);
-            const dvec3 inv_d = 1.0 / d;
-            Hit hit;
-            for (size_t m = 0; m < meshes.size(); ++m) {
-                const TracedMesh& tm = meshes[m];
-                if (tm.exact) {
-                    intersect_exact(tm, eye, d, near_plane, int(m), hit);
-                    continue;
-                }
-                if (!tm.box.hit(eye, inv_d, std::min(hit.t, far_plane))) continue;
-                for (size_t c = 0; c < tm.chunks.size(); ++c) {
-                    if (!tm.chunks[c].hit(eye, inv_d, std::min(hit.t, far_plane))) continue;
-                    const size_t end = std::min(tm.tris.size(), (c + 1) * kChunk);
-                    for (size_t k = c * kChunk; k < end; ++k) intersect(tm.tris[k], eye, d, near_plane, int(m), hit);
-                }
-            }
+            const dvec3 d = cam.ray(i + 0.5, j + 0.5);
+            const Hit hit = nearest_hit(meshes, cam, d);
             float* px = out.image.at(i, j);
-            if (hit.mesh < 0 || hit.t > far_plane) {
+            if (hit.mesh < 0 || hit.t > cam.far_plane) {
                 const dvec3 bg = analytic_output(dvec3(scene.background), opts);
                 for (int k = 0; k < 3; ++k) px[k] = float(bg[k]);
                 continue;
             }
-            out.mesh[size_t(j) * width + i] = hit.mesh;
-            out.eye_depth[size_t(j) * width + i] = hit.t;  // the ray's forward component is 1
+            const size_t pixel = size_t(j) * width + i;
+            out.mesh[pixel] = hit.mesh;
+            out.eye_depth[pixel] = hit.t;  // the ray's forward component is 1
 
-            const TracedMesh& tm = meshes[hit.mesh];
             const Material& mat = scene.materials[scene.objects[hit.mesh].material];
-            const dvec3 p = eye + hit.t * d;
-            dvec3 n;
-            if (hit.tri) {
-                // Phong shading (§2.3): the vertex normals mixed with the hit's barycentric
-                // weights, which is what perspective-correct interpolation gives at the pixel centre.
-                const Tri& tr = *hit.tri;
-                n = glm::normalize((1 - hit.u - hit.v) * tr.n0 + hit.u * tr.n1 + hit.v * tr.n2);
-            } else {
-                n = hit.normal;
-            }
-            dvec3 Mdiff(mat.diffuse), Mspec(mat.specular);
-            if (mat.diffuse_map >= 0 || mat.normal_map >= 0) {
-                // A plane (checked above): uv from the hit, scaled by the material's tile.
-                const glm::dvec2 uv = plane_uv(tm, p) * double(mat.tile);
-                // The pixel's footprint in texels of each map (GL's rho): uv at the next pixel
-                // centres, on the same plane.
-                for (int map_index : {mat.diffuse_map, mat.normal_map}) {
-                    if (map_index < 0) continue;
-                    const Image& map = scene.textures[size_t(map_index)];
-                    double rho = 0;
-                    for (const dvec3& dn : {ray(i + 1.5, j + 0.5), ray(i + 0.5, j + 1.5)}) {
-                        if (!(dn.y < 0)) {
-                            rho = std::numeric_limits<double>::infinity();
-                            break;
-                        }
-                        const glm::dvec2 un = plane_uv(tm, eye + ((tm.centre.y - eye.y) / dn.y) * dn) * double(mat.tile);
-                        rho = std::max(rho, glm::length((un - uv) * glm::dvec2(map.width, map.height)));
-                    }
-                    out.max_texel_footprint = std::max(out.max_texel_footprint, rho);
-                }
-                if (mat.diffuse_map >= 0) Mdiff *= bilinear(scene.textures[size_t(mat.diffuse_map)], uv.x, uv.y);
-                if (mat.normal_map >= 0) {
-                    // The formula's normal in the plane's tangent frame (make_plane: tangent +X,
-                    // binormal -Z, normal +Y), as the material pass mixes it (Listing 13).
-                    const dvec3 nt = bump_normal(opts.bump_maps.at(mat.normal_map), uv.x, uv.y);
-                    n = glm::normalize(nt.x * dvec3(1, 0, 0) + nt.y * dvec3(0, 0, -1) + nt.z * dvec3(0, 1, 0));
-                }
-            }
-            double Mshi = mat.shininess;
-            if (opts.gbuffer_normals_8bit) n = glm::normalize(unorm8(n * 0.5 + 0.5) - 0.5);
-            const bool mr = mat.metal_rough();
-            double metallic = mat.metallic, roughness = mat.roughness;
-            if (opts.gbuffer_materials_8bit) {
-                Mdiff = unorm8(Mdiff);
-                Mspec = unorm8(Mspec);
-                Mshi = std::exp2(11.0 * unorm8(double(encode_shininess(mat.shininess))));
-                metallic = unorm8(metallic);
-                roughness = unorm8(roughness);
-            }
-            // With passes_8bit every pass's contribution is rounded before the sum (blending
-            // into an RGBA8 target); the clamp to [0, 1] comes last either way.
-            auto pass = [&](const dvec3& x) { return opts.passes_8bit ? unorm8(x) : x; };
-            const dvec3 v = glm::normalize(eye - p);     // Eq. 5: from p to the viewer
-            // Eq. 6; metallic-roughness: occlusion (1 without a map) and the emissive colour.
-            dvec3 c = pass(mr ? Mdiff * dvec3(scene.ambient) + dvec3(mat.emissive) : Mdiff * dvec3(scene.ambient));
-            for (size_t li = 0; li < scene.lights.size(); ++li) {
-                const Light& light = scene.lights[li];
-                // The laws of docs/scene-format.md, written again here from their
-                // definitions rather than taken from scene/light_law.h.
-                dvec3 l;
-                double att = 1.0;  // directional: no attenuation
-                if (light.type == Light::Type::directional) {
-                    l = -glm::normalize(dvec3(light.dir));
-                } else {
-                    l = dvec3(light.pos) - p;  // towards the light (docs/errata.md #3)
-                    const double dist = glm::length(l);
-                    const double R = light.radius;
-                    if (light.physical) {
-                        // KHR_lights_punctual's README, "Range Property": max(min(1 - (d/range)^4,
-                        // 1), 0) / d^2, or 1 / d^2 without a range; nothing beyond the light's bound.
-                        double range = light.range;
-                        if (opts.perturb_light == LightTerm::range_window) range *= 1.0 + opts.perturb_light_by;
-                        const double window = range > 0 ? std::max(std::min(1.0 - std::pow(dist / range, 4.0), 1.0), 0.0) : 1.0;
-                        att = dist < R && dist > 0 ? window / (dist * dist) : 0.0;
-                    } else if (!light.attenuation) {
-                        att = std::max(0.0, 1.0 - dist / R);  // Eq. 2
-                    } else {
-                        att = dist < R ? 1.0 / (light.kc + dist * (light.kl + dist * double(light.kq))) : 0.0;
-                    }
-                    if (att <= 0) continue;
-                    l = dist > 0 ? l / dist : n;
-                    if (light.type == Light::Type::spot && light.physical) {
-                        // The README's "Inner and Outer Cone Angles": lightAngleScale =
-                        // 1 / max(0.001, cos inner - cos outer), lightAngleOffset = -cos outer *
-                        // scale, saturate(cd * scale + offset) squared, cd the cosine from the axis.
-                        const double ci = std::cos(glm::radians(double(light.inner_deg)));
-                        const double co = std::cos(glm::radians(double(light.angle_deg)));
-                        const double scale = 1.0 / std::max(0.001, ci - co), offset = -co * scale;
-                        const double cd = glm::dot(-l, glm::normalize(dvec3(light.dir)));
-                        const double a = std::clamp(cd * scale + offset, 0.0, 1.0);
-                        const double power = opts.perturb_light == LightTerm::spot_falloff ? 2.0 * (1.0 + opts.perturb_light_by) : 2.0;
-                        att *= std::pow(a, power);
-                        if (att <= 0) continue;
-                    } else if (light.type == Light::Type::spot) {
-                        // GL_SPOT_CUTOFF: nothing at or beyond the half-angle; inside, the
-                        // exponent's cos^E times a smoothstep over the outer fifth of the angle.
-                        const double theta = std::acos(std::clamp(glm::dot(-l, glm::normalize(dvec3(light.dir))), -1.0, 1.0));
-                        const double a = glm::radians(double(light.angle_deg));
-                        if (!(theta < a)) continue;
-                        const double co = std::cos(a), ci = std::cos(0.8 * a), ct = std::cos(theta);
-                        const double t = std::clamp((ct - co) / (ci - co), 0.0, 1.0);
-                        att *= t * t * (3 - 2 * t) * (light.exponent > 0 ? std::pow(ct, double(light.exponent)) : 1.0);
-                    }
-                }
-                if (shadow_rays[li]) {
-                    const double t_max = light.type == Light::Type::directional
-                                             ? std::numeric_limits<double>::infinity()
-                                             : glm::length(dvec3(light.pos) - p);
-                    if (shadow_ray_blocked(meshes, p, l, t_max, glm::length(eye) + hit.t * glm::length(d) + 1)) {
-                        out.occluded[li][size_t(j) * width + i] = 1;
-                        continue;  // an occluded light adds nothing, its specular term included
-                    }
-                }
-                if (mr) {  // glTF's BRDF in place of Equations 3-4 (Equation 1's attenuation kept)
-                    c += pass(att * dvec3(light.color) *
-                              metal_rough_brdf(n, l, v, Mdiff, metallic, roughness, opts.perturb, opts.perturb_by));
-                    continue;
-                }
-                const dvec3 hv = l + v;
-                const double hl = glm::length(hv);
-                const dvec3 h = hl > 1e-12 ? hv / hl : n;  // Eq. 5
-                const dvec3 S(light.color);
-                const dvec3 Idiff = std::max(0.0, glm::dot(l, n)) * Mdiff * S;                   // Eq. 3
-                const dvec3 Ispec = std::pow(std::max(0.0, glm::dot(h, n)), Mshi) * Mspec * S;  // Eq. 4
-                c += pass(att * (Idiff + Ispec));                                                // Eq. 1
-            }
-            c = analytic_output(c, opts);
+            ShadePoint at;
+            at.p = cam.eye + hit.t * d;
+            at.v = glm::normalize(cam.eye - at.p);  // Eq. 5: from p to the viewer
+            at.pixel = pixel;
+            at.shadow_scale = glm::length(cam.eye) + hit.t * glm::length(d) + 1;
+            const Surface s = surface_at(scene, meshes[hit.mesh], mat, hit, at.p, cam, i, j, opts, out.max_texel_footprint);
+            const dvec3 c = analytic_output(shade(scene, meshes, mat, s, at, shadow_rays, opts, out.occluded), opts);
             for (int k = 0; k < 3; ++k) px[k] = float(c[k]);
         }
     }
