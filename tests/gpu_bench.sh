@@ -164,11 +164,22 @@ run)
             --json "$out/gpu_bench_tiles_1920x1080.json" --report "$out/gpu_bench_tiles_1920x1080.md" \
             | tee "$out/gpu_bench_tiles_1920x1080.txt"
         # Per stage, and where the tiles' CPU time goes: the depth spans' read-back (a pipeline
-        # drain) and the plan (--stats tiles.depth_ms, plan_ms).
+        # drain) and the plan (--stats tiles.depth_ms, plan_ms on the wall clock; tiles.cpu_ms:
+        # spans, wait, cull, plan, upload; tiles.wait_ms).
         for l in own 1024-overlap 32-large; do
             for g in quad volume tiles; do
                 $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --lights $l --light-geometry $g \
                     --frames 30 --stats "$out/stats_${l}_$g.json" -o "$out/render_${l}_$g.png"
+            done
+        done
+        # The spans' wait: slept through while an occlusion query's result is polled (as built),
+        # against glFinish (--caps no-occlusion-query), alternated, tiles.cpu_ms.wait and ms.cpu.
+        for r in $(seq ${GPU_BENCH_ROUNDS:-3}); do
+            for l in 32-large 1024-overlap 4096; do
+                for v in "poll:" "finish:--caps no-occlusion-query"; do
+                    $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --lights $l --light-geometry tiles \
+                        ${v#*:} --frames 30 --stats "$out/wait_${l}_${v%%:*}_$r.json" -o "$out/wait_${l}_${v%%:*}.png"
+                done
             done
         done
         # The tiles' depth culling reads each tile's depth span back to the CPU: what that stall

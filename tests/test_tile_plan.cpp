@@ -279,6 +279,41 @@ TEST(TilePlan, SphereMeetsBoxAgainstSampling) {
     EXPECT_GT(missed, 300);
 }
 
+// The culling's four-lane test (tiles_kept's, four tiles of a row at once) answers as
+// sphere_meets_box in every lane, to the bit: random boxes and spheres, spheres grown or shrunk to
+// within a few float steps of touching their box (where the margin and the rounding decide),
+// empty boxes and unbounded lights.
+TEST(TilePlan, FourLaneTestIsMeets) {
+    std::mt19937 rng(41);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    int met = 0, missed = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        std::array<TileBox, 4> boxes;
+        for (TileBox& b : boxes) {
+            b.lo = glm::vec3(u(rng), u(rng), u(rng)) * 40.0f - glm::vec3(20, 20, 60);
+            b.hi = b.lo + glm::vec3(u(rng), u(rng), u(rng)) * 4.0f;
+            b.empty = u(rng) < 0.1f;
+        }
+        LightBound l{glm::vec3(u(rng), u(rng), u(rng)) * 40.0f - glm::vec3(20, 20, 60), u(rng) * 8.0f};
+        if (trial % 11 == 5) l.radius = -1;  // directional: unbounded
+        if (trial % 3 == 1 && l.radius >= 0) {
+            // Touching lane 0's box, give or take a few float steps.
+            const glm::vec3 nearest = glm::clamp(l.centre, boxes[0].lo, boxes[0].hi);
+            float r = glm::length(nearest - l.centre);
+            for (int k = int(u(rng) * 16.0f) - 8; k != 0; k += k > 0 ? -1 : 1)
+                r = std::nextafter(r, k > 0 ? INFINITY : 0.0f);
+            l.radius = r;
+        }
+        for (int lane = 0; lane < 4; ++lane) {
+            const bool want = sphere_meets_box(l, boxes[size_t(lane)]);
+            EXPECT_EQ(meets_four_lanes(l, boxes, lane), want) << "trial " << trial << " lane " << lane;
+            met += want, missed += !want;
+        }
+    }
+    EXPECT_GT(met, 5000);  // both outcomes exercised
+    EXPECT_GT(missed, 5000);
+}
+
 TEST(TilePlan, OneDrawPerLayerNotPerTile) {
     // 64 lights over the whole 256x256 screen, 8 per pass, one batch: 8 draws of 64 tiles each,
     // every tile with the same lights, so one quad a draw.

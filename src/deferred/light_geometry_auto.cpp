@@ -289,11 +289,18 @@ private:
 
     // The tiles' lights alone, with their bounds; a priced frame hands over the tiles each light
     // keeps (tile_cover's), so the planner does not cull again; a kept frame's planner culls.
+    // Where every light takes the tiles, the frame and its culling go as they are, uncopied.
     void draw_tiles(const FrameDef& f, LightQueries& q, FrameStats& stats) {
+        std::vector<std::vector<int>> kept;
+        if (frame_.plan.count[at(LightPath::tiles)] == int(f.lights.size())) {
+            if (frame_.priced)
+                for (LightFeature& l : frame_.features) kept.push_back(std::move(l.tiles));
+            tiles_->draw_lights(f, frame_.cull, q, stats, frame_.priced ? &kept : nullptr);
+            return;
+        }
         FrameDef sub = f;
         sub.lights.clear();
         TileDepth depth;
-        std::vector<std::vector<int>> kept;
         if (frame_.cull) depth.tiles = frame_.cull->tiles;
         for (size_t i = 0; i < f.lights.size(); ++i)
             if (frame_.plan.path[i] == LightPath::tiles) {

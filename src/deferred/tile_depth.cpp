@@ -1,7 +1,9 @@
 // The tiles' depth spans (tile_depth.h).
 #include "deferred/tile_depth.h"
 
+#include <chrono>
 #include <string>
+#include <thread>
 
 #include "deferred/render_targets.h"
 #include "deferred/screen_quad.h"
@@ -15,11 +17,27 @@ namespace dsr {
 
 namespace {
 
+// Between two looks at the query: short against the spans' wait on a GPU (the G-buffer's fill,
+// about a millisecond at 1920x1080), so that the read-back starts soon after the GPU is done.
+constexpr auto kPollSleep = std::chrono::microseconds(20);
+
 // Waits for the GPU to finish what the read-back reads, timed into stats (where given): the
 // read-back after it then copies and does not wait, so the wait and the copy are told apart.
-void wait_for_gpu(TileStats* stats) {
+// With `drawn` (an occlusion query ended after the last pass the read-back reads), the thread
+// sleeps between looks at whether its result has come, instead of glFinish, which a GPU's
+// driver may spend spinning.
+void wait_for_gpu(GLuint drawn, TileStats* stats) {
     const double wall = now_ms(), cpu = thread_cpu_ms();
-    glFinish();
+    if (drawn) {
+        glFlush();  // the passes handed to the GPU, or the result never comes
+        for (GLuint done = 0;;) {
+            glGetQueryObjectuiv(drawn, GL_QUERY_RESULT_AVAILABLE, &done);
+            if (done) break;
+            std::this_thread::sleep_for(kPollSleep);
+        }
+    } else {
+        glFinish();
+    }
     if (!stats) return;
     stats->wait_ms += now_ms() - wall;
     stats->wait_cpu_ms += thread_cpu_ms() - cpu;
@@ -32,8 +50,13 @@ TileDepthPass::TileDepthPass(const ShaderConfig& c, ProgramSet& programs, int wi
     if (!readback_) {
         rows_prog_ = programs.take("tile_depth");
         reduce_prog_ = programs.take("tile_depth_reduce");
+        if (c.caps.occlusion_query) glGenQueries(1, &drawn_query_);
     }
     resize(width, height);
+}
+
+TileDepthPass::~TileDepthPass() {
+    if (drawn_query_) glDeleteQueries(1, &drawn_query_);
 }
 
 void TileDepthPass::resize(int w, int h) {
@@ -78,12 +101,14 @@ std::vector<DepthSpan> TileDepthPass::spans(const FrameDef& f, const PBuffer& gb
     reduce_prog_.set("row_spans", 4);
     reduce_prog_.set("texel", glm::vec2(1.0f / float(rows_->texture_width()), 1.0f / float(rows_->texture_height())));
     reduce_prog_.set("rows", float(rows));
+    if (drawn_query_) glBeginQuery(GL_SAMPLES_PASSED, drawn_query_);
     draw_quad(float(tx), float(ty), 1, 1);
+    if (drawn_query_) glEndQuery(GL_SAMPLES_PASSED);
     // Read from the bound framebuffer: one texel per tile, two floats used of four.
     std::vector<float> px(size_t(tx) * ty * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     if (timeline) timeline->mark(TileTimeline::spans_end);
-    wait_for_gpu(stats);
+    wait_for_gpu(drawn_query_, stats);
     glReadPixels(0, 0, tx, ty, GL_RGBA, GL_FLOAT, px.data());
     rows_->unbind_texture(0, 4);
     tiles_->unbind_render();
@@ -103,7 +128,7 @@ std::vector<DepthSpan> TileDepthPass::spans_by_readback(const FrameDef& f, const
     const int tw = gbuffer.texture_width(), th = gbuffer.texture_height();
     depth_.resize(size_t(tw) * size_t(th));
     normal_.resize(size_t(tw) * size_t(th) * 4);
-    wait_for_gpu(stats);
+    wait_for_gpu(0, stats);  // no pass of its own to query: the G-buffer's draws are another stage's
     // On unit 4, not one of the G-buffer's 0..3, and unbound again.
     glActiveTexture(GL_TEXTURE4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);

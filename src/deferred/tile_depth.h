@@ -27,6 +27,9 @@ public:
     // here and at resize, never inside a frame: creating their textures would disturb the
     // G-buffer's texture bindings.
     TileDepthPass(const ShaderConfig& c, ProgramSet& programs, int width, int height);
+    ~TileDepthPass();
+    TileDepthPass(const TileDepthPass&) = delete;
+    TileDepthPass& operator=(const TileDepthPass&) = delete;
     void resize(int width, int height);
     // Each tile's span, row by row: its two passes into its own buffers and the read-back, which
     // read the G-buffer's normal and depth targets on units 0 and 3 (P-buffer 0 must not be bound);
@@ -45,6 +48,10 @@ private:
     int tile_size_;
     bool pow2_;
     bool readback_;  // the spans from the G-buffer read back, not from the passes
+    // An occlusion query around the reduce pass, whose result's arrival tells that the GPU has
+    // drawn the spans (0: none, glFinish waits instead): polled with sleeps between, so that the
+    // wait for the GPU costs the CPU no spin (docs/tiles.md, "Depth culling of the tiles").
+    GLuint drawn_query_ = 0;
     std::unique_ptr<PBuffer> rows_;  // RGBA32F: a texel per tile column and window row
     std::unique_ptr<PBuffer> tiles_;  // RGBA32F: a texel per tile, read back
 };

@@ -95,6 +95,8 @@ TileBox tile_box(const DepthSpan& span, float x0, float y0, float x1, float y1, 
 // Whether the light's sphere reaches into the box, widened by 1e-5 of the magnitudes involved so
 // that float rounding here or in the shader never culls a pair the shader would light.
 bool sphere_meets_box(const LightBound& light, const TileBox& box);
+// The same test as the culling makes it for four boxes at once (a lane each): lane `lane`'s answer.
+bool meets_four_lanes(const LightBound& light, const std::array<TileBox, 4>& boxes, int lane);
 
 // Depth culling for the plans (optional): a light shades a tile only where its sphere reaches the
 // box around the tile's surfaces. Exact, not an approximation: outside its sphere every light type
