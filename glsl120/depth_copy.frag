@@ -16,6 +16,7 @@ uniform vec3 zrange;
 // as the light shaders do (they found interpolated coordinates a hair off on an NVIDIA GPU).
 uniform vec2 uv_scale;
 #ifdef AMBIENT
+uniform sampler2D normal_map;   // unit 0: the G-buffer's normal target, alpha 1 or 0.5 on a surface, 0 where cleared
 uniform sampler2D diffuse_map;  // unit 1: the G-buffer's diffuse target, alpha 1 on a surface
 uniform vec3 ambient;           // Listing 15's ambient colour
 uniform vec3 background;        // the colour the ambient pass clears P-buffer 0 to
@@ -36,8 +37,10 @@ void main()
 #endif
 #ifdef AMBIENT
     // Listing 15: the modulate where the alpha test (alpha > 0.5) finds a surface, else the clear.
+    // The surface is told by the normal target's alpha, where the diffuse target's alpha is 1: the
+    // diffuse target's clear may be left out (GbufferClears, render_targets.h).
     vec4 surface = texture2D(diffuse_map, texcoord);
-    gl_FragColor = surface.a > 0.5 ? vec4(ambient * surface.rgb, surface.a) : vec4(background, 1.0);
+    gl_FragColor = texture2D(normal_map, texcoord).a > 0.25 ? vec4(ambient * surface.rgb, surface.a) : vec4(background, 1.0);
 #else
     gl_FragColor = vec4(0.0);
 #endif

@@ -77,12 +77,15 @@ void main()
     // What the clear and the ambient pass leave (Listing 15: ambient x diffuse where the alpha test
     // finds a surface, else the background), and the light added to it in this one pass. A
     // rejected pixel is not discarded: it keeps that, as it would without the light.
+    // A surface is told by the normal target's alpha (1 or 0.5 where written, 0 where cleared) as
+    // the diffuse target's alpha 1 tells it, whose clear may be left out (render_targets.h GbufferClears).
     vec4 surface = texture2D(diffuse_map, texcoord);
-    vec3 base = surface.a > 0.5 ? ambient * surface.rgb : background;
+    bool on_surface = texture2D(normal_map, texcoord).a > 0.25;
+    vec3 base = on_surface ? ambient * surface.rgb : background;
 #ifdef QUANTIZE_8BIT
     base = quantize8(base);  // as the clear and the ambient pass wrote it into RGBA8
 #endif
-    float base_alpha = surface.a > 0.5 ? surface.a : 1.0;
+    float base_alpha = on_surface ? surface.a : 1.0;
 #define REJECT { gl_FragColor = vec4(base, base_alpha); return; }
 #else
 #define REJECT discard

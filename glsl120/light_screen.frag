@@ -65,9 +65,11 @@ void main()
         c += t;
     }
     if (with_ambient > 0.5) {
-        // The alpha test of Listing 15 finds a surface where diffuse alpha is set.
-        vec3 base = surface.a > 0.5 ? ambient * diffuse : background;
-        gl_FragColor = vec4(base + c, (surface.a > 0.5 ? surface.a : 1.0) + 1.0);  // the additive blend's sum
+        // The alpha test of Listing 15 finds a surface where diffuse alpha is set; told here by the
+        // normal target's alpha, set on every surface too (light.frag's fold says why).
+        bool on_surface = texture2D(normal_map, texcoord).a > 0.25;
+        vec3 base = on_surface ? ambient * diffuse : background;
+        gl_FragColor = vec4(base + c, (on_surface ? surface.a : 1.0) + 1.0);  // the additive blend's sum
     } else {
         gl_FragColor = vec4(c, 1.0);
     }

@@ -14,7 +14,7 @@
 #                                    folder, default .gpu/src and .gpu/build;
 #                                    GPU_BENCH_SIZES, _FRAMES, _LIGHTS: the bench's sweep;
 #                                    GPU_BENCH_PARTS: some of renders geometry targets ssao
-#                                    forward tiles auto goals groups fold shadows hdr bench, default
+#                                    forward tiles auto goals groups fold shadows hdr skips bench, default
 #                                    all; GPU_BENCH_ROUNDS: goals' alternations)
 #
 # The build links the system's libEGL/libOpenGL (glvnd, the NVIDIA driver behind them), never
@@ -274,6 +274,34 @@ run)
         $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --accum $a --frames 60 \
             --stats "$out/hdr_accum_$a.json" -o "$out/hdr_accum_$a.png"
     done
+    fi
+    # Each skip of the fixed passes (docs/gpu_frame.md, "The fixed passes"): the bench's skip rows
+    # (the default configuration with quads, each skip turned off alone) on 1024 and 32-large, and
+    # dsr's default frame with every skip against --no-skip gbuffer-clears, alternated
+    # GPU_BENCH_ROUNDS times (ms.frame, ms.geometry in each --stats file), each pair's images
+    # compared: LearnOpenGL's demo with its light boxes (32-large --show-lights) as the goals time
+    # it, and 1024 lights with the boxes (a forward stage: every frame hands off) and without.
+    if part skips; then
+        mkdir -p "$out/skips"
+        for s in 1920x1080 800x600; do
+            $dsr bench $src/data/default.scene --context egl --size $s --frames ${GPU_BENCH_FRAMES:-30} \
+                --lights 1024,32-large --light-geometry quad --json "$out/skips/bench_$s.json" \
+                --report "$out/skips/bench_$s.md" | tee "$out/skips/bench_$s.txt"
+            for v in 32-large:--show-lights 1024:--show-lights 1024:; do
+                l=${v%%:*}; tag=${l}${v#*:}; tag=${tag/--show-lights/_markers}
+                for r in $(seq ${GPU_BENCH_ROUNDS:-3}); do
+                    for k in on off; do
+                        flag=""; [ $k = off ] && flag="--no-skip gbuffer-clears"
+                        $dsr render $src/data/default.scene --context egl --size $s --no-bloom --no-aa --lights $l \
+                            ${v#*:} $flag --frames 30 --stats "$out/skips/render_${s}_${tag}_${k}_$r.json" \
+                            -o "$out/skips/render_${s}_${tag}_$k.png"
+                    done
+                done
+                echo "$s $l ${v#*:}: gbuffer-clears skipped vs not: $($dsr compare \
+                    "$out/skips/render_${s}_${tag}_off.png" "$out/skips/render_${s}_${tag}_on.png" 2>&1 | tail -1)" \
+                    | tee -a "$out/skips/compare.txt"
+            done
+        done
     fi
     if part bench; then
     for s in ${GPU_BENCH_SIZES:-1920x1080}; do

@@ -363,3 +363,116 @@ TEST(PassSkips, FullScreenLight) {
     EXPECT_EQ(g.lights[0].light, &a);
     EXPECT_EQ(g.lights_total, 2);
 }
+
+// The G-buffer's clears (SkipOptions::gbuffer_clears). ambient_pass_possible, over every
+// combination of the facts known before the geometry stage: where it says no pass can write the
+// ambient term, no value of the facts known later (the lights, the plan) makes decide_ambient
+// answer one; where it says one can, some value does.
+TEST(PassSkips, AmbientPassPossibleAgreesWithEveryLaterFact) {
+    for (int bits = 0; bits < 32; ++bits)
+        for (const bool certain : {false, true}) {
+            AmbientFacts a;
+            a.material_pass = bits & 1;
+            a.ssao = bits & 2;
+            a.fold_program = bits & 4;
+            a.geometry_draws_own = bits & 8;
+            a.handoff_program = bits & 16;
+            bool some_pass = false;
+            for (int later = 0; later < 32; ++later) {
+                a.has_lights = later & 1;
+                a.full_screen_light = later & 2;
+                a.plan_reads_back = later & 4;
+                PlanFacts p;
+                p.own_pass = later & 8;
+                p.hands_off = (later & 16) || certain;
+                const AmbientWriter w = decide_ambient(a, p);
+                some_pass = some_pass || w == AmbientWriter::pass_before_plan || w == AmbientWriter::pass_after_plan;
+            }
+            a.has_lights = a.full_screen_light = a.plan_reads_back = false;
+            EXPECT_EQ(ambient_pass_possible(a, certain), some_pass) << "facts " << bits << ", hand-off certain " << certain;
+        }
+}
+
+namespace {
+
+// Two frames on one DeferredShader, the camera moved between them so that the second frame's
+// background holds what the first frame's surfaces wrote where its clears are left out; the
+// second frame's image and, with `view`, that view of it.
+struct TwoFrames {
+    FrameStats first, second;
+    Image image;
+};
+TwoFrames two_frames(const Scene& scene, const ShaderOptions& opts, View view, bool gpu_paths,
+                     const std::vector<std::string>& force_off = {}) {
+    auto ctx = create_context(ContextDesc{"osmesa", kSize, kSize});
+    Caps caps = probe_caps(force_off);
+    if (gpu_paths) caps.software_rasterizer = false;
+    DeferredShader ds(caps, kSize, kSize, opts, resource_dir("glsl120"));
+    ds.set_scene(scene);
+    ds.set_read_back(true);
+    TwoFrames r;
+    r.first = ds.render(scene, kSize, kSize);
+    Scene moved = scene;  // the camera moved sideways: the background takes pixels surfaces had
+    const glm::vec3 step = 0.15f * glm::length(scene.camera.pos - scene.camera.target) * glm::vec3(1.0f, 0.6f, 0.0f);
+    moved.camera.pos += step;
+    moved.camera.target += step;
+    r.second = ds.render(moved, kSize, kSize);
+    if (view == View::final) {
+        r.image = opaque(ds.read_output(kSize, kSize));
+    } else {
+        ds.draw_view(view, moved.camera, kSize, kSize);
+        r.image = opaque(read_pixels(kSize, kSize));
+    }
+    return r;
+}
+
+}  // namespace
+
+// The skip leaves out the specular target's clear always and the diffuse target's where no pass
+// reads its alpha; the image, and every G-buffer view, is what every clear gives, on the CPU's
+// paths (the material pass writes the ambient term), a GPU's (the hand-off writes it where the
+// light markers' forward stage makes every frame hand off; else the ambient pass, with the
+// diffuse clear), without MRT, on the packed and position paths, with SSAO and the edge blur.
+TEST(PassSkips, GbufferClearsSkippedSameImage) {
+    // The default scene with lights enough for the light geometries' paths; a sphere on the
+    // background, lit by a directional light too, which reaches the background's pixels.
+    const Scene scenes[] = {with_generated_lights(default_scene(), 64), with_directional(lit_sphere_scene())};
+    struct Case {
+        const char* name;
+        DepthPath depth;
+        bool gpu_paths, show_lights, ssao, aa, half;
+        const char* caps;
+        int clears;  // colour clears of the second frame with the skip on
+    };
+    const Case cases[] = {
+        {"cpu paths", DepthPath::texture, false, false, false, false, false, "", 1},
+        {"cpu paths, light markers", DepthPath::texture, false, true, false, false, false, "", 1},
+        {"gpu paths", DepthPath::texture, true, false, false, false, false, "", 2},
+        {"gpu paths, light markers", DepthPath::texture, true, true, false, false, false, "", 1},
+        {"gpu paths, light markers, packed", DepthPath::packed, true, true, false, false, false, "", 2},
+        {"gpu paths, light markers, position16, half", DepthPath::position16, true, true, false, false, true, "", 2},
+        {"no mrt, packed", DepthPath::packed, false, false, false, false, false, "no-mrt", 3},
+        {"ssao, aa", DepthPath::texture, false, false, true, true, false, "", 2},
+    };
+    for (const Case& c : cases) {
+        ShaderOptions o = with_depth(c.depth);
+        o.show_lights = c.show_lights;
+        o.ssao.on = c.ssao;
+        o.post.aa = c.aa;
+        o.gbuffer_half = c.half;
+        const std::vector<std::string> caps = *c.caps ? std::vector<std::string>{c.caps} : std::vector<std::string>{};
+        const std::pair<int, View> runs[] = {{0, View::final},   {1, View::final},   {1, View::normal},
+                                             {1, View::diffuse}, {1, View::specular}};
+        for (const auto& [k, v] : runs) {
+            const Scene& s = scenes[k];
+            const std::string name = std::string("G-buffer clears skipped, ") + (k == 0 ? "64 lights, " : "sphere, ") +
+                                     c.name + ", view " + view_name(v);
+            const TwoFrames skip = two_frames(s, o, v, c.gpu_paths, caps);
+            const TwoFrames full = two_frames(s, no_skip(&SkipOptions::gbuffer_clears, o), v, c.gpu_paths, caps);
+            EXPECT_EQ(skip.first.passes.gbuffer_clears, full.first.passes.gbuffer_clears) << name << ": new targets";
+            EXPECT_EQ(skip.second.passes.gbuffer_clears, c.clears) << name;
+            EXPECT_EQ(full.second.passes.gbuffer_clears, c.depth == DepthPath::texture ? 3 : 4) << name;
+            EXPECT_EQ(compare_logged(name, skip.image, full.image, 0).max_abs, 0.0) << name;
+        }
+    }
+}

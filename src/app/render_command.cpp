@@ -123,7 +123,8 @@ int cmd_render(const std::vector<std::string>& argv) {
     j["skips"] = {{"variants", skip.material_variants}, {"empty_lights", skip.empty_lights},
                   {"light_depth_test", skip.light_depth_test}, {"light_sphere_test", skip.light_sphere_test},
                   {"depth_prepass", skip.depth_prepass},
-                  {"ambient_target", skip.ambient_target}, {"ambient", skip.ambient_pass}, {"final", skip.final_pass}};
+                  {"ambient_target", skip.ambient_target}, {"ambient", skip.ambient_pass}, {"final", skip.final_pass},
+                  {"gbuffer_clears", skip.gbuffer_clears}};
     j["scissor"] = opts.scissor;
     j["gbuffer"] = opts.gbuffer_half ? "half" : "rgba8";
     j["bloom"] = post.bloom;

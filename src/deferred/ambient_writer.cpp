@@ -27,6 +27,10 @@ AmbientWriter decide_ambient(const AmbientFacts& a, const PlanFacts& p) {
     return AmbientWriter::pass_after_plan;
 }
 
+bool ambient_pass_possible(const AmbientFacts& a, bool hands_off_certain) {
+    return !a.material_pass && !(handoff_may_write(a) && hands_off_certain);
+}
+
 const char* ambient_writer_name(AmbientWriter w) {
     switch (w) {
         case AmbientWriter::material_pass: return "material-pass";

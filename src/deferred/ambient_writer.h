@@ -50,6 +50,15 @@ AmbientWriter decide_ambient(const AmbientFacts& a, const PlanFacts& p);
 // (Paths::accum_depth) and a later pass tests against it (the lights, the forward stage, the
 // depth-bounds test).
 inline bool hands_off_depth(bool accum_depth, bool lights_need_depth, bool forward_stage, bool depth_bounds) {
+// Whether Listing 15's fixed-function pass may write the frame's ambient term: the one writer that
+// tells a surface by the G-buffer's diffuse alpha (the shaders that may take its place read the
+// normal target's alpha, which every surface writes as 1 or 0.5), so the one reader of the diffuse
+// target's clear (GbufferClears). Asked before the geometry stage, where the facts after the
+// culling (has_lights, full_screen_light) and the plan are not known: false only where no value of
+// them makes decide_ambient answer a pass. hands_off_certain: the frame hands off whatever the plan
+// (hands_off_depth with lights_need_depth false).
+bool ambient_pass_possible(const AmbientFacts& a, bool hands_off_certain);
+
     return accum_depth && (lights_need_depth || forward_stage || depth_bounds);
 }
 

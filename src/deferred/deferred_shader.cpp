@@ -114,6 +114,19 @@ void DeferredShader::set_output_size(int out_w, int out_h) {
 
 bool DeferredShader::skips_final(int out_w, int out_h) const {
     return config_.opts.skip.final_pass && read_back_ && out_w == width() && out_h == height() &&
+GbufferClears DeferredShader::gbuffer_clears(bool material_writes_ambient) const {
+    GbufferClears c;
+    if (!config_.opts.skip.gbuffer_clears) return c;
+    AmbientFacts a;  // the facts known before the geometry stage
+    a.material_pass = material_writes_ambient;
+    a.ssao = ssao_ != nullptr;
+    a.handoff_program = lighting_->handoff_writes_ambient();
+    const Paths& p = config_.paths;
+    c.diffuse = ambient_pass_possible(a, hands_off_depth(p.accum_depth, false, p.forward_stage, p.depth_bounds));
+    c.specular = false;
+    return c;
+}
+
            !config_.opts.hdr.float_accum() && !config_.opts.hdr.final_program();
 }
 
@@ -144,8 +157,10 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
     // (Paths::ambient_target): the lighting stage then draws no ambient pass.
     const AmbientTerm ambient{scene.background, scene.ambient};
     const bool material_writes_ambient = targets_->ambient_target();
-    timed(timer_, S_GEOMETRY,
-          [&] { geometry_->draw(f, *gpu_, *targets_, st, material_writes_ambient ? &ambient : nullptr); });
+    gbuffer_clears_ = gbuffer_clears(material_writes_ambient);
+    timed(timer_, S_GEOMETRY, [&] {
+        geometry_->draw(f, *gpu_, *targets_, st, material_writes_ambient ? &ambient : nullptr, gbuffer_clears_);
+    });
     if (!shadows_) {
         glFlush();  // the GPU starts on the G-buffer now, not when the light stage first waits on it
         cull_lights();

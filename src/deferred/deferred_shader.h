@@ -126,6 +126,8 @@ private:
     // Whether render() at out_w x out_h leaves the final pass out (set_read_back).
     bool skips_final(int out_w, int out_h) const;
     // `material_wrote_ambient`: the geometry stage's material pass wrote the ambient term.
+    // The G-buffer's colour clears this frame needs (SkipOptions::gbuffer_clears).
+    GbufferClears gbuffer_clears(bool material_writes_ambient) const;
     void draw_lights(const FrameDef& f, const Scene& scene, bool material_wrote_ambient, FrameStats& stats);
     void draw_post(const FrameDef& f);
 
@@ -146,4 +148,5 @@ private:
     bool read_back_ = false;  // set_read_back
 };
 
+    GbufferClears gbuffer_clears_;  // the last geometry stage's: the G-buffer views need every one
 }  // namespace dsr

@@ -44,6 +44,7 @@ void DepthHandoffPass::draw(const FrameDef& f, RenderTargets& t, const AmbientTe
     prog.set("zrange", f.zrange);
     prog.set("uv_scale", f.uv_scale);
     if (ambient) {
+        prog.set("normal_map", 0);  // the G-buffer as the light passes have it bound
         prog.set("diffuse_map", 1);
         prog.set("ambient", ambient->ambient);
         prog.set("background", ambient->background);

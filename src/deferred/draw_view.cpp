@@ -3,6 +3,7 @@
 // of Figure 4, the blur factor of Figure 8, the bloom blur of Figure 10, the SSAO buffer, a shadow map.
 #include "deferred/deferred_shader.h"
 #include "deferred/depth_codec.h"
+#include "deferred/geometry_stage.h"
 #include "deferred/post_stage.h"
 #include "deferred/shadow_stage.h"
 #include "dsr_error.h"
@@ -25,6 +26,14 @@ void DeferredShader::draw_view(View view, const Camera& camera, int out_w, int o
         case View::diffuse:
         case View::specular: {
             const int t = view == View::normal ? G_NORMAL : view == View::diffuse ? G_DIFFUSE : G_SPECULAR;
+            // A target whose clear the frame left out shows, at the background, what an earlier
+            // frame's surfaces left there: the G-buffer drawn again with every clear, the same
+            // values elsewhere (the view is not timed).
+            if (!gbuffer_clears_.all() && t != G_NORMAL && gpu_) {
+                FrameStats st;
+                geometry_->draw(frame_of(camera), *gpu_, *targets_, st);
+                gbuffer_clears_ = GbufferClears{};
+            }
             final_.draw_texture(g.texture(t), out_w, out_h, g_extent);
             return;
         }

@@ -123,6 +123,7 @@ struct ForwardCounts {
 // pass (§3.6), and which pass wrote its ambient term (Listing 15; ambient_writer.h).
 struct PassesRun {
     bool depth_prepass = true, final = true;
+    int gbuffer_clears = 0;  // the G-buffer's colour targets cleared (GbufferClears)
     AmbientWriter ambient = AmbientWriter::pass_before_plan;
     // The depth complexity the pre-pass choice read (depth_prepass.h): fragments that pass the
     // depth test in draw order per pixel covered, as measured in an earlier frame; null before the

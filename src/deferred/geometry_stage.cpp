@@ -50,7 +50,7 @@ void GeometryStage::collect_counts() {
 }
 
 void GeometryStage::draw(const FrameDef& f, GpuScene& gpu, RenderTargets& t, FrameStats& stats,
-                         const AmbientTerm* ambient) {
+                         const AmbientTerm* ambient, GbufferClears clears) {
     if (ambient && !t.ambient_target()) throw Error("geometry stage: this GL takes no ambient target beside the G-buffer");
     collect_counts();
     const bool prepass = !skip_prepass_ || choice_.run_next();
@@ -72,6 +72,9 @@ void GeometryStage::draw(const FrameDef& f, GpuScene& gpu, RenderTargets& t, Fra
                                    ? glm::vec4(0, 0, -cam.far_plane, 0)
                                    : glm::vec4(encode_eye_z(encoding_, -cam.far_plane, cam.near_plane, cam.far_plane), 0);
     const glm::vec4 clear[4] = {{0.5f, 0.5f, 0.5f, 0.0f}, {0, 0, 0, 0}, {0, 0, 0, 0}, far_code};
+    if (!t.gbuffer_written()) clears = GbufferClears{};  // new targets: nothing written yet
+    const bool cleared[4] = {true, clears.diffuse, clears.specular, true};
+    t.set_gbuffer_written();
     gl_state().apply(depth_pass_state());  // the clear writes depth: depth writes on, no scissor
     glClearDepth(1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
@@ -100,8 +103,11 @@ void GeometryStage::draw(const FrameDef& f, GpuScene& gpu, RenderTargets& t, Fra
     std::vector<int> all;
     for (int i = 0; i < g.color_targets(); ++i) {
         g.set_draw_targets({i});
-        glClearColor(clear[i].r, clear[i].g, clear[i].b, clear[i].a);
-        glClear(GL_COLOR_BUFFER_BIT);
+        if (cleared[i]) {
+            glClearColor(clear[i].r, clear[i].g, clear[i].b, clear[i].a);
+            glClear(GL_COLOR_BUFFER_BIT);
+            ++stats.passes.gbuffer_clears;
+        }
         if (!mrt_) material(i, i == 0);
         all.push_back(i);
     }

@@ -41,8 +41,9 @@ public:
     // whether the pre-pass ran, and the depth complexity that chose it, into `stats`. With `ambient`
     // (where RenderTargets::ambient_target) the material pass also leaves in P-buffer 0 what the
     // clear and the ambient pass would have, and the lighting stage draws no ambient pass.
+    // `clears`: the colour targets cleared besides the normal target and the packed depth.
     void draw(const FrameDef& f, GpuScene& gpu, RenderTargets& targets, FrameStats& stats,
-              const AmbientTerm* ambient = nullptr);
+              const AmbientTerm* ambient = nullptr, GbufferClears clears = {});
 
 private:
     static RenderState depth_pass_state();

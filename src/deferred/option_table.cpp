@@ -72,6 +72,7 @@ const std::vector<SkipName>& skip_names() {
         {"ambient-target", "ambient_target", &SkipOptions::ambient_target},
         {"ambient", "ambient_pass", &SkipOptions::ambient_pass},
         {"final", "final_pass", &SkipOptions::final_pass},
+        {"gbuffer-clears", "gbuffer_clears", &SkipOptions::gbuffer_clears},
     };
     return names;
 }
@@ -197,7 +198,10 @@ std::vector<RenderOption> make_table() {
         "a batch of the tiles; the screen geometry's first pass writes it; not with --ssao), or into the "
         "depth hand-off's pass in frames that hand off (ambient too; on a CPU rasteriser only where the "
         "hand-off is a pass anyway), the final pass where the image is read back at the buffers' size "
-        "(final: P-buffer 0 read directly)");
+        "(final: P-buffer 0 read directly), the G-buffer's colour clears whose background value no later pass "
+        "reads (gbuffer-clears: the specular target's, and the diffuse target's where the ambient term is written by "
+        "the material pass or certainly by the depth hand-off, which tell a surface by the normal target; the "
+        "G-buffer views draw the G-buffer again with every clear)");
     RenderOption view = choice(
         "view", view_names(), [](const RenderOptions& r) { return std::string(view_name(r.view)); },
         [](RenderOptions& r, const std::string& v) { r.view = view_from_name(v); });

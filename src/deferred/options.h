@@ -115,6 +115,9 @@ struct SkipOptions {
                                     // P-buffer 0, a render target beside the G-buffer's (paths.h)
     bool ambient_pass = true;       // else the ambient pass folded into a full-screen light pass
     bool final_pass = true;         // no final pass (§3.6) when the output is P-buffer 0 read back at its size
+    bool gbuffer_clears = true;     // the G-buffer's colour clears that no later pass reads: the
+                                    // specular target's, and the diffuse target's where the ambient
+                                    // term's writer tells a surface by the normal target (render_targets.h GbufferClears)
 };
 
 // Screen-space ambient occlusion (Vasilovici §5, docs/ssao.md): its own pass from the G-buffer's

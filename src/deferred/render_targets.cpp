@@ -32,6 +32,7 @@ void RenderTargets::allocate() {
     if (w_ <= 0 || h_ <= 0)
         throw Error("render targets: bad size " + std::to_string(w_) + "x" + std::to_string(h_));
     // The old buffers go first, so peak memory is one set.
+    gbuffer_written_ = false;
     g_.reset();
     for (auto& p : p_) p.reset();
     for (auto& a : ao_) a.reset();

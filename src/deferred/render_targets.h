@@ -35,6 +35,18 @@ enum PRole {
 // The ambient-occlusion buffers (docs/ssao.md), only with --ssao: at 1/ssao.scale of the frame.
 enum SsaoBuffer { SSAO_RAW = 0, SSAO_BLURRED = 1 };
 
+// The G-buffer's colour clears a frame needs (SkipOptions::gbuffer_clears). The normal target's and
+// the packed depth's (or position's) are always made: every pass that tells the background from a
+// surface reads one of them. The specular target's background is read only by the light shaders,
+// which multiply it by the background's zero normal; the diffuse target's alpha by Listing 15's
+// fixed-function ambient pass (ambient_writer.h ambient_pass_possible), its colour as the
+// specular's. Without a clear a target keeps, at the background, a value a material pass wrote,
+// finite: the first frame on new targets clears all (uninitialised half floats may hold NaN).
+struct GbufferClears {
+    bool diffuse = true, specular = true;
+    bool all() const { return diffuse && specular; }
+};
+
 class RenderTargets {
 public:
     // Needs a current context; the formats follow `paths` and `opts` (half-float G-buffer,
@@ -74,6 +86,11 @@ public:
 private:
     void allocate();
     Paths paths_;
+    // Whether a geometry stage has drawn into the G-buffer since it was allocated: until then its
+    // targets hold uninitialised memory, which every clear must cover (GbufferClears).
+    bool gbuffer_written() const { return gbuffer_written_; }
+    void set_gbuffer_written() { gbuffer_written_ = true; }
+
     ShaderOptions opts_;
     int w_, h_;
     std::unique_ptr<PBuffer> g_;
@@ -83,3 +100,4 @@ private:
 };
 
 }  // namespace dsr
+    bool gbuffer_written_ = false;
