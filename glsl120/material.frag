@@ -18,7 +18,9 @@
 // (metallic, roughness, occlusion, 0) with `specular` = (metallic, roughness, occlusion strength)
 // and speculartex the metallic-roughness map (green roughness, blue metallic, as glTF stores
 // them); where the ambient term is written here, it is scaled by the occlusion and the emissive
-// colour (emissive x emissivetex) is added.
+// colour (emissive x emissivetex) is added. EMISSION_PASS (with METAL_ROUGH_MATERIAL; emission_pass.h):
+// gl_FragData[0] = (emissive colour, occlusion as target 2 stores it), which P-buffer 0 blends as
+// colour + P-buffer 0 x alpha, over what Listing 15's pass left there.
 #include "depth_codec.glsl"
 #include "quantize.glsl"
 
@@ -102,7 +104,10 @@ void main()
 #elif defined(POSITION_TARGET)
     vec4 t3 = vec4(vpos, 1.0);  // the eye-space position the light pass would rebuild
 #endif
-#if defined(TARGET_0)
+#if defined(EMISSION_PASS)
+    // The occlusion's nearest 8-bit code, as target 2 holds it and the material pass's ambient target reads it.
+    gl_FragData[0] = vec4(emissive * texture2D(emissivetex, txcoord).rgb, floor(clamp(t2.b, 0.0, 1.0) * 255.0 + 0.5) / 255.0);
+#elif defined(TARGET_0)
     gl_FragData[0] = t0;
 #elif defined(TARGET_1)
     gl_FragData[0] = t1;

@@ -1,5 +1,5 @@
 // decide_ambient and ambient_before_plan (deferred/ambient_writer.h): which pass writes the
-// ambient term, over every combination of the facts (2^8 before the plan x 2^2 after it), each
+// ambient term, over every combination of the facts (2^9 before the plan x 2^2 after it), each
 // answer checked against the rules written out here on their own.
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 namespace dsr {
 namespace {
 
-constexpr int kBefore = 8, kAfter = 2;
+constexpr int kBefore = 9, kAfter = 2;
 
 AmbientFacts facts_for(int bits) {
     AmbientFacts a;
@@ -22,6 +22,7 @@ AmbientFacts facts_for(int bits) {
     a.full_screen_light = bits & 32;
     a.handoff_program = bits & 64;
     a.plan_reads_back = bits & 128;
+    a.emission = bits & 256;
     return a;
 }
 
@@ -36,13 +37,15 @@ std::string trace(const AmbientFacts& a, const PlanFacts& p) {
     return "material " + std::to_string(a.material_pass) + " ssao " + std::to_string(a.ssao) + " fold_program " +
            std::to_string(a.fold_program) + " draws_own " + std::to_string(a.geometry_draws_own) + " lights " +
            std::to_string(a.has_lights) + " full_screen " + std::to_string(a.full_screen_light) + " handoff_program " +
-           std::to_string(a.handoff_program) + " reads_back " + std::to_string(a.plan_reads_back) + " own_pass " +
+           std::to_string(a.handoff_program) + " reads_back " + std::to_string(a.plan_reads_back) + " emission " +
+           std::to_string(a.emission) + " own_pass " +
            std::to_string(p.own_pass) + " hands_off " + std::to_string(p.hands_off);
 }
 
 // The rules, each on its own, in order of precedence:
 //  1. the material pass wrote it: nothing else does;
-//  2. SSAO scales Listing 15's pass alone: that pass, first unless the plan reads back;
+//  2. SSAO scales Listing 15's pass alone, and only that pass (with the emission pass after it)
+//     adds emission and occlusion to a frame with them: that pass, first unless the plan reads back;
 //  3. the screen geometry (with lights and the fold form built) writes it in its first batch;
 //  4. a full-screen light whose pass is its own (fold form built) writes it in that pass;
 //  5. a frame that hands its depth off, with the hand-off's ambient form, writes it there;
@@ -51,10 +54,10 @@ std::string trace(const AmbientFacts& a, const PlanFacts& p) {
 //     form) and the plan does not read back; after it otherwise.
 AmbientWriter expected(const AmbientFacts& a, const PlanFacts& p) {
     if (a.material_pass) return AmbientWriter::material_pass;
-    const bool fold_form = !a.ssao && a.fold_program;
+    const bool fold_form = !a.ssao && !a.emission && a.fold_program;
     if (fold_form && a.geometry_draws_own && a.has_lights) return AmbientWriter::geometry_first_batch;
     if (fold_form && a.full_screen_light && p.own_pass) return AmbientWriter::light_fold;
-    const bool handoff_form = !a.ssao && a.handoff_program;
+    const bool handoff_form = !a.ssao && !a.emission && a.handoff_program;
     if (handoff_form && p.hands_off) return AmbientWriter::handoff;
     const bool could_be_taken = (fold_form && ((a.geometry_draws_own && a.has_lights) || a.full_screen_light)) ||
                                 handoff_form;
@@ -73,6 +76,25 @@ TEST(AmbientWriter, EveryCombinationFollowsTheRules) {
             ++seen[int(w)];
         }
     for (int w = 0; w < 6; ++w) EXPECT_GT(seen[w], 0) << ambient_writer_name(AmbientWriter(w));
+}
+
+// Emission and occlusion reach P-buffer 0 only through the material pass's ambient target or the
+// emission pass after Listing 15's pass: in a frame with them no other writer is ever chosen, and
+// without them every writer some combination chooses is still chosen.
+TEST(AmbientWriter, EmissionKeepsTheWritersThatCarryIt) {
+    bool seen_without[6] = {false, false, false, false, false, false};
+    for (int b = 0; b < (1 << kBefore); ++b)
+        for (int q = 0; q < (1 << kAfter); ++q) {
+            const AmbientFacts a = facts_for(b);
+            SCOPED_TRACE(trace(a, plan_for(q)));
+            const AmbientWriter w = decide_ambient(a, plan_for(q));
+            if (!a.emission) seen_without[int(w)] = true;
+            if (a.emission) {
+                EXPECT_TRUE(w == AmbientWriter::material_pass || w == AmbientWriter::pass_before_plan ||
+                            w == AmbientWriter::pass_after_plan);
+            }
+        }
+    for (int w = 0; w < 6; ++w) EXPECT_TRUE(seen_without[w]) << ambient_writer_name(AmbientWriter(w));
 }
 
 // The step before the plan answers only what no fact after it can change, and answers the pass

@@ -6,9 +6,9 @@ namespace dsr {
 namespace {
 // A light's pass or the geometry's first batch may take the ambient pass's place.
 bool may_fold(const AmbientFacts& a) {
-    return !a.ssao && a.fold_program && ((a.geometry_draws_own && a.has_lights) || a.full_screen_light);
+    return !a.ssao && !a.emission && a.fold_program && ((a.geometry_draws_own && a.has_lights) || a.full_screen_light);
 }
-bool handoff_may_write(const AmbientFacts& a) { return !a.ssao && a.handoff_program; }
+bool handoff_may_write(const AmbientFacts& a) { return !a.ssao && !a.emission && a.handoff_program; }
 }  // namespace
 
 std::optional<AmbientWriter> ambient_before_plan(const AmbientFacts& a) {

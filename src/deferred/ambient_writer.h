@@ -33,6 +33,10 @@ struct AmbientFacts {
     bool full_screen_light = false;  // ambient_fold.h full_screen_light found one
     bool handoff_program = false;    // the depth hand-off has its ambient form (DepthHandoffPass::can_write_ambient)
     bool plan_reads_back = false;    // LightGeometryPass::prepare_reads_back
+    // The frame has surfaces whose ambient term holds emission or occlusion, which the G-buffer
+    // cannot hold and only the material pass or Listing 15's pass with the emission pass after it
+    // write (emission_pass.h): no other writer then.
+    bool emission = false;
 };
 
 // Known after it.

@@ -3,6 +3,7 @@
 
 #include "deferred/ambient_fold.h"
 #include "deferred/ambient_writer.h"
+#include "deferred/emission_pass.h"
 #include "deferred/forward_stage.h"
 #include "deferred/geometry_stage.h"
 #include "deferred/gpu_scene.h"
@@ -90,6 +91,7 @@ void DeferredShader::set_scene(const Scene& scene) {
     }
     forward_->set_scene(scene, *gpu_);
     if (shadows_) shadows_->set_scene(scene);
+    emission_ = std::make_unique<EmissionPass>(shader_dir_, scene, *gpu_);
 }
 
 FrameDef DeferredShader::frame_of(const Camera& camera, const std::vector<Light>& lights, bool scissors) const {
@@ -121,6 +123,7 @@ GbufferClears DeferredShader::gbuffer_clears(bool material_writes_ambient) const
     a.material_pass = material_writes_ambient;
     a.ssao = ssao_ != nullptr;
     a.handoff_program = lighting_->handoff_writes_ambient();
+    a.emission = emission_ && emission_->needed() && targets_->accum_attachable();  // draw_lights' fact
     const Paths& p = config_.paths;
     c.diffuse = ambient_pass_possible(a, hands_off_depth(p.accum_depth, false, p.forward_stage, p.depth_bounds));
     c.specular = false;
@@ -197,6 +200,10 @@ FrameStats DeferredShader::render(const Scene& scene, int out_w, int out_h) {
 // writes the ambient term is decided by ambient_writer.h; this draws what it says, in its order.
 void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, bool material_wrote_ambient, FrameStats& st) {
     if (ssao_) timed(timer_, S_SSAO, [&] { ssao_->draw(f, *targets_); });
+    // Where the material pass did not write the ambient term, emission and occlusion are added
+    // after Listing 15's pass by the emission pass, which no other writer can stand in for (asked
+    // before P-buffer 0 is bound: RenderTargets asks the G-buffer's framebuffer).
+    const bool emission = !material_wrote_ambient && emission_ && emission_->needed() && targets_->accum_attachable();
     fb_bind_render(P_ACCUM);
     const int units[4] = {0, 1, 2, 3};
     const int gbuffer[4] = {G_NORMAL, G_DIFFUSE, G_SPECULAR, depth_target(config_.opts.depth)};
@@ -210,6 +217,11 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, bool mat
         timer_.begin(S_AMBIENT);
         lighting_->draw_ambient(f, scene, *targets_, ssao_.get());
         check_gl_stage("lighting stage: ambient pass");
+        if (emission) {
+            fb_unbind_render(P_ACCUM);
+            emission_->draw(f, *gpu_, *targets_);
+            fb_bind_render(P_ACCUM);
+        }
         timer_.end();
     };
     const AmbientTerm colours{scene.background, scene.ambient};
@@ -223,6 +235,7 @@ void DeferredShader::draw_lights(const FrameDef& f, const Scene& scene, bool mat
     facts.full_screen_light = full_light.has_value();
     facts.handoff_program = lighting_->handoff_writes_ambient();
     facts.plan_reads_back = lighting_->prepare_reads_back(f);
+    facts.emission = emission;
     // Where nothing can take the ambient pass's place and the plan does not read back, it goes
     // first: the GPU draws it while the light geometry plans.
     const std::optional<AmbientWriter> early = ambient_before_plan(facts);

@@ -34,6 +34,7 @@ class LightingStage;
 class ForwardStage;
 class PostStage;
 class ShadowStage;
+class EmissionPass;
 
 class DeferredShader {
 public:
@@ -139,6 +140,7 @@ private:
     std::unique_ptr<GeometryStage> geometry_;
     std::unique_ptr<SsaoStage> ssao_;  // with --ssao
     std::unique_ptr<LightingStage> lighting_;
+    std::unique_ptr<EmissionPass> emission_;  // the scene's emission and occlusion (emission_pass.h)
     bool counting_ = true;  // set_counting's, kept for a lighting stage built again by set_scene
     std::unique_ptr<ForwardStage> forward_;
     std::unique_ptr<PostStage> post_;

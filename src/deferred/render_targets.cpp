@@ -91,6 +91,18 @@ void RenderTargets::allocate() {
     }
 }
 
+bool RenderTargets::accum_attachable() {
+    if (accum_attachable_ < 0) {
+        GLint attachments = 0;
+        if (paths_.fbo) glGetIntegerv(GL_MAX_COLOR_ATTACHMENTS_EXT, &attachments);
+        const bool room = paths_.fbo && attachments > g_->color_targets();
+        accum_attachable_ = room && g_->attach_extra(p_[P_ACCUM]->texture(0), true) &&
+                            g_->attach_extra(p_[P_AA]->texture(0), true);
+        if (room) g_->attach_extra(0);
+    }
+    return accum_attachable_ == 1;
+}
+
 PBuffer& RenderTargets::ssao(int which) {
     if (!ao_[which]) throw Error("the SSAO buffers exist only with --ssao on");
     return *ao_[which];

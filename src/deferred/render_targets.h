@@ -78,6 +78,9 @@ public:
     // takes it, checked at allocation with P-buffers 0 and 1 (the anti-alias pass swaps them).
     bool ambient_target() const { return ambient_target_; }
     void mrt_attach_accum(bool on) { g_->attach_extra(on ? p_[P_ACCUM]->texture(0) : 0); }
+    // Whether this GL takes P-buffer 0 (and 1) as the G-buffer framebuffer's one more target, to
+    // draw into alone (the emission pass, emission_pass.h): asked on first use, then kept.
+    bool accum_attachable();
     void fb_bind_render(int b) { p_[b]->bind_render(); }
     void fb_unbind_render(int b) { p_[b]->unbind_render(); }
     void fb_bind_texture(int b, int unit) { p_[b]->bind_texture(0, unit); }
@@ -97,6 +100,7 @@ private:
     std::unique_ptr<PBuffer> p_[4];
     std::unique_ptr<PBuffer> ao_[2];  // SsaoBuffer
     bool ambient_target_ = false;
+    int accum_attachable_ = -1;  // unknown until asked
 };
 
 }  // namespace dsr
