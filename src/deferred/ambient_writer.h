@@ -50,10 +50,6 @@ std::optional<AmbientWriter> ambient_before_plan(const AmbientFacts& a);
 // The writer, from every fact; equal to ambient_before_plan(a) wherever that has one.
 AmbientWriter decide_ambient(const AmbientFacts& a, const PlanFacts& p);
 
-// Whether a frame hands the scene's depth off to P-buffer 0: the paths give it a depth buffer
-// (Paths::accum_depth) and a later pass tests against it (the lights, the forward stage, the
-// depth-bounds test).
-inline bool hands_off_depth(bool accum_depth, bool lights_need_depth, bool forward_stage, bool depth_bounds) {
 // Whether Listing 15's fixed-function pass may write the frame's ambient term: the one writer that
 // tells a surface by the G-buffer's diffuse alpha (the shaders that may take its place read the
 // normal target's alpha, which every surface writes as 1 or 0.5), so the one reader of the diffuse
@@ -63,6 +59,10 @@ inline bool hands_off_depth(bool accum_depth, bool lights_need_depth, bool forwa
 // (hands_off_depth with lights_need_depth false).
 bool ambient_pass_possible(const AmbientFacts& a, bool hands_off_certain);
 
+// Whether a frame hands the scene's depth off to P-buffer 0: the paths give it a depth buffer
+// (Paths::accum_depth) and a later pass tests against it (the lights, the forward stage, the
+// depth-bounds test).
+inline bool hands_off_depth(bool accum_depth, bool lights_need_depth, bool forward_stage, bool depth_bounds) {
     return accum_depth && (lights_need_depth || forward_stage || depth_bounds);
 }
 

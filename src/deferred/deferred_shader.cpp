@@ -114,8 +114,6 @@ void DeferredShader::set_output_size(int out_w, int out_h) {
     out_aspect_ = out_w > 0 && out_h > 0 ? float(out_w) / float(out_h) : 0.0f;
 }
 
-bool DeferredShader::skips_final(int out_w, int out_h) const {
-    return config_.opts.skip.final_pass && read_back_ && out_w == width() && out_h == height() &&
 GbufferClears DeferredShader::gbuffer_clears(bool material_writes_ambient) const {
     GbufferClears c;
     if (!config_.opts.skip.gbuffer_clears) return c;
@@ -130,6 +128,8 @@ GbufferClears DeferredShader::gbuffer_clears(bool material_writes_ambient) const
     return c;
 }
 
+bool DeferredShader::skips_final(int out_w, int out_h) const {
+    return config_.opts.skip.final_pass && read_back_ && out_w == width() && out_h == height() &&
            !config_.opts.hdr.float_accum() && !config_.opts.hdr.final_program();
 }
 

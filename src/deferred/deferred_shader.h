@@ -126,9 +126,9 @@ private:
     FrameDef frame_of(const Camera& camera) const { return frame_of(camera, {}, true); }  // no lights
     // Whether render() at out_w x out_h leaves the final pass out (set_read_back).
     bool skips_final(int out_w, int out_h) const;
-    // `material_wrote_ambient`: the geometry stage's material pass wrote the ambient term.
     // The G-buffer's colour clears this frame needs (SkipOptions::gbuffer_clears).
     GbufferClears gbuffer_clears(bool material_writes_ambient) const;
+    // `material_wrote_ambient`: the geometry stage's material pass wrote the ambient term.
     void draw_lights(const FrameDef& f, const Scene& scene, bool material_wrote_ambient, FrameStats& stats);
     void draw_post(const FrameDef& f);
 
@@ -148,7 +148,7 @@ private:
     FrameTimer timer_;
     float out_aspect_ = 0;  // set_output_size's width / height; 0: the buffers'
     bool read_back_ = false;  // set_read_back
+    GbufferClears gbuffer_clears_;  // the last geometry stage's: the G-buffer views need every one
 };
 
-    GbufferClears gbuffer_clears_;  // the last geometry stage's: the G-buffer views need every one
 }  // namespace dsr

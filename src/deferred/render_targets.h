@@ -86,14 +86,14 @@ public:
     void fb_bind_texture(int b, int unit) { p_[b]->bind_texture(0, unit); }
     void fb_unbind_texture(int b, int unit) { p_[b]->unbind_texture(0, unit); }
 
-private:
-    void allocate();
-    Paths paths_;
     // Whether a geometry stage has drawn into the G-buffer since it was allocated: until then its
     // targets hold uninitialised memory, which every clear must cover (GbufferClears).
     bool gbuffer_written() const { return gbuffer_written_; }
     void set_gbuffer_written() { gbuffer_written_ = true; }
 
+private:
+    void allocate();
+    Paths paths_;
     ShaderOptions opts_;
     int w_, h_;
     std::unique_ptr<PBuffer> g_;
@@ -101,7 +101,7 @@ private:
     std::unique_ptr<PBuffer> ao_[2];  // SsaoBuffer
     bool ambient_target_ = false;
     int accum_attachable_ = -1;  // unknown until asked
+    bool gbuffer_written_ = false;
 };
 
 }  // namespace dsr
-    bool gbuffer_written_ = false;
