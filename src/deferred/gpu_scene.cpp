@@ -6,6 +6,7 @@
 
 #include "gl/check.h"
 #include "gl/state.h"
+#include "gl/vertex_arrays.h"
 
 namespace dsr {
 
@@ -216,42 +217,27 @@ GpuScene::~GpuScene() {
 void GpuScene::bind_positions() const {
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo_);
-    glEnableClientState(GL_VERTEX_ARRAY);
-    glVertexPointer(3, GL_FLOAT, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, pos)));
+    vertex_array(3, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, pos)));
 }
 
 void GpuScene::bind_all() const {
     bind_positions();
-    glEnableClientState(GL_NORMAL_ARRAY);
-    glNormalPointer(GL_FLOAT, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
+    normal_array(sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
     const size_t offs[3] = {offsetof(Vertex, uv), offsetof(Vertex, tangent), offsetof(Vertex, binormal)};
     const int sizes[3] = {2, 3, 3};
-    for (int i = 0; i < 3; ++i) {
-        glClientActiveTexture(GL_TEXTURE0 + i);
-        glEnableClientState(GL_TEXTURE_COORD_ARRAY);
-        glTexCoordPointer(sizes[i], GL_FLOAT, sizeof(Vertex), reinterpret_cast<void*>(offs[i]));
-    }
-    glClientActiveTexture(GL_TEXTURE0);
+    for (int i = 0; i < 3; ++i) texcoord_array(i, sizes[i], sizeof(Vertex), reinterpret_cast<void*>(offs[i]));
     if (cbo_) {
         glBindBuffer(GL_ARRAY_BUFFER, cbo_);
-        glEnableClientState(GL_COLOR_ARRAY);
-        glColorPointer(4, GL_FLOAT, sizeof(glm::vec4), nullptr);
+        color_array(sizeof(glm::vec4), nullptr);
         glBindBuffer(GL_ARRAY_BUFFER, vbo_);
     }
 }
 
 void GpuScene::unbind() const {
-    if (cbo_) {
-        glDisableClientState(GL_COLOR_ARRAY);
-        glColor4f(1, 1, 1, 1);  // the current colour is undefined after drawing with the array
-    }
-    for (int i = 0; i < 3; ++i) {
-        glClientActiveTexture(GL_TEXTURE0 + i);
-        glDisableClientState(GL_TEXTURE_COORD_ARRAY);
-    }
-    glClientActiveTexture(GL_TEXTURE0);
-    glDisableClientState(GL_NORMAL_ARRAY);
-    glDisableClientState(GL_VERTEX_ARRAY);
+    if (cbo_) disable_color_array();
+    for (int i = 0; i < 3; ++i) disable_texcoord_array(i);
+    disable_normal_array();
+    disable_vertex_array();
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 }

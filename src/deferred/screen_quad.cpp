@@ -2,12 +2,54 @@
 #include "deferred/screen_quad.h"
 
 #include <algorithm>
+#include <vector>
+
+#include "gl/state.h"
+#include "gl/vertex_arrays.h"
 
 namespace dsr {
+
+namespace {
+
+// OpenGL ES 2.0 has neither glBegin nor GL_QUADS (docs/gles2.md): quads (4 corners each, in
+// order) as two triangles each, (0,1,2) and (0,2,3) as GL_QUADS splits them, from client memory
+// through the prelude's attributes. `uv`: 2 floats a corner (gl_MultiTexCoord0); `ray`: 3 a
+// corner (gl_MultiTexCoord1) or null.
+void es_quads(const std::vector<float>& xy, const std::vector<float>& uv, const std::vector<float>& ray) {
+    static const int corner[6] = {0, 1, 2, 0, 2, 3};
+    std::vector<float> p, t, r;
+    for (size_t q = 0; q < xy.size() / 8; ++q)
+        for (int c : corner) {
+            const size_t i = q * 4 + size_t(c);
+            p.insert(p.end(), {xy[2 * i], xy[2 * i + 1]});
+            t.insert(t.end(), {uv[2 * i], uv[2 * i + 1]});
+            if (!ray.empty()) r.insert(r.end(), {ray[3 * i], ray[3 * i + 1], ray[3 * i + 2]});
+        }
+    vertex_array(2, 0, p.data());
+    texcoord_array(0, 2, 0, t.data());
+    if (!r.empty()) texcoord_array(1, 3, 0, r.data());
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(p.size() / 2));
+    if (!r.empty()) disable_texcoord_array(1);
+    disable_texcoord_array(0);
+    disable_vertex_array();
+}
+
+}  // namespace
 
 void draw_rect(const FrameDef& f, float x0, float y0, float x1, float y1, bool rays) {
     const float xs[4] = {x0, x1, x1, x0}, ys[4] = {y0, y0, y1, y1};
     const float sx = f.uv_scale.x, sy = f.uv_scale.y;  // into the G-buffer's (maybe padded) extent
+    if (gl_state().es()) {
+        std::vector<float> xy, uv, ray;
+        for (int i = 0; i < 4; ++i) {
+            xy.insert(xy.end(), {xs[i], ys[i]});
+            uv.insert(uv.end(), {xs[i] * sx, ys[i] * sy});
+            if (!rays) continue;
+            const glm::vec3 r = f.view_ray_at(xs[i], ys[i]);
+            ray.insert(ray.end(), {r.x, r.y, r.z});
+        }
+        return es_quads(xy, uv, ray);
+    }
     glBegin(GL_QUADS);
     for (int i = 0; i < 4; ++i) {
         glMultiTexCoord2f(GL_TEXTURE0, xs[i] * sx, ys[i] * sy);
@@ -25,6 +67,7 @@ void draw_rect(const FrameDef& f, float x0, float y0, float x1, float y1, bool r
 // [0,w]x[0,h] in the current ortho camera, texture coordinates 0..(sx,sy): the source's
 // content extent (less than 1 when padded to powers of two).
 void draw_quad(float w, float h, float sx, float sy) {
+    if (gl_state().es()) return es_quads({0, 0, w, 0, w, h, 0, h}, {0, 0, sx, 0, sx, sy, 0, sy}, {});
     glBegin(GL_QUADS);
     glTexCoord2f(0, 0); glVertex2f(0, 0);
     glTexCoord2f(sx, 0); glVertex2f(w, 0);
@@ -48,6 +91,17 @@ void draw_quad_clamped(float w, float h, const PBuffer& b) {
     const float ys[3] = {0, th > ch ? h * (ch - 0.5f) / ch : h, h};
     auto u = [&](float x) { return std::min(x / w * sx, (cw - 0.5f) / tw); };
     auto v = [&](float y) { return std::min(y / h * sy, (ch - 0.5f) / th); };
+    if (gl_state().es()) {
+        std::vector<float> xy, uv;
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i) {
+                const float x0 = xs[i], x1 = xs[i + 1], y0 = ys[j], y1 = ys[j + 1];
+                if (x1 <= x0 || y1 <= y0) continue;
+                xy.insert(xy.end(), {x0, y0, x1, y0, x1, y1, x0, y1});
+                uv.insert(uv.end(), {u(x0), v(y0), u(x1), v(y0), u(x1), v(y1), u(x0), v(y1)});
+            }
+        return es_quads(xy, uv, {});
+    }
     glBegin(GL_QUADS);
     for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 2; ++i) {

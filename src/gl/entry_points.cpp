@@ -78,6 +78,16 @@ const char* context_name(const char* desktop, bool es, bool& required) {
     return nullptr;
 }
 
+// The fixed-function texture-coordinate calls on OpenGL ES 2.0, which has none: a path that still
+// draws through them refuses in one line instead of calling a null pointer.
+[[noreturn]] void no_fixed_texcoords() {
+    throw Error("this pass draws with fixed-function texture coordinates (glClientActiveTexture, glMultiTexCoord), "
+                "which OpenGL ES 2.0 lacks; on --context egl-gles2 use --light-geometry quad (docs/gles2.md)");
+}
+void APIENTRY es_client_active_texture(GLenum) { no_fixed_texcoords(); }
+void APIENTRY es_multi_tex_coord2f(GLenum, GLfloat, GLfloat) { no_fixed_texcoords(); }
+void APIENTRY es_multi_tex_coord3f(GLenum, GLfloat, GLfloat, GLfloat) { no_fixed_texcoords(); }
+
 }  // namespace
 
 bool current_gl_is_es() {
@@ -101,6 +111,11 @@ void load_gl_entry_points(const GLProcAddress& proc_address, const std::string& 
     DSR_GL_OPTIONAL_ENTRY_POINTS(DSR_GL_LOAD)
 #undef DSR_GL_LOAD_REQUIRED
 #undef DSR_GL_LOAD
+    if (es) {
+        t.ClientActiveTexture = es_client_active_texture;
+        t.MultiTexCoord2f = es_multi_tex_coord2f;
+        t.MultiTexCoord3f = es_multi_tex_coord3f;
+    }
     if (!missing.empty())
         throw Error("GL context '" + source + "' lacks required entry point" +
                     (missing.find(',') == std::string::npos ? " " : "s ") + missing);

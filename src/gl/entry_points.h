@@ -92,13 +92,15 @@ typedef void(APIENTRYP DSR_PFNGLMULTITEXCOORD3FPROC)(GLenum target, GLfloat s, G
 // May be null after loading; whoever calls one checks it (and the matching Caps flag) first.
 // ARB_timer_query, for GPU stage times; EXT_stencil_two_side and EXT_depth_bounds_test for the
 // light geometries (Caps::stencil_two_side_ext, Caps::depth_bounds); EXT_framebuffer_blit for the
-// depth hand-off (Caps::framebuffer_blit).
+// depth hand-off (Caps::framebuffer_blit); glGenerateMipmap for OpenGL ES 2.0's textures.
 #define DSR_GL_OPTIONAL_ENTRY_POINTS(X)                  \
     X(PFNGLQUERYCOUNTERPROC, QueryCounter)               \
     X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v) \
     X(PFNGLACTIVESTENCILFACEEXTPROC, ActiveStencilFaceEXT) \
     X(PFNGLDEPTHBOUNDSEXTPROC, DepthBoundsEXT)            \
-    X(PFNGLBLITFRAMEBUFFEREXTPROC, BlitFramebufferEXT)
+    X(PFNGLBLITFRAMEBUFFEREXTPROC, BlitFramebufferEXT)    \
+    X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap)           \
+    X(PFNGLCLEARDEPTHFPROC, ClearDepthf)
 
 namespace dsr {
 

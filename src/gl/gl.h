@@ -10,6 +10,7 @@
 // function not in the table does not compile. Add it to gl/entry_points.h and here.
 #pragma once
 #include "gl/entry_points.h"
+#include "gl/fixed_function.h"
 
 #define glActiveTexture ::dsr::gl_entry.ActiveTexture
 #define glClientActiveTexture ::dsr::gl_entry.ClientActiveTexture
@@ -72,3 +73,9 @@
 #define glActiveStencilFaceEXT ::dsr::gl_entry.ActiveStencilFaceEXT
 #define glDepthBoundsEXT ::dsr::gl_entry.DepthBoundsEXT
 #define glBlitFramebufferEXT ::dsr::gl_entry.BlitFramebufferEXT
+#define glGenerateMipmap ::dsr::gl_entry.GenerateMipmap
+// GL 1.1 calls with an OpenGL ES 2.0 stand-in (gl/fixed_function.h): the desktop call on desktop GL.
+#define glColor4f ::dsr::ff_color4f
+#define glClearDepth ::dsr::ff_clear_depth
+#define glDrawBuffer ::dsr::ff_draw_buffer
+#define glReadBuffer ::dsr::ff_read_buffer

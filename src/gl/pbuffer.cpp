@@ -1,5 +1,7 @@
 #include "gl/pbuffer.h"
 
+#include <algorithm>
+
 #include "gl/surfaces.h"
 
 #include "dsr_error.h"
@@ -25,11 +27,14 @@ PBuffer::PBuffer(std::string name, const PBufferDesc& desc) : name_(std::move(na
     if (desc.depth == DepthAttachment::texture) {
         depth_tex_ = Texture(tex_w_, tex_h_, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr,
                              GL_NEAREST, GL_CLAMP_TO_EDGE);
-        glBindTexture(GL_TEXTURE_2D, depth_tex_.id());
-        // Read raw depth, not a shadow comparison (Listing 20 samples it as a float).
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE_ARB, GL_NONE);
-        glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE_ARB, GL_LUMINANCE);
-        glBindTexture(GL_TEXTURE_2D, 0);
+        // Read raw depth, not a shadow comparison (Listing 20 samples it as a float). OpenGL ES
+        // 2.0 has neither setting: its depth textures read raw depth into every channel.
+        if (!current_gl_is_es()) {
+            glBindTexture(GL_TEXTURE_2D, depth_tex_.id());
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE_ARB, GL_NONE);
+            glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE_ARB, GL_LUMINANCE);
+            glBindTexture(GL_TEXTURE_2D, 0);
+        }
     }
     check_gl(("creating the textures of " + name_).c_str());
     if (!desc.use_fbo && desc.use_pbuffer) {
@@ -46,7 +51,10 @@ PBuffer::PBuffer(std::string name, const PBufferDesc& desc) : name_(std::move(na
     }
     glGenFramebuffersEXT(1, &fbo_);
     glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fbo_);
-    for (size_t i = 0; i < colors_.size(); ++i)
+    // OpenGL ES 2.0 without draw buffers has one colour attachment: the target drawn is attached
+    // there when it is drawn (set_draw_targets).
+    const bool one_attachment = gl_state().es() && !gl_entry.DrawBuffersARB;
+    for (size_t i = 0; i < (one_attachment ? std::min<size_t>(1, colors_.size()) : colors_.size()); ++i)
         glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GLenum(GL_COLOR_ATTACHMENT0_EXT + i), GL_TEXTURE_2D,
                                   colors_[i].id(), 0);
     if (desc.depth == DepthAttachment::texture) {
@@ -178,6 +186,7 @@ void PBuffer::set_draw_targets(const std::vector<int>& targets) {
         copy_target_ = targets[0];
         return;
     }
+    if (gl_state().es()) return set_es_draw_targets(targets);
     GLenum bufs[8];
     int n = 0;
     for (int t : targets) bufs[n++] = GLenum(GL_COLOR_ATTACHMENT0_EXT + t);
@@ -185,6 +194,25 @@ void PBuffer::set_draw_targets(const std::vector<int>& targets) {
         glDrawBuffer(bufs[0]);
     else
         glDrawBuffersARB(n, bufs);
+}
+
+// EXT_draw_buffers and NV_draw_buffers take target i only in place i (GL_NONE elsewhere); without
+// either, the one attachment is re-pointed at the target drawn, which the shader writes as
+// gl_FragData[0] (the per-target path, §3.2).
+void PBuffer::set_es_draw_targets(const std::vector<int>& targets) {
+    if (!gl_entry.DrawBuffersARB) {
+        if (targets.size() != 1 || targets[0] >= int(colors_.size()))
+            throw Error("P-buffer " + name_ + ": OpenGL ES 2.0 without EXT_draw_buffers draws one of its own targets at a time");
+        glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_TEXTURE_2D,
+                                  colors_[size_t(targets[0])].id(), 0);
+        return;
+    }
+    GLenum bufs[8];
+    int n = 0;
+    for (int t : targets) n = std::max(n, t + 1);
+    for (int i = 0; i < n; ++i) bufs[i] = GL_NONE;
+    for (int t : targets) bufs[t] = GLenum(GL_COLOR_ATTACHMENT0_EXT + t);
+    gl_entry.DrawBuffersARB(n, bufs);
 }
 
 bool PBuffer::attach_extra(GLuint texture, bool check) {

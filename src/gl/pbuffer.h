@@ -85,6 +85,7 @@ public:
 
 private:
     void copy_to_textures(bool depth);
+    void set_es_draw_targets(const std::vector<int>& targets);  // OpenGL ES 2.0's draw buffers
     std::string name_;
     PBufferDesc desc_;
     int tex_w_ = 0, tex_h_ = 0;

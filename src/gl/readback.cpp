@@ -2,8 +2,10 @@
 
 #include <vector>
 
+#include "dsr_error.h"
 #include "gl/check.h"
 #include "gl/gl.h"
+#include "gl/state.h"
 
 namespace dsr {
 
@@ -21,6 +23,23 @@ Image image_of_rgba8(const std::vector<unsigned char>& px, int w, int h, int str
     return img;
 }
 
+// OpenGL ES 2.0 has no glGetTexImage: an RGBA8 texture is read through a framebuffer object of
+// its own with glReadPixels (docs/gles2.md).
+std::vector<unsigned char> es_read_rgba8(GLuint tex, int tw, int th) {
+    std::vector<unsigned char> all(size_t(tw) * th * 4);
+    GLint bound = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING_EXT, &bound);
+    GLuint fbo = 0;
+    glGenFramebuffersEXT(1, &fbo);
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, fbo);
+    glFramebufferTexture2DEXT(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_TEXTURE_2D, tex, 0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, tw, th, GL_RGBA, GL_UNSIGNED_BYTE, all.data());
+    glBindFramebufferEXT(GL_FRAMEBUFFER_EXT, GLuint(bound));
+    glDeleteFramebuffersEXT(1, &fbo);
+    return all;
+}
+
 }  // namespace
 
 Image read_pixels(int width, int height) {
@@ -32,6 +51,10 @@ Image read_pixels(int width, int height) {
 }
 
 Image read_texture(GLuint tex, int w, int h, int tw, int th, bool depth) {
+    if (gl_state().es()) {
+        if (depth) throw Error("reading a depth texture back: OpenGL ES 2.0 reads no depth texture (no glGetTexImage)");
+        return read_texture_rgba8(tex, w, h, tw, th);
+    }
     Image img;
     img.width = w;
     img.height = h;
@@ -56,6 +79,11 @@ Image read_texture(GLuint tex, int w, int h, int tw, int th, bool depth) {
 }
 
 Image read_texture_rgba8(GLuint tex, int w, int h, int tw, int th) {
+    if (gl_state().es()) {
+        const std::vector<unsigned char> px = es_read_rgba8(tex, tw, th);
+        check_gl("reading a buffer back");
+        return image_of_rgba8(px, w, h, tw);
+    }
     std::vector<unsigned char> all(size_t(tw) * th * 4);
     glBindTexture(GL_TEXTURE_2D, tex);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);

@@ -48,20 +48,50 @@ namespace {
 void enable(GLenum cap, bool on) { on ? glEnable(cap) : glDisable(cap); }
 }  // namespace
 
+bool GlState::es() {
+    if (!es_known_) {
+        es_ = current_gl_is_es();
+        es_known_ = true;
+    }
+    return es_;
+}
+
+// The prelude's stand-ins for gl_ModelViewMatrix, gl_ProjectionMatrix and their product; a
+// program without them (the compiler removed what it does not read) ignores the location -1.
+void GlState::upload_matrices() {
+    const GLuint p = cur_.program;
+    if (!p) return;
+    const glm::mat4 mvp = projection_ * modelview_;
+    glUniformMatrix4fv(glGetUniformLocation(p, "dsr_ModelViewMatrix"), 1, GL_FALSE, glm::value_ptr(modelview_));
+    glUniformMatrix4fv(glGetUniformLocation(p, "dsr_ProjectionMatrix"), 1, GL_FALSE, glm::value_ptr(projection_));
+    glUniformMatrix4fv(glGetUniformLocation(p, "dsr_ModelViewProjectionMatrix"), 1, GL_FALSE, glm::value_ptr(mvp));
+}
+
 void GlState::use_program(GLuint program) {
     if (cache_ && valid_ && cur_.program == program) return;
     glUseProgram(program);
     cur_.program = program;
     ++calls_;
+    if (es()) upload_matrices();
 }
 
 void GlState::set_camera(const glm::mat4& projection, const glm::mat4& modelview) {
+    if (es()) {
+        projection_ = projection;
+        set_modelview(modelview);
+        return;
+    }
     glMatrixMode(GL_PROJECTION);
     glLoadMatrixf(glm::value_ptr(projection));
     set_modelview(modelview);
 }
 
 void GlState::set_modelview(const glm::mat4& modelview) {
+    if (es()) {
+        modelview_ = modelview;
+        upload_matrices();
+        return;
+    }
     glMatrixMode(GL_MODELVIEW);
     glLoadMatrixf(glm::value_ptr(modelview));
 }
@@ -123,17 +153,22 @@ void GlState::apply(const RenderState& s) {
         const GLboolean m = s.color_write ? GL_TRUE : GL_FALSE;
         glColorMask(m, m, m, m);
     }
-    if (diff(s.alpha_test != c.alpha_test)) enable(GL_ALPHA_TEST, s.alpha_test);
-    if (diff(s.alpha_func != c.alpha_func || s.alpha_ref != c.alpha_ref)) glAlphaFunc(s.alpha_func, s.alpha_ref);
-    // Fixed-function texturing is unit 0's; the passes leave GL_TEXTURE0 active.
-    if (all || s.texture_2d != c.texture_2d || s.tex_env != c.tex_env) glActiveTexture(GL_TEXTURE0);
-    if (diff(s.texture_2d != c.texture_2d)) enable(GL_TEXTURE_2D, s.texture_2d);
-    if (diff(s.tex_env != c.tex_env)) glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(s.tex_env));
-    if (diff(s.program != c.program)) glUseProgram(s.program);
+    const bool fixed_function = !es();
+    if (fixed_function) {
+        if (diff(s.alpha_test != c.alpha_test)) enable(GL_ALPHA_TEST, s.alpha_test);
+        if (diff(s.alpha_func != c.alpha_func || s.alpha_ref != c.alpha_ref)) glAlphaFunc(s.alpha_func, s.alpha_ref);
+        // Fixed-function texturing is unit 0's; the passes leave GL_TEXTURE0 active.
+        if (all || s.texture_2d != c.texture_2d || s.tex_env != c.tex_env) glActiveTexture(GL_TEXTURE0);
+        if (diff(s.texture_2d != c.texture_2d)) enable(GL_TEXTURE_2D, s.texture_2d);
+        if (diff(s.tex_env != c.tex_env)) glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GLint(s.tex_env));
+    }
+    const bool program_changed = diff(s.program != c.program);
+    if (program_changed) glUseProgram(s.program);
     if (diff(s.dither != c.dither)) enable(GL_DITHER, s.dither);
-    if (diff(s.point_size != c.point_size)) glPointSize(s.point_size);
+    if (fixed_function && diff(s.point_size != c.point_size)) glPointSize(s.point_size);
     cur_ = s;
     valid_ = true;
+    if (program_changed && !fixed_function) upload_matrices();
 }
 
 RenderState read_gl_state() {

@@ -86,13 +86,18 @@ public:
     void set_modelview(const glm::mat4& modelview);
     // Forgets the cache: the next apply sets every field. Call after foreign GL code (a viewer
     // overlay) and whenever a context is created or made current.
-    void reset() { valid_ = false; }
+    void reset() { valid_ = es_known_ = false; }
     // What the cache believes GL holds (the last applied state).
     const RenderState& current() const { return cur_; }
     // Off: every apply sets every field, so a cache bug can be told from a pass bug. Set from
     // `--gl-state-cache off` (its default from $DSR_GL_STATE_CACHE, app/environment.h).
     void set_cache(bool on) { cache_ = on; }
     bool cache() const { return cache_; }
+    // Whether the current context is OpenGL ES (docs/gles2.md), read once a context: it has no
+    // fixed-function state and no matrix stack, so apply leaves the fixed-function fields alone,
+    // and the camera goes to the bound program as the uniforms the GLSL ES prelude gives its
+    // vertex shader (gl/glsl_dialect.h).
+    bool es();
     // How many GL state calls apply made (tests: the cache must skip what is unchanged).
     long long calls() const { return calls_; }
 
@@ -104,6 +109,9 @@ private:
     // An extension's enable is touched only once a pass has asked for it (a GL without the
     // extension would raise GL_INVALID_ENUM on every forced apply).
     bool has_two_side_ext_ = false, has_depth_bounds_ = false;
+    void upload_matrices();
+    bool es_ = false, es_known_ = false;
+    glm::mat4 projection_{1.0f}, modelview_{1.0f};
 };
 
 // The one GL state cache of this thread's current context.
