@@ -14,7 +14,7 @@
 #                                    folder, default .gpu/src and .gpu/build;
 #                                    GPU_BENCH_SIZES, _FRAMES, _LIGHTS: the bench's sweep;
 #                                    GPU_BENCH_PARTS: some of renders geometry targets ssao
-#                                    forward tiles auto goals groups fold shadows hdr skips bench, default
+#                                    forward tiles auto goals groups fold shadows hdr material skips bench, default
 #                                    all; GPU_BENCH_ROUNDS: goals' alternations)
 #
 # The build links the system's libEGL/libOpenGL (glvnd, the NVIDIA driver behind them), never
@@ -274,6 +274,15 @@ run)
         $dsr render --context egl --size 1920x1080 --no-bloom --no-aa --accum $a --frames 60 \
             --stats "$out/hdr_accum_$a.json" -o "$out/hdr_accum_$a.png"
     done
+    fi
+    # The metallic-roughness light shader against Phong's (docs/metal_rough.md, "Measured"): the
+    # bench's metal-rough rows beside the default quad rows, on the same pixel-light pairs in the
+    # same rounds; the ratio in the "Material model" line and the report's section of that name.
+    if part material; then
+        $dsr bench $src/data/default.scene --context egl --size 1920x1080 --frames ${GPU_BENCH_FRAMES:-30} \
+            --lights ${GPU_BENCH_MATERIAL_LIGHTS:-own,256,1024} --light-geometry quad \
+            --json "$out/gpu_bench_material_1920x1080.json" --report "$out/gpu_bench_material_1920x1080.md" \
+            | tee "$out/gpu_bench_material_1920x1080.txt"
     fi
     # Each skip of the fixed passes (docs/gpu_frame.md, "The fixed passes"): the bench's skip rows
     # (the default configuration with quads, each skip turned off alone) on 1024 and 32-large, and

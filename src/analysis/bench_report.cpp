@@ -1,5 +1,6 @@
 // The benchmark's tables, JSON, plot and report (bench_report.h); the goals are bench_goals.cpp's.
 #include "analysis/bench_report.h"
+#include "analysis/bench_material.h"
 #include "analysis/bench_skips.h"
 #include "analysis/frame_stats_json.h"
 
@@ -306,7 +307,8 @@ Conclusions conclusions(const std::vector<Row>& rows, const std::string& scene, 
     std::vector<double> spreads;
     for (const Row& r : rows) {
         if (r.frames_ms.size() >= 2) spreads.push_back(time_spread(r));
-        if (r.renderer != Renderer::deferred) continue;
+        // The metallic-roughness rows' reference draws their materials as Phong (Row::metal_rough).
+        if (r.renderer != Renderer::deferred || r.metal_rough) continue;
         if (find_default_row(rows, r.scene, r.lights) == &r) c.default_max_lsb = std::max(c.default_max_lsb, r.err.max_lsb());
         if (r.err.max_lsb() > c.deferred_max_lsb) c.deferred_max_lsb = r.err.max_lsb(), c.worst_deferred = &r;
     }
@@ -336,6 +338,9 @@ Conclusions conclusions(const std::vector<Row>& rows, const std::string& scene, 
                                ? "; auto, which picks a path per light by its predicted time, takes " +
                                      format_number("%.2f", d->ms_median) + " ms."
                                : std::string("; the run has no auto row.")));
+    for (const MaterialCost& m : material_costs(rows))
+        if (m.phong->scene == scene && m.phong->lights == c.lights)
+            c.lines.push_back("Material model: " + material_cost_text(m) + ".");
     if (c.default_max_lsb >= 0)
         c.lines.push_back("Image: dsr's default differs from the forward reference by at most " +
                           format_number("%.0f", c.default_max_lsb) + " LSB in every row" +
@@ -514,6 +519,7 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
           "parts of each row are in the JSON (`floor_fill_ms`, `floor_light_ns`, `floor_post_ms`, `floor_output_ms`).\n\n"
        << light_geometry_markdown(s.rows)
        << skip_savings_markdown(skip_savings(s.rows))
+       << material_cost_markdown(s.rows)
        << "## Table\n\n"
        << "- *configuration*: `deferred DEPTH[/ENCODING] sc|-` (scissor on or off), `half` for half-float "
           "G-buffer targets (RGBA8 otherwise, as the tutorial), `accum-half` / `accum-float` for P-buffer 0 in "

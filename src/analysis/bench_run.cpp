@@ -53,6 +53,9 @@ struct Variant {
     std::vector<uint8_t> interior;
     // N-large: the scene with the linear law (linear_law_twin), which the linear-law rows draw.
     std::optional<Scene> linear_twin;
+    // Where the scene has a Phong material: every material metallic-roughness (metal_rough_twin),
+    // which the metallic-roughness row draws.
+    std::optional<Scene> metal_rough_twin;
 };
 
 // One row's renderer, alive for the whole variant so that frames can be interleaved.
@@ -123,7 +126,7 @@ std::unique_ptr<RowRun> deferred(const Setup& st, const Variant& v, const Row& w
     for (const Light& l : v.scene.lights) o.shadow_lights = o.shadow_lights || l.shadow.on;
     o.shadows.reuse = false;
     auto run = std::make_unique<RowRun>();
-    run->scene = want.linear_law ? &*v.linear_twin : &v.scene;
+    run->scene = want.linear_law ? &*v.linear_twin : want.metal_rough ? &*v.metal_rough_twin : &v.scene;
     run->ds = std::make_unique<DeferredShader>(st.caps, v.w, v.h, o, st.shaders);
     run->ds->set_scene(*run->scene);
     run->ds->set_read_back(true);  // its image is read back (read_output): the final pass may be skipped
@@ -135,6 +138,8 @@ std::unique_ptr<RowRun> deferred(const Setup& st, const Variant& v, const Row& w
     r.scissor = want.scissor;
     r.skip = want.skip;
     r.linear_law = want.linear_law;
+    r.metal_rough = want.metal_rough;
+    if (want.metal_rough) r.scene = metal_rough_name(v.name);
     r.gbuffer_bytes_per_pixel = run->ds->paths().gbuffer_bytes_per_pixel;
     r.light_geometry = run->ds->paths().light_geometry;
     if (r.light_geometry == LightGeometry::tiles)
@@ -186,6 +191,7 @@ Variant make_variant(const Setup& st, const std::string& path, const std::string
     v.frames = variant_frames(st.cfg, spec.set);
     v.scene = bench_scene(load_scene(path), spec);
     if (spec.set == LightSet::large) v.linear_twin = linear_law_twin(v.scene);
+    if (has_phong_material(v.scene)) v.metal_rough_twin = metal_rough_twin(v.scene);
     v.sweep_index = sweep_index;
     v.lights_label = (spec.count < 0 ? std::string("own") : std::to_string(spec.count)) +
                      (spec.set == LightSet::overlap ? "-overlap"
@@ -257,6 +263,13 @@ Runs build_runs(const Setup& st, const Variant& v, bool first, std::vector<std::
                 r.linear_law = true;
                 add(r);
             }
+    }
+    // dsr's default configuration with quad again, every material metallic-roughness: the light
+    // stage's cost per pair under each material model, in the same rounds (bench_material.h).
+    if (v.metal_rough_twin) {
+        Row r = config(DepthPath::texture, true);
+        r.metal_rough = true;
+        add(r);
     }
     // The other documents' G-buffer: eye-space position stored in a float target, where the GL has one.
     for (DepthPath d : {DepthPath::position16, DepthPath::position32}) {
@@ -454,15 +467,16 @@ const Image* quad_image(const Runs& runs, bool linear_law = false) {
     return nullptr;
 }
 
-// The linear-law rows' forward reference: the twin drawn once as runs[0] (`ref_row`) draws the scene.
-Image twin_reference(const Setup& st, const Variant& v, const Row& ref_row) {
+// A twin's forward reference (the linear-law rows', the metallic-roughness row's): `twin` drawn once
+// as runs[0] (`ref_row`) draws the scene.
+Image twin_reference(const Setup& st, const Variant& v, const Row& ref_row, const Scene& twin) {
     ForwardOptions o;
     o.mode = ForwardMode::single;
     o.float_target = ref_row.float_accum.value_or(false);
     o.shadows.reuse = false;
     ForwardRenderer fr(st.caps, v.w, v.h, o, st.shaders);
-    fr.set_scene(*v.linear_twin);
-    fr.render(*v.linear_twin);
+    fr.set_scene(twin);
+    fr.render(twin);
     return opaque(read_pixels(v.w, v.h));
 }
 
@@ -502,7 +516,7 @@ void finish_row(const Config& cfg, const Variant& v, RowRun& run, const IdealCou
         r.passes = run.last_forward.passes;
     }
     r.err = compare_images(run.image, ref, 1.0 / 255.0);
-    if (v.trace && !r.linear_law)  // the trace has the scene's law
+    if (v.trace && !r.linear_law && !r.metal_rough)  // the trace has the scene's law and materials
         r.err_analytic = compare_images_masked(run.image, v.trace->image, v.interior, 1.0 / 255.0);
 }
 
@@ -529,9 +543,11 @@ bool default_settings(const Row& r) {
 
 }  // namespace
 
-bool default_configuration(const Row& r) { return !r.linear_law && default_settings(r); }
+bool default_configuration(const Row& r) { return !r.linear_law && !r.metal_rough && default_settings(r); }
 
 bool default_configuration_twin(const Row& r) { return r.linear_law && default_settings(r); }
+
+std::string metal_rough_name(const std::string& scene) { return scene + "-metal-rough"; }
 
 std::optional<long long> light_fragments(const Row& r) {
     return r.frame ? r.frame->lights.counted_fragments() : std::nullopt;
@@ -565,6 +581,7 @@ std::string config_text(const Row& r) {
     if (r.light_geometry != LightGeometry::quad) s += std::string(" ") + light_geometry_name(r.light_geometry);
     if (r.tile_size && r.tile_lights) s += " " + std::to_string(*r.tile_size) + "/" + std::to_string(*r.tile_lights);
     if (r.linear_law) s += " linear-law";
+    if (r.metal_rough) s += " metal-rough";
     return s;
 }
 
@@ -602,6 +619,7 @@ std::string row_words(const Row& r) {
         s += (i ? ", " : off.size() == 1 ? ", skip off: " : ", skips off: ") + off[i];
     }
     if (r.linear_law) s += ", the tutorial's linear law";
+    if (r.metal_rough) s += ", metallic-roughness materials";
     return s;
 }
 
@@ -698,10 +716,13 @@ void Runner::run_scene(const std::string& path, int light_count, int sweep_index
     const std::map<GbufferLayout, FloorParts> parts = floor_parts(floors);
     const IdealCount ideal = variant_ideal(cfg_, v, runs);
     const Image* quad = quad_image(runs), *linear_quad = quad_image(runs, true);
-    const Image linear_ref = v.linear_twin ? twin_reference(st, v, runs[0]->row) : Image{};
+    const Image linear_ref = v.linear_twin ? twin_reference(st, v, runs[0]->row, *v.linear_twin) : Image{};
+    const Image mr_ref = v.metal_rough_twin ? twin_reference(st, v, runs[0]->row, *v.metal_rough_twin) : Image{};
     for (auto& run : runs) {
         const bool linear = run->row.linear_law;  // against the twin's own reference and quad row
-        finish_row(cfg_, v, *run, ideal, parts, linear ? linear_ref : runs[0]->image, linear ? linear_quad : quad);
+        const bool mr = run->row.metal_rough;     // against the twin's forward render; no quad row of its model
+        finish_row(cfg_, v, *run, ideal, parts, linear ? linear_ref : mr ? mr_ref : runs[0]->image,
+                   linear ? linear_quad : mr ? nullptr : quad);
         rows_.push_back(run->row);
     }
     // One line a variant: its rows are printed together at the end (bench_report.h rows_text).

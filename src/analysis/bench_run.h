@@ -76,6 +76,12 @@ struct Row {
     // radii (linear_law_twin), beside the rows with the scene's attenuation law, on the same pixel-light
     // pairs: goal `law`. Compared with the twin's own forward reference and quad row. JSON `linear_law`.
     bool linear_law = false;
+    // Deferred rows of a variant whose scene has a Phong material: dsr's default configuration with
+    // quad on the scene's metal_rough_twin (bench_scenes.h), its scene named metal_rough_name(scene),
+    // beside the default quad row on the same pixel-light pairs and in the same rounds: the material
+    // model's cost per pair (bench_material.h). Its image is held against the twin's forward render,
+    // which draws a metallic-roughness material as Phong (the base colour, no highlight).
+    bool metal_rough = false;
     bool scissor = false;
     SkipOptions skip;                       // every skip on unless the row turned one off
     int lights = 0, w = 0, h = 0, frames = 0;
@@ -133,6 +139,8 @@ bool default_configuration(const Row& r);
 // A linear-law row (Row::linear_law) in the default configuration otherwise: the twin of a
 // default_configuration row, which the law goal and the twin's image check read.
 bool default_configuration_twin(const Row& r);
+// "default-metal-rough": the scene name of a variant's metallic-roughness row (Row::metal_rough).
+std::string metal_rough_name(const std::string& scene);
 
 // A deferred row's light counts, read from its counted frame (Row::frame; LightCounts): samples
 // that passed the light passes (occlusion queries), fragments that entered the light shader

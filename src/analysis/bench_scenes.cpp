@@ -177,6 +177,23 @@ Scene linear_law_twin(Scene scene) {
     return scene;
 }
 
+Scene metal_rough_twin(Scene scene) {
+    for (Material& m : scene.materials) {
+        if (m.metal_rough()) continue;
+        m.model = Material::Model::metallic_roughness;
+        m.metallic = 0;
+        m.roughness = float(std::pow(2.0 / (double(m.shininess) + 2.0), 0.25));
+        m.specular_map = -1;
+    }
+    return scene;
+}
+
+bool has_phong_material(const Scene& scene) {
+    for (const Material& m : scene.materials)
+        if (!m.metal_rough()) return true;
+    return false;
+}
+
 Scene large_lights_scene(int n) {
     if (n < 0) throw Error("bench scenes: negative light count");
     Scene s;

@@ -61,6 +61,16 @@ Scene large_lights_scene(int n);
 // tutorial's on the same pixel-light pairs (goal `law`).
 Scene linear_law_twin(Scene scene);
 
+// `scene` with every Phong material made metallic-roughness (docs/metal_rough.md): its diffuse
+// colour and map as the base colour and map, its normal map kept, metallic 0, and the roughness
+// whose GGX width matches its shininess n, (2 / (n + 2))^(1/4) (Walter et al. 2007's Beckmann
+// width sqrt(2 / (n + 2)) taken as glTF's alpha = roughness^2). Geometry and lights are unchanged,
+// so every light reaches the same pixels: the bench's metallic-roughness rows price the material
+// model's light shader against Phong's on the same pixel-light pairs (bench_run.h Row::metal_rough).
+Scene metal_rough_twin(Scene scene);
+// Whether `scene` has a Phong material, which metal_rough_twin would change.
+bool has_phong_material(const Scene& scene);
+
 // with_generated_lights' n lights made spot lights with `shadow` (the default map): each at its
 // place raised by half its radius, shining straight down with a 50-degree half-angle, so the
 // objects between it and the floor cast shadows on it. The bench's shadow rows.
