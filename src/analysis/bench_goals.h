@@ -21,6 +21,7 @@ constexpr int kManyLights = 1024;
 // The size and light count the floor goal is judged at (a GPU goal: the floor leaves out the
 // frame's fixed costs, which weigh more the smaller the frame, so its ratio depends on the size).
 constexpr int kFloorWidth = 1920, kFloorHeight = 1080, kFloorLights = kManyLights;
+constexpr const char* kFloorDemo = "32-large";  // the floor goal's other light set (--lights entry)
 
 // The --lights entries a per_light_set goal is judged on: the full bench's scenes but 32.
 const std::vector<std::string>& goal_light_sets();

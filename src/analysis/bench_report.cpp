@@ -469,7 +469,7 @@ std::string markdown_report(const Summary& s, const std::string& plot_name) {
        << "those alone, " << kGoalRoundsFactor
        << "x as many rounds (JSON `goal_rounds_frames_ms`, `goal_rounds_lights_frames_ms`); the rounds of every "
           "row's figure follows as information. `floor` is judged at "
-          "1920x1080 with 1024 lights only (the floor leaves out the frame's fixed costs, which weigh more the smaller the frame; elsewhere its figure is "
+          "1920x1080 with 1024 lights and on 32-large only (the floor leaves out the frame's fixed costs, which weigh more the smaller the frame; elsewhere its figure is "
           "information), `cpu` where the run has 4096 lights, on the default row's frames run again back to back "
           "after the rounds, as an application draws them (in the rounds each frame follows the other rows' and "
           "finds the caches holding their data; JSON `cpu_alone_frames_ms`, the rounds' `cpu_frames_ms`). The goal of a deferred row 1.5x faster than forward "
