@@ -33,6 +33,17 @@ inline ShaderOptions with_depth(DepthPath p) {
     return o;
 }
 
+// A metallic-roughness material (glTF 2.0's model) of base colour `base`.
+inline Material metal_rough(const std::string& name, glm::vec3 base, float metallic, float roughness) {
+    Material m;
+    m.name = name;
+    m.model = Material::Model::metallic_roughness;
+    m.diffuse = base;
+    m.metallic = metallic;
+    m.roughness = roughness;
+    return m;
+}
+
 inline Scene default_scene() { return load_scene(resource_dir("data") + "/default.scene"); }
 // A scene with a directional light added: a light drawn over the whole screen.
 inline Scene with_directional(Scene s) {

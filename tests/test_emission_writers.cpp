@@ -19,16 +19,6 @@ using namespace dsr::test;
 namespace {
 constexpr int kSize = 128;
 
-Material metal_rough(const std::string& name, glm::vec3 base, float metallic, float roughness) {
-    Material m;
-    m.name = name;
-    m.model = Material::Model::metallic_roughness;
-    m.diffuse = base;
-    m.metallic = metallic;
-    m.roughness = roughness;
-    return m;
-}
-
 // A 4x4 occlusion map (red) from 0.1 to 1 in steps, repeated over the surface.
 Image occlusion_map() {
     Image img;

@@ -11,6 +11,7 @@
 #include "deferred/shader_table.h"
 #include "gl/state.h"
 #include "render_fixture.h"
+#include "shader_configs.h"
 
 namespace dsr {
 namespace {
@@ -141,26 +142,7 @@ TEST(ShaderTable, EveryRowCompilesWhereItIsUsed) {
         EXPECT_EQ(set.size(), shader_programs(c).size());
         for (const ProgramSpec& p : shader_programs(c)) used.insert(p.name.substr(0, p.name.find('/')));
     };
-    ShaderOptions o;
-    o.post.bloom = true;
-    o.ssao.on = true;
-    build(o);
-    for (LightGeometry g : {LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles, LightGeometry::screen}) {
-        ShaderOptions t;
-        t.light_geometry = g;
-        t.show_lights = true;  // the depth hand-off
-        t.depth_handoff = DepthHandoff::pass;
-        t.depth = DepthPath::packed;
-        t.shadow_lights = true;  // a scene with shadowed lights: the shadow forms
-        t.shadows.filter = g == LightGeometry::volume ? ShadowFilter::pcf5 : ShadowFilter::hard;
-        build(t, g == LightGeometry::stencil ? std::vector<std::string>{"no-depth-texture"} : std::vector<std::string>{});
-    }
-    ShaderOptions handoff;  // no ambient target: the hand-off's pass writes the ambient term
-    handoff.light_geometry = LightGeometry::volume;
-    handoff.depth_handoff = DepthHandoff::pass;
-    handoff.skip.ambient_target = false;
-    build(handoff);
-    build(ShaderOptions{}, {"no-mrt"});  // one material program per G-buffer target
+    for (const test::TableConfig& t : test::common_table_configs()) build(t.options, t.off);
     ShaderOptions hdr;  // the final stage's program and auto exposure's reduction (docs/hdr.md)
     hdr.hdr.accum = AccumFormat::half;
     hdr.hdr.tonemap = ToneMap::aces;

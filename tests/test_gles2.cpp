@@ -15,6 +15,7 @@
 #include "gl/glsl_dialect.h"
 #include "platform/context.h"
 #include "platform/resources.h"
+#include "shader_configs.h"
 
 using namespace dsr;
 using namespace dsr::test;
@@ -119,30 +120,11 @@ TEST(Gles2, EveryShaderOfTheTableCompilesAsGlslEs) {
         }
         for (const ProgramSpec& p : shader_programs(c)) used.insert(p.name.substr(0, p.name.find('/')));
     };
-    ShaderOptions o;
-    o.post.bloom = true;
-    o.ssao.on = true;
-    build(o);
-    for (LightGeometry g : {LightGeometry::volume, LightGeometry::stencil, LightGeometry::tiles, LightGeometry::screen}) {
-        ShaderOptions t;
-        t.light_geometry = g;
-        t.show_lights = true;
-        t.depth_handoff = DepthHandoff::pass;
-        t.depth = DepthPath::packed;
-        t.shadow_lights = true;
-        t.shadows.filter = g == LightGeometry::volume ? ShadowFilter::pcf5 : ShadowFilter::hard;
-        build(t, g == LightGeometry::stencil ? std::vector<std::string>{"no-depth-texture"} : std::vector<std::string>{});
-    }
+    for (const test::TableConfig& t : test::common_table_configs()) build(t.options, t.off);
     ShaderOptions tiles_packed;  // the tiles on the packed path
     tiles_packed.light_geometry = LightGeometry::tiles;
     tiles_packed.depth = DepthPath::packed;
     build(tiles_packed, {"no-depth-texture"});
-    ShaderOptions handoff;
-    handoff.light_geometry = LightGeometry::volume;
-    handoff.depth_handoff = DepthHandoff::pass;
-    handoff.skip.ambient_target = false;
-    build(handoff);
-    build(ShaderOptions{}, {"no-mrt"});
     ShaderOptions hdr;  // RGBA8 accumulation and a fixed exposure: ES 2.0 renders into no float target
     hdr.hdr.tonemap = ToneMap::aces;
     hdr.hdr.output_srgb = true;

@@ -20,16 +20,6 @@ namespace {
 constexpr int kSize = 128;
 constexpr double kLsb = 1.0 / 255.0;
 
-Material metal_rough(const std::string& name, glm::vec3 base, float metallic, float roughness) {
-    Material m;
-    m.name = name;
-    m.model = Material::Model::metallic_roughness;
-    m.diffuse = base;
-    m.metallic = metallic;
-    m.roughness = roughness;
-    return m;
-}
-
 // The analytic scene's shapes (a plane and two spheres) in metallic-roughness materials: a rough
 // dielectric floor, a half-metallic sphere and a gold-like metal, lit by `lights`.
 Scene mr_scene(std::vector<Light> lights, bool spheres = true) {

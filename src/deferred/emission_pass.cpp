@@ -2,6 +2,7 @@
 #include "deferred/emission_pass.h"
 
 #include "gl/check.h"
+#include "gl/texture.h"
 #include "gl/state.h"
 
 namespace dsr {
@@ -69,16 +70,10 @@ void EmissionPass::draw(const FrameDef& f, GpuScene& gpu, RenderTargets& t) {
         prog.set("emissive", m.emissive);
         if (r.cut_out) prog.set("alpha_cutoff", m.alpha_cutoff);
         const GLuint tex[5] = {m.normal_tex, m.diffuse_tex, m.specular_tex, m.occlusion_tex, m.emissive_tex};
-        for (int u = 0; u < 5; ++u) {
-            glActiveTexture(GL_TEXTURE0 + u);
-            glBindTexture(GL_TEXTURE_2D, tex[u]);
-        }
+        bind_texture_units(tex, 5);
         gpu.draw(r);
     }
-    for (int u = 4; u >= 0; --u) {
-        glActiveTexture(GL_TEXTURE0 + u);
-        glBindTexture(GL_TEXTURE_2D, 0);
-    }
+    unbind_texture_units(5);
     gpu.unbind();
     t.mrt_attach_accum(false);
     t.mrt_unbind_render();

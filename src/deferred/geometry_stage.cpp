@@ -4,6 +4,7 @@
 #include "deferred/depth_codec.h"
 #include "dsr_error.h"
 #include "gl/check.h"
+#include "gl/texture.h"
 
 namespace dsr {
 
@@ -216,16 +217,10 @@ void GeometryStage::draw_material(const FrameDef& f, const GpuScene& gpu, int ta
         if (m.metal_rough) prog.set("emissive", m.emissive);
         const GLuint tex[5] = {m.normal_map || variants_ ? m.normal_tex : gpu.flat_normal(), m.diffuse_tex,
                                m.specular_tex, m.occlusion_tex, m.emissive_tex};
-        for (int u = 0; u < (m.metal_rough ? 5 : 3); ++u) {
-            glActiveTexture(GL_TEXTURE0 + u);
-            glBindTexture(GL_TEXTURE_2D, tex[u]);
-        }
+        bind_texture_units(tex, m.metal_rough ? 5 : 3);
         gpu.draw(r);
     }
-    for (int u = 4; u >= 0; --u) {
-        glActiveTexture(GL_TEXTURE0 + u);
-        glBindTexture(GL_TEXTURE_2D, 0);
-    }
+    unbind_texture_units(5);
     gpu.unbind();
 }
 

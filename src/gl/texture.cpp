@@ -79,4 +79,18 @@ Texture& Texture::operator=(Texture&& o) noexcept {
     return *this;
 }
 
+void bind_texture_units(const GLuint* tex, int n) {
+    for (int u = 0; u < n; ++u) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + u));
+        glBindTexture(GL_TEXTURE_2D, tex[u]);
+    }
+}
+
+void unbind_texture_units(int n) {
+    for (int u = n - 1; u >= 0; --u) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + u));
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+}
+
 }  // namespace dsr

@@ -28,4 +28,9 @@ private:
     int w_ = 0, h_ = 0;
 };
 
+// Textures tex[0..n) bound to units 0..n-1, in that order (unit n-1 left active); and units
+// n-1..0 given texture 0 again (unit 0 left active): a material's maps around its draws.
+void bind_texture_units(const GLuint* tex, int n);
+void unbind_texture_units(int n);
+
 }  // namespace dsr
